@@ -1,0 +1,35 @@
+# make demo  : set up .venv and verify the bundled lead-screw lift example, writing its report
+# make test  : set up .venv and run the whole test suite (lint included)
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed-stamp
+export MPLBACKEND := Agg
+
+.PHONY: demo test lint sysdeps bench clean
+
+$(BIN)/python:
+	$(PYTHON) -m venv $(VENV)
+
+$(STAMP): pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e '.[dev,mesh]'
+	touch $@
+
+sysdeps:
+	@bash scripts/system-deps.sh
+
+demo: $(STAMP) sysdeps
+	$(BIN)/python -m mechverify.demo
+
+lint: $(STAMP)
+	$(BIN)/ruff check mechverify tests benchmarks examples
+
+test: $(STAMP) sysdeps lint
+	$(BIN)/python -m pytest
+
+bench: $(STAMP) sysdeps
+	$(BIN)/python benchmarks/run.py
+
+clean:
+	rm -rf $(VENV) build *.egg-info .pytest_cache .ruff_cache

@@ -1,0 +1,275 @@
+"""The one result type every check returns, and the collection of results for a design.
+
+Verdict rule (documented in ``docs/architecture.md``): with utilisation ``u = demand / capacity``
+and the required safety factor ``SF``, the *factored utilisation* is ``u·SF``.
+
+* **fail** when ``u·SF > 1`` (the safety factor achieved, ``capacity/demand``, is below ``SF``);
+* **warn** when ``u·SF > WARN_LEVEL`` (less than 10 % of the requirement left) or when the result
+  carries a validity warning (an input outside the range the formula was derived for);
+* **pass** otherwise.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
+from enum import Enum, StrEnum
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError, UnitError
+from mechverify.units import Q, Quantity, fmt
+
+WARN_LEVEL = 0.9
+
+
+class Verdict(StrEnum):
+    PASS = "pass"
+    WARN = "warn"
+    FAIL = "fail"
+
+    @property
+    def rank(self) -> int:
+        return {"pass": 0, "warn": 1, "fail": 2}[self.value]
+
+
+@dataclass(frozen=True)
+class CheckResult:
+    """One check of one component: demand against capacity, with its formula and source.
+
+    ``demand`` and ``capacity`` are quantities of the same dimension, both oriented so that the
+    check passes while ``demand <= capacity / required_sf`` (for a "must exceed" check such as
+    bearing life, the demand is the required life and the capacity the life achieved).
+    """
+
+    check: str
+    component: str
+    demand: pint.Quantity
+    capacity: pint.Quantity
+    required_sf: float = 1.0
+    title: str = ""
+    formula: str = ""  # LaTeX, rendered by the reports
+    source: str = ""  # book, edition, equation or table
+    inputs: Mapping[str, Any] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()  # validity concerns; any makes the verdict at least "warn"
+    load_case: str = ""  # governing load case or operating point
+    details: Mapping[str, Any] = field(default_factory=dict)  # data for plots (quantities, arrays)
+
+    def __post_init__(self) -> None:
+        for name in ("demand", "capacity"):
+            v = getattr(self, name)
+            if not isinstance(v, Quantity):
+                object.__setattr__(self, name, Q(v))
+        if self.demand.dimensionality != self.capacity.dimensionality:
+            raise UnitError(
+                f"{self.component}/{self.check}: demand {fmt(self.demand)} and capacity "
+                f"{fmt(self.capacity)} have different dimensions"
+            )
+        d, c = float(self.demand.m_as(self.capacity.units)), float(self.capacity.magnitude)
+        if not (math.isfinite(d) and not math.isnan(c)):
+            raise InputError(f"{self.component}/{self.check}: demand must be finite, got {fmt(self.demand)}")
+        if d < 0 or c < 0:
+            raise InputError(f"{self.component}/{self.check}: demand and capacity must be >= 0 "
+                             f"(got {fmt(self.demand)}, {fmt(self.capacity)})")
+        if not self.required_sf > 0:
+            raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
+        object.__setattr__(self, "notes", tuple(self.notes))
+        object.__setattr__(self, "warnings", tuple(self.warnings))
+        object.__setattr__(self, "inputs", dict(self.inputs))
+        object.__setattr__(self, "details", dict(self.details))
+
+    @property
+    def utilisation(self) -> float:
+        """demand / capacity (dimensionless; ``inf`` for zero capacity)."""
+        d = float(self.demand.m_as(self.capacity.units))
+        c = float(self.capacity.magnitude)
+        if c == 0:
+            return 0.0 if d == 0 else math.inf
+        return d / c
+
+    @property
+    def factored_utilisation(self) -> float:
+        return self.utilisation * self.required_sf
+
+    @property
+    def safety_factor(self) -> float:
+        """capacity / demand (``inf`` for zero demand)."""
+        u = self.utilisation
+        return math.inf if u == 0 else 1.0 / u
+
+    @property
+    def verdict(self) -> Verdict:
+        fu = self.factored_utilisation
+        if fu > 1.0:
+            return Verdict.FAIL
+        if fu > WARN_LEVEL or self.warnings:
+            return Verdict.WARN
+        return Verdict.PASS
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict is not Verdict.FAIL
+
+    # ------------------------------------------------------------------ output
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dict; :meth:`from_dict` restores an equal result."""
+        return {
+            "check": self.check,
+            "component": self.component,
+            "title": self.title,
+            "demand": _encode(self.demand),
+            "capacity": _encode(self.capacity),
+            "required_sf": self.required_sf,
+            "utilisation": _finite_or_none(self.utilisation),
+            "safety_factor": _finite_or_none(self.safety_factor),
+            "verdict": self.verdict.value,
+            "formula": self.formula,
+            "source": self.source,
+            "inputs": {k: _encode(v) for k, v in self.inputs.items()},
+            "notes": list(self.notes),
+            "warnings": list(self.warnings),
+            "load_case": self.load_case,
+            "details": {k: _encode(v) for k, v in self.details.items()},
+        }
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any]) -> CheckResult:
+        return cls(
+            check=d["check"], component=d["component"], title=d.get("title", ""),
+            demand=_decode(d["demand"]), capacity=_decode(d["capacity"]),
+            required_sf=d.get("required_sf", 1.0), formula=d.get("formula", ""),
+            source=d.get("source", ""), inputs={k: _decode(v) for k, v in d.get("inputs", {}).items()},
+            notes=tuple(d.get("notes", ())), warnings=tuple(d.get("warnings", ())),
+            load_case=d.get("load_case", ""), details={k: _decode(v) for k, v in d.get("details", {}).items()},
+        )
+
+    def summary(self) -> str:
+        """One line: component, check, demand/capacity, utilisation, verdict."""
+        sf = f" (SF req {self.required_sf:g})" if self.required_sf != 1 else ""
+        case = f" [{self.load_case}]" if self.load_case else ""
+        return (f"{self.verdict.value.upper():4}  {self.component}: {self.title or self.check}  "
+                f"{fmt(self.demand)} / {fmt(self.capacity)}  u={self.utilisation:.3g}{sf}{case}")
+
+    def __repr__(self) -> str:
+        return f"<CheckResult {self.summary()}>"
+
+    def _repr_html_(self) -> str:
+        return ResultSet([self])._repr_html_()
+
+
+class ResultSet:
+    """An ordered collection of :class:`CheckResult` with an overall verdict."""
+
+    def __init__(self, results: Iterable[CheckResult] = (), name: str = ""):
+        self.results: tuple[CheckResult, ...] = tuple(results)
+        self.name = name
+        for r in self.results:
+            if not isinstance(r, CheckResult):
+                raise TypeError(f"ResultSet holds CheckResult, got {type(r).__name__}")
+
+    def __iter__(self) -> Iterator[CheckResult]:
+        return iter(self.results)
+
+    def __len__(self) -> int:
+        return len(self.results)
+
+    def __getitem__(self, i: int) -> CheckResult:
+        return self.results[i]
+
+    def __add__(self, other: Iterable[CheckResult]) -> ResultSet:
+        return ResultSet([*self.results, *other], self.name)
+
+    @property
+    def verdict(self) -> Verdict:
+        """The worst verdict of all results (``pass`` for an empty set)."""
+        return max((r.verdict for r in self.results), key=lambda v: v.rank, default=Verdict.PASS)
+
+    @property
+    def passed(self) -> bool:
+        return self.verdict is not Verdict.FAIL
+
+    def sorted(self) -> ResultSet:
+        """Failures first, then by factored utilisation, highest first."""
+        key = lambda r: (-r.verdict.rank, -r.factored_utilisation, r.component, r.check)  # noqa: E731
+        return ResultSet(sorted(self.results, key=key), self.name)
+
+    def where(self, *, component: str | None = None, check: str | None = None) -> ResultSet:
+        return ResultSet([r for r in self.results if (component is None or r.component == component)
+                          and (check is None or r.check == check)], self.name)
+
+    def get(self, component: str, check: str) -> CheckResult:
+        hits = self.where(component=component, check=check).results
+        if len(hits) != 1:
+            raise KeyError(f"{len(hits)} results for {component}/{check}")
+        return hits[0]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "verdict": self.verdict.value,
+                "counts": {v.value: sum(r.verdict is v for r in self.results) for v in Verdict},
+                "results": [r.to_dict() for r in self.results]}
+
+    def to_json(self, **kw: Any) -> str:
+        """Deterministic JSON: same results, identical bytes."""
+        return json.dumps(self.to_dict(), sort_keys=True, indent=2, **kw)
+
+    @classmethod
+    def from_dict(cls, d: Mapping[str, Any]) -> ResultSet:
+        return cls([CheckResult.from_dict(r) for r in d["results"]], d.get("name", ""))
+
+    def table(self) -> str:
+        return "\n".join(r.summary() for r in self.sorted()) + f"\nOVERALL: {self.verdict.value.upper()}"
+
+    def __repr__(self) -> str:
+        return f"<ResultSet {self.name!r}: {len(self)} checks, {self.verdict.value}>\n{self.table()}"
+
+    def _repr_html_(self) -> str:
+        colour = {"pass": "#1a7f37", "warn": "#9a6700", "fail": "#cf222e"}
+        rows = []
+        for r in self.sorted():
+            rows.append(
+                "<tr>" + "".join(f"<td>{html.escape(str(c))}</td>" for c in (
+                    r.component, r.title or r.check, fmt(r.demand), fmt(r.capacity), f"{r.utilisation:.3g}",
+                    f"{r.required_sf:g}")) +
+                f'<td style="color:{colour[r.verdict.value]};font-weight:bold">{r.verdict.value}</td>'
+                f"<td>{html.escape(r.load_case)}</td></tr>")
+        head = "".join(f"<th>{h}</th>" for h in ("component", "check", "demand", "capacity", "utilisation",
+                                                  "SF req.", "verdict", "case"))
+        return (f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+                f"<p>Overall: <b style='color:{colour[self.verdict.value]}'>{self.verdict.value}</b></p>")
+
+
+def _finite_or_none(x: float) -> float | None:
+    return x if math.isfinite(x) else None
+
+
+def _encode(v: Any) -> Any:
+    if isinstance(v, Quantity):
+        m = v.magnitude
+        m = m.tolist() if isinstance(m, np.ndarray) else float(m)
+        return {"value": m, "unit": f"{v.units:~C}"}
+    if isinstance(v, np.ndarray):
+        return {"array": v.tolist()}
+    if isinstance(v, np.generic):
+        return v.item()
+    if isinstance(v, Enum):
+        return v.value
+    if isinstance(v, list | tuple):
+        return [_encode(x) for x in v]
+    return v
+
+
+def _decode(v: Any) -> Any:
+    if isinstance(v, dict) and set(v) == {"value", "unit"}:
+        m = v["value"]
+        return Q(np.asarray(m, dtype=float) if isinstance(m, list) else m, v["unit"] or "dimensionless")
+    if isinstance(v, dict) and set(v) == {"array"}:
+        return np.asarray(v["array"])
+    if isinstance(v, list):
+        return [_decode(x) for x in v]
+    return v

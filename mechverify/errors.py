@@ -1,0 +1,56 @@
+"""The exception hierarchy: every error mechverify raises on purpose is a :class:`MechverifyError`.
+
+A user-facing error always says *what* was wrong, *where* (parameter or key path) and *what was
+expected*; the CLI prints the message and exits with status 2 instead of showing a traceback.
+"""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterable
+
+
+class MechverifyError(Exception):
+    """Base class of every error that mechverify raises deliberately."""
+
+
+class UnitError(MechverifyError, TypeError):
+    """A value has no unit, the wrong dimension, or is not a finite number."""
+
+
+class InputError(MechverifyError, ValueError):
+    """A value has the right dimension but is impossible (negative length, reversed range, ...)."""
+
+
+class UnknownNameError(MechverifyError, KeyError):
+    """A name (material, thread, bearing, motor, ...) is not in its catalogue."""
+
+    def __init__(self, kind: str, name: str, known: Iterable[str]):
+        self.kind, self.name = kind, name
+        self.suggestions = suggest(name, known)
+        hint = f"; did you mean {', '.join(repr(s) for s in self.suggestions)}?" if self.suggestions else ""
+        super().__init__(f"unknown {kind} {name!r}{hint}")
+
+    def __str__(self) -> str:  # KeyError would otherwise quote the message
+        return str(self.args[0])
+
+
+class ValidityError(MechverifyError, ValueError):
+    """An input lies outside the validity range of the formula asked to evaluate it."""
+
+
+class ModelError(MechverifyError, ValueError):
+    """A model cannot be solved as stated (e.g. an FEA model that is not fully supported)."""
+
+
+def suggest(name: str, known: Iterable[str], n: int = 3) -> list[str]:
+    """The closest names to ``name`` among ``known`` (case-insensitive), best first."""
+    known = list(known)
+    lower = {k.lower(): k for k in known}
+    hits = difflib.get_close_matches(name.lower(), list(lower), n=n, cutoff=0.5)
+    contains = [k for k in known if name.lower() in k.lower() or k.lower() in name.lower()]
+    out: list[str] = []
+    for k in [lower[h] for h in hits] + contains:
+        if k not in out:
+            out.append(k)
+    return out[:n]

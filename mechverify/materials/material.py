@@ -1,0 +1,228 @@
+"""Material records: elastic and strength data, S-N curves, spring-wire strength, polymer-bearing limits.
+
+Every value carries its source (``Material.sources`` maps a property name to a reference; the
+``source`` of the material is the default). Values are pint quantities; ``None`` means "not known".
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError, ValidityError
+from mechverify.units import Q, as_quantity, fmt, to_si
+
+#: Property name -> dimension name, for every quantity-valued property of a Material.
+PROPERTY_DIMENSIONS: dict[str, str] = {
+    "E": "pressure",
+    "G": "pressure",
+    "nu": "dimensionless",
+    "density": "density",
+    "yield_strength": "pressure",
+    "ultimate_strength": "pressure",
+    "shear_yield_strength": "pressure",
+    "shear_ultimate_strength": "pressure",
+    "compressive_yield_strength": "pressure",
+    "elongation": "dimensionless",
+    "endurance_limit": "pressure",
+    "p_max": "pressure",
+    "pv_max": "pv",
+    "v_max": "velocity",
+    "mu_min": "dimensionless",
+    "mu_max": "dimensionless",
+    "max_temperature": "temperature",
+}
+
+
+@dataclass(frozen=True)
+class SNCurve:
+    """Stress amplitude against cycles to failure, interpolated log-log between table points.
+
+    ``stress_ratio`` is the R = σmin/σmax the data were measured at (-1: fully reversed).
+    Below the first tabulated life the curve is not defined (:class:`ValidityError`); above the
+    last it stays at the last stress when ``constant_beyond_last`` (an endurance limit, as the
+    FEA tools assume), otherwise it is an error.
+    """
+
+    cycles: tuple[float, ...]
+    stress: tuple[float, ...]  # [Pa], amplitude
+    stress_ratio: float = -1.0
+    constant_beyond_last: bool = True
+    source: str = ""
+
+    def __post_init__(self) -> None:
+        n, s = np.asarray(self.cycles, float), np.asarray(self.stress, float)
+        if len(n) < 2 or len(n) != len(s):
+            raise InputError("S-N curve: need at least two (cycles, stress) points of equal count")
+        if np.any(np.diff(n) <= 0) or np.any(n <= 0):
+            raise InputError("S-N curve: cycles must be positive and strictly increasing")
+        if np.any(np.diff(s) > 0) or np.any(s <= 0):
+            raise InputError("S-N curve: stress must be positive and non-increasing with cycles")
+
+    def stress_at(self, cycles: float) -> pint.Quantity:
+        """Stress amplitude [Pa] for a life of ``cycles`` (log-log interpolation)."""
+        n = float(cycles)
+        N, S = np.log10(self.cycles), np.log10(self.stress)
+        if n < self.cycles[0]:
+            raise ValidityError(f"S-N curve starts at {self.cycles[0]:g} cycles; asked for {n:g}")
+        if n > self.cycles[-1]:
+            if not self.constant_beyond_last:
+                raise ValidityError(f"S-N curve ends at {self.cycles[-1]:g} cycles; asked for {n:g}")
+            return Q(self.stress[-1], "Pa")
+        return Q(10 ** float(np.interp(np.log10(n), N, S)), "Pa")
+
+    def life_at(self, stress: Any) -> float:
+        """Cycles to failure at a stress amplitude; ``inf`` below the endurance (last) stress."""
+        s = to_si(stress, "pressure", "stress")
+        if s > self.stress[0]:
+            raise ValidityError(f"stress {fmt(Q(s, 'Pa'), 'MPa')} is above the S-N curve's first point "
+                                f"({fmt(Q(self.stress[0], 'Pa'), 'MPa')} at {self.cycles[0]:g} cycles)")
+        if s < self.stress[-1]:
+            if self.constant_beyond_last:
+                return float("inf")
+            raise ValidityError("stress below the last S-N point and the curve has no endurance limit")
+        logS = np.log10(self.stress)[::-1]
+        logN = np.log10(self.cycles)[::-1]
+        return float(10 ** np.interp(np.log10(s), logS, logN))
+
+
+@dataclass(frozen=True)
+class WireStrength:
+    """Minimum tensile strength of spring wire as a function of wire diameter.
+
+    Inside the table's diameter range the table is interpolated linearly; outside it the power law
+    ``Sut = A / d^m`` (Shigley, Table 10-4) is used within its own range; beyond both,
+    :class:`ValidityError`.
+    """
+
+    A: float  # [Pa] with d in the unit d_unit
+    m: float
+    d_unit: str = "mm"
+    d_min: float = 0.0  # [m] validity of the power law
+    d_max: float = float("inf")
+    table_d: tuple[float, ...] = ()  # [m]
+    table_sut: tuple[float, ...] = ()  # [Pa]
+    source: str = ""
+    table_source: str = ""
+
+    def power_law(self, d: Any) -> pint.Quantity:
+        """``Sut = A / d^m`` with d in ``d_unit`` [Pa]."""
+        dm = to_si(d, "length", "d")
+        if not (self.d_min <= dm <= self.d_max):
+            raise ValidityError(f"wire diameter {fmt(Q(dm, 'm'), 'mm')} outside the power law's range "
+                                f"{fmt(Q(self.d_min, 'm'), 'mm')}..{fmt(Q(self.d_max, 'm'), 'mm')}")
+        return Q(self.A / Q(dm, "m").m_as(self.d_unit) ** self.m, "Pa")
+
+    def min_tensile_strength(self, d: Any) -> pint.Quantity:
+        dm = to_si(d, "length", "d")
+        if self.table_d and self.table_d[0] <= dm <= self.table_d[-1]:
+            return Q(float(np.interp(dm, self.table_d, self.table_sut)), "Pa")
+        return self.power_law(Q(dm, "m"))
+
+
+@dataclass(frozen=True)
+class Material:
+    """A material record. Quantity fields are pint quantities or ``None`` where unknown."""
+
+    name: str
+    category: str
+    E: pint.Quantity | None = None
+    G: pint.Quantity | None = None
+    nu: pint.Quantity | None = None
+    density: pint.Quantity | None = None
+    yield_strength: pint.Quantity | None = None
+    ultimate_strength: pint.Quantity | None = None
+    shear_yield_strength: pint.Quantity | None = None
+    shear_ultimate_strength: pint.Quantity | None = None
+    compressive_yield_strength: pint.Quantity | None = None
+    elongation: pint.Quantity | None = None
+    endurance_limit: pint.Quantity | None = None
+    p_max: pint.Quantity | None = None
+    pv_max: pint.Quantity | None = None
+    v_max: pint.Quantity | None = None
+    mu_min: pint.Quantity | None = None
+    mu_max: pint.Quantity | None = None
+    max_temperature: pint.Quantity | None = None
+    sn_curve: SNCurve | None = None
+    wire_strength: WireStrength | None = None
+    aliases: tuple[str, ...] = ()
+    source: str = ""
+    sources: Mapping[str, str] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()
+    derived: frozenset[str] = frozenset()  # properties computed from others (e.g. G from E, nu)
+
+    def __post_init__(self) -> None:
+        for prop, dim in PROPERTY_DIMENSIONS.items():
+            v = getattr(self, prop)
+            if v is not None:
+                object.__setattr__(self, prop, as_quantity(v, dim, f"{self.name}.{prop}"))
+        for prop in ("E", "G", "density", "yield_strength", "ultimate_strength", "p_max", "pv_max"):
+            v = getattr(self, prop)
+            if v is not None and v.magnitude <= 0:
+                raise InputError(f"{self.name}.{prop}: must be positive, got {fmt(v)}")
+        if self.nu is not None and not (-1.0 < self.nu.m_as("") < 0.5):
+            raise InputError(f"{self.name}.nu: Poisson's ratio must lie in (-1, 0.5), got {self.nu.m_as(''):g}")
+        if (self.yield_strength is not None and self.ultimate_strength is not None
+                and self.yield_strength > self.ultimate_strength):
+            raise InputError(f"{self.name}: yield strength {fmt(self.yield_strength, 'MPa')} exceeds "
+                             f"ultimate strength {fmt(self.ultimate_strength, 'MPa')}")
+        if self.mu_min is not None and self.mu_max is not None and self.mu_min > self.mu_max:
+            raise InputError(f"{self.name}: friction range reversed (mu_min > mu_max)")
+        derived = set(self.derived)
+        if self.G is None and self.E is not None and self.nu is not None:
+            object.__setattr__(self, "G", (self.E / (2 * (1 + self.nu))).to(self.E.units))
+            derived.add("G")
+        elif self.nu is None and self.E is not None and self.G is not None:
+            object.__setattr__(self, "nu", (self.E / (2 * self.G) - 1).to(""))
+            derived.add("nu")
+        object.__setattr__(self, "derived", frozenset(derived))
+        object.__setattr__(self, "aliases", tuple(self.aliases))
+        object.__setattr__(self, "notes", tuple(self.notes))
+        object.__setattr__(self, "sources", dict(self.sources))
+
+    def source_of(self, prop: str) -> str:
+        """The reference for one property ("derived: G = E/(2(1+nu))" for computed ones)."""
+        if prop in self.derived:
+            return "derived: G = E / (2(1 + nu))" if prop == "G" else "derived: nu = E / (2G) - 1"
+        return self.sources.get(prop, self.source)
+
+    def require(self, prop: str) -> pint.Quantity:
+        """The property, or an :class:`InputError` saying the material lacks it."""
+        v = getattr(self, prop)
+        if v is None:
+            raise InputError(f"material {self.name!r} has no {prop.replace('_', ' ')}; "
+                             f"derive one with .with_({prop}=...)")
+        return v
+
+    def with_(self, name: str | None = None, **changes: Any) -> Material:
+        """A derived material: ``get("PLA").with_(yield_strength="38 MPa")``.
+
+        Changed values are sourced "user". ``G`` (or ``nu``) derived from the old ``E``/``nu`` is
+        derived again from the new ones.
+        """
+        fields = {f.name for f in dataclasses.fields(self)}
+        unknown = set(changes) - fields
+        if unknown:
+            from mechverify.errors import suggest
+            bad = sorted(unknown)[0]
+            hint = suggest(bad, fields)
+            raise InputError(f"Material has no property {bad!r}" + (f"; did you mean {hint[0]!r}?" if hint else ""))
+        new = dict(changes)
+        derived = set(self.derived) - set(changes)
+        for p in list(derived):
+            if {"E", "nu", "G"} & set(changes):
+                new.setdefault(p, None)
+                derived.discard(p)
+        sources = {**self.sources, **{k: "user" for k in changes}}
+        return dataclasses.replace(self, name=name or f"{self.name} (modified)", aliases=(),
+                                   sources=sources, derived=frozenset(derived), **new)
+
+    def __repr__(self) -> str:
+        parts = [f"{p}={fmt(getattr(self, p))}" for p in ("E", "yield_strength", "ultimate_strength", "density")
+                 if getattr(self, p) is not None]
+        return f"<Material {self.name!r} ({self.category}) {' '.join(parts)}>"

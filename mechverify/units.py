@@ -1,0 +1,218 @@
+"""One pint registry for the whole package, and the helpers that guard every public function.
+
+Public functions take pint quantities (or strings such as ``"350 N"``) and return quantities of
+this registry. Inside, numbers are plain SI floats: :func:`to_si` converts at the edge, and
+:func:`si_function` wraps a formula written in SI floats so that it takes and returns quantities.
+
+Dimension names accepted by the helpers are the keys of :data:`DIMENSIONS` (``"length"``,
+``"force"``, ``"pressure"``, ``"torque"``, ...); each maps to its SI unit.
+"""
+
+from __future__ import annotations
+
+import functools
+import inspect
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError, UnitError
+
+ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg.formatter.default_format = "~P"
+Quantity = ureg.Quantity
+
+# Units met in datasheets that pint lacks or names differently.
+# pint already has kgf, gf, ozf (force_ounce), lbf, ksi, rpm; Mpsi (spring-wire tables) it lacks.
+ureg.define("mega_psi = 1e6 * psi = Mpsi")
+pint.set_application_registry(ureg)
+
+#: Dimension name -> (pint dimensionality, SI unit used inside the package).
+DIMENSIONS: dict[str, tuple[str, str]] = {
+    "dimensionless": ("", "dimensionless"),
+    "length": ("[length]", "m"),
+    "area": ("[length]**2", "m**2"),
+    "volume": ("[length]**3", "m**3"),
+    "second_moment": ("[length]**4", "m**4"),
+    "mass": ("[mass]", "kg"),
+    "time": ("[time]", "s"),
+    "force": ("[force]", "N"),
+    "force_per_length": ("[force]/[length]", "N/m"),  # spring rate, line load
+    "pressure": ("[pressure]", "Pa"),  # also stress, modulus
+    "torque": ("[force]*[length]", "N*m"),  # also moment, energy
+    "energy": ("[energy]", "J"),
+    "power": ("[power]", "W"),
+    "velocity": ("[velocity]", "m/s"),
+    "acceleration": ("[acceleration]", "m/s**2"),
+    "angle": ("", "rad"),
+    "angular_velocity": ("1/[time]", "rad/s"),
+    "angular_acceleration": ("1/[time]**2", "rad/s**2"),
+    "frequency": ("1/[time]", "Hz"),
+    "density": ("[mass]/[length]**3", "kg/m**3"),
+    "inertia": ("[mass]*[length]**2", "kg*m**2"),
+    "torsional_stiffness": ("[force]*[length]", "N*m/rad"),
+    "pv": ("[pressure]*[velocity]", "Pa*m/s"),
+    "current": ("[current]", "A"),
+    "voltage": ("[electric_potential]", "V"),
+    "resistance": ("[resistance]", "ohm"),
+    "inductance": ("[inductance]", "H"),
+    "torque_constant": ("[force]*[length]/[current]", "N*m/A"),
+    "speed_constant": ("1/[time]/[electric_potential]", "rad/s/V"),
+    "thermal_resistance": ("[temperature]/[power]", "K/W"),
+    "temperature": ("[temperature]", "K"),
+    "viscous_damping": ("[force]*[length]*[time]", "N*m*s/rad"),
+}
+
+# Readable names of dimensions for error messages ("expected a length").
+_ARTICLE = {name: ("an " if name[0] in "aeiou" else "a ") + name.replace("_", " ") for name in DIMENSIONS}
+
+
+def Q(value: Any, unit: str | None = None) -> pint.Quantity:
+    """Make a quantity: ``Q("10 mm")``, ``Q(10, "mm")``, ``Q(np.array([1, 2]), "N")``."""
+    if unit is None:
+        if isinstance(value, Quantity):
+            return value
+        if isinstance(value, str):
+            return _parse(value, "value")
+        return Quantity(value, "dimensionless")
+    return Quantity(value, unit)
+
+
+def _parse(text: str, name: str) -> pint.Quantity:
+    try:
+        q = ureg.Quantity(text.strip())
+    except Exception as exc:  # pint raises several unrelated types for bad strings
+        raise UnitError(f"{name}: cannot read {text!r} as a quantity ({exc})") from None
+    if not isinstance(q, Quantity):  # a bare number in a string: "12"
+        q = Quantity(q, "dimensionless")
+    return q
+
+
+def _describe(value: Any) -> str:
+    if isinstance(value, Quantity):
+        return f"{value:~P}" if np.ndim(value.magnitude) == 0 else f"an array in {value.units:~P}"
+    return repr(value)
+
+
+def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
+    """Check ``value`` has dimension ``dim`` and return it as a quantity (any unit of that dimension).
+
+    Accepts a quantity or a string (``"350 N"``). Dimensionless parameters also accept bare
+    numbers; angles need a unit (degrees and radians are both common). Raises :class:`UnitError`
+    naming the parameter, the expected dimension and what was given.
+    """
+    if dim not in DIMENSIONS:
+        raise KeyError(f"unknown dimension name {dim!r}")
+    expected, _ = DIMENSIONS[dim]
+    original = value
+    if isinstance(value, str):
+        value = _parse(value, name)
+    elif not isinstance(value, Quantity):
+        if dim == "dimensionless" and _is_number(value):
+            value = Quantity(value, "dimensionless")
+        elif _is_number(value):
+            hint = " (say 'deg' or 'rad')" if dim == "angle" else ""
+            raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got the bare number {original!r}; give a unit{hint}")
+        else:
+            raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {type(original).__name__} {original!r}")
+    if not _dimension_matches(value, dim):
+        raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {_describe(value)}")
+    if dim == "angle" and value.unitless:
+        raise UnitError(f"{name}: expected an angle, got {_describe(original)}; give a unit (say 'deg' or 'rad')")
+    if not np.all(np.isfinite(np.asarray(value.magnitude, dtype=float))):
+        raise UnitError(f"{name}: expected a finite {dim.replace('_', ' ')}, got {_describe(value)}")
+    return value
+
+
+def to_si(value: Any, dim: str, name: str = "value") -> Any:
+    """The SI magnitude (float or ndarray) of ``value`` after :func:`as_quantity` checks it."""
+    q = as_quantity(value, dim, name)
+    mag = q.to(DIMENSIONS[dim][1]).magnitude
+    return float(mag) if _is_scalar(mag) else np.asarray(mag, dtype=float)
+
+
+def from_si(value: Any, dim: str) -> pint.Quantity:
+    """Wrap an SI magnitude as a quantity in the SI unit of ``dim``."""
+    return Quantity(value, DIMENSIONS[dim][1])
+
+
+def require_positive(value: float, name: str, *, allow_zero: bool = False) -> float:
+    """Raise :class:`InputError` unless the SI value is > 0 (or >= 0 with ``allow_zero``)."""
+    bad = np.any(np.asarray(value) < 0) if allow_zero else np.any(np.asarray(value) <= 0)
+    if bad:
+        rel = "zero or positive" if allow_zero else "positive"
+        raise InputError(f"{name}: must be {rel}, got {value!r} (SI)")
+    return value
+
+
+def si_function(returns: str | tuple[str, ...] | None = None, **dims: str) -> Callable:
+    """Decorator: write a formula in SI floats, call it with quantities.
+
+    ``dims`` maps parameter names to dimension names; those arguments are converted with
+    :func:`to_si` (so they are checked). The return value is wrapped as a quantity of ``returns``
+    (a tuple of names for a tuple result). The raw SI function stays available as ``f.si`` for
+    hot loops. Parameters not named in ``dims`` pass through untouched.
+    """
+
+    def decorate(f: Callable) -> Callable:
+        sig = inspect.signature(f)
+        for p in dims:
+            if p not in sig.parameters:
+                raise TypeError(f"si_function: {f.__name__} has no parameter {p!r}")
+
+        @functools.wraps(f)
+        def wrapper(*args: Any, **kwargs: Any) -> Any:
+            bound = sig.bind(*args, **kwargs)
+            bound.apply_defaults()
+            for p, d in dims.items():
+                v = bound.arguments.get(p)
+                if v is not None:
+                    bound.arguments[p] = to_si(v, d, p)
+            out = f(*bound.args, **bound.kwargs)
+            if returns is None:
+                return out
+            if isinstance(returns, tuple):
+                return tuple(from_si(o, d) for o, d in zip(out, returns, strict=True))
+            return from_si(out, returns)
+
+        wrapper.si = f  # type: ignore[attr-defined]
+        return wrapper
+
+    return decorate
+
+
+def fmt(q: pint.Quantity, unit: str | None = None, digits: int = 4) -> str:
+    """Format a quantity for people: ``fmt(Q(0.0123, "m"), "mm") -> '12.3 mm'``."""
+    if unit:
+        q = q.to(unit)
+    m = q.magnitude
+    if _is_scalar(m):
+        text = f"{m:.{digits}g}"
+    else:
+        text = np.array2string(np.asarray(m), precision=digits)
+    u = f"{q.units:~P}"
+    return f"{text} {u}".strip() if u else text
+
+
+_DIMENSIONALITY = {k: (ureg.get_dimensionality(v[0]) if v[0] else None) for k, v in DIMENSIONS.items()}
+
+
+def _dimension_matches(q: pint.Quantity, dim: str) -> bool:
+    expected = _DIMENSIONALITY[dim]
+    return q.dimensionless if expected is None else q.dimensionality == expected
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, int | float | np.number) and not isinstance(v, bool) or (
+        isinstance(v, np.ndarray) and v.dtype.kind in "if"
+    )
+
+
+def _is_scalar(m: Any) -> bool:
+    return np.ndim(m) == 0
+
+
+__all__ = ["ureg", "Quantity", "Q", "DIMENSIONS", "as_quantity", "to_si", "from_si", "si_function",
+           "require_positive", "fmt"]

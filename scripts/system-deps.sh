@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Install the Debian packages mechverify's tests and reports use, when missing.
+#   calculix-ccx     independent FEA solver for the cross-check tests and the benchmark
+#   chromium         headless browser: the HTML report is rendered and screenshotted in the tests
+#   poppler-utils    pdftotext / pdftoppm: the PDF report's text and pages are checked
+#   libpango*        WeasyPrint (PDF reports) needs Pango
+#   libglu1-mesa ... shared libraries the gmsh wheel links against
+set -euo pipefail
+need=()
+command -v ccx >/dev/null 2>&1 || need+=(calculix-ccx)
+command -v chromium >/dev/null 2>&1 || need+=(chromium)
+command -v pdftoppm >/dev/null 2>&1 || need+=(poppler-utils)
+for lib in libpango-1.0.so.0:libpango-1.0-0 libpangoft2-1.0.so.0:libpangoft2-1.0-0 libGLU.so.1:libglu1-mesa \
+           libXcursor.so.1:libxcursor1 libXinerama.so.1:libxinerama1 libXft.so.2:libxft2; do
+  ldconfig -p | grep -q "${lib%%:*}" || need+=("${lib##*:}")
+done
+[ ${#need[@]} -eq 0 ] && exit 0
+cmd="apt-get update && apt-get install -y --no-install-recommends ${need[*]}"
+if [ "$(id -u)" -eq 0 ] && command -v apt-get >/dev/null 2>&1; then
+  echo "Installing system packages: ${need[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq && apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
+else
+  echo "mechverify needs these system packages: ${need[*]}" >&2
+  echo "Run:  sudo sh -c '$cmd'" >&2
+  exit 1
+fi

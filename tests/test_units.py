@@ -1,0 +1,105 @@
+"""Units: datasheet conversions against exact defining factors, and every error a user can meet.
+
+Sources of the exact factors: kgf = 9.80665 N (standard gravity, 3rd CGPM 1901; NIST SP 811, B.8);
+avoirdupois pound = 0.45359237 kg, ounce = 1/16 lb, inch = 0.0254 m (international yard and pound
+agreement 1959; NIST SP 811, B.8); psi = lbf/in^2.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from mechverify import Q, UnitError, ureg
+from mechverify.errors import InputError, MechverifyError
+from mechverify.units import as_quantity, from_si, require_positive, si_function, to_si
+
+G0 = 9.80665
+LB = 0.45359237
+INCH = 0.0254
+
+
+def test_kgf_cm_to_newton_metre():
+    assert Q("4 kgf*cm").m_as("N*m") == pytest.approx(4 * G0 * 0.01, rel=1e-15)
+
+
+def test_oz_in_to_millinewton_metre():
+    assert Q(40, "ozf*in").m_as("mN*m") == pytest.approx(40 * LB / 16 * G0 * INCH * 1e3, rel=1e-12)
+
+
+def test_lbf_ksi_mpsi():
+    lbf = LB * G0
+    assert Q("1 lbf").m_as("N") == pytest.approx(lbf, rel=1e-12)
+    assert Q("1 ksi").m_as("MPa") == pytest.approx(1000 * lbf / INCH**2 / 1e6, rel=1e-12)
+    assert Q("30 Mpsi").m_as("GPa") == pytest.approx(30e6 * lbf / INCH**2 / 1e9, rel=1e-12)
+
+
+def test_rpm_g_cm2_n_mm():
+    assert Q("60 rpm").m_as("rad/s") == pytest.approx(2 * math.pi, rel=1e-15)
+    assert Q("1 g*cm**2").m_as("kg*m**2") == pytest.approx(1e-7, rel=1e-12)
+    assert Q("1500 N*mm").m_as("N*m") == pytest.approx(1.5, rel=1e-15)
+
+
+def test_q_forms_agree():
+    assert Q("10 mm") == Q(10, "mm")
+    assert Q(Q("3 N")) == Q(3, "N")
+
+
+def test_one_registry():
+    assert Q("1 m")._REGISTRY is ureg
+
+
+def test_to_si_accepts_string_and_array():
+    assert to_si("350 N", "force", "F") == 350.0
+    np.testing.assert_allclose(to_si(Q(np.array([1.0, 2.0]), "mm"), "length", "x"), [1e-3, 2e-3])
+
+
+@pytest.mark.parametrize(
+    ("value", "dim", "message"),
+    [
+        (350, "length", "length: expected a length, got the bare number 350"),
+        ("350 N", "length", "length: expected a length, got 350 N"),
+        (Q(350, "N"), "length", "length: expected a length, got 350 N"),
+        (Q(float("nan"), "mm"), "length", "expected a finite length"),
+        (Q(float("inf"), "N"), "force", "expected a finite force"),
+        ("12 furlongs per fortnight bananas", "velocity", "cannot read"),
+        ("30", "angle", "give a unit"),
+        (30.0, "angle", "give a unit"),
+        ([1, 2], "length", "expected a length, got list"),
+    ],
+)
+def test_unit_errors_name_parameter_and_expectation(value, dim, message):
+    with pytest.raises(UnitError, match=message.split(":")[0]) as info:
+        as_quantity(value, dim, "length")
+    assert message.split(": ", 1)[-1] in str(info.value)
+    assert isinstance(info.value, MechverifyError)
+
+
+def test_dimensionless_accepts_bare_number_but_not_nan():
+    assert to_si(0.15, "dimensionless", "mu") == 0.15
+    with pytest.raises(UnitError, match="mu"):
+        to_si(float("nan"), "dimensionless", "mu")
+
+
+def test_si_function_converts_and_wraps():
+    @si_function(returns="pressure", F="force", A="area")
+    def stress(F, A):
+        return F / A
+
+    assert stress("2 kN", Q(40, "mm**2")).m_as("MPa") == pytest.approx(50.0)
+    assert stress.si(2000.0, 40e-6) == pytest.approx(50e6)
+    with pytest.raises(UnitError, match="A: expected an area, got 40 mm"):
+        stress("2 kN", "40 mm")
+
+
+def test_require_positive():
+    assert require_positive(1.0, "d") == 1.0
+    with pytest.raises(InputError, match="d: must be positive"):
+        require_positive(0.0, "d")
+    with pytest.raises(InputError, match="d: must be positive"):
+        require_positive(-1.0, "d")
+    assert require_positive(0.0, "d", allow_zero=True) == 0.0
+
+
+def test_from_si_unit():
+    assert from_si(2.0, "torque").m_as("N*mm") == pytest.approx(2000.0)
