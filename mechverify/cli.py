@@ -1,0 +1,300 @@
+"""The ``mechverify`` command: check designs, diff revisions for CI, browse data, explain checks.
+
+Exit codes: 0 all checks pass, 1 a check fails (or a margin was lost, for ``diff``), 2 invalid input.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from mechverify.checks import ResultSet, Verdict
+from mechverify.errors import MechverifyError
+from mechverify.units import fmt
+
+app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
+                  help="Verify the mechanical design of small machines and robots.")
+out = Console(highlight=False)
+err = Console(stderr=True, highlight=False)
+
+COLOURS = {"pass": "green", "warn": "yellow", "fail": "red"}
+
+
+class Invalid(Exception):
+    """Raised inside commands for exit status 2 with a message."""
+
+
+def _bar(u: float, width: int = 10) -> str:
+    filled = min(width, max(0, round(min(u, 1.0) * width)))
+    return "█" * filled + "·" * (width - filled) + ("▶" if u > 1 else " ")
+
+
+def results_table(rs: ResultSet) -> Table:
+    t = Table(title=rs.name, title_justify="left", show_lines=False)
+    for col, just in (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
+                      ("capacity", "right"), ("u·SF", "right"), ("", "left"), ("SF req", "right"),
+                      ("governing case", "left")):
+        t.add_column(col, justify=just)
+    for r in rs.sorted():
+        c = COLOURS[r.verdict.value]
+        fu = r.factored_utilisation
+        t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, fmt(r.demand),
+                  fmt(r.capacity), f"{fu:.3g}", f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
+    return t
+
+
+def _write_atomic(path: Path, text: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            fh.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def _load_and_verify(paths: list[Path], allow_outside: bool, quiet: bool) -> list[tuple[Any, ResultSet]]:
+    from mechverify.design import load
+
+    done = []
+    errors: list[str] = []
+    for p in paths:
+        try:
+            d = load(p, allow_outside=allow_outside)
+            done.append((d, d.verify()))
+        except MechverifyError as exc:
+            errors.append(str(exc))
+    if errors:
+        raise Invalid("\n".join(errors))
+    return done
+
+
+@app.command()
+def check(
+    designs: Annotated[list[Path], typer.Argument(help="design files (TOML)", show_default=False)],
+    json_out: Annotated[Path | None, typer.Option("--json", help="write the results as JSON")] = None,
+    junit: Annotated[Path | None, typer.Option("--junit", help="write JUnit XML for CI")] = None,
+    report: Annotated[Path | None, typer.Option("--report", help="write an HTML or PDF report (.html/.pdf)")] = None,
+    fail_on: Annotated[str, typer.Option("--fail-on", help="exit 1 on 'fail' (default) or also on 'warn'")] = "fail",
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="print only the overall verdict")] = False,
+    allow_outside_includes: Annotated[bool, typer.Option(help="allow includes outside the design's folder")] = False,
+) -> None:
+    """Run every check of each DESIGN; exit 0 when all pass, 1 when a check fails, 2 on invalid input."""
+    if fail_on not in ("fail", "warn"):
+        raise Invalid(f"--fail-on: expected 'fail' or 'warn', got {fail_on!r}")
+    if report is not None and report.suffix.lower() not in (".html", ".htm", ".pdf"):
+        raise Invalid(f"--report: expected a .html or .pdf file name, got {str(report)!r}")
+    runs = _load_and_verify(designs, allow_outside_includes, quiet)
+    from mechverify.design.outputs import junit_xml, run_document, to_json
+
+    if json_out:
+        _write_atomic(json_out, to_json(run_document(runs)))
+    if junit:
+        _write_atomic(junit, junit_xml(runs, fail_on))
+    if report:
+        from mechverify.reports import write_report
+
+        write_report(runs, report)
+    worst = max((rs.verdict for _, rs in runs), key=lambda v: v.rank, default=Verdict.PASS)
+    for _, rs in runs:
+        if not quiet:
+            out.print(results_table(rs))
+        counts = {v: sum(r.verdict is v for r in rs) for v in Verdict}
+        c = COLOURS[rs.verdict.value]
+        out.print(f"[{c}]{rs.verdict.value.upper()}[/{c}] {rs.name}: {counts[Verdict.PASS]} pass, "
+                  f"{counts[Verdict.WARN]} warn, {counts[Verdict.FAIL]} fail")
+    failed = worst is Verdict.FAIL or (fail_on == "warn" and worst is Verdict.WARN)
+    raise typer.Exit(1 if failed else 0)
+
+
+def _design_at_ref(path: Path, ref: str, tmp: Path) -> Path:
+    """Extract the design's folder as it was at git REF into ``tmp``; return the design's path there."""
+    path = path.resolve()
+    try:
+        top = Path(subprocess.run(["git", "-C", str(path.parent), "rev-parse", "--show-toplevel"], check=True,
+                                  capture_output=True, text=True).stdout.strip())
+    except (subprocess.CalledProcessError, FileNotFoundError) as exc:
+        raise Invalid(f"--base-ref: {path} is not inside a git repository ({exc})") from None
+    rel_dir = path.parent.relative_to(top)
+    archive = subprocess.run(["git", "-C", str(top), "archive", "--format=tar", ref, "--", str(rel_dir) or "."],
+                             capture_output=True)
+    if archive.returncode != 0:
+        raise Invalid(f"--base-ref: cannot read {rel_dir} at {ref!r}: {archive.stderr.decode().strip()}")
+    subprocess.run(["tar", "-x", "-C", str(tmp)], input=archive.stdout, check=True)
+    base = tmp / rel_dir / path.name
+    if not base.exists():
+        raise Invalid(f"--base-ref: {path.name} does not exist at {ref!r}")
+    return base
+
+
+@app.command()
+def diff(
+    base: Annotated[Path, typer.Argument(help="the earlier design file (or the only file, with --base-ref)")],
+    head: Annotated[Path | None, typer.Argument(help="the later design file")] = None,
+    base_ref: Annotated[str | None, typer.Option(help="read BASE from this git ref (same path)")] = None,
+    json_out: Annotated[Path | None, typer.Option("--json", help="write the changes as JSON")] = None,
+    allow_outside_includes: Annotated[bool, typer.Option(help="allow includes outside the design's folder")] = False,
+) -> None:
+    """Which checks changed verdict or margin between two revisions; exit 1 when a margin dropped below
+    its requirement (the CI gate for component changes)."""
+    from mechverify.design import load
+    from mechverify.design.outputs import diff as diff_results
+    from mechverify.design.outputs import to_json
+
+    with tempfile.TemporaryDirectory() as tmpdir:
+        if base_ref:
+            if head is not None:
+                raise Invalid("diff: give one file with --base-ref, or two files without it")
+            head = base
+            base = _design_at_ref(base, base_ref, Path(tmpdir))
+        elif head is None:
+            raise Invalid("diff: give two design files, or one with --base-ref REF")
+        try:
+            rb = load(base, allow_outside_includes).verify()
+            rh = load(head, allow_outside_includes).verify()
+        except MechverifyError as exc:
+            raise Invalid(str(exc)) from None
+    changes = diff_results(rb, rh)
+    t = Table(title=f"{rb.name} → {rh.name}", title_justify="left")
+    for col in ("component", "check", "status", "base u·SF", "head u·SF", "Δ", "verdict"):
+        t.add_column(col)
+    lost = False
+    for ch in changes:
+        if ch.status == "same":
+            continue
+        fb = f"{ch.base.factored_utilisation:.3g}" if ch.base else "-"
+        fh = f"{ch.head.factored_utilisation:.3g}" if ch.head else "-"
+        d = f"{ch.delta:+.3g}" if ch.base and ch.head else ""
+        vb = ch.base.verdict.value if ch.base else "-"
+        vh = ch.head.verdict.value if ch.head else "-"
+        mark = " [red]margin lost[/red]" if ch.lost_requirement else ""
+        lost |= ch.lost_requirement
+        t.add_row(ch.component, ch.check, ch.status, fb, fh, d, f"{vb} → [{COLOURS.get(vh, 'white')}]{vh}"
+                  f"[/{COLOURS.get(vh, 'white')}]{mark}")
+    n_changed = sum(c.status != "same" for c in changes)
+    if n_changed:
+        out.print(t)
+    out.print(f"{n_changed} of {len(changes)} checks changed" + ("; a requirement is no longer met" if lost else ""))
+    if json_out:
+        doc = {"base": rb.name, "head": rh.name, "lost_requirement": lost, "changes": [
+            {"component": c.component, "check": c.check, "status": c.status,
+             "base": c.base.to_dict() if c.base else None, "head": c.head.to_dict() if c.head else None}
+            for c in changes if c.status != "same"]}
+        _write_atomic(json_out, to_json(doc))
+    raise typer.Exit(1 if lost else 0)
+
+
+@app.command()
+def materials(name: Annotated[str | None, typer.Argument(help="show one material in full")] = None) -> None:
+    """List the material database, or show one material with the source of every value."""
+    from mechverify import materials as mats
+    from mechverify.materials.material import PROPERTY_DIMENSIONS
+
+    if name:
+        m = mats.get(name)
+        t = Table(title=f"{m.name} ({m.category})", title_justify="left")
+        t.add_column("property")
+        t.add_column("value", justify="right")
+        t.add_column("source")
+        for p in PROPERTY_DIMENSIONS:
+            v = getattr(m, p)
+            if v is not None:
+                t.add_row(p, fmt(v), m.source_of(p))
+        out.print(t)
+        if m.aliases:
+            out.print("aliases: " + ", ".join(m.aliases))
+        if m.sn_curve:
+            out.print(f"S-N curve: {len(m.sn_curve.cycles)} points, R = {m.sn_curve.stress_ratio:g} "
+                      f"({m.sn_curve.source})")
+        for n in m.notes:
+            out.print(f"note: {n}")
+        return
+    t = Table(title="materials", title_justify="left")
+    for col in ("name", "category", "E", "yield", "ultimate", "density"):
+        t.add_column(col)
+    for m in mats.default_library():
+        t.add_row(m.name, m.category, *(fmt(getattr(m, p), u, 3) if getattr(m, p) is not None else "-" for p, u in
+                                        (("E", "GPa"), ("yield_strength", "MPa"), ("ultimate_strength", "MPa"),
+                                         ("density", "kg/m**3"))))
+    out.print(t)
+
+
+@app.command()
+def explain(check_name: Annotated[str | None, typer.Argument(metavar="CHECK", help="a check name")] = None) -> None:
+    """Formula, source and assumptions of a check (without CHECK: list all checks)."""
+    from mechverify.design import REGISTRY, adapters  # noqa: F401
+    from mechverify.errors import UnknownNameError
+
+    specs = {f"{ct.name}.{c.name}": (ct, c) for ct in REGISTRY.types.values() for c in ct.checks}
+    if check_name is None:
+        t = Table(title="checks", title_justify="left")
+        t.add_column("check")
+        t.add_column("title")
+        for k, (_, c) in sorted(specs.items()):
+            t.add_row(k, c.title)
+        out.print(t)
+        return
+    hits = [v for k, v in specs.items() if k == check_name or k.split(".", 1)[1] == check_name]
+    if not hits:
+        raise UnknownNameError("check", check_name, list(specs) + [k.split(".", 1)[1] for k in specs])
+    for ct, c in hits:
+        out.print(f"[bold]{ct.name}.{c.name}[/bold] — {c.title}")
+        out.print(c.explain or "(no explanation)")
+        if c.needs:
+            out.print(f"needs from a load case: {', '.join(c.needs)}")
+        out.print(f"default safety-factor class: {c.sf_kind}\n")
+
+
+@app.command()
+def schema(output: Annotated[Path | None, typer.Option("--output", "-o", help="write to a file")] = None) -> None:
+    """Print the JSON Schema of the design-file format."""
+    import json
+
+    from mechverify.design.schema import design_schema
+
+    text = json.dumps(design_schema(), indent=2, sort_keys=True) + "\n"
+    if output:
+        _write_atomic(output, text)
+    else:
+        sys.stdout.write(text)
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: runs the app and turns every error into a message and exit status 2."""
+    try:
+        app(args=argv, standalone_mode=False)
+    except typer.Exit as exc:
+        return exc.exit_code
+    except Invalid as exc:
+        err.print(f"[red]error:[/red] {exc}", markup=True, soft_wrap=True)
+        return 2
+    except MechverifyError as exc:
+        err.print(f"[red]error:[/red] {exc}", soft_wrap=True)
+        return 2
+    except (typer.BadParameter, typer.Abort) as exc:  # click errors
+        err.print(f"error: {exc}")
+        return 2
+    except Exception as exc:  # click usage errors and anything unforeseen
+        import click
+
+        if isinstance(exc, click.ClickException):
+            exc.show()
+            return 2
+        err.print(f"[red]internal error:[/red] {type(exc).__name__}: {exc}\n"
+                  "This is a bug in mechverify; please report it with the design file.")
+        return 3
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,428 @@
+"""Read and validate a design file (TOML), reporting every error at once with its key path.
+
+Top-level tables: ``design`` (name, revision, description, include), ``requirements``,
+``materials``, ``templates``, ``profiles``, ``components``, ``load_cases``. The format is
+documented in ``docs/design-files.md``; its JSON Schema comes from :mod:`mechverify.design.schema`.
+No code is executed: values are strings with units, numbers, booleans and names.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY, ComponentType, Field
+from mechverify.errors import MechverifyError, suggest
+from mechverify.materials import MaterialLibrary, default_library, material_from_dict
+from mechverify.materials.material import PROPERTY_DIMENSIONS
+from mechverify.units import DIMENSIONS, as_quantity
+
+TOP_KEYS = ("design", "requirements", "materials", "templates", "profiles", "components", "load_cases")
+DESIGN_KEYS = ("name", "revision", "description", "include", "author")
+REQUIREMENT_FIELDS = (
+    Field("g", "acceleration", "standard gravity used for self-weight", default="9.80665 m/s^2"),
+    Field("bearing_life", "time", "required L10 life of rolling bearings", default="10000 h"),
+    Field("deflection_limit", "float", "allowed deflection as a fraction of the span (e.g. 0.002 = L/500)",
+          default=0.002),
+    Field("safety_factors", "table", "required safety factor per check class: " + ", ".join(DEFAULT_SAFETY_FACTORS)),
+)
+
+
+class DesignFileError(MechverifyError):
+    """A design file is invalid. ``errors`` lists ``(key path, message)`` pairs, all of them."""
+
+    def __init__(self, errors: list[tuple[str, str]], file: str = ""):
+        self.errors = list(errors)
+        self.file = file
+        head = f"{file}: " if file else ""
+        n = len(self.errors)
+        lines = [f"{head}{n} error{'s' if n != 1 else ''} in the design file:"]
+        lines += [f"  {path}: {msg}" if path else f"  {msg}" for path, msg in self.errors]
+        super().__init__("\n".join(lines))
+
+
+@dataclass
+class Entry:
+    """One validated entry of a typed section (a component or a profile)."""
+
+    name: str
+    type: ComponentType
+    params: dict[str, Any]  # validated values: quantities, materials, strings ...
+    raw: dict[str, Any]  # as written in the file
+    checks: dict[str, dict[str, Any]] = field(default_factory=dict)  # overrides per check
+    obj: Any = None  # the built component
+
+
+@dataclass
+class DesignData:
+    path: Path | None
+    files: list[Path]
+    name: str
+    revision: str
+    description: str
+    requirements: dict[str, Any]
+    safety_factors: dict[str, float]
+    materials: MaterialLibrary
+    profiles: dict[str, Entry]
+    components: dict[str, Entry]
+    load_cases: dict[str, dict[str, dict[str, Any]]]  # case -> component -> load name -> value
+    load_case_docs: dict[str, str]
+    raw: dict[str, Any]
+
+
+class _Collector:
+    def __init__(self) -> None:
+        self.errors: list[tuple[str, str]] = []
+
+    def add(self, path: str, msg: str) -> None:
+        self.errors.append((path, msg))
+
+    def unknown_keys(self, table: Mapping[str, Any], allowed: Any, path: str) -> None:
+        allowed = list(allowed)
+        for k in table:
+            if k not in allowed:
+                hint = suggest(str(k), allowed, 1)
+                self.add(f"{path}.{k}" if path else str(k),
+                         "unknown key" + (f"; did you mean {hint[0]!r}?" if hint else
+                                          f" (allowed: {', '.join(allowed)})"))
+
+
+def _describe(v: Any) -> str:
+    return f'"{v}"' if isinstance(v, str) else repr(v)
+
+
+def _a(kind: str) -> str:
+    word = kind.replace("_", " ")
+    return ("an " if word[0] in "aeiou" else "a ") + word
+
+
+def validate_value(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    """Check one value against its field; record an error and return ``None`` when it is bad."""
+    kind = f.kind
+    if kind in DIMENSIONS:
+        if isinstance(v, bool) or not isinstance(v, str | int | float):
+            col.add(path, f"expected {_a(kind)} as a string with units, got {_describe(v)}")
+            return None
+        if isinstance(v, int | float) and kind != "dimensionless":
+            col.add(path, f'expected {_a(kind)}, got the bare number {v!r}; write it with units, e.g. "{v} '
+                          f'{ {"length": "mm", "force": "N", "pressure": "MPa", "torque": "N*m"}.get(kind, "...")}"')
+            return None
+        try:
+            return as_quantity(v, kind, path)
+        except MechverifyError as exc:
+            msg = str(exc).split(": ", 1)[-1]
+            msg = msg.replace(f"got {v}", f"got {_describe(v)}") if isinstance(v, str) else msg
+            col.add(path, msg)
+            return None
+    if kind == "str":
+        if not isinstance(v, str):
+            col.add(path, f"expected a string, got {_describe(v)}")
+            return None
+        return v
+    if kind == "bool":
+        if not isinstance(v, bool):
+            col.add(path, f"expected true or false, got {_describe(v)}")
+            return None
+        return v
+    if kind in ("int", "float"):
+        ok = isinstance(v, int) if kind == "int" else isinstance(v, int | float)
+        if isinstance(v, bool) or not ok:
+            col.add(path, f"expected {'an integer' if kind == 'int' else 'a number'}, got {_describe(v)}")
+            return None
+        return v
+    if kind == "choice":
+        if v not in f.choices:
+            hint = suggest(str(v), f.choices, 1)
+            col.add(path, f"expected one of {', '.join(repr(c) for c in f.choices)}, got {_describe(v)}"
+                          + (f"; did you mean {hint[0]!r}?" if hint else ""))
+            return None
+        return v
+    if kind == "material":
+        if not isinstance(v, str):
+            col.add(path, f"expected a material name, got {_describe(v)}")
+            return None
+        try:
+            return ctx["materials"].get(v)
+        except MechverifyError as exc:
+            col.add(path, str(exc))
+            return None
+    if kind == "ref":
+        names = ctx.get(f.ref, {})
+        if not isinstance(v, str) or v not in names:
+            hint = suggest(str(v), names, 1)
+            col.add(path, f"expected the name of an entry of [{f.ref}], got {_describe(v)}"
+                          + (f"; did you mean {hint[0]!r}?" if hint else f" (defined: {', '.join(names) or 'none'})"))
+            return None
+        return v
+    if kind == "list":
+        if not isinstance(v, list):
+            col.add(path, f"expected a list, got {_describe(v)}")
+            return None
+        item = Field(f.name, f.item or "str", choices=f.choices, ref=f.ref)
+        out = [validate_value(item, x, f"{path}[{i}]", col, ctx) for i, x in enumerate(v)]
+        return None if any(x is None for x in out) else out
+    if kind == "table":
+        if not isinstance(v, dict):
+            col.add(path, f"expected a table, got {_describe(v)}")
+            return None
+        return v
+    raise AssertionError(kind)
+
+
+def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: str, col: _Collector,
+                     ctx: dict[str, Any], extra_keys: tuple[str, ...] = ()) -> dict[str, Any]:
+    col.unknown_keys(table, [f.name for f in fields] + list(extra_keys), path)
+    out: dict[str, Any] = {}
+    for f in fields:
+        if f.name in table:
+            val = validate_value(f, table[f.name], f"{path}.{f.name}", col, ctx)
+            if val is not None:
+                out[f.name] = val
+        elif f.required:
+            what = _a(f.kind) if f.kind in DIMENSIONS else f.kind
+            col.add(f"{path}.{f.name}", f"missing: {f.doc or 'required'} ({what})")
+        elif f.default is not None:
+            out[f.name] = validate_value(f, f.default, f"{path}.{f.name}", col, ctx)
+    return out
+
+
+def _read_toml(path: Path, col: _Collector, where: str) -> dict[str, Any]:
+    try:
+        with path.open("rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError:
+        col.add(where, f"file not found: {path}")
+    except IsADirectoryError:
+        col.add(where, f"is a directory, not a design file: {path}")
+    except tomllib.TOMLDecodeError as exc:
+        col.add(where, f"not valid TOML: {exc}")
+    except (OSError, UnicodeDecodeError) as exc:
+        col.add(where, f"cannot read {path}: {exc}")
+    return {}
+
+
+def _merge_includes(doc: dict[str, Any], base: Path | None, col: _Collector, allow_outside: bool,
+                    files: list[Path]) -> dict[str, Any]:
+    design = doc.get("design", {})
+    includes = design.get("include", []) if isinstance(design, dict) else []
+    if not includes:
+        return doc
+    if not isinstance(includes, list) or not all(isinstance(i, str) for i in includes):
+        col.add("design.include", "expected a list of relative file paths")
+        return doc
+    root = base.parent.resolve() if base else Path.cwd().resolve()
+    merged = {k: (dict(v) if isinstance(v, dict) else v) for k, v in doc.items()}
+    for i, rel in enumerate(includes):
+        where = f"design.include[{i}]"
+        target = (root / rel).resolve()
+        if not allow_outside and not target.is_relative_to(root):
+            col.add(where, f"{rel!r} is outside the design's folder ({root}); pass --allow-outside-includes "
+                           "to allow it")
+            continue
+        inc = _read_toml(target, col, where)
+        files.append(target)
+        for key, table in inc.items():
+            if key not in ("materials", "templates", "profiles", "components"):
+                col.add(f"{where}: {key}", "an included file may only hold [materials], [templates], "
+                                           "[profiles] and [components]")
+                continue
+            if not isinstance(table, dict):
+                continue
+            dest = merged.setdefault(key, {})
+            for name, entry in table.items():
+                if name in dest:
+                    col.add(f"{key}.{name}", f"defined both in the design and in {rel!r}")
+                else:
+                    dest[name] = entry
+    return merged
+
+
+def _materials(doc: dict[str, Any], col: _Collector) -> MaterialLibrary:
+    lib = MaterialLibrary(parent=default_library())
+    table = doc.get("materials", {})
+    if not isinstance(table, dict):
+        col.add("materials", "expected a table of materials")
+        return lib
+    for name, entry in table.items():
+        path = f"materials.{name}"
+        if not isinstance(entry, dict):
+            col.add(path, "expected a table")
+            continue
+        try:
+            if "base" in entry:
+                base = lib.get(entry["base"])
+                changes = {k: v for k, v in entry.items() if k != "base"}
+                col.unknown_keys(changes, list(PROPERTY_DIMENSIONS), path)
+                ok = {}
+                for k, v in changes.items():
+                    if k in PROPERTY_DIMENSIONS:
+                        q = validate_value(Field(k, PROPERTY_DIMENSIONS[k]), v, f"{path}.{k}", col, {})
+                        if q is not None:
+                            ok[k] = q
+                lib.add(base.with_(name=name, **ok))
+            else:
+                lib.add(material_from_dict({"name": name, **entry}, where=path))
+        except MechverifyError as exc:
+            msg = str(exc)
+            col.add(path, msg.split(f"{path}.", 1)[-1] if msg.startswith(path) else msg)
+    return lib
+
+
+def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict[str, Any],
+                   templates: dict[str, Any]) -> dict[str, Entry]:
+    types = REGISTRY.in_section(section)
+    out: dict[str, Entry] = {}
+    table = doc.get(section, {})
+    if not isinstance(table, dict):
+        col.add(section, "expected a table")
+        return out
+    for name, raw in table.items():
+        path = f"{section}.{name}"
+        if not isinstance(raw, dict):
+            col.add(path, "expected a table")
+            continue
+        if "extends" in raw:
+            base = templates.get(raw["extends"])
+            if not isinstance(base, dict):
+                hint = suggest(str(raw["extends"]), templates, 1)
+                col.add(f"{path}.extends", f"no template {raw['extends']!r}" +
+                        (f"; did you mean {hint[0]!r}?" if hint else ""))
+                continue
+            raw = {**base, **{k: v for k, v in raw.items() if k != "extends"}}
+        tname = raw.get("type")
+        if tname not in types:
+            hint = suggest(str(tname), types, 1)
+            col.add(f"{path}.type", (f"unknown type {tname!r}" if tname is not None else "missing") +
+                    (f"; did you mean {hint[0]!r}?" if hint else f" (known: {', '.join(sorted(types))})"))
+            continue
+        ct = types[tname]
+        body = {k: v for k, v in raw.items() if k not in ("type", "checks")}
+        params = _validate_fields(ct.fields, body, path, col, ctx)
+        checks: dict[str, dict[str, Any]] = {}
+        overrides = raw.get("checks", {})
+        if not isinstance(overrides, dict):
+            col.add(f"{path}.checks", "expected a table of check settings")
+            overrides = {}
+        known = {c.name: c for c in ct.checks}
+        col.unknown_keys(overrides, known, f"{path}.checks")
+        for cname, setting in overrides.items():
+            if cname not in known:
+                continue
+            cpath = f"{path}.checks.{cname}"
+            if isinstance(setting, bool):
+                checks[cname] = {"enabled": setting}
+            elif isinstance(setting, dict):
+                col.unknown_keys(setting, ("enabled", "required_sf"), cpath)
+                sf = setting.get("required_sf")
+                if sf is not None and (isinstance(sf, bool) or not isinstance(sf, int | float) or sf <= 0):
+                    col.add(f"{cpath}.required_sf", f"expected a positive number, got {_describe(sf)}")
+                checks[cname] = {k: v for k, v in setting.items() if k in ("enabled", "required_sf")}
+            else:
+                col.add(cpath, "expected true, false or a table such as { required_sf = 2.0 }, "
+                               f"got {_describe(setting)}")
+        out[name] = Entry(name, ct, params, raw, checks)
+    return out
+
+
+def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[str, Any]) -> None:
+    n_before = len(col.errors)
+    for e in entries.values():
+        path = f"{section}.{e.name}"
+        if any(p == path or p.startswith(path + ".") for p, _ in col.errors[:n_before]):
+            continue  # its fields already failed validation
+        try:
+            e.obj = e.type.build(e.params, ctx)
+        except MechverifyError as exc:
+            col.add(path, str(exc))
+
+
+def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False) -> DesignData:
+    """Validate a parsed TOML document; raise :class:`DesignFileError` listing every problem."""
+    col = _Collector()
+    files = [path.resolve()] if path else []
+    doc = _merge_includes(doc, path, col, allow_outside, files)
+    col.unknown_keys(doc, TOP_KEYS, "")
+    design = doc.get("design", {})
+    if not isinstance(design, dict):
+        col.add("design", "expected a table")
+        design = {}
+    col.unknown_keys(design, DESIGN_KEYS, "design")
+    name = design.get("name")
+    if not isinstance(name, str) or not name.strip():
+        col.add("design.name", "missing: the design's name (a string)")
+    revision = design.get("revision", "")
+    if not isinstance(revision, str | int):
+        col.add("design.revision", f"expected a string, got {_describe(revision)}")
+    req_raw = doc.get("requirements", {})
+    if not isinstance(req_raw, dict):
+        col.add("requirements", "expected a table")
+        req_raw = {}
+    requirements = _validate_fields(REQUIREMENT_FIELDS, req_raw, "requirements", col, {})
+    sfs = dict(DEFAULT_SAFETY_FACTORS)
+    for k, v in (requirements.pop("safety_factors", None) or {}).items():
+        p = f"requirements.safety_factors.{k}"
+        if k not in DEFAULT_SAFETY_FACTORS:
+            hint = suggest(k, DEFAULT_SAFETY_FACTORS, 1)
+            col.add(p, "unknown check class" + (f"; did you mean {hint[0]!r}?" if hint else ""))
+        elif isinstance(v, bool) or not isinstance(v, int | float) or v <= 0:
+            col.add(p, f"expected a positive number, got {_describe(v)}")
+        else:
+            sfs[k] = float(v)
+    materials = _materials(doc, col)
+    templates = doc.get("templates", {}) if isinstance(doc.get("templates", {}), dict) else {}
+    ctx: dict[str, Any] = {"materials": materials, "requirements": requirements,
+                           "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {}}
+    profiles = _typed_section(doc, "profiles", col, ctx, templates)
+    ctx["profiles"] = profiles
+    _build(profiles, "profiles", col, ctx)
+    ctx["profile_objects"] = {k: e.obj for k, e in profiles.items()}
+    components = _typed_section(doc, "components", col, ctx, templates)
+    ctx["components"] = components
+    load_cases, docs = _load_cases(doc, components, col, ctx)
+    _build(components, "components", col, ctx)
+    if col.errors:
+        raise DesignFileError(col.errors, str(path) if path else "")
+    return DesignData(path, files, name, str(revision), str(design.get("description", "")), requirements, sfs,
+                      materials, profiles, components, load_cases, docs, doc)
+
+
+def _load_cases(doc: dict[str, Any], components: dict[str, Entry], col: _Collector,
+                ctx: dict[str, Any]) -> tuple[dict[str, dict[str, dict[str, Any]]], dict[str, str]]:
+    out: dict[str, dict[str, dict[str, Any]]] = {}
+    docs: dict[str, str] = {}
+    table = doc.get("load_cases", {})
+    if not isinstance(table, dict):
+        col.add("load_cases", "expected a table of load cases")
+        return out, docs
+    for case, body in table.items():
+        path = f"load_cases.{case}"
+        if not isinstance(body, dict):
+            col.add(path, "expected a table")
+            continue
+        docs[case] = str(body.get("description", ""))
+        out[case] = {}
+        for comp, loads in body.items():
+            if comp == "description":
+                continue
+            if comp not in components:
+                hint = suggest(comp, components, 1)
+                col.add(f"{path}.{comp}", "no such component" + (f"; did you mean {hint[0]!r}?" if hint else ""))
+                continue
+            if not isinstance(loads, dict):
+                col.add(f"{path}.{comp}", "expected a table of loads")
+                continue
+            out[case][comp] = _validate_fields(components[comp].type.loads, loads, f"{path}.{comp}", col, ctx)
+    return out, docs
+
+
+def load_file(path: str | Path, allow_outside: bool = False) -> DesignData:
+    """Read and validate one design file."""
+    p = Path(path)
+    col = _Collector()
+    doc = _read_toml(p, col, str(p))
+    if col.errors:
+        raise DesignFileError(col.errors)
+    return parse(doc, p, allow_outside)

@@ -1,0 +1,101 @@
+"""The JSON Schema of the design-file format, generated from the registered component types.
+
+Editors that understand JSON Schema for TOML (e.g. Taplo / Even Better TOML) validate and complete
+design files with it: ``mechverify schema > design.schema.json``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from mechverify.design.loader import DESIGN_KEYS, REQUIREMENT_FIELDS
+from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY, ComponentType, Field
+from mechverify.materials.material import PROPERTY_DIMENSIONS
+from mechverify.units import DIMENSIONS
+
+QUANTITY_PATTERN = r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[^\d\s].*$"
+
+
+def field_schema(f: Field) -> dict[str, Any]:
+    doc = f.doc
+    if f.kind in DIMENSIONS and f.kind != "dimensionless":
+        s: dict[str, Any] = {"type": "string", "pattern": QUANTITY_PATTERN,
+                             "description": f"{doc} [{f.kind.replace('_', ' ')}, e.g. '{DIMENSIONS[f.kind][1]}']"}
+    elif f.kind == "dimensionless":
+        s = {"type": ["number", "string"], "description": doc}
+    elif f.kind in ("str", "material", "ref"):
+        s = {"type": "string", "description": doc}
+    elif f.kind == "choice":
+        s = {"enum": list(f.choices), "description": doc}
+    elif f.kind == "int":
+        s = {"type": "integer", "description": doc}
+    elif f.kind == "float":
+        s = {"type": "number", "description": doc}
+    elif f.kind == "bool":
+        s = {"type": "boolean", "description": doc}
+    elif f.kind == "list":
+        s = {"type": "array", "items": field_schema(Field(f.name, f.item or "str", choices=f.choices)),
+             "description": doc}
+    else:
+        s = {"type": "object", "description": doc}
+    if f.default is not None:
+        s["default"] = f.default
+    return s
+
+
+def _object(fields: tuple[Field, ...], extra: dict[str, Any] | None = None) -> dict[str, Any]:
+    props = {f.name: field_schema(f) for f in fields}
+    props.update(extra or {})
+    req = [f.name for f in fields if f.required]
+    out: dict[str, Any] = {"type": "object", "properties": props, "additionalProperties": False}
+    if req:
+        out["required"] = req
+    return out
+
+
+def _typed(ct: ComponentType) -> dict[str, Any]:
+    check_setting = {"oneOf": [{"type": "boolean"}, {
+        "type": "object", "additionalProperties": False,
+        "properties": {"enabled": {"type": "boolean"}, "required_sf": {"type": "number", "exclusiveMinimum": 0}}}]}
+    checks = {c.name: {**check_setting, "description": c.title} for c in ct.checks}
+    body = _object(ct.fields, {"type": {"const": ct.name},
+                               "checks": {"type": "object", "properties": checks, "additionalProperties": False}})
+    body["required"] = ["type", *body.get("required", [])]
+    body["description"] = ct.doc
+    return body
+
+
+def design_schema() -> dict[str, Any]:
+    """The JSON Schema (draft 2020-12) of a design file."""
+    from mechverify.design import adapters  # noqa: F401
+
+    comps = REGISTRY.in_section("components")
+    profiles = REGISTRY.in_section("profiles")
+    material_props = {k: field_schema(Field(k, v)) for k, v in PROPERTY_DIMENSIONS.items()}
+    loads_any = {"type": "object", "description": "loads of one component in this case (keys depend on its type)"}
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "mechverify design file",
+        "type": "object",
+        "additionalProperties": False,
+        "required": ["design"],
+        "properties": {
+            "design": {"type": "object", "additionalProperties": False, "required": ["name"],
+                       "properties": {k: ({"type": "array", "items": {"type": "string"}} if k == "include"
+                                          else {"type": ["string", "integer"]}) for k in DESIGN_KEYS}},
+            "requirements": _object(REQUIREMENT_FIELDS[:-1], {"safety_factors": {
+                "type": "object", "additionalProperties": False,
+                "properties": {k: {"type": "number", "exclusiveMinimum": 0, "default": v}
+                               for k, v in DEFAULT_SAFETY_FACTORS.items()}}}),
+            "materials": {"type": "object", "additionalProperties": {
+                "type": "object", "properties": {"base": {"type": "string"}, **material_props}}},
+            "templates": {"type": "object", "additionalProperties": {"type": "object"}},
+            "profiles": {"type": "object", "additionalProperties": {"oneOf": [_typed(p) for p in profiles.values()]}
+                         if profiles else {"type": "object"}},
+            "components": {"type": "object", "additionalProperties": {
+                "oneOf": [_typed(c) for c in comps.values()] + [{"type": "object", "required": ["extends"]}]}},
+            "load_cases": {"type": "object", "additionalProperties": {
+                "type": "object", "properties": {"description": {"type": "string"}},
+                "additionalProperties": loads_any}},
+        },
+    }

@@ -1,0 +1,109 @@
+"""What a design file may contain: typed fields, and the registry of component types.
+
+A :class:`ComponentType` declares its parameters (:class:`Field`), the loads it reads from each
+load case, how to build the component, and its checks. The loader validates a design file
+against these declarations (every error with its key path), the JSON Schema is generated from
+them, and ``Design.verify()`` runs the checks. Adapters for the built-in component types live in
+:mod:`mechverify.design.adapters`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from mechverify.units import DIMENSIONS
+
+#: Field kinds besides the dimension names of :data:`mechverify.units.DIMENSIONS`.
+PLAIN_KINDS = ("str", "int", "float", "bool", "material", "choice", "list", "table", "ref")
+
+
+@dataclass(frozen=True)
+class Field:
+    """One key of a design-file table.
+
+    ``kind`` is a dimension name (``"length"``: the value is a string with units such as
+    ``"350 mm"``) or one of :data:`PLAIN_KINDS`. ``ref`` names another section of the design
+    (e.g. ``"profiles"``) whose entry the value must name. ``item`` is the kind of a list's items.
+    """
+
+    name: str
+    kind: str
+    doc: str = ""
+    required: bool = False
+    default: Any = None
+    choices: tuple[str, ...] = ()
+    item: str = ""
+    ref: str = ""
+
+    def __post_init__(self) -> None:
+        for k in (self.kind, *([self.item] if self.item else [])):
+            if k not in DIMENSIONS and k not in PLAIN_KINDS:
+                raise ValueError(f"Field {self.name}: unknown kind {k!r}")
+
+
+@dataclass(frozen=True)
+class CheckSpec:
+    """A check a component type offers.
+
+    ``run(component, loads, context) -> CheckResult | list[CheckResult]``; ``loads`` is the mapping of
+    this component's load fields in one load case (``None`` when the check needs no loads, i.e.
+    ``needs`` is empty); ``context`` gives requirements and the check's required safety factor.
+    ``sf_kind`` names the project-wide safety-factor class it uses by default (``static``,
+    ``buckling``, ``fatigue``, ...).
+    """
+
+    name: str
+    run: Callable[..., Any]
+    title: str = ""
+    needs: tuple[str, ...] = ()
+    sf_kind: str = "static"
+    default: bool = True
+    explain: str = ""
+
+
+@dataclass(frozen=True)
+class ComponentType:
+    """A kind of component a design file can declare with ``type = "<name>"``."""
+
+    name: str
+    doc: str
+    fields: tuple[Field, ...]
+    build: Callable[[Mapping[str, Any], Any], Any]
+    loads: tuple[Field, ...] = ()
+    checks: tuple[CheckSpec, ...] = ()
+    section: str = "components"
+
+    def field(self, name: str) -> Field:
+        return {f.name: f for f in self.fields}[name]
+
+
+@dataclass
+class Registry:
+    types: dict[str, ComponentType] = field(default_factory=dict)
+
+    def register(self, ct: ComponentType) -> ComponentType:
+        if ct.name in self.types:
+            raise ValueError(f"component type {ct.name!r} registered twice")
+        self.types[ct.name] = ct
+        return ct
+
+    def in_section(self, section: str) -> dict[str, ComponentType]:
+        return {k: v for k, v in self.types.items() if v.section == section}
+
+
+REGISTRY = Registry()
+
+#: Safety-factor classes a design's ``[requirements.safety_factors]`` may set, with defaults.
+DEFAULT_SAFETY_FACTORS: dict[str, float] = {
+    "static": 2.0,
+    "buckling": 3.0,
+    "fatigue": 1.5,
+    "self_locking": 1.0,
+    "motor": 1.5,
+    "bearing": 1.0,
+    "deflection": 1.0,
+    "speed": 1.25,
+    "pressure": 1.0,
+}
