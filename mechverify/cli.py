@@ -5,7 +5,6 @@ Exit codes: 0 all checks pass, 1 a check fails (or a margin was lost, for ``diff
 
 from __future__ import annotations
 
-import os
 import subprocess
 import sys
 import tempfile
@@ -22,8 +21,9 @@ from mechverify.units import fmt
 
 app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
                   help="Verify the mechanical design of small machines and robots.")
-out = Console(highlight=False)
-err = Console(stderr=True, highlight=False)
+_WIDTH = None if sys.stdout.isatty() else 160  # CI logs: wide enough for the results table
+out = Console(highlight=False, width=_WIDTH)
+err = Console(stderr=True, highlight=False, width=_WIDTH)
 
 COLOURS = {"pass": "green", "warn": "yellow", "fail": "red"}
 
@@ -52,15 +52,9 @@ def results_table(rs: ResultSet) -> Table:
 
 
 def _write_atomic(path: Path, text: str) -> None:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    from mechverify.fileio import atomic_write
+
+    atomic_write(path, text)
 
 
 def _load_and_verify(paths: list[Path], allow_outside: bool, quiet: bool) -> list[tuple[Any, ResultSet]]:
@@ -272,7 +266,8 @@ def schema(output: Annotated[Path | None, typer.Option("--output", "-o", help="w
 def main(argv: list[str] | None = None) -> int:
     """Entry point: runs the app and turns every error into a message and exit status 2."""
     try:
-        app(args=argv, standalone_mode=False)
+        code = app(args=argv, standalone_mode=False)
+        return int(code or 0)
     except typer.Exit as exc:
         return exc.exit_code
     except Invalid as exc:
@@ -293,7 +288,6 @@ def main(argv: list[str] | None = None) -> int:
         err.print(f"[red]internal error:[/red] {type(exc).__name__}: {exc}\n"
                   "This is a bug in mechverify; please report it with the design file.")
         return 3
-    return 0
 
 
 if __name__ == "__main__":

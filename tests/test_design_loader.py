@@ -8,33 +8,12 @@ import textwrap
 
 import pytest
 
-from mechverify import Q
-from mechverify.checks import CheckResult
-from mechverify.design import REGISTRY, CheckSpec, ComponentType, DesignFileError, Field, load
-from mechverify.units import to_si
-
-
-def _stress(rod, loads, ctx):
-    sigma = Q(to_si(loads["force"], "force") / to_si(rod["area"], "area"), "Pa").to("MPa")
-    return CheckResult("stress", "", sigma, rod["material"].yield_strength, title="Axial stress",
-                       formula=r"\sigma = F/A", source="Shigley 10th ed., Eq. 3-22")
-
-
-ROD = ComponentType(
-    "test_rod", "a straight rod in tension",
-    fields=(Field("length", "length", required=True), Field("area", "area", required=True),
-            Field("material", "material", required=True), Field("finish", "choice", choices=("ground", "machined"))),
-    build=lambda p, ctx: p,
-    loads=(Field("force", "force", required=True),),
-    checks=(CheckSpec("stress", _stress, "Axial stress", needs=("force",)),),
-)
+from mechverify.design import DesignFileError, load
 
 
 @pytest.fixture(autouse=True)
-def rod_type():
-    REGISTRY.types["test_rod"] = ROD
+def _rod(rod_type):
     yield
-    REGISTRY.types.pop("test_rod", None)
 
 
 def write(tmp_path, text, name="design.toml"):

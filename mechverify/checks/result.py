@@ -261,6 +261,8 @@ def _encode(v: Any) -> Any:
         return v.value
     if isinstance(v, list | tuple):
         return [_encode(x) for x in v]
+    if isinstance(v, dict):
+        return {str(k): _encode(x) for k, x in v.items()}
     return v
 
 
@@ -272,4 +274,6 @@ def _decode(v: Any) -> Any:
         return np.asarray(v["array"])
     if isinstance(v, list):
         return [_decode(x) for x in v]
+    if isinstance(v, dict):
+        return {k: _decode(x) for k, x in v.items()}
     return v

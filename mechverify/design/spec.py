@@ -74,6 +74,8 @@ class ComponentType:
     loads: tuple[Field, ...] = ()
     checks: tuple[CheckSpec, ...] = ()
     section: str = "components"
+    #: ``figures(component, results) -> [(caption, matplotlib Figure), ...]`` for the report.
+    figures: Callable[[Any, Any], list[tuple[str, Any]]] | None = None
 
     def field(self, name: str) -> Field:
         return {f.name: f for f in self.fields}[name]

@@ -1,0 +1,75 @@
+"""Figures for the report: matplotlib figures embedded as vector SVG data URIs.
+
+Plotters are registered per check name (:func:`plotter`); each receives a
+:class:`~mechverify.checks.CheckResult` and returns a figure from its ``details``, or ``None``.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+from collections.abc import Callable
+from typing import Any
+
+from mechverify.checks import CheckResult
+
+PLOTTERS: dict[str, Callable[[CheckResult], Any]] = {}
+
+
+def plotter(*check_names: str) -> Callable:
+    """Register a plot function for the named checks."""
+
+    def deco(f: Callable[[CheckResult], Any]) -> Callable[[CheckResult], Any]:
+        for n in check_names:
+            PLOTTERS[n] = f
+        return f
+
+    return deco
+
+
+def new_figure(width: float = 5.5, height: float = 3.2) -> tuple[Any, Any]:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(width, height), layout="constrained")
+    ax.grid(True, lw=0.4, alpha=0.5)
+    return fig, ax
+
+
+def svg_data_uri(fig: Any) -> str:
+    """The figure as an SVG data URI (vector, self-contained); closes the figure."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    buf = io.BytesIO()
+    with matplotlib.rc_context({"svg.fonttype": "path", "svg.hashsalt": "mechverify"}):
+        fig.savefig(buf, format="svg", metadata={"Date": None})
+    plt.close(fig)
+    return "data:image/svg+xml;base64," + base64.b64encode(buf.getvalue()).decode()
+
+
+def figure_for(result: CheckResult) -> str | None:
+    """A data URI of the check's figure, when a plotter is registered and has data."""
+    f = PLOTTERS.get(result.check)
+    if f is None:
+        return None
+    fig = f(result)
+    return svg_data_uri(fig) if fig is not None else None
+
+
+def utilisation_chart(results: list[CheckResult]) -> str:
+    """Horizontal bars of factored utilisation per check, coloured by verdict, with the limit line."""
+    colours = {"pass": "#2da44e", "warn": "#bf8700", "fail": "#cf222e"}
+    rs = sorted(results, key=lambda r: r.factored_utilisation)
+    fig, ax = new_figure(6.5, 0.28 * max(len(rs), 3) + 0.8)
+    vals = [min(r.factored_utilisation, 2.0) for r in rs]
+    ax.barh(range(len(rs)), vals, color=[colours[r.verdict.value] for r in rs])
+    ax.set_yticks(range(len(rs)), [f"{r.component}: {r.title or r.check}" for r in rs], fontsize=7)
+    ax.axvline(1.0, color="k", lw=1)
+    ax.set_xlim(0, max(1.2, max(vals, default=1) * 1.05))
+    ax.set_xlabel("utilisation × required SF (fail above 1)")
+    return svg_data_uri(fig)

@@ -1,0 +1,176 @@
+"""Build the report's content from designs and results, render it with Jinja2, write HTML or PDF."""
+
+from __future__ import annotations
+
+import datetime as _dt
+import platform
+import re
+import subprocess
+from importlib import metadata, resources
+from pathlib import Path
+from typing import Any
+
+import jinja2
+import pint
+from markupsafe import Markup
+
+from mechverify.checks import CheckResult, ResultSet
+from mechverify.errors import InputError
+from mechverify.fileio import atomic_write
+from mechverify.materials import Material
+from mechverify.materials.material import PROPERTY_DIMENSIONS
+from mechverify.reports.mathtext import formula_html
+from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
+from mechverify.units import fmt
+
+_PACKAGES = ("numpy", "scipy", "scikit-fem", "pint", "matplotlib", "jinja2", "weasyprint", "meshio", "trimesh")
+
+
+def _anchor(*parts: str) -> str:
+    return "-".join(re.sub(r"[^a-z0-9]+", "-", p.lower()).strip("-") for p in parts)
+
+
+def _value(v: Any) -> str:
+    if isinstance(v, pint.Quantity):
+        return fmt(v)
+    if isinstance(v, Material):
+        return v.name
+    if isinstance(v, list | tuple):
+        return ", ".join(_value(x) for x in v)
+    if isinstance(v, float):
+        return f"{v:.4g}"
+    return str(v)
+
+
+def _git_commit(path: Path | None) -> str:
+    if path is None:
+        return ""
+    try:
+        head = subprocess.run(["git", "-C", str(path.parent), "rev-parse", "HEAD"], capture_output=True, text=True,
+                              timeout=5)
+        if head.returncode != 0:
+            return ""
+        dirty = subprocess.run(["git", "-C", str(path.parent), "status", "--porcelain", "--", str(path.parent)],
+                               capture_output=True, text=True, timeout=5).stdout.strip()
+        return head.stdout.strip() + (" (with uncommitted changes)" if dirty else "")
+    except (OSError, subprocess.SubprocessError):
+        return ""
+
+
+def _check_view(r: CheckResult) -> dict[str, Any]:
+    fu = r.factored_utilisation
+    scale = max(1.25, fu)
+    return {
+        "anchor": _anchor(r.component, r.check), "component": r.component, "title": r.title or r.check,
+        "verdict": r.verdict.value, "demand": fmt(r.demand), "capacity": fmt(r.capacity),
+        "u": f"{r.utilisation:.3g}", "fu": f"{fu:.3g}", "sf": f"{r.required_sf:g}",
+        "achieved_sf": "∞" if r.utilisation == 0 else f"{r.safety_factor:.3g}",
+        "bar": f"{min(fu, scale) / scale * 100:.1f}", "limit": f"{100 / scale:.1f}",
+        "load_case": r.load_case, "formula": Markup(formula_html(r.formula)),
+        "inputs": [(k, _value(v)) for k, v in r.inputs.items()], "notes": list(r.notes),
+        "warnings": list(r.warnings), "source": r.source, "figure": figure_for(r),
+    }
+
+
+def _material_view(m: Material) -> dict[str, Any]:
+    props = [{"name": p, "value": fmt(getattr(m, p)), "source": m.source_of(p)}
+             for p in PROPERTY_DIMENSIONS if getattr(m, p) is not None]
+    if m.sn_curve is not None:
+        props.append({"name": "S-N curve", "value": f"{len(m.sn_curve.cycles)} points, R = {m.sn_curve.stress_ratio:g}",
+                      "source": m.sn_curve.source})
+    return {"name": m.name, "props": props}
+
+
+def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
+    from mechverify.design.outputs import file_hashes
+
+    by_comp: dict[str, list[CheckResult]] = {}
+    for r in rs.sorted():
+        by_comp.setdefault(r.component, []).append(r)
+    comps, mats = [], {}
+    entries = getattr(design, "data", None)
+    for name, entry in (entries.components.items() if entries else []):
+        params = []
+        for k, v in entry.params.items():
+            src = v.source if isinstance(v, Material) and v.source else "design file"
+            if isinstance(v, Material):
+                mats[v.name] = v
+            params.append({"name": k, "value": _value(v), "source": src})
+        figures = []
+        if entry.type.figures is not None and entry.obj is not None:
+            for caption, fig in entry.type.figures(entry.obj, [r for r in rs if r.component == name]):
+                figures.append({"caption": caption, "uri": svg_data_uri(fig)})
+        comps.append({"name": name, "anchor": _anchor(name), "type": entry.type.name, "doc": entry.type.doc,
+                      "params": params, "figures": figures, "checks": [_check_view(r) for r in by_comp.get(name, [])]})
+    for name in by_comp:  # results for components not declared in a design file (Python API)
+        if not any(c["name"] == name for c in comps):
+            comps.append({"name": name, "anchor": _anchor(name), "type": "", "doc": "", "params": [], "figures": [],
+                          "checks": [_check_view(r) for r in by_comp[name]]})
+    files = list(getattr(design, "files", []) or [])
+    inputs = []
+    for f in files:
+        try:
+            inputs.append({"name": f.name, "text": f.read_text(encoding="utf-8")})
+        except OSError:
+            pass
+    counts = {v: sum(r.verdict.value == v for r in rs) for v in ("pass", "warn", "fail")}
+    return {
+        "name": getattr(design, "name", rs.name) or rs.name, "revision": getattr(design, "revision", ""),
+        "description": getattr(getattr(design, "data", None), "description", ""),
+        "verdict": rs.verdict.value, "counts": counts, "hashes": file_hashes(files),
+        "commit": _git_commit(getattr(design, "path", None)),
+        "results": [_check_view(r) for r in rs.sorted()],
+        "chart": utilisation_chart(list(rs)) if len(rs) else None,
+        "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
+    }
+
+
+def _software() -> list[tuple[str, str]]:
+    out = [("python", platform.python_version()), ("platform", platform.platform())]
+    for p in _PACKAGES:
+        try:
+            out.append((p, metadata.version(p)))
+        except metadata.PackageNotFoundError:
+            out.append((p, "not installed"))
+    return out
+
+
+def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None) -> str:
+    """The complete self-contained HTML report of one or more verified designs."""
+    from mechverify import __version__
+
+    tpl_dir = resources.files("mechverify.reports").joinpath("templates")
+    env = jinja2.Environment(autoescape=jinja2.select_autoescape(["html", "j2"]), trim_blocks=True,
+                             lstrip_blocks=True, undefined=jinja2.StrictUndefined)
+    template = env.from_string(tpl_dir.joinpath("report.html.j2").read_text(encoding="utf-8"))
+    designs = [_design_view(d, rs) for d, rs in runs]
+    return template.render(
+        title=" / ".join(d["name"] for d in designs) or "design review", designs=designs, version=__version__,
+        date=date or _dt.date.today().isoformat(), software=_software(),
+        css=Markup(tpl_dir.joinpath("report.css").read_text(encoding="utf-8")),
+    )
+
+
+def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path) -> Path:
+    """Write ``path`` (.html or .pdf) atomically; return it."""
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".html", ".htm", ".pdf"):
+        raise InputError(f"report: expected a .html or .pdf file name, got {str(path)!r}")
+    text = render_html(runs)
+    if suffix != ".pdf":
+        return atomic_write(path, text)
+
+    def pdf(tmp: Path) -> None:
+        import logging
+
+        from weasyprint import HTML
+
+        logging.getLogger("weasyprint").setLevel(logging.ERROR)
+        logging.getLogger("fontTools").setLevel(logging.ERROR)
+        HTML(string=text, base_url=str(path.parent)).write_pdf(tmp)
+
+    return atomic_write(path, pdf)
+
+
+__all__ = ["render_html", "write_report"]

@@ -1,0 +1,38 @@
+"""Shared fixtures.
+
+``rod_type`` registers a minimal design-file component type (a rod in tension: sigma = F/A against
+yield, Shigley 10th ed., Eq. 3-22) so the design-file and report machinery can be tested
+independently of the real component adapters.
+"""
+
+import pytest
+
+from mechverify import Q
+from mechverify.checks import CheckResult
+from mechverify.design import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.units import to_si
+
+
+def _stress(rod, loads, ctx):
+    sigma = Q(to_si(loads["force"], "force") / to_si(rod["area"], "area"), "Pa").to("MPa")
+    return CheckResult("stress", "", sigma, rod["material"].yield_strength, title="Axial stress",
+                       formula=r"\sigma = F/A", source="Shigley 10th ed., Eq. 3-22")
+
+
+ROD = ComponentType(
+    "test_rod", "a straight rod in tension",
+    fields=(Field("length", "length", required=True), Field("area", "area", required=True),
+            Field("material", "material", required=True), Field("finish", "choice", choices=("ground", "machined"))),
+    build=lambda p, ctx: p,
+    loads=(Field("force", "force", required=True),),
+    checks=(CheckSpec("stress", _stress, "Axial stress", needs=("force",)),),
+)
+
+
+@pytest.fixture
+def rod_type():
+    REGISTRY.types["test_rod"] = ROD
+    yield
+    REGISTRY.types.pop("test_rod", None)
+
+
