@@ -1,0 +1,558 @@
+"""Motors: brushed DC motors from datasheet constants, steppers from their pull-out curve, hobby
+servos rated in kgf·cm and s/60°, and gear-motors sold as one unit.
+
+Every motor offers the interface the motor-fit checks use:
+
+* ``name``, ``kind`` ("dc", "stepper", "servo", "gearmotor");
+* ``rotor_inertia`` (quantity or ``None``), ``max_speed`` (quantity or ``None``),
+  ``continuous_torque`` (quantity or ``None`` when the datasheet gives no thermal rating);
+* ``available_torque_si(speed, voltage=None)``: the torque the motor can deliver for a short time
+  at that speed [N·m] (its intermittent limit), for speeds in rad/s (arrays accepted);
+* ``torque_speed_curve()``: the limit as (speed, torque) quantity arrays, for plots.
+
+Catalogue entries live in ``components/data/motors.toml``; :func:`motor` looks them up.
+
+References
+----------
+1. maxon motor ag, *maxon DC motor and maxon EC motor: Key information* (catalogue section, 2009
+   and later editions): n = k_n·U_ind, M = k_M·I, k_n·k_M = 30 000/π (rpm, mNm/A), stall
+   torque M_H = k_M·I_A with I_A = U_N/R, speed-torque gradient Δn/ΔM = (30 000/π)·R/k_M²,
+   no-load speed n_0 = k_n·(U_N − I_0·R), mechanical time constant τ_m = J_R·R/k_M².
+2. maxon support article "Motor constants" (k_n and k_M inverse of each other in SI units).
+3. Oriental Motor, *Technical Reference: Motor Sizing Calculations*: a stepper's required torque
+   is compared with its pull-out torque at the operating speed with a safety factor of 1.5-2.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field, fields
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError, UnitError, UnknownNameError
+from mechverify.units import Q, as_quantity, fmt, from_si, to_si
+
+_GRADIENT_UNIT = "rad/s/(N*m)"  # SI unit of the speed-torque gradient
+_DATA = Path(__file__).parent / "data" / "motors.toml"
+
+
+def _opt(value: Any, dim: str, name: str, *, positive: bool = True, allow_zero: bool = False) -> pint.Quantity | None:
+    """None, or the value as a quantity in the SI unit of ``dim``, checked positive."""
+    if value is None:
+        return None
+    v = to_si(value, dim, name)
+    if positive and (v < 0 or (v == 0 and not allow_zero)):
+        rel = "zero or positive" if allow_zero else "positive"
+        raise InputError(f"{name}: must be {rel}, got {fmt(as_quantity(value, dim))}")
+    return from_si(v, dim)
+
+
+def _gradient(value: Any, name: str) -> pint.Quantity | None:
+    if value is None:
+        return None
+    q = Q(value) if isinstance(value, str) else value
+    if not isinstance(q, pint.Quantity) or q.dimensionality != Q(1, _GRADIENT_UNIT).dimensionality:
+        raise UnitError(f"{name}: expected a speed per torque (e.g. 'rpm/mNm'), got {value!r}")
+    v = float(q.to(_GRADIENT_UNIT).magnitude)
+    if not v > 0:
+        raise InputError(f"{name}: must be positive")
+    return Q(v, _GRADIENT_UNIT)
+
+
+def _si(q: pint.Quantity | None) -> float | None:
+    return None if q is None else float(q.magnitude)
+
+
+def _fraction_of(value: Any, name: str) -> float | None:
+    if value is None:
+        return None
+    v = to_si(value, "dimensionless", name)
+    if isinstance(value, pint.Quantity) and str(value.units) == "percent":
+        v = float(value.to("").magnitude)
+    if not 0 < v <= 1:
+        raise InputError(f"{name}: must lie in (0, 1] (give 0.8 or '80 %'), got {v:g}")
+    return v
+
+
+# ============================================================================ brushed DC motor
+@dataclass(frozen=True)
+class DCMotor:
+    """A brushed (or EC, block-commutated) DC motor described by its datasheet line.
+
+    Give the nominal voltage and at least enough of the constants to fix the terminal resistance R
+    and the torque constant k_t (R from ``terminal_resistance`` or U/I_stall; k_t from
+    ``torque_constant``, ``speed_constant`` (k_t = 1/k_n in SI) or M_stall/I_stall). Missing values
+    are derived [1] and listed in ``derived``. Redundant values are checked against each other
+    (k_t·k_n = 1, M_H = k_t·U/R, I_A = U/R, Δn/ΔM = R/k_t², n_0 = k_n(U − R·I_0), τ_m = J·R/k_t²);
+    a disagreement above ``datasheet_tolerance`` raises :class:`InputError` listing every relation
+    that fails, because it means a value was mistyped or taken from another winding.
+    """
+
+    name: str
+    nominal_voltage: Any
+    no_load_speed: Any = None
+    no_load_current: Any = None
+    nominal_speed: Any = None
+    nominal_torque: Any = None  # max. continuous torque
+    nominal_current: Any = None  # max. continuous current
+    stall_torque: Any = None
+    stall_current: Any = None
+    terminal_resistance: Any = None
+    terminal_inductance: Any = None
+    torque_constant: Any = None
+    speed_constant: Any = None
+    speed_torque_gradient: Any = None
+    mechanical_time_constant: Any = None
+    rotor_inertia: Any = None
+    max_speed: Any = None  # limit speed (mechanical)
+    max_efficiency: Any = None
+    thermal_resistance_housing_ambient: Any = None
+    thermal_resistance_winding_housing: Any = None
+    max_winding_temperature: Any = None
+    datasheet_tolerance: float = 0.05
+    source: str = ""
+    notes: tuple[str, ...] = ()
+    derived: frozenset[str] = frozenset()
+    kind: str = field(default="dc", init=False)
+
+    def __post_init__(self) -> None:
+        n = self.name
+        dims = {"nominal_voltage": "voltage", "no_load_speed": "angular_velocity", "no_load_current": "current",
+                "nominal_speed": "angular_velocity", "nominal_torque": "torque", "nominal_current": "current",
+                "stall_torque": "torque", "stall_current": "current", "terminal_resistance": "resistance",
+                "terminal_inductance": "inductance", "torque_constant": "torque_constant",
+                "speed_constant": "speed_constant", "mechanical_time_constant": "time", "rotor_inertia": "inertia",
+                "max_speed": "angular_velocity", "thermal_resistance_housing_ambient": "thermal_resistance",
+                "thermal_resistance_winding_housing": "thermal_resistance", "max_winding_temperature": "temperature"}
+        for f, d in dims.items():
+            allow_zero = f in ("no_load_current",)
+            positive = f != "max_winding_temperature"
+            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", positive=positive,
+                                             allow_zero=allow_zero))
+        if self.nominal_voltage is None:
+            raise InputError(f"{n}.nominal_voltage: required")
+        object.__setattr__(self, "speed_torque_gradient", _gradient(self.speed_torque_gradient,
+                                                                    f"{n}.speed_torque_gradient"))
+        object.__setattr__(self, "max_efficiency", _fraction_of(self.max_efficiency, f"{n}.max_efficiency"))
+        if not 0 < self.datasheet_tolerance < 1:
+            raise InputError(f"{n}.datasheet_tolerance: must lie in (0, 1)")
+        object.__setattr__(self, "notes", tuple(self.notes))
+        self._check_datasheet()
+        self._derive()
+
+    # ------------------------------------------------------------------ datasheet relations
+    def datasheet_relations(self) -> dict[str, tuple[float, float]]:
+        """Each redundant datasheet relation as (datasheet value, value implied by the others), SI [1]."""
+        U = _si(self.nominal_voltage)
+        R, kt, kn = _si(self.terminal_resistance), _si(self.torque_constant), _si(self.speed_constant)
+        MH, IA, I0 = _si(self.stall_torque), _si(self.stall_current), _si(self.no_load_current) or 0.0
+        n0, grad, J, tau = (_si(self.no_load_speed), _si(self.speed_torque_gradient), _si(self.rotor_inertia),
+                            _si(self.mechanical_time_constant))
+        out: dict[str, tuple[float, float]] = {}
+        if kt and kn:
+            out["kt*kn = 1"] = (kt * kn, 1.0)
+        if MH and kt and R:
+            out["stall torque = kt*U/R"] = (MH, kt * U / R)
+        if IA and R:
+            out["stall current = U/R"] = (IA, U / R)
+        if MH and kt and IA and not R:
+            out["stall torque = kt*I_stall"] = (MH, kt * IA)
+        if grad and R and kt:
+            out["gradient = R/kt^2"] = (grad, R / kt**2)
+        if n0 and kn and R:
+            out["no-load speed = kn*(U - R*I0)"] = (n0, kn * (U - R * I0))
+        if tau and J and R and kt:
+            out["mechanical time constant = J*R/kt^2"] = (tau, J * R / kt**2)
+        return out
+
+    def _check_datasheet(self) -> None:
+        bad = []
+        for rel, (given, implied) in self.datasheet_relations().items():
+            if abs(given - implied) > self.datasheet_tolerance * abs(implied):
+                bad.append(f"{rel}: datasheet {given:.5g}, implied {implied:.5g} (SI), off by "
+                           f"{100 * (given / implied - 1):+.1f} %")
+        if bad:
+            raise InputError(f"motor {self.name!r}: inconsistent datasheet (tolerance "
+                             f"{100 * self.datasheet_tolerance:g} %): " + "; ".join(bad))
+
+    def _derive(self) -> None:
+        derived = set(self.derived)
+        U = _si(self.nominal_voltage)
+
+        def put(f: str, v: float, dim: str | None) -> None:
+            object.__setattr__(self, f, from_si(v, dim) if dim else Q(v, _GRADIENT_UNIT))
+            derived.add(f)
+
+        if self.terminal_resistance is None and self.stall_current is not None:
+            put("terminal_resistance", U / _si(self.stall_current), "resistance")
+        if self.torque_constant is None:
+            if self.speed_constant is not None:
+                put("torque_constant", 1.0 / _si(self.speed_constant), "torque_constant")
+            elif self.stall_torque is not None and self.stall_current is not None:
+                put("torque_constant", _si(self.stall_torque) / _si(self.stall_current), "torque_constant")
+        missing = [f for f in ("terminal_resistance", "torque_constant") if getattr(self, f) is None]
+        if missing:
+            raise InputError(f"motor {self.name!r}: cannot determine {' and '.join(missing)}; give them, or the stall "
+                             "current (R = U/I_stall) and stall torque (k_t = M_stall/I_stall)")
+        R, kt = _si(self.terminal_resistance), _si(self.torque_constant)
+        if self.speed_constant is None:
+            put("speed_constant", 1.0 / kt, "speed_constant")
+        if self.stall_torque is None:
+            put("stall_torque", kt * U / R, "torque")
+        if self.stall_current is None:
+            put("stall_current", U / R, "current")
+        if self.speed_torque_gradient is None:
+            put("speed_torque_gradient", R / kt**2, None)
+        if self.no_load_speed is None:
+            put("no_load_speed", _si(self.speed_constant) * (U - R * (_si(self.no_load_current) or 0.0)),
+                "angular_velocity")
+        object.__setattr__(self, "derived", frozenset(derived))
+
+    # ------------------------------------------------------------------ physics (SI)
+    @property
+    def continuous_torque(self) -> pint.Quantity | None:
+        """The nominal (max. continuous) torque."""
+        return self.nominal_torque
+
+    @property
+    def friction_torque(self) -> pint.Quantity:
+        """Friction torque M_R = k_t·I_0 (zero when no no-load current is given)."""
+        return from_si(_si(self.torque_constant) * (_si(self.no_load_current) or 0.0), "torque")
+
+    @property
+    def speed_limit(self) -> pint.Quantity:
+        """The limit speed if given, else the no-load speed."""
+        return self.max_speed if self.max_speed is not None else self.no_load_speed
+
+    def available_torque_si(self, speed: Any, voltage: float | None = None) -> np.ndarray:
+        """Torque on the speed-torque line at ``speed`` [rad/s] for ``voltage`` [V] (default nominal).
+
+        M = (k_n·(U − R·I_0) − ω) / (Δω/ΔM), clipped at zero [1]. The magnitude of the speed is
+        used (motoring in either direction).
+        """
+        U = _si(self.nominal_voltage) if voltage is None else float(voltage)
+        kn, R, I0 = _si(self.speed_constant), _si(self.terminal_resistance), _si(self.no_load_current) or 0.0
+        w = np.abs(np.asarray(speed, float))
+        return np.clip((kn * (U - R * I0) - w) / _si(self.speed_torque_gradient), 0.0, None)
+
+    def current_si(self, torque: Any) -> np.ndarray:
+        """Motor current [A] for a shaft torque [N·m]: I = |M|/k_t + I_0 [1]."""
+        return np.abs(np.asarray(torque, float)) / _si(self.torque_constant) + (_si(self.no_load_current) or 0.0)
+
+    def voltage_si(self, torque: Any, speed: Any) -> np.ndarray:
+        """Terminal voltage [V] needed at a torque and speed: U = R·I + |ω|/k_n [1].
+
+        Conservative in the generating quadrant (torque against speed), where the real voltage is lower.
+        """
+        return (_si(self.terminal_resistance) * self.current_si(torque)
+                + np.abs(np.asarray(speed, float)) / _si(self.speed_constant))
+
+    def torque_speed_curve(self, voltage: Any = None, n: int = 2) -> tuple[pint.Quantity, pint.Quantity]:
+        U = None if voltage is None else to_si(voltage, "voltage", "voltage")
+        w0 = float(self.available_torque_si(0.0, U)) * _si(self.speed_torque_gradient)
+        w = np.linspace(0.0, w0, max(n, 2))
+        return from_si(w, "angular_velocity"), from_si(self.available_torque_si(w, U), "torque")
+
+    def __repr__(self) -> str:
+        return (f"<DCMotor {self.name!r} {fmt(self.nominal_voltage)} M_N={fmt(self.nominal_torque, 'mN*m')} "
+                f"M_H={fmt(self.stall_torque, 'mN*m')}>" if self.nominal_torque is not None else
+                f"<DCMotor {self.name!r} {fmt(self.nominal_voltage)} M_H={fmt(self.stall_torque, 'mN*m')}>")
+
+
+# ============================================================================ stepper
+def _quantity_list(values: Any, dim: str, name: str) -> np.ndarray:
+    if values is None:
+        return np.array([])
+    if isinstance(values, pint.Quantity):
+        return np.atleast_1d(np.asarray(to_si(values, dim, name), float))
+    if isinstance(values, str):
+        raise InputError(f"{name}: give a list of quantities, e.g. ['0 rpm', '300 rpm']")
+    return np.array([to_si(v, dim, f"{name}[{i}]") for i, v in enumerate(values)], float)
+
+
+@dataclass(frozen=True)
+class StepperMotor:
+    """A hybrid stepper described by its pull-out torque curve (points, any units).
+
+    ``pullout_speeds``/``pullout_torques`` are the curve's points (a quantity array or a list of
+    quantities/strings), measured with the driver and supply voltage named in ``drive``. Between
+    points the curve is interpolated linearly; below the first point it keeps the first point's
+    torque (never more, conservative); beyond the last point nothing is known and the available
+    torque is zero. ``max_speed`` defaults to the last point's speed.
+    """
+
+    name: str
+    step_angle: Any
+    holding_torque: Any
+    pullout_speeds: Any = None
+    pullout_torques: Any = None
+    rotor_inertia: Any = None
+    detent_torque: Any = None
+    rated_current: Any = None
+    phase_resistance: Any = None
+    phase_inductance: Any = None
+    rated_voltage: Any = None
+    max_speed: Any = None
+    drive: str = ""  # driver and supply voltage of the pull-out curve
+    source: str = ""
+    notes: tuple[str, ...] = ()
+    kind: str = field(default="stepper", init=False)
+
+    def __post_init__(self) -> None:
+        n = self.name
+        dims = {"step_angle": "angle", "holding_torque": "torque", "rotor_inertia": "inertia",
+                "detent_torque": "torque", "rated_current": "current", "phase_resistance": "resistance",
+                "phase_inductance": "inductance", "rated_voltage": "voltage", "max_speed": "angular_velocity"}
+        for f, d in dims.items():
+            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "detent_torque"))
+        if self.step_angle is None or self.holding_torque is None:
+            raise InputError(f"stepper {n!r}: step_angle and holding_torque are required")
+        w = _quantity_list(self.pullout_speeds, "angular_velocity", f"{n}.pullout_speeds")
+        t = _quantity_list(self.pullout_torques, "torque", f"{n}.pullout_torques")
+        if len(w) != len(t):
+            raise InputError(f"stepper {n!r}: pullout_speeds and pullout_torques differ in length ({len(w)}, {len(t)})")
+        if len(w) and (np.any(np.diff(w) <= 0) or w[0] < 0):
+            raise InputError(f"stepper {n!r}: pull-out speeds must be >= 0 and strictly increasing")
+        if len(t) and np.any(t < 0):
+            raise InputError(f"stepper {n!r}: pull-out torques must be >= 0")
+        if len(t) and np.any(t > _si(self.holding_torque) * 1.0001):
+            raise InputError(f"stepper {n!r}: a pull-out torque exceeds the holding torque "
+                             f"{fmt(self.holding_torque)}; check the units of the curve")
+        object.__setattr__(self, "pullout_speeds", from_si(w, "angular_velocity") if len(w) else None)
+        object.__setattr__(self, "pullout_torques", from_si(t, "torque") if len(t) else None)
+        if self.max_speed is None and len(w):
+            object.__setattr__(self, "max_speed", from_si(float(w[-1]), "angular_velocity"))
+        object.__setattr__(self, "notes", tuple(self.notes))
+
+    @property
+    def steps_per_revolution(self) -> float:
+        return 2 * math.pi / _si(self.step_angle)
+
+    @property
+    def continuous_torque(self) -> None:
+        """Steppers run at rated current whatever the torque: no separate continuous rating."""
+        return None
+
+    @property
+    def speed_limit(self) -> pint.Quantity | None:
+        return self.max_speed
+
+    @property
+    def has_curve(self) -> bool:
+        return self.pullout_speeds is not None
+
+    def available_torque_si(self, speed: Any, voltage: float | None = None) -> np.ndarray:
+        """Pull-out torque [N·m] at ``speed`` [rad/s] (see class notes for outside the points)."""
+        if not self.has_curve:
+            raise InputError(f"stepper {self.name!r} has no pull-out curve; give pullout_speeds and pullout_torques "
+                             "from the datasheet (holding torque is not a running torque)")
+        w = np.abs(np.asarray(speed, float))
+        ws, ts = self.pullout_speeds.magnitude, self.pullout_torques.magnitude
+        return np.interp(w, ws, ts, left=ts[0], right=0.0) * (w <= ws[-1] * (1 + 1e-12))
+
+    def torque_speed_curve(self, voltage: Any = None, n: int = 0) -> tuple[pint.Quantity, pint.Quantity]:
+        if not self.has_curve:
+            raise InputError(f"stepper {self.name!r} has no pull-out curve")
+        return self.pullout_speeds, self.pullout_torques
+
+    def __repr__(self) -> str:
+        return f"<StepperMotor {self.name!r} {fmt(self.step_angle, 'deg')} holding {fmt(self.holding_torque)}>"
+
+
+# ============================================================================ linear-line motors
+@dataclass(frozen=True)
+class HobbyServo:
+    """An RC hobby servo rated by stall torque (usually kgf·cm) and speed (seconds per 60°).
+
+    The rating is a stall torque, not a continuous one. Between no load and stall the servo is
+    modelled by a straight speed-torque line: M(ω) = M_stall·(1 − ω/ω_0), ω_0 = 60°/t_60.
+    Without a speed rating the full stall torque is assumed at all speeds (and no speed limit
+    is known).
+    """
+
+    name: str
+    stall_torque: Any
+    time_per_60deg: Any = None
+    voltage: Any = None
+    rotation_range: Any = None
+    source: str = ""
+    notes: tuple[str, ...] = ()
+    kind: str = field(default="servo", init=False)
+    rotor_inertia: None = field(default=None, init=False)
+
+    def __post_init__(self) -> None:
+        n = self.name
+        for f, d in {"stall_torque": "torque", "time_per_60deg": "time", "voltage": "voltage",
+                     "rotation_range": "angle"}.items():
+            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}"))
+        if self.stall_torque is None:
+            raise InputError(f"servo {n!r}: stall_torque is required")
+        object.__setattr__(self, "notes", tuple(self.notes))
+
+    @property
+    def no_load_speed(self) -> pint.Quantity | None:
+        """ω_0 = (π/3 rad) / t_60."""
+        return None if self.time_per_60deg is None else from_si((math.pi / 3) / _si(self.time_per_60deg),
+                                                                 "angular_velocity")
+
+    max_speed = no_load_speed
+    speed_limit = no_load_speed
+
+    @property
+    def continuous_torque(self) -> None:
+        return None
+
+    def available_torque_si(self, speed: Any, voltage: float | None = None) -> np.ndarray:
+        w = np.abs(np.asarray(speed, float))
+        Ms = _si(self.stall_torque)
+        if self.time_per_60deg is None:
+            return np.full_like(w, Ms)
+        return np.clip(Ms * (1 - w / _si(self.no_load_speed)), 0.0, None)
+
+    def torque_speed_curve(self, voltage: Any = None, n: int = 2) -> tuple[pint.Quantity, pint.Quantity]:
+        if self.time_per_60deg is None:
+            raise InputError(f"servo {self.name!r} has no speed rating (time_per_60deg)")
+        w = np.array([0.0, _si(self.no_load_speed)])
+        return from_si(w, "angular_velocity"), from_si(self.available_torque_si(w), "torque")
+
+
+@dataclass(frozen=True)
+class GearMotor:
+    """A DC gear-motor sold as one unit and rated at its output shaft.
+
+    Straight speed-torque line from ``no_load_speed`` to ``stall_torque`` (both at the output, at
+    ``nominal_voltage``); current rises linearly from ``no_load_current`` to ``stall_current``.
+    ``rated_torque`` is the maker's continuous (rated) torque if one is given; many hobby
+    gear-motors quote only the stall torque.
+    """
+
+    name: str
+    no_load_speed: Any
+    stall_torque: Any
+    rated_torque: Any = None
+    nominal_voltage: Any = None
+    stall_current: Any = None
+    no_load_current: Any = None
+    ratio: float | None = None
+    rotor_inertia: Any = None  # referred to the output shaft
+    source: str = ""
+    notes: tuple[str, ...] = ()
+    kind: str = field(default="gearmotor", init=False)
+
+    def __post_init__(self) -> None:
+        n = self.name
+        for f, d in {"no_load_speed": "angular_velocity", "stall_torque": "torque", "rated_torque": "torque",
+                     "nominal_voltage": "voltage", "stall_current": "current", "no_load_current": "current",
+                     "rotor_inertia": "inertia"}.items():
+            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "no_load_current"))
+        if self.no_load_speed is None or self.stall_torque is None:
+            raise InputError(f"gear-motor {n!r}: no_load_speed and stall_torque are required")
+        if self.rated_torque is not None and self.rated_torque > self.stall_torque:
+            raise InputError(f"gear-motor {n!r}: rated torque {fmt(self.rated_torque)} exceeds stall torque "
+                             f"{fmt(self.stall_torque)}")
+        if self.ratio is not None and not float(self.ratio) > 0:
+            raise InputError(f"gear-motor {n!r}: ratio must be positive")
+        object.__setattr__(self, "notes", tuple(self.notes))
+
+    @property
+    def continuous_torque(self) -> pint.Quantity | None:
+        return self.rated_torque
+
+    @property
+    def max_speed(self) -> pint.Quantity:
+        return self.no_load_speed
+
+    speed_limit = max_speed
+
+    def available_torque_si(self, speed: Any, voltage: float | None = None) -> np.ndarray:
+        w = np.abs(np.asarray(speed, float))
+        return np.clip(_si(self.stall_torque) * (1 - w / _si(self.no_load_speed)), 0.0, None)
+
+    def current_si(self, torque: Any) -> np.ndarray:
+        if self.stall_current is None:
+            raise InputError(f"gear-motor {self.name!r} has no stall current; cannot estimate its current")
+        I0 = _si(self.no_load_current) or 0.0
+        return I0 + (_si(self.stall_current) - I0) * np.abs(np.asarray(torque, float)) / _si(self.stall_torque)
+
+    def torque_speed_curve(self, voltage: Any = None, n: int = 2) -> tuple[pint.Quantity, pint.Quantity]:
+        w = np.array([0.0, _si(self.no_load_speed)])
+        return from_si(w, "angular_velocity"), from_si(self.available_torque_si(w), "torque")
+
+
+Motor = DCMotor | StepperMotor | HobbyServo | GearMotor
+
+# ============================================================================ catalogue
+_TYPES: dict[str, type] = {"dc": DCMotor, "stepper": StepperMotor, "servo": HobbyServo, "gearmotor": GearMotor}
+
+
+def _norm(name: str) -> str:
+    return " ".join(name.lower().replace("_", " ").replace("-", " ").split())
+
+
+def motor_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None = None) -> Motor:
+    """Build a motor from a TOML-style mapping with a ``type`` key (dc, stepper, servo, gearmotor)."""
+    d = dict(d)
+    typ = d.pop("type", None)
+    d.pop("aliases", None)
+    if typ not in _TYPES:
+        raise InputError(f"motor {d.get('name')!r}: type must be one of {sorted(_TYPES)}, got {typ!r}")
+    cls = _TYPES[typ]
+    allowed = {f.name for f in fields(cls) if f.init}
+    unknown = set(d) - allowed
+    if unknown:
+        from mechverify.errors import suggest
+        bad = sorted(unknown)[0]
+        hint = suggest(bad, allowed)
+        raise InputError(f"motor {d.get('name')!r}.{bad}: unknown key"
+                         + (f"; did you mean {hint[0]!r}?" if hint else ""))
+    refs = dict(references or {})
+    if "source" in d:
+        d["source"] = refs.get(d["source"], d["source"])
+    if "notes" in d:
+        d["notes"] = tuple(d["notes"])
+    return cls(**d)
+
+
+@functools.cache
+def _catalogue() -> tuple[dict[str, Motor], dict[str, str]]:
+    with open(_DATA, "rb") as fh:
+        data = tomllib.load(fh)
+    refs = data.get("references", {})
+    by_key: dict[str, Motor] = {}
+    names: dict[str, str] = {}
+    for entry in data.get("motor", []):
+        m = motor_from_dict(entry, refs)
+        for key in [m.name, *entry.get("aliases", [])]:
+            if _norm(key) in by_key:
+                raise InputError(f"motors.toml: name {key!r} used twice")
+            by_key[_norm(key)] = m
+            names[key] = m.name
+    return by_key, names
+
+
+def motor(name: str | Motor) -> Motor:
+    """A catalogue motor by name or alias (``components/data/motors.toml``); unknown names get suggestions."""
+    if not isinstance(name, str):
+        return name
+    by_key, names = _catalogue()
+    hit = by_key.get(_norm(name))
+    if hit is None:
+        raise UnknownNameError("motor", name, names)
+    return hit
+
+
+def motor_names() -> list[str]:
+    """Primary names of all catalogue motors."""
+    by_key, _ = _catalogue()
+    return sorted({m.name for m in by_key.values()})
+
+
+__all__ = ["DCMotor", "StepperMotor", "HobbyServo", "GearMotor", "Motor", "motor", "motor_names",
+           "motor_from_dict"]

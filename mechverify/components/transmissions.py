@@ -1,0 +1,271 @@
+"""Transmission elements between a motor and its load: direct drive, belt/gear reductions, drums
+and pulleys (rotary to linear), and lead screws (wrapping :mod:`mechverify.components.power_screw`).
+
+Every element converts between its *input* (motor side) and *output* (load side):
+
+* kinematics with the ratio ``r`` = input displacement per unit output displacement
+  (rad/rad, or rad/m for rotary-to-linear): ω_in = r·v_out, α_in = r·a_out;
+* inertia reflected with the square of the ratio: J_in = m_out / r² (or J_out / r²);
+* effort (torque or force) with the ratio and the efficiency, in the direction power flows [1, 2]:
+
+  - motoring (the drive pushes the load along its motion, F·v > 0): T_in = F_out / (r·η);
+  - back-driven (the load pushes the drive, F·v < 0): T_in = F_out·η' / r, with η' the
+    back-drive efficiency (≤ 0 for a self-locking screw: the motor must then still drive);
+  - holding at rest: T_in = F_out·max(η', 0) / r (a self-locking element holds by itself).
+
+  At rest with an acceleration commanded, the element is taken as motoring in the direction of
+  the acceleration (breakaway).
+
+References
+----------
+1. Oriental Motor, *Technical Reference: Motor Sizing Calculations*, "load torque by drive
+   mechanism": T_L = F·P_B/(2π·η·i) for a ball screw, T_L = F·D/(2·η·i) for pulley, wire/belt
+   and rack-and-pinion drives; load inertia J = m·(P_B/2π)² and J = m·(D/2)².
+2. Budynas, R. G. & Nisbett, J. K., *Shigley's Mechanical Engineering Design*, 10th ed., 2015,
+   §8-2 (power screws: raising/lowering torque, efficiency, self-locking).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError
+from mechverify.units import Q, from_si, to_si
+
+MOTORING, HOLDING = 1, 0
+
+
+def effort_to_input(effort_out: Any, direction: Any, ratio: float, efficiency: float,
+                    backdrive_efficiency: float) -> np.ndarray:
+    """Input effort [N·m] for an output effort [N or N·m] with power-flow dependent efficiency.
+
+    ``direction`` is +1/-1 (sense of motion, or of the commanded acceleration at rest) or 0
+    (holding). See the module docstring for the three cases [1].
+    """
+    F = np.asarray(effort_out, float)
+    d = np.broadcast_to(np.asarray(direction, float), F.shape)
+    motoring = (d != 0) & (F * d >= 0)
+    backdriven = (d != 0) & (F * d < 0)
+    out = np.where(motoring, F / (ratio * efficiency), 0.0)
+    out = np.where(backdriven, F * backdrive_efficiency / ratio, out)
+    return np.where(d == 0, F * max(backdrive_efficiency, 0.0) / ratio, out)
+
+
+def _eta(value: Any, name: str, *, allow_negative: bool = False) -> float:
+    v = to_si(value, "dimensionless", name)
+    if isinstance(value, pint.Quantity) and str(value.units) == "percent":
+        v = float(value.to("").magnitude)
+    if allow_negative:
+        if not -1 < v <= 1:
+            raise InputError(f"{name}: must lie in (-1, 1], got {v:g}")
+    elif not 0 < v <= 1:
+        raise InputError(f"{name}: must lie in (0, 1] (give 0.9 or '90 %'), got {v:g}")
+    return v
+
+
+class Stage(Protocol):
+    """What a drive train needs from an element (SI floats)."""
+
+    name: str
+    input_kind: str  # "angle"
+    output_kind: str  # "angle" or "length"
+
+    @property
+    def ratio_si(self) -> float: ...
+
+    @property
+    def inertia_at_input_si(self) -> float: ...
+
+    def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray: ...
+
+
+@dataclass(frozen=True)
+class _Reduction:
+    """Shared behaviour: a fixed ratio with forward and back-drive efficiencies."""
+
+    def input_speed(self, output_speed: Any) -> pint.Quantity:
+        """ω_in = r·v_out."""
+        v = to_si(output_speed, "velocity" if self.output_kind == "length" else "angular_velocity", "output_speed")
+        return from_si(self.ratio_si * v, "angular_velocity")
+
+    def output_speed(self, input_speed: Any) -> pint.Quantity:
+        w = to_si(input_speed, "angular_velocity", "input_speed")
+        return from_si(w / self.ratio_si, "velocity" if self.output_kind == "length" else "angular_velocity")
+
+    def reflected_inertia(self, load: Any) -> pint.Quantity:
+        """Load mass (linear output) or inertia (rotary output) seen at the input: J = m/r² [1]."""
+        dim = "mass" if self.output_kind == "length" else "inertia"
+        return from_si(to_si(load, dim, "load") / self.ratio_si**2, "inertia")
+
+    def input_torque(self, output_effort: Any, *, backdriven: bool = False) -> pint.Quantity:
+        """Input torque for an output force/torque, motoring (default) or back-driven [1]."""
+        dim = "force" if self.output_kind == "length" else "torque"
+        F = to_si(output_effort, dim, "output_effort")
+        d = -1.0 if backdriven else 1.0
+        return from_si(float(self.input_effort_si(np.array([F]), np.array([d * (1 if F >= 0 else -1)]))[0]), "torque")
+
+    def output_effort(self, input_torque: Any) -> pint.Quantity:
+        """Force/torque delivered at the output for a motoring input torque: F = T·r·η."""
+        T = to_si(input_torque, "torque", "input_torque")
+        return from_si(T * self.ratio_si * self.efficiency_forward,
+                       "force" if self.output_kind == "length" else "torque")
+
+
+@dataclass(frozen=True)
+class DirectDrive(_Reduction):
+    """Motor coupled straight to the load (ratio 1, optionally a coupling's inertia and efficiency)."""
+
+    name: str = "direct drive"
+    efficiency: Any = 1.0
+    inertia: Any = None  # coupling inertia
+    input_kind: str = field(default="angle", init=False)
+    output_kind: str = field(default="angle", init=False)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "efficiency", _eta(self.efficiency, f"{self.name}.efficiency"))
+        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
+            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+
+    ratio_si = property(lambda self: 1.0)
+    efficiency_forward = property(lambda self: self.efficiency)
+    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
+
+    def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
+        return effort_to_input(effort_out, direction, 1.0, self.efficiency, self.efficiency)
+
+
+@dataclass(frozen=True)
+class BeltDrive(_Reduction):
+    """A two-pulley belt (or spur-gear pair) reduction, rotary to rotary: r = d_driven / d_driver.
+
+    Give pitch diameters or tooth counts. ``inertia`` is the pulleys' inertia already referred to
+    the input (driver) shaft. ``backdrive_efficiency`` defaults to the forward efficiency.
+    """
+
+    driver: Any
+    driven: Any
+    efficiency: Any = 1.0
+    backdrive_efficiency: Any = None
+    inertia: Any = None
+    name: str = "belt drive"
+    input_kind: str = field(default="angle", init=False)
+    output_kind: str = field(default="angle", init=False)
+
+    def __post_init__(self) -> None:
+        def size(v: Any, what: str) -> float:
+            if isinstance(v, int | float) and not isinstance(v, bool):
+                if v <= 0:
+                    raise InputError(f"{self.name}.{what}: tooth count must be positive")
+                return float(v)
+            x = to_si(v, "length", f"{self.name}.{what}")
+            if x <= 0:
+                raise InputError(f"{self.name}.{what}: diameter must be positive")
+            return x
+
+        a, b = size(self.driver, "driver"), size(self.driven, "driven")
+        if isinstance(self.driver, int | float) != isinstance(self.driven, int | float):
+            raise InputError(f"{self.name}: give both pulleys as diameters or both as tooth counts")
+        object.__setattr__(self, "_ratio", b / a)
+        eta = _eta(self.efficiency, f"{self.name}.efficiency")
+        object.__setattr__(self, "efficiency", eta)
+        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
+                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency"))
+        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
+            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+
+    ratio_si = property(lambda self: self._ratio)
+    efficiency_forward = property(lambda self: self.efficiency)
+    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
+
+    def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
+        return effort_to_input(effort_out, direction, self._ratio, self.efficiency, self.backdrive_efficiency)
+
+
+@dataclass(frozen=True)
+class Drum(_Reduction):
+    """Rotary to linear through a drum, pulley + belt, cable or rack-and-pinion: r = 2/D [1].
+
+    ``diameter`` is the effective (pitch or cable-centre) diameter. ``inertia`` is the drum's
+    (or pulleys') own inertia at the input shaft.
+    """
+
+    diameter: Any
+    efficiency: Any = 1.0
+    backdrive_efficiency: Any = None
+    inertia: Any = None
+    name: str = "drum"
+    input_kind: str = field(default="angle", init=False)
+    output_kind: str = field(default="length", init=False)
+
+    def __post_init__(self) -> None:
+        d = to_si(self.diameter, "length", f"{self.name}.diameter")
+        if d <= 0:
+            raise InputError(f"{self.name}.diameter: must be positive")
+        object.__setattr__(self, "diameter", from_si(d, "length"))
+        eta = _eta(self.efficiency, f"{self.name}.efficiency")
+        object.__setattr__(self, "efficiency", eta)
+        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
+                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency"))
+        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
+            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+
+    ratio_si = property(lambda self: 2.0 / float(self.diameter.magnitude))
+    efficiency_forward = property(lambda self: self.efficiency)
+    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
+
+    def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
+        return effort_to_input(effort_out, direction, self.ratio_si, self.efficiency, self.backdrive_efficiency)
+
+
+@dataclass(frozen=True)
+class ScrewDrive(_Reduction):
+    """A lead screw (or ball screw) driven at the screw, the nut carrying the load: r = 2π/l.
+
+    Wraps a :class:`mechverify.components.power_screw.LeadScrew`: its raising and lowering
+    torques at the friction coefficient ``mu`` give the forward efficiency η = F·l/(2π·T_raise)
+    and the back-drive efficiency η' = −2π·T_lower/(F·l) (negative when self-locking) [2]. Both
+    torques are proportional to the axial force, so they are evaluated once for a unit force.
+    ``inertia`` is the screw shaft's (and coupling's) inertia.
+    """
+
+    screw: Any
+    mu: Any
+    inertia: Any = None
+    name: str = "lead screw"
+    input_kind: str = field(default="angle", init=False)
+    output_kind: str = field(default="length", init=False)
+
+    def __post_init__(self) -> None:
+        mu = to_si(self.mu, "dimensionless", f"{self.name}.mu")
+        if not 0 <= mu < 1:
+            raise InputError(f"{self.name}.mu: friction coefficient must lie in [0, 1), got {mu:g}")
+        object.__setattr__(self, "mu", mu)
+        lead = to_si(self.screw.lead, "length", f"{self.name}.screw.lead")
+        unit = Q(1.0, "N")
+        k_raise = to_si(self.screw.raise_torque(unit, mu), "torque", "raise_torque")
+        k_lower = to_si(self.screw.lower_torque(unit, mu), "torque", "lower_torque")
+        object.__setattr__(self, "_lead", lead)
+        object.__setattr__(self, "_eta_f", lead / (2 * math.pi * k_raise))
+        object.__setattr__(self, "_eta_b", -2 * math.pi * k_lower / lead)
+        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
+            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+
+    ratio_si = property(lambda self: 2 * math.pi / self._lead)
+    efficiency_forward = property(lambda self: self._eta_f)
+    backdrive_efficiency = property(lambda self: self._eta_b)
+    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
+
+    @property
+    def self_locking(self) -> bool:
+        return self._eta_b <= 0
+
+    def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
+        return effort_to_input(effort_out, direction, self.ratio_si, self._eta_f, self._eta_b)
+
+
+__all__ = ["Stage", "DirectDrive", "BeltDrive", "Drum", "ScrewDrive", "effort_to_input", "MOTORING", "HOLDING"]
