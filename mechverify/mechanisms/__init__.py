@@ -1,0 +1,30 @@
+"""Planar mechanisms: a general rigid-body statics solver, the five-bar and lever-arm presets, pose sweeps.
+
+Data flow: a preset's kinematics gives a pose, its ``statics(pose, ...)`` builds a
+:class:`Mechanism`, :meth:`Mechanism.solve` gives joint reactions, actuator torques and member
+diagrams, and :func:`sweep_statics` finds the governing pose of every member and actuator.
+"""
+
+from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
+from mechverify.mechanisms.fivebar import FiveBar, FiveBarPose, WorkspaceSample
+from mechverify.mechanisms.lever_arm import LeverArm, LeverArmPose, lever_arm_closed_form
+from mechverify.mechanisms.statics import (
+    GROUND,
+    Body,
+    Couple,
+    Mechanism,
+    MemberLoad,
+    Pin,
+    PointLoad,
+    Slider,
+    StaticsSolution,
+    solve_statics,
+)
+from mechverify.mechanisms.sweep import ActuatorDemand, MemberDemand, SweepResult, sweep_statics
+
+__all__ = [
+    "GROUND", "Body", "Pin", "Slider", "PointLoad", "Couple", "Mechanism", "StaticsSolution", "MemberLoad",
+    "solve_statics", "FiveBar", "FiveBarPose", "WorkspaceSample", "LeverArm", "LeverArmPose",
+    "lever_arm_closed_form", "SweepResult", "MemberDemand", "ActuatorDemand", "sweep_statics",
+    "UnreachablePoseError", "SingularPoseError",
+]
