@@ -534,7 +534,7 @@ class LeadScrew:
 
     def self_locking_mu(self) -> pint.Quantity:
         """Friction coefficient below which the load back-drives the screw."""
-        return self_locking_mu(*self._g())
+        return from_si(self_locking_mu.si(*self._g()), "dimensionless")
 
     def raise_torque(self, F: Any, mu: Any, collar_mu: Any = 0.0, collar_diameter: Any = None) -> pint.Quantity:
         """Torque to drive against the load [N m]."""

@@ -1,0 +1,261 @@
+"""Checks of lead-screw drives: self-locking, holding torque, nut flank pressure and pv, screw strength,
+buckling and critical (whirling) speed.
+
+Friction given as a range is used conservatively per question: the lowest ``mu`` where friction
+helps (self-locking, holding the load), the highest where it hurts (drive torque, hence the
+torsional stress in the screw). Every result says in its notes which value it used and why.
+
+References
+----------
+1. Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., 2011, Sec. 8-2 (power screws).
+2. Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., 2014, Sec. 16.3.
+3. Shigley's Mechanical Engineering Design, 10th ed., 2015, Sec. 4-11 to 4-13 (columns, Table 4-2).
+4. Blevins, Formulas for Natural Frequency and Mode Shape, 1979, Table 8-1; THK General Catalog, Ball
+   Screw (permissible speed 0.8 n_c, permissible compressive load 0.5 P_cr).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from mechverify.checks.result import CheckResult
+from mechverify.components.power_screw import (
+    LeadScrew,
+    Nut,
+    flank_pressure,
+    friction_angle,
+    pv_value,
+    whirl_factor,
+)
+from mechverify.errors import InputError
+from mechverify.units import Q, as_quantity, fmt
+
+SHIGLEY_SCREWS = "Shigley's Mechanical Engineering Design, 9th ed., Sec. 8-2"
+HAMROCK = "Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., Sec. 16.3"
+
+
+def _force(F: Any, name: str = "F") -> Any:
+    f = as_quantity(F, "force", name)
+    if f.magnitude < 0:
+        raise InputError(f"{name}: give the magnitude of the axial force (>= 0), got {fmt(f)}")
+    return f.to("N")
+
+
+def _mu_note(nut: Nut, which: str, why: str) -> str:
+    lo, hi = nut.require_mu()
+    used = lo if which == "min" else hi
+    rng = f"{lo:g}..{hi:g}" if lo != hi else f"{lo:g} (single value)"
+    return f"mu = {used:g} used ({'lowest' if which == 'min' else 'highest'} of the nut's range {rng}): {why}"
+
+
+def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, load_case: str = "") -> CheckResult:
+    """The load must not back-drive the screw: lead angle ``lambda`` <= effective friction angle ``rho'`` at ``mu_min``.
+
+    Margins are reported both in angle (``rho' - lambda``) and in friction (``mu_min - mu*``,
+    ``mu* = cos(alpha_n) tan(lambda)``). Collar friction is not counted.
+    """
+    mu_lo, _ = nut.require_mu()
+    th = screw.thread
+    lam = th.lead_angle.to("deg")
+    rho = friction_angle(mu_lo, th.normal_flank_angle).to("deg")
+    mu_star = float(screw.self_locking_mu().m_as(""))
+    notes = [
+        _mu_note(nut, "min", "friction helps self-locking, so the least friction the nut may show decides it"),
+        f"margin in angle: rho' - lambda = {fmt(rho - lam, 'deg')}; in friction: mu_min - mu* = {mu_lo - mu_star:+.4g} "
+        f"(the screw back-drives for mu < mu* = {mu_star:.4g})",
+        "thread alone: collar or bearing friction, which may add holding, is not counted",
+    ]
+    warnings = []
+    if th.form == "ball":
+        notes.append("a ball screw is never self-locking: use a brake or a holding torque")
+    if lam < rho and (rho - lam).m_as("deg") < 1.0:
+        warnings.append("self-locking margin below 1 deg: vibration and static/dynamic friction scatter can release it")
+    return CheckResult(
+        check="self_locking", component=screw.name, demand=lam, capacity=rho, required_sf=required_sf,
+        title=f"Self-locking of {th.designation} ({nut.name})",
+        formula=r"\lambda = \arctan\frac{l}{\pi d_2} \;\le\; \rho' = \arctan\frac{\mu_{min}}{\cos\alpha_n},"
+                r"\quad \tan\alpha_n = \tan\alpha\cos\lambda",
+        source=f"{HAMROCK} (self-locking condition mu > cos(alpha_n) tan(lambda)); {SHIGLEY_SCREWS}, Eq. 8-3",
+        inputs={"lead": th.lead, "d2": th.d2, "flank_angle": th.flank_angle, "mu_min": Q(mu_lo, "")},
+        notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
+        details={"lead_angle": lam, "friction_angle": rho, "normal_flank_angle": th.normal_flank_angle.to("deg"),
+                 "self_locking_mu": Q(mu_star, ""), "angle_margin": (rho - lam).to("deg"),
+                 "mu_margin": Q(mu_lo - mu_star, "")},
+    )
+
+
+def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Any, *, required_sf: float = 1.0,
+                         load_case: str = "") -> CheckResult:
+    """The torque available at the screw when stopped (motor holding torque, brake) must hold the load.
+
+    Demand ``max(0, -T_L)`` at ``mu_min``: ``T_L = F d2/2 (mu - cos(alpha_n) tan(lambda)) / (cos(alpha_n) + mu
+    tan(lambda))``; zero when the thread self-locks.
+    """
+    f = _force(F)
+    cap = as_quantity(holding_torque, "torque", "holding_torque").to("N*m")
+    mu_lo, _ = nut.require_mu()
+    need = screw.holding_torque(f, mu_lo).to("N*m")
+    notes = [_mu_note(nut, "min", "friction helps holding: the least friction gives the largest back-driving torque"),
+             "collar/bearing friction not counted (conservative)"]
+    if need.magnitude == 0:
+        notes.append("the thread self-locks at mu_min: no holding torque is needed")
+    return CheckResult(
+        check="holding_torque", component=screw.name, demand=need, capacity=cap, required_sf=required_sf,
+        title=f"Back-drive holding torque, {screw.thread.designation}",
+        formula=r"T_{hold} = \max\left(0,\; F\frac{d_2}{2}\,\frac{\cos\alpha_n\tan\lambda - \mu_{min}}"
+                r"{\cos\alpha_n + \mu_{min}\tan\lambda}\right) \le T_{available}",
+        source=f"{HAMROCK}, Eq. 16.12 (lowering torque); {SHIGLEY_SCREWS}, Eq. 8-2",
+        inputs={"F": f, "mu_min": Q(mu_lo, ""), "holding_torque": cap, "lead": screw.lead, "d2": screw.thread.d2},
+        notes=tuple(notes), load_case=load_case,
+        details={"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
+                 "backdrive_efficiency": screw.backdrive_efficiency(mu_lo)},
+    )
+
+
+def _nut_geometry(screw: LeadScrew, nut: Nut) -> tuple[float, Any]:
+    th = screw.thread
+    if th.form == "ball" or th.H1 is None:
+        raise InputError(f"{nut.name}: flank pressure and pv do not apply to a ball nut; check its load rating instead")
+    return nut.engaged(th), th.H1
+
+
+def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf: float = 1.0,
+                             load_case: str = "") -> CheckResult:
+    """Mean flank pressure ``p = F / (pi d2 H1 n)`` against the nut's allowable pressure."""
+    f = _force(F)
+    if nut.p_allow is None:
+        raise InputError(f"{nut.name}: no allowable flank pressure (p_allow, or a material with p_max)")
+    n, H1 = _nut_geometry(screw, nut)
+    th = screw.thread
+    p = flank_pressure(f, th.d2, H1, n).to("MPa")
+    how = (f"nut length {fmt(nut.length, 'mm')} / P {fmt(th.pitch, 'mm')}" if nut.engaged_threads is None
+           else "as given")
+    return CheckResult(
+        check="nut_flank_pressure", component=nut.name, demand=p, capacity=nut.p_allow.to("MPa"),
+        required_sf=required_sf, title=f"Nut flank pressure on {th.designation}",
+        formula=r"p = \frac{F}{\pi d_2 H_1 n},\quad n = \frac{m}{P}",
+        source="DIN 103 / Roloff-Matek (mean flank pressure); Shigley 9th ed., Sec. 8-2 (bearing stress)",
+        inputs={"F": f, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
+        notes=(f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
+               "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"),
+        load_case=load_case, details={"engaged_threads": Q(n, "")},
+    )
+
+
+def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = None, speed: Any = None,
+                 required_sf: float = 1.0, load_case: str = "") -> CheckResult:
+    """``pv`` (mean flank pressure x sliding speed at d2) against the nut material's pv limit.
+
+    Give the screw's ``rotational_speed`` (``"540 rpm"``) or the nut's linear ``speed`` (``"18 mm/s"``).
+    """
+    f = _force(F)
+    if nut.pv_allow is None:
+        raise InputError(f"{nut.name}: no pv limit (pv_allow, or a material with pv_max)")
+    if (rotational_speed is None) == (speed is None):
+        raise InputError("check_nut_pv: give exactly one of rotational_speed or speed")
+    n_rot = (as_quantity(rotational_speed, "angular_velocity", "rotational_speed") if rotational_speed is not None
+             else screw.rotational_speed(speed)).to("rpm")
+    n, H1 = _nut_geometry(screw, nut)
+    th = screw.thread
+    p = flank_pressure(f, th.d2, H1, n).to("MPa")
+    v = screw.sliding_speed(n_rot).to("m/s")
+    pv = pv_value(p, v).to("MPa*m/s")
+    return CheckResult(
+        check="nut_pv", component=nut.name, demand=pv, capacity=nut.pv_allow.to("MPa*m/s"), required_sf=required_sf,
+        title=f"Nut pv on {th.designation} at {fmt(n_rot, 'rpm')}",
+        formula=r"pv = \frac{F}{\pi d_2 H_1 n}\cdot\frac{\pi d_2 n_{rot}}{\cos\lambda}",
+        source="DIN 103 / Roloff-Matek (flank pressure); polymer-bearing pv rating (nut maker's datasheet)",
+        inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
+        notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
+               f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}"),
+        load_case=load_case, details={"pressure": p, "sliding_speed": v},
+    )
+
+
+def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, torque: Any = None,
+                         required_sf: float = 1.0, load_case: str = "") -> CheckResult:
+    """Von Mises stress at the minor diameter from the axial force and the drive torque, against yield.
+
+    Without ``torque`` the raising torque at the nut's ``mu_max`` is used (the largest torque the
+    motor must put through the screw).
+    """
+    f = _force(F)
+    notes = []
+    if torque is None:
+        if nut is None:
+            raise InputError("check_screw_strength: give the torque, or the nut (its mu_max sets the drive torque)")
+        _, mu_hi = nut.require_mu()
+        T = screw.raise_torque(f, mu_hi).to("N*m")
+        notes.append(_mu_note(nut, "max", "the highest friction gives the largest drive torque through the screw"))
+    else:
+        T = as_quantity(torque, "torque", "torque").to("N*m")
+        notes.append(f"torque as given: {fmt(T, 'N*m')}")
+    s = screw.stresses(f, T)
+    Sy = screw._mat("yield_strength").to("MPa")
+    notes.append(f"axial {fmt(s.axial, 'MPa')}, torsion {fmt(s.torsion, 'MPa')} at d3 = {fmt(screw.thread.d3, 'mm')}")
+    return CheckResult(
+        check="screw_strength", component=screw.name, demand=s.von_mises, capacity=Sy, required_sf=required_sf,
+        title=f"Screw body stress, {screw.thread.designation}",
+        formula=r"\sigma' = \sqrt{\left(\frac{4F}{\pi d_3^2}\right)^2 + 3\left(\frac{16T}{\pi d_3^3}\right)^2}"
+                r" \le S_y",
+        source=f"{SHIGLEY_SCREWS} (body stresses), Eq. 5-15 (von Mises)",
+        inputs={"F": f, "torque": T, "d3": screw.thread.d3, "yield_strength": Sy},
+        notes=tuple(notes), load_case=load_case,
+        details={"axial": s.axial, "torsion": s.torsion},
+    )
+
+
+def check_screw_buckling(screw: LeadScrew, F: Any, *, length: Any = None, basis: str = "recommended",
+                         required_sf: float = 2.0, load_case: str = "") -> CheckResult:
+    """Compressive axial force against the column critical load of the root section (Euler or Johnson).
+
+    The default required factor 2 is the THK rule (permissible load 0.5 P_cr).
+    """
+    f = _force(F)
+    b = screw.buckling(length, basis)
+    L = screw.length if length is None else as_quantity(length, "length", "length")
+    return CheckResult(
+        check="screw_buckling", component=screw.name, demand=f, capacity=b.critical_load.to("N"),
+        required_sf=required_sf, title=f"Buckling of {screw.thread.designation}, {b.end}",
+        formula=(r"P_{cr} = \frac{C\pi^2 E I}{l^2}" if b.regime == "euler" else
+                 r"P_{cr} = A\left[S_y - \left(\frac{S_y l}{2\pi k}\right)^2\frac{1}{CE}\right]"),
+        source=b.source,
+        inputs={"F": f, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw._mat("E"),
+                "yield_strength": screw._mat("yield_strength")},
+        notes=(f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
+               + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
+               f"{b.regime} regime: l/k = {b.slenderness:.4g}, transition (l/k)_1 = {b.transition_slenderness:.4g}",
+               "root section (d3) used for A and I; the length is the unsupported length under compression"),
+        load_case=load_case,
+        details={"regime": b.regime, "C": b.C, "slenderness": b.slenderness,
+                 "critical_stress": b.critical_stress.to("MPa")},
+    )
+
+
+def check_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any = None, required_sf: float = 1.25,
+                         load_case: str = "") -> CheckResult:
+    """Operating speed against the first whirling speed of the screw between its supports.
+
+    Default required factor 1.25 = the THK rule of running below 0.8 of the critical speed.
+    """
+    n = as_quantity(rotational_speed, "angular_velocity", "rotational_speed").to("rpm")
+    n = abs(n)
+    nc = screw.critical_speed(length).to("rpm")
+    lam = whirl_factor(screw.end_supports)
+    L = screw.length if length is None else as_quantity(length, "length", "length")
+    return CheckResult(
+        check="critical_speed", component=screw.name, demand=n, capacity=nc, required_sf=required_sf,
+        title=f"Critical (whirling) speed of {screw.thread.designation}",
+        formula=r"n_c = \frac{\lambda_1^2}{2\pi L^2}\sqrt{\frac{E I}{\rho A}},\quad \frac{I}{A} = \frac{d_3^2}{16}",
+        source="Blevins, Formulas for Natural Frequency and Mode Shape, 1979, Table 8-1; THK General Catalog, Ball "
+               "Screw (permissible rotational speed)",
+        inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw._mat("E"),
+                "density": screw._mat("density")},
+        notes=(f"end case {screw.end_supports}: lambda_1 = {lam:.5g} (first bending mode of a uniform shaft)",
+               "root section (d3); the nut's support is ignored, which is conservative"),
+        load_case=load_case, details={"lambda_1": lam, "critical_speed_rad_s": nc.to("rad/s")},
+    )
+
+
+__all__ = ["check_self_locking", "check_holding_torque", "check_nut_flank_pressure", "check_nut_pv",
+           "check_screw_strength", "check_screw_buckling", "check_critical_speed"]
