@@ -1,0 +1,568 @@
+"""Flat plates: declarative geometry, supports and loads (meshed by the FEA plate model), and Roark checks.
+
+Geometry lives in the plate's own x-y plane; the plate normal is +z and out-of-plane loads are
+positive along +z (self-weight acts along -z unless ``SelfWeight.direction`` says otherwise).
+
+* :class:`Plate` — an outline polygon with circular holes (bolt holes, named) and polygonal
+  cut-outs (lightening), a thickness and a material; :meth:`Plate.rectangle` builds a rectangle
+  with a hole pattern (see :func:`corner_holes`, :func:`hole_grid`).
+* supports — :class:`EdgeSupport` (outline edges by index), :class:`PointSupport` (a point, e.g.
+  a corner), :class:`HoleSupport` (the rim of bolt holes); each ``"clamped"`` or ``"simply_supported"``.
+* loads — :class:`PointLoad` (force along z and optional moments), :class:`PatchLoad` (a force or
+  pressure on a rectangle or polygon patch), :class:`PressureLoad` (uniform over the whole plate),
+  :class:`SelfWeight`.
+* :class:`PlateModel` — plate + supports + loads, validated (supports and loads lie on the plate).
+
+All coordinates are stored as SI floats (metres) in tuples; :attr:`Plate.region` is the shapely
+polygon (holes as polygons with ``HOLE_SEGMENTS`` sides) for meshing.
+
+The closed-form Roark estimates for rectangular and circular plates are at the end of this module
+(:func:`roark_rectangular_plate`, :func:`roark_circular_plate`).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pint
+import shapely
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Polygon as ShapelyPolygon
+
+from mechverify.errors import InputError, UnknownNameError
+from mechverify.materials import Material
+from mechverify.materials import get as get_material
+from mechverify.units import Q, from_si, to_si
+
+HOLE_SEGMENTS = 48  # sides of the polygon that stands for a circular hole in `Plate.region`
+G0 = 9.80665  # standard gravity [m/s^2]
+SUPPORT_CONDITIONS = ("clamped", "simply_supported")
+_CONDITION_ALIASES = {"clamped": "clamped", "fixed": "clamped", "built_in": "clamped", "encastre": "clamped",
+                      "bolted": "clamped", "simply_supported": "simply_supported", "simple": "simply_supported",
+                      "pinned": "simply_supported", "hinged": "simply_supported", "ss": "simply_supported"}
+
+
+# ------------------------------------------------------------------------------------ input helpers
+def _point(p: Any, name: str, unit: str | None = None) -> tuple[float, float]:
+    if isinstance(p, pint.Quantity):
+        arr = np.asarray(to_si(p, "length", name), dtype=float).ravel()
+        if arr.size != 2:
+            raise InputError(f"{name}: expected a point (x, y), got {p!r}")
+        return float(arr[0]), float(arr[1])
+    if isinstance(p, str) or len(p) != 2:
+        raise InputError(f"{name}: expected a point (x, y), got {p!r}")
+    if unit is not None and all(isinstance(c, int | float) and not isinstance(c, bool) for c in p):
+        return Q(float(p[0]), unit).m_as("m"), Q(float(p[1]), unit).m_as("m")
+    return to_si(p[0], "length", f"{name}.x"), to_si(p[1], "length", f"{name}.y")
+
+
+def _points(pts: Any, name: str, unit: str | None = None) -> tuple[tuple[float, float], ...]:
+    if isinstance(pts, pint.Quantity):
+        arr = np.atleast_2d(np.asarray(to_si(pts, "length", name), dtype=float))
+        if arr.ndim != 2 or arr.shape[1] != 2:
+            raise InputError(f"{name}: expected points (x, y), got shape {arr.shape}")
+        out = tuple((float(a), float(b)) for a, b in arr)
+    else:
+        out = tuple(_point(p, f"{name}[{i}]", unit) for i, p in enumerate(pts))
+    if len(out) >= 2 and out[0] == out[-1]:
+        out = out[:-1]  # closed rings are accepted
+    return out
+
+
+def _length(v: Any, name: str, unit: str | None = None, *, allow_zero: bool = False) -> float:
+    if unit is not None and isinstance(v, int | float) and not isinstance(v, bool):
+        v = Q(float(v), unit)
+    x = to_si(v, "length", name)
+    if x < 0 or (x == 0 and not allow_zero):
+        raise InputError(f"{name}: must be {'zero or ' if allow_zero else ''}positive, got {fmt_mm(x)}")
+    return x
+
+
+def fmt_mm(x: float) -> str:
+    return f"{x * 1e3:g} mm"
+
+
+def _condition(c: str, name: str) -> str:
+    key = str(c).strip().lower().replace("-", "_").replace(" ", "_")
+    if key not in _CONDITION_ALIASES:
+        raise UnknownNameError(f"support condition ({name})", c, [*SUPPORT_CONDITIONS, *_CONDITION_ALIASES])
+    return _CONDITION_ALIASES[key]
+
+
+def _collinear(pts: Sequence[tuple[float, float]]) -> bool:
+    a = np.asarray(pts, dtype=float)
+    a = a - a.mean(axis=0)
+    scale = np.abs(a).max()
+    return scale == 0 or np.linalg.matrix_rank(a / scale, tol=1e-12) < 2
+
+
+def _circle(center: tuple[float, float], d: float, n: int = HOLE_SEGMENTS) -> ShapelyPolygon:
+    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    return ShapelyPolygon(np.c_[center[0] + d / 2 * np.cos(t), center[1] + d / 2 * np.sin(t)])
+
+
+# ------------------------------------------------------------------------------------------ geometry
+@dataclass(frozen=True)
+class Hole:
+    """A circular hole: ``center`` (x, y) and ``diameter``; ``name`` lets supports and loads refer to it."""
+
+    center: Any
+    diameter: Any
+    name: str = ""
+    unit: str | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", _point(self.center, f"hole {self.name or ''}.center".replace(" .", "."),
+                                                  self.unit))
+        object.__setattr__(self, "diameter", _length(self.diameter, "hole.diameter", self.unit))
+        object.__setattr__(self, "unit", None)
+
+    @property
+    def radius(self) -> float:
+        return self.diameter / 2
+
+    def polygon(self, n: int = HOLE_SEGMENTS) -> ShapelyPolygon:
+        return _circle(self.center, self.diameter, n)
+
+    def __repr__(self) -> str:
+        n = f"{self.name!r}, " if self.name else ""
+        return f"Hole({n}center=({fmt_mm(self.center[0])}, {fmt_mm(self.center[1])}), d={fmt_mm(self.diameter)})"
+
+
+def _as_hole(h: Any, i: int, unit: str | None) -> Hole:
+    if isinstance(h, Hole):
+        return h
+    if isinstance(h, dict):
+        return Hole(unit=h.get("unit", unit), **{k: v for k, v in h.items() if k != "unit"})
+    raise InputError(f"holes[{i}]: expected a Hole or a table with center and diameter, got {h!r}")
+
+
+def corner_holes(width: Any, height: Any, inset: Any, diameter: Any, origin: Any = ("0 m", "0 m"),
+                 prefix: str = "corner") -> tuple[Hole, ...]:
+    """Four holes ``inset`` from both edges at the corners of a ``width`` x ``height`` rectangle.
+
+    Named ``<prefix>_sw``, ``_se``, ``_ne``, ``_nw`` (counter-clockwise from the origin corner).
+    """
+    w, h, e = _length(width, "width"), _length(height, "height"), _length(inset, "inset")
+    d = _length(diameter, "diameter")
+    x0, y0 = _point(origin, "origin")
+    pts = {"sw": (e, e), "se": (w - e, e), "ne": (w - e, h - e), "nw": (e, h - e)}
+    return tuple(Hole((Q(x0 + x, "m"), Q(y0 + y, "m")), Q(d, "m"), f"{prefix}_{k}") for k, (x, y) in pts.items())
+
+
+def hole_grid(first_center: Any, nx: int, ny: int, pitch_x: Any, pitch_y: Any, diameter: Any,
+              prefix: str = "hole") -> tuple[Hole, ...]:
+    """A rectangular pattern of ``nx`` x ``ny`` holes starting at ``first_center``; names ``<prefix>_<i>_<j>``."""
+    if int(nx) < 1 or int(ny) < 1:
+        raise InputError(f"hole_grid: nx and ny must be >= 1, got {nx}, {ny}")
+    x0, y0 = _point(first_center, "first_center")
+    px = _length(pitch_x, "pitch_x", allow_zero=nx == 1)
+    py = _length(pitch_y, "pitch_y", allow_zero=ny == 1)
+    d = _length(diameter, "diameter")
+    return tuple(Hole((Q(x0 + i * px, "m"), Q(y0 + j * py, "m")), Q(d, "m"), f"{prefix}_{i}_{j}")
+                 for j in range(int(ny)) for i in range(int(nx)))
+
+
+@dataclass(frozen=True)
+class Plate:
+    """A flat plate of uniform ``thickness``: outline polygon, circular ``holes``, polygonal ``cutouts``.
+
+    Points are quantity arrays of shape (n, 2), sequences of (x, y) quantities/strings, or numbers
+    with ``unit`` (``unit="mm"``, convenient from TOML). ``material`` is a :class:`Material` or a
+    name in the material database. Raises :class:`InputError` for a self-intersecting outline or
+    cut-out, holes or cut-outs outside the plate or overlapping each other, zero thickness.
+    """
+
+    outline: Any
+    thickness: Any
+    material: Any
+    holes: Sequence[Any] = ()
+    cutouts: Sequence[Any] = ()
+    name: str = "plate"
+    unit: str | None = None
+    region: Any = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        u = self.unit
+        outline = _points(self.outline, f"{self.name}.outline", u)
+        if len(outline) < 3:
+            raise InputError(f"{self.name}.outline: a polygon needs at least 3 points, got {len(outline)}")
+        t = _length(self.thickness, f"{self.name}.thickness", u)
+        mat = self.material if isinstance(self.material, Material) else get_material(self.material)
+        holes = tuple(_as_hole(h, i, u) for i, h in enumerate(self.holes))
+        cutouts = tuple(_points(c, f"{self.name}.cutouts[{i}]", u) for i, c in enumerate(self.cutouts))
+        names = [h.name for h in holes if h.name]
+        dup = {n for n in names if names.count(n) > 1}
+        if dup:
+            raise InputError(f"{self.name}.holes: hole names must be unique, repeated: {sorted(dup)}")
+        object.__setattr__(self, "outline", outline)
+        object.__setattr__(self, "thickness", t)
+        object.__setattr__(self, "material", mat)
+        object.__setattr__(self, "holes", holes)
+        object.__setattr__(self, "cutouts", cutouts)
+        object.__setattr__(self, "unit", None)
+        object.__setattr__(self, "region", self._region())
+
+    def _region(self) -> ShapelyPolygon:
+        if _collinear(self.outline):
+            raise InputError(f"{self.name}.outline: the outline encloses no area (its points are collinear)")
+        ring = shapely.LinearRing(self.outline)
+        if not ring.is_simple:
+            raise InputError(f"{self.name}.outline: the outline crosses itself (self-intersecting polygon)")
+        shell = ShapelyPolygon(self.outline)
+        if shell.area <= 0:
+            raise InputError(f"{self.name}.outline: the outline encloses no area")
+        voids: list[tuple[str, ShapelyPolygon]] = []
+        for i, h in enumerate(self.holes):
+            label = f"{self.name}.holes[{i}]" + (f" ({h.name})" if h.name else "")
+            disc = ShapelyPoint(h.center).buffer(h.radius, quad_segs=32)
+            if not shell.contains(disc):
+                where = "outside the plate" if not shell.intersects(disc) else "across the plate edge"
+                raise InputError(f"{label}: hole of {fmt_mm(h.diameter)} at ({fmt_mm(h.center[0])}, "
+                                 f"{fmt_mm(h.center[1])}) lies {where}")
+            voids.append((label, disc))
+        for i, c in enumerate(self.cutouts):
+            label = f"{self.name}.cutouts[{i}]"
+            if len(c) < 3 or not shapely.LinearRing(c).is_simple:
+                raise InputError(f"{label}: the cut-out outline crosses itself or has fewer than 3 points")
+            cp = ShapelyPolygon(c)
+            if cp.area <= 0:
+                raise InputError(f"{label}: the cut-out encloses no area")
+            if not shell.contains(cp):
+                raise InputError(f"{label}: the cut-out is not inside the plate outline")
+            voids.append((label, cp))
+        for i, (li, pi) in enumerate(voids):
+            for lj, pj in voids[:i]:
+                if pi.intersects(pj):
+                    raise InputError(f"{li}: overlaps or touches {lj}")
+        interiors = [h.polygon().exterior.coords for h in self.holes] + [ShapelyPolygon(c).exterior.coords
+                                                                         for c in self.cutouts]
+        region = ShapelyPolygon(shell.exterior.coords, interiors)
+        if not region.is_valid:
+            raise InputError(f"{self.name}: invalid plate region ({shapely.is_valid_reason(region)})")
+        return region
+
+    # ---------------------------------------------------------------- constructors
+    @classmethod
+    def rectangle(cls, width: Any, height: Any, thickness: Any, material: Any, holes: Sequence[Any] = (),
+                  cutouts: Sequence[Any] = (), name: str = "plate", unit: str | None = None) -> Plate:
+        """A ``width`` (x) by ``height`` (y) rectangle with its lower-left corner at the origin."""
+        w, h = _length(width, "width", unit), _length(height, "height", unit)
+        outline = Q(np.array([[0, 0], [w, 0], [w, h], [0, h]], dtype=float), "m")
+        cut = [c if unit is None else Q(np.asarray(c, dtype=float), unit) for c in cutouts]
+        hs = [_as_hole(x, i, unit) for i, x in enumerate(holes)]
+        t = thickness if unit is None or not isinstance(thickness, int | float) else Q(thickness, unit)
+        return cls(outline, t, material, hs, cut, name)
+
+    # ---------------------------------------------------------------- derived quantities
+    @property
+    def area(self) -> pint.Quantity:
+        """Net area (outline minus holes and cut-outs; holes counted as exact circles) [m^2]."""
+        gross = ShapelyPolygon(self.outline).area
+        voids = sum(math.pi * h.radius**2 for h in self.holes) + sum(ShapelyPolygon(c).area for c in self.cutouts)
+        return from_si(gross - voids, "area")
+
+    @property
+    def mass(self) -> pint.Quantity:
+        rho = to_si(self.material.require("density"), "density", "density")
+        return from_si(self.area.m_as("m**2") * self.thickness * rho, "mass")
+
+    @property
+    def weight(self) -> pint.Quantity:
+        return from_si(self.mass.m_as("kg") * G0, "force")
+
+    @property
+    def bounds(self) -> tuple[pint.Quantity, pint.Quantity, pint.Quantity, pint.Quantity]:
+        """(xmin, ymin, xmax, ymax) [m]."""
+        return tuple(from_si(v, "length") for v in ShapelyPolygon(self.outline).bounds)  # type: ignore[return-value]
+
+    @property
+    def thickness_q(self) -> pint.Quantity:
+        return from_si(self.thickness, "length")
+
+    def edges(self) -> tuple[tuple[tuple[float, float], tuple[float, float]], ...]:
+        """Outline edges; edge ``i`` runs from vertex ``i`` to vertex ``i+1`` [m]."""
+        n = len(self.outline)
+        return tuple((self.outline[i], self.outline[(i + 1) % n]) for i in range(n))
+
+    def hole(self, key: int | str) -> Hole:
+        """A hole by index or name (``UnknownNameError`` with suggestions)."""
+        if isinstance(key, int) and not isinstance(key, bool):
+            if not 0 <= key < len(self.holes):
+                raise InputError(f"{self.name}: hole index {key} out of range (plate has {len(self.holes)} holes)")
+            return self.holes[key]
+        for h in self.holes:
+            if h.name == key:
+                return h
+        raise UnknownNameError(f"hole of {self.name}", str(key), [h.name for h in self.holes if h.name])
+
+    def is_rectangle(self) -> bool:
+        """True for an axis-aligned rectangle outline (whatever the holes)."""
+        p = ShapelyPolygon(self.outline)
+        return len(self.outline) == 4 and abs(p.area - p.envelope.area) <= 1e-12 * p.area
+
+    def __repr__(self) -> str:
+        x0, y0, x1, y1 = ShapelyPolygon(self.outline).bounds
+        return (f"<Plate {self.name!r} {fmt_mm(x1 - x0)} x {fmt_mm(y1 - y0)} x {fmt_mm(self.thickness)} "
+                f"{self.material.name}, {len(self.holes)} holes, {len(self.cutouts)} cut-outs>")
+
+
+# ------------------------------------------------------------------------------------------ supports
+@dataclass(frozen=True)
+class EdgeSupport:
+    """Outline edges (indices, edge ``i`` from vertex ``i`` to ``i+1``, or ``"all"``), clamped or simply supported."""
+
+    edges: Any = "all"
+    condition: str = "simply_supported"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "condition", _condition(self.condition, "EdgeSupport"))
+        if isinstance(self.edges, str):
+            if self.edges != "all":
+                raise InputError(f"EdgeSupport.edges: expected 'all' or edge indices, got {self.edges!r}")
+        else:
+            idx = tuple(self.edges) if isinstance(self.edges, Sequence) else (self.edges,)
+            if not idx or not all(isinstance(i, int) and not isinstance(i, bool) and i >= 0 for i in idx):
+                raise InputError(f"EdgeSupport.edges: expected non-negative edge indices, got {self.edges!r}")
+            object.__setattr__(self, "edges", idx)
+
+    def edge_indices(self, plate: Plate) -> tuple[int, ...]:
+        n = len(plate.outline)
+        if self.edges == "all":
+            return tuple(range(n))
+        bad = [i for i in self.edges if i >= n]
+        if bad:
+            raise InputError(f"EdgeSupport: edge {bad[0]} does not exist; {plate.name} has edges 0..{n - 1}")
+        return self.edges
+
+
+@dataclass(frozen=True)
+class PointSupport:
+    """A support at a point of the plate (a corner, a standoff), clamped or simply supported (pinned)."""
+
+    point: Any
+    condition: str = "simply_supported"
+    unit: str | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "point", _point(self.point, "PointSupport.point", self.unit))
+        object.__setattr__(self, "condition", _condition(self.condition, "PointSupport"))
+        object.__setattr__(self, "unit", None)
+
+
+@dataclass(frozen=True)
+class HoleSupport:
+    """Support on the rim of holes (bolts): by index or name, or ``"all"``. ``"clamped"`` (bolted, default)
+    fixes the rim's rotation as well; ``"simply_supported"`` only its deflection.
+
+    ``washer_diameter`` (optional) widens the supported ring to the washer/head contact.
+    """
+
+    holes: Any = "all"
+    condition: str = "clamped"
+    washer_diameter: Any = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "condition", _condition(self.condition, "HoleSupport"))
+        if self.holes != "all":
+            hs = (self.holes,) if isinstance(self.holes, str | int) else tuple(self.holes)
+            if not hs:
+                raise InputError("HoleSupport.holes: give at least one hole (index or name) or 'all'")
+            object.__setattr__(self, "holes", hs)
+        if self.washer_diameter is not None:
+            object.__setattr__(self, "washer_diameter", _length(self.washer_diameter, "washer_diameter"))
+
+    def resolve(self, plate: Plate) -> tuple[Hole, ...]:
+        if self.holes == "all":
+            if not plate.holes:
+                raise InputError(f"HoleSupport: {plate.name} has no holes")
+            return plate.holes
+        hs = tuple(plate.hole(k) for k in self.holes)
+        if self.washer_diameter is not None:
+            for h in hs:
+                if self.washer_diameter <= h.diameter:
+                    raise InputError(f"HoleSupport.washer_diameter {fmt_mm(self.washer_diameter)} must exceed "
+                                     f"the hole diameter {fmt_mm(h.diameter)}")
+        return hs
+
+
+# ----------------------------------------------------------------------------------------- loads
+@dataclass(frozen=True)
+class PointLoad:
+    """A concentrated load at ``point``: force along z (``force``, +z up) and optional moments about x and y."""
+
+    point: Any
+    force: Any = "0 N"
+    moment_x: Any = "0 N*m"
+    moment_y: Any = "0 N*m"
+    unit: str | None = None
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "point", _point(self.point, "PointLoad.point", self.unit))
+        object.__setattr__(self, "force", to_si(self.force, "force", "PointLoad.force"))
+        object.__setattr__(self, "moment_x", to_si(self.moment_x, "torque", "PointLoad.moment_x"))
+        object.__setattr__(self, "moment_y", to_si(self.moment_y, "torque", "PointLoad.moment_y"))
+        object.__setattr__(self, "unit", None)
+        if self.force == 0 and self.moment_x == 0 and self.moment_y == 0:
+            raise InputError("PointLoad: force and moments are all zero")
+
+
+@dataclass(frozen=True)
+class PatchLoad:
+    """A load spread over a patch: a ``polygon`` or a rectangle (``center``, ``size`` = (dx, dy)).
+
+    Give either ``force`` (total, along z) or ``pressure`` (along z).
+    """
+
+    center: Any = None
+    size: Any = None
+    polygon: Any = None
+    force: Any = None
+    pressure: Any = None
+    unit: str | None = None
+
+    def __post_init__(self) -> None:
+        if (self.polygon is None) == (self.center is None):
+            raise InputError("PatchLoad: give either polygon or center and size")
+        if self.polygon is None:
+            if self.size is None:
+                raise InputError("PatchLoad: a rectangular patch needs size = (dx, dy)")
+            cx, cy = _point(self.center, "PatchLoad.center", self.unit)
+            dx, dy = (_length(s, f"PatchLoad.size[{i}]", self.unit) for i, s in enumerate(self.size))
+            poly = ((cx - dx / 2, cy - dy / 2), (cx + dx / 2, cy - dy / 2), (cx + dx / 2, cy + dy / 2),
+                    (cx - dx / 2, cy + dy / 2))
+        else:
+            poly = _points(self.polygon, "PatchLoad.polygon", self.unit)
+            if len(poly) < 3 or not shapely.LinearRing(poly).is_simple or ShapelyPolygon(poly).area <= 0:
+                raise InputError("PatchLoad.polygon: the patch outline crosses itself or encloses no area")
+        if (self.force is None) == (self.pressure is None):
+            raise InputError("PatchLoad: give exactly one of force (total) or pressure")
+        object.__setattr__(self, "polygon", poly)
+        object.__setattr__(self, "center", None)
+        object.__setattr__(self, "size", None)
+        area = ShapelyPolygon(poly).area
+        if self.force is not None:
+            object.__setattr__(self, "force", to_si(self.force, "force", "PatchLoad.force"))
+            object.__setattr__(self, "pressure", self.force / area)
+        else:
+            object.__setattr__(self, "pressure", to_si(self.pressure, "pressure", "PatchLoad.pressure"))
+            object.__setattr__(self, "force", self.pressure * area)
+        object.__setattr__(self, "unit", None)
+
+    @property
+    def area(self) -> float:
+        return ShapelyPolygon(self.polygon).area
+
+
+@dataclass(frozen=True)
+class PressureLoad:
+    """A uniform pressure over the whole plate (its net area), along +z."""
+
+    pressure: Any
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "pressure", to_si(self.pressure, "pressure", "PressureLoad.pressure"))
+
+
+@dataclass(frozen=True)
+class SelfWeight:
+    """The plate's weight, ``factor`` x g x density x thickness per unit area, along ``direction`` (-1: -z)."""
+
+    factor: float = 1.0
+    g: Any = "9.80665 m/s**2"
+    direction: int = -1
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "g", to_si(self.g, "acceleration", "SelfWeight.g"))
+        if self.direction not in (-1, 1):
+            raise InputError(f"SelfWeight.direction: -1 (down, -z) or +1, got {self.direction!r}")
+        if not self.factor > 0:
+            raise InputError(f"SelfWeight.factor: must be positive, got {self.factor!r}")
+
+    def pressure(self, plate: Plate) -> float:
+        """Equivalent pressure along z [Pa] (negative when acting along -z)."""
+        rho = to_si(plate.material.require("density"), "density", "density")
+        return self.direction * self.factor * self.g * rho * plate.thickness
+
+
+PlateSupport = EdgeSupport | PointSupport | HoleSupport
+PlateLoad = PointLoad | PatchLoad | PressureLoad | SelfWeight
+
+
+@dataclass(frozen=True)
+class PlateModel:
+    """A plate with its supports and loads (one load case), validated for the FEA plate model.
+
+    Supports and loads must lie on the plate: point supports and point loads inside the region or
+    on its boundary (not in a hole), patches inside the outline (they may overlap holes: the load on
+    the hole part is lost, and a warning is in :meth:`warnings`).
+    """
+
+    plate: Plate
+    supports: Sequence[Any] = ()
+    loads: Sequence[Any] = ()
+    name: str = ""
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "supports", tuple(self.supports))
+        object.__setattr__(self, "loads", tuple(self.loads))
+        if not self.supports:
+            raise InputError(f"{self.plate.name}: a plate model needs at least one support")
+        region = self.plate.region
+        tol = 1e-9 * math.sqrt(region.area)
+        for i, s in enumerate(self.supports):
+            if isinstance(s, EdgeSupport):
+                s.edge_indices(self.plate)
+            elif isinstance(s, HoleSupport):
+                s.resolve(self.plate)
+            elif isinstance(s, PointSupport):
+                if region.distance(ShapelyPoint(s.point)) > tol:
+                    raise InputError(f"supports[{i}]: point ({fmt_mm(s.point[0])}, {fmt_mm(s.point[1])}) is not on "
+                                     f"{self.plate.name}")
+            else:
+                raise InputError(f"supports[{i}]: expected EdgeSupport, PointSupport or HoleSupport, "
+                                 f"got {type(s).__name__}")
+        for i, ld in enumerate(self.loads):
+            if isinstance(ld, PointLoad):
+                if region.distance(ShapelyPoint(ld.point)) > tol:
+                    raise InputError(f"loads[{i}]: point load at ({fmt_mm(ld.point[0])}, {fmt_mm(ld.point[1])}) is "
+                                     f"not on {self.plate.name} (outside it or in a hole)")
+            elif isinstance(ld, PatchLoad):
+                if not ShapelyPolygon(self.plate.outline).buffer(tol).contains(ShapelyPolygon(ld.polygon)):
+                    raise InputError(f"loads[{i}]: the load patch extends beyond the outline of {self.plate.name}")
+            elif not isinstance(ld, PressureLoad | SelfWeight):
+                raise InputError(f"loads[{i}]: expected PointLoad, PatchLoad, PressureLoad or SelfWeight, "
+                                 f"got {type(ld).__name__}")
+
+    def total_force(self) -> pint.Quantity:
+        """Resultant force along z of all loads (patches counted on the plate's net area) [N]."""
+        region = self.plate.region
+        total = 0.0
+        for ld in self.loads:
+            if isinstance(ld, PointLoad):
+                total += ld.force
+            elif isinstance(ld, PatchLoad):
+                total += ld.pressure * ShapelyPolygon(ld.polygon).intersection(region).area
+            elif isinstance(ld, PressureLoad):
+                total += ld.pressure * self.plate.area.m_as("m**2")
+            elif isinstance(ld, SelfWeight):
+                total += ld.pressure(self.plate) * self.plate.area.m_as("m**2")
+        return from_si(total, "force")
+
+    def warnings(self) -> tuple[str, ...]:
+        out = []
+        for i, ld in enumerate(self.loads):
+            if isinstance(ld, PatchLoad):
+                on = ShapelyPolygon(ld.polygon).intersection(self.plate.region).area
+                if on < ld.area * (1 - 1e-6):
+                    out.append(f"loads[{i}]: {100 * (1 - on / ld.area):.1f} % of the patch lies over a hole or "
+                               "cut-out; that part of the load is not applied")
+        return tuple(out)
+
+
+__all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PointLoad",
+           "PatchLoad", "PressureLoad", "SelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS"]
