@@ -28,7 +28,10 @@ File format (one file per family, any number of ``[[material]]`` entries)::
     table_d_unit = "in"
     table_d = [0.004, 0.010]
     table_sut_unit = "ksi"
-    table_sut = [439, 399]
+    table_sut = [439, 387]
+    segments = [                      # optional: further laws where the law changes with d (A313)
+      { A = "2065 MPa", m = 0.263, d_range = ["2.5 mm", "5 mm"] },
+    ]
 
 A reference key used in a ``source`` string is expanded to its full text.
 """
@@ -166,6 +169,8 @@ def material_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | Non
             table_d=table_d, table_sut=table_s,
             source=expand(ws.get("source", d.get("source", ""))),
             table_source=expand(ws.get("table_source", "")),
+            segments=tuple(_wire_segment(seg, f"{where}.wire_strength.segments[{i}]")
+                           for i, seg in enumerate(ws.get("segments", []))),
         )
     return Material(
         name=name, category=d["category"], aliases=tuple(d.get("aliases", ())),
@@ -174,6 +179,16 @@ def material_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | Non
         notes=tuple(d.get("notes", ())) if not isinstance(d.get("notes"), str) else (d["notes"],),
         **kwargs,
     )
+
+
+def _wire_segment(seg: Mapping[str, Any], where: str) -> tuple[float, float, float, float]:
+    """One further power law of a wire: ``{A = "2065 MPa", m = 0.263, d_range = ["2.5 mm", "5 mm"]}``."""
+    unknown = set(seg) - {"A", "m", "d_range"}
+    if unknown or not {"A", "m", "d_range"} <= set(seg):
+        raise InputError(f"{where}: expected keys A, m and d_range, got {sorted(seg)}")
+    lo, hi = seg["d_range"]
+    return (to_si(seg["A"], "pressure", f"{where}.A"), float(seg["m"]),
+            to_si(lo, "length", f"{where}.d_range"), to_si(hi, "length", f"{where}.d_range"))
 
 
 def load_toml(path: str | Path) -> list[Material]:

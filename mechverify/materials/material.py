@@ -95,8 +95,16 @@ class SNCurve:
 class WireStrength:
     """Minimum tensile strength of spring wire as a function of wire diameter.
 
-    Inside the table's diameter range the table is interpolated linearly; outside it the power law
-    ``Sut = A / d^m`` (Shigley, Table 10-4) is used within its own range; beyond both,
+    Two kinds of data, either or both:
+
+    * the power law ``Sut = A / d^m`` (Shigley, Table 10-4) over its diameter range ``d_min..d_max``;
+      a wire whose law changes with diameter (A313 stainless, B159 phosphor bronze) lists the further
+      laws in ``segments`` as ``(A [Pa], m, d_min [m], d_max [m])`` tuples, in ``d_unit`` like the
+      first one;
+    * a table of minimum tensile strength by diameter (e.g. ASTM A228 Table 1), interpolated linearly.
+
+    :meth:`min_tensile_strength` uses the table inside its diameter range and the power law elsewhere
+    (``method="auto"``); ``method="table"`` or ``"power_law"`` forces one of them. Outside the data,
     :class:`ValidityError`.
     """
 
@@ -109,19 +117,53 @@ class WireStrength:
     table_sut: tuple[float, ...] = ()  # [Pa]
     source: str = ""
     table_source: str = ""
+    segments: tuple[tuple[float, float, float, float], ...] = ()  # further (A [Pa], m, d_min [m], d_max [m])
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "segments", tuple(tuple(float(x) for x in seg) for seg in self.segments))
+        for A, _m, lo, hi in self.laws():
+            if A <= 0 or not lo < hi:
+                raise InputError(f"wire strength: power law needs A > 0 and d_min < d_max (got A={A:g} Pa, "
+                                 f"range {lo:g}..{hi:g} m)")
+        if len(self.table_d) != len(self.table_sut):
+            raise InputError("wire strength: table_d and table_sut differ in length")
+        if self.table_d and any(b <= a for a, b in zip(self.table_d, self.table_d[1:])):
+            raise InputError("wire strength: table diameters must be strictly increasing")
+
+    def laws(self) -> tuple[tuple[float, float, float, float], ...]:
+        """All power laws as ``(A [Pa], m, d_min [m], d_max [m])``, the main one first."""
+        return ((self.A, self.m, self.d_min, self.d_max), *self.segments)
 
     def power_law(self, d: Any) -> pint.Quantity:
-        """``Sut = A / d^m`` with d in ``d_unit`` [Pa]."""
+        """``Sut = A / d^m`` with d in ``d_unit`` [Pa], from the law whose range holds ``d``."""
         dm = to_si(d, "length", "d")
-        if not (self.d_min <= dm <= self.d_max):
-            raise ValidityError(f"wire diameter {fmt(Q(dm, 'm'), 'mm')} outside the power law's range "
-                                f"{fmt(Q(self.d_min, 'm'), 'mm')}..{fmt(Q(self.d_max, 'm'), 'mm')}")
-        return Q(self.A / Q(dm, "m").m_as(self.d_unit) ** self.m, "Pa")
+        for A, m, lo, hi in self.laws():
+            if lo <= dm <= hi:
+                return Q(A / Q(dm, "m").m_as(self.d_unit) ** m, "Pa")
+        ranges = ", ".join(f"{fmt(Q(lo, 'm'), 'mm')}..{fmt(Q(hi, 'm'), 'mm')}" for _, _, lo, hi in self.laws())
+        raise ValidityError(f"wire diameter {fmt(Q(dm, 'm'), 'mm')} outside the power law's range {ranges}")
 
-    def min_tensile_strength(self, d: Any) -> pint.Quantity:
+    def table_value(self, d: Any) -> pint.Quantity:
+        """The tabulated minimum tensile strength at ``d``, interpolated linearly [Pa]."""
+        dm = to_si(d, "length", "d")
+        if not self.table_d:
+            raise ValidityError("this wire has no tensile-strength table")
+        if not self.table_d[0] <= dm <= self.table_d[-1]:
+            raise ValidityError(f"wire diameter {fmt(Q(dm, 'm'), 'mm')} outside the table's range "
+                                f"{fmt(Q(self.table_d[0], 'm'), 'mm')}..{fmt(Q(self.table_d[-1], 'm'), 'mm')}")
+        return Q(float(np.interp(dm, self.table_d, self.table_sut)), "Pa")
+
+    def min_tensile_strength(self, d: Any, method: str = "auto") -> pint.Quantity:
+        """Minimum tensile strength at diameter ``d`` [Pa]: table inside its range, else the power law."""
+        if method == "power_law":
+            return self.power_law(d)
+        if method == "table":
+            return self.table_value(d)
+        if method != "auto":
+            raise InputError(f"wire strength: method must be 'auto', 'table' or 'power_law', got {method!r}")
         dm = to_si(d, "length", "d")
         if self.table_d and self.table_d[0] <= dm <= self.table_d[-1]:
-            return Q(float(np.interp(dm, self.table_d, self.table_sut)), "Pa")
+            return self.table_value(Q(dm, "m"))
         return self.power_law(Q(dm, "m"))
 
 
