@@ -23,8 +23,11 @@ The closed-form Roark estimates for rectangular and circular plates are at the e
 from __future__ import annotations
 
 import math
+import tomllib
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -33,7 +36,7 @@ import shapely
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from mechverify.errors import InputError, UnknownNameError
+from mechverify.errors import InputError, UnknownNameError, ValidityError
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.units import Q, from_si, to_si
@@ -564,5 +567,186 @@ class PlateModel:
         return tuple(out)
 
 
+# ------------------------------------------------------------------------------ Roark closed forms
+ROARK_SOURCE = "Roark's Formulas for Stress and Strain, 8th ed. (Young, Budynas, Sadegh 2012)"
+_ROARK_DATA = Path(__file__).parent / "data" / "roark_plates.toml"
+PLATE_LOADINGS = ("uniform", "central")
+
+
+@cache
+def _roark_table() -> dict[str, Any]:
+    with _ROARK_DATA.open("rb") as fh:
+        return tomllib.load(fh)
+
+
+@dataclass(frozen=True)
+class PlateEstimate:
+    """Closed-form plate result: the largest bending stress and deflection, where, and from which case."""
+
+    max_stress: pint.Quantity  # magnitude of the largest surface bending stress [Pa]
+    max_deflection: pint.Quantity  # magnitude of the largest deflection [m]
+    stress_location: str
+    case: str
+    source: str
+    coefficients: dict[str, float] = field(default_factory=dict)
+    stresses: dict[str, pint.Quantity] = field(default_factory=dict)  # by location
+    warnings: tuple[str, ...] = ()
+
+
+def equivalent_contact_radius(r0: float, t: float) -> float:
+    """Roark's ``r0' = sqrt(1.6 r0^2 + t^2) - 0.675 t`` for ``r0 < 0.5 t``, else ``r0`` [m].
+
+    Roark 8th ed., Sec. 11.2 / Table 11.2 notation (after Westergaard); Timoshenko & Woinowsky-Krieger Sec. 19.
+    """
+    return math.sqrt(1.6 * r0 * r0 + t * t) - 0.675 * t if r0 < 0.5 * t else r0
+
+
+def _normalise(value: str, known: Sequence[str], aliases: dict[str, str], kind: str) -> str:
+    key = str(value).strip().lower().replace("-", "_").replace(" ", "_")
+    key = aliases.get(key, key)
+    if key not in known:
+        raise UnknownNameError(kind, value, [*known, *aliases])
+    return key
+
+
+_LOADING_ALIASES = {"pressure": "uniform", "distributed": "uniform", "point": "central", "center": "central",
+                    "centre": "central", "concentrated": "central"}
+
+
+def _plate_warnings(y: float, t: float, span: float) -> tuple[str, ...]:
+    out = []
+    if y > 0.5 * t:
+        out.append(f"deflection {y * 1e3:.3g} mm exceeds half the thickness ({t * 1e3:.3g} mm): small-deflection "
+                   "plate theory overestimates stress and deflection (membrane action; Roark 8th ed. Sec. 11.11)")
+    if t > 0.1 * span:
+        out.append(f"thickness {t * 1e3:.3g} mm exceeds a tenth of the span {span * 1e3:.3g} mm: thin-plate "
+                   "theory ignores transverse shear (Roark 8th ed. Sec. 11.1)")
+    return tuple(out)
+
+
+def roark_rectangular_plate(a: Any, b: Any, thickness: Any, E: Any, load: Any, edges: str = "simply_supported",
+                            loading: str = "uniform", load_radius: Any = "0 m") -> PlateEstimate:
+    """Rectangular plate, all four edges simply supported or clamped (Roark 8th ed., Table 11.4, nu = 0.3).
+
+    ``loading="uniform"``: ``load`` is a pressure q (cases 1a, 8a); ``loading="central"``: ``load`` is
+    the total force W on a small central circle of radius ``load_radius`` (cases 1b, 8b; ``r0'``
+    from :func:`equivalent_contact_radius`). ``a``, ``b`` in either order (the longer is ``a``).
+    Coefficients between tabulated a/b are interpolated linearly in b/a.
+
+    * uniform: ``sigma = beta q b^2 / t^2``, ``y = alpha q b^4 / (E t^3)``
+    * central: ``sigma = 3W/(2 pi t^2) [(1+nu) ln(2b/(pi r0')) + beta]``, ``y = alpha W b^2/(E t^3)``
+    * clamped: also ``sigma_edge = beta_edge q b^2/t^2`` (uniform) or ``beta_edge W/t^2`` (central)
+    """
+    A, B = to_si(a, "length", "a"), to_si(b, "length", "b")
+    t, e = to_si(thickness, "length", "thickness"), to_si(E, "pressure", "E")
+    for v, n in ((A, "a"), (B, "b"), (t, "thickness"), (e, "E")):
+        if v <= 0:
+            raise InputError(f"roark_rectangular_plate: {n} must be positive")
+    A, B = max(A, B), min(A, B)
+    edge = _normalise(edges, SUPPORT_CONDITIONS, {k: v for k, v in _CONDITION_ALIASES.items() if v != k},
+                      "plate edge condition")
+    kind = _normalise(loading, PLATE_LOADINGS, _LOADING_ALIASES, "plate loading")
+    data = _roark_table()
+    row = data[edge][kind]
+    nu = float(data["nu"])
+    x = [0.0 if r == 0 else 1.0 / r for r in row["a_over_b"]]  # b/a, increasing after reversal
+    order = np.argsort(x)
+    ba = B / A
+
+    def coef(name: str) -> float:
+        return float(np.interp(ba, np.asarray(x)[order], np.asarray(row[name], dtype=float)[order]))
+
+    coefs = {k: coef(k) for k in ("alpha", "beta", "beta_edge") if k in row}
+    stresses: dict[str, float] = {}
+    if kind == "uniform":
+        q = to_si(load, "pressure", "load")
+        y = coefs["alpha"] * abs(q) * B**4 / (e * t**3)
+        stresses["centre"] = coefs["beta"] * abs(q) * B**2 / t**2
+        if "beta_edge" in coefs:
+            stresses["centre of long edge"] = coefs["beta_edge"] * abs(q) * B**2 / t**2
+    else:
+        W = abs(to_si(load, "force", "load"))
+        r0 = to_si(load_radius, "length", "load_radius")
+        if r0 < 0:
+            raise InputError("load_radius: must be zero or positive")
+        r0e = equivalent_contact_radius(r0, t)
+        y = coefs["alpha"] * W * B**2 / (e * t**3)
+        stresses["centre"] = abs(3 * W / (2 * math.pi * t**2) * ((1 + nu) * math.log(2 * B / (math.pi * r0e))
+                                                                  + coefs["beta"]))
+        if "beta_edge" in coefs:
+            stresses["centre of long edge"] = coefs["beta_edge"] * W / t**2
+        coefs["r0_equivalent"] = r0e
+    where = max(stresses, key=stresses.get)
+    case = f"Table 11.4 case {row['case']}: rectangular plate, all edges {edge.replace('_', ' ')}, {row['loading']}"
+    return PlateEstimate(max_stress=from_si(stresses[where], "pressure"), max_deflection=from_si(y, "length"),
+                         stress_location=where, case=case, source=f"{ROARK_SOURCE}, Table 11.4 case {row['case']}",
+                         coefficients=coefs, stresses={k: from_si(v, "pressure") for k, v in stresses.items()},
+                         warnings=_plate_warnings(y, t, B))
+
+
+def roark_circular_plate(radius: Any, thickness: Any, E: Any, nu: Any, load: Any, edges: str = "simply_supported",
+                         loading: str = "uniform", load_radius: Any = "0 m") -> PlateEstimate:
+    """Solid circular plate of outer ``radius`` a, edge simply supported or clamped (Roark 8th ed., Table 11.2).
+
+    With ``D = E t^3 / (12 (1 - nu^2))``:
+
+    * uniform q, simply supported (case 10a): ``y = q a^4 (5+nu) / (64 D (1+nu))``, ``sigma_c = 3(3+nu) q a^2/(8 t^2)``
+    * uniform q, clamped (case 10b): ``y = q a^4/(64 D)``, ``sigma_edge = 3 q a^2/(4 t^2)``,
+      ``sigma_c = 3(1+nu) q a^2/(8 t^2)``
+    * central W on radius r0, simply supported (case 16): ``sigma_c = 3W/(2 pi t^2) [(1+nu) ln(a/r0') + 1]``,
+      ``y = W a^2 (3+nu) / (16 pi D (1+nu))``
+    * central W, clamped (case 17): ``sigma_c = 3W(1+nu)/(2 pi t^2) ln(a/r0')``, ``sigma_edge = 3W/(2 pi t^2)``,
+      ``y = W a^2 / (16 pi D)``
+
+    Same results in Timoshenko & Woinowsky-Krieger, Theory of Plates and Shells, 2nd ed., Secs. 15, 16, 19.
+    """
+    a, t = to_si(radius, "length", "radius"), to_si(thickness, "length", "thickness")
+    e, v = to_si(E, "pressure", "E"), to_si(nu, "dimensionless", "nu")
+    for val, n in ((a, "radius"), (t, "thickness"), (e, "E")):
+        if val <= 0:
+            raise InputError(f"roark_circular_plate: {n} must be positive")
+    if not -1 < v < 0.5:
+        raise InputError(f"roark_circular_plate: nu must lie in (-1, 0.5), got {v}")
+    edge = _normalise(edges, SUPPORT_CONDITIONS, {k: x for k, x in _CONDITION_ALIASES.items() if x != k},
+                      "plate edge condition")
+    kind = _normalise(loading, PLATE_LOADINGS, _LOADING_ALIASES, "plate loading")
+    D = e * t**3 / (12 * (1 - v * v))
+    stresses: dict[str, float] = {}
+    coefs: dict[str, float] = {}
+    if kind == "uniform":
+        q = abs(to_si(load, "pressure", "load"))
+        if edge == "simply_supported":
+            case, y = "10a", q * a**4 * (5 + v) / (64 * D * (1 + v))
+            stresses["centre"] = 3 * (3 + v) * q * a**2 / (8 * t**2)
+        else:
+            case, y = "10b", q * a**4 / (64 * D)
+            stresses["edge"] = 3 * q * a**2 / (4 * t**2)
+            stresses["centre"] = 3 * (1 + v) * q * a**2 / (8 * t**2)
+    else:
+        W = abs(to_si(load, "force", "load"))
+        r0 = to_si(load_radius, "length", "load_radius")
+        if r0 < 0:
+            raise InputError("load_radius: must be zero or positive")
+        r0e = equivalent_contact_radius(r0, t)
+        coefs["r0_equivalent"] = r0e
+        if r0e >= a:
+            raise ValidityError(f"load radius {r0e * 1e3:.3g} mm is not small against the plate radius")
+        if edge == "simply_supported":
+            case, y = "16", W * a**2 * (3 + v) / (16 * math.pi * D * (1 + v))
+            stresses["centre"] = 3 * W / (2 * math.pi * t**2) * ((1 + v) * math.log(a / r0e) + 1)
+        else:
+            case, y = "17", W * a**2 / (16 * math.pi * D)
+            stresses["centre"] = 3 * W * (1 + v) / (2 * math.pi * t**2) * math.log(a / r0e)
+            stresses["edge"] = 3 * W / (2 * math.pi * t**2)
+    where = max(stresses, key=stresses.get)
+    return PlateEstimate(max_stress=from_si(stresses[where], "pressure"), max_deflection=from_si(y, "length"),
+                         stress_location=where,
+                         case=f"Table 11.2 case {case}: circular plate, edge {edge.replace('_', ' ')}, {kind} load",
+                         source=f"{ROARK_SOURCE}, Table 11.2 case {case}", coefficients=coefs,
+                         stresses={k: from_si(x, "pressure") for k, x in stresses.items()},
+                         warnings=_plate_warnings(y, t, 2 * a))
+
+
 __all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PointLoad",
-           "PatchLoad", "PressureLoad", "SelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS"]
+           "PatchLoad", "PressureLoad", "SelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS",
+           "PlateEstimate", "roark_rectangular_plate", "roark_circular_plate", "equivalent_contact_radius"]
