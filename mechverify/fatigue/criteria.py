@@ -190,8 +190,8 @@ def _walker_si(sa: Any, sm: Any, Se: Any, gamma: Any, load_line: str) -> Any:
 def walker(sigma_a: Any, sigma_m: Any, Se: Any, gamma: Any, load_line: str = "proportional") -> Any:
     """Walker: equivalent fully reversed amplitude ``sigma_ar = sigma_max^(1-gamma) sigma_a^gamma`` [-].
 
-    gamma: material exponent (about 0.65 for steels, 0.45 for 2024-T3 aluminium; Ref. 2 Table 9.?
-    and Fig. 9.24); gamma = 0.5 is Smith-Watson-Topper. n is the factor on the load that makes
+    gamma: material exponent fitted to test data (about 0.65 for steels, 0.45 for 2024-T3 aluminium; Ref. 2 Sec. 9.7
+    ); gamma = 0.5 is Smith-Watson-Topper. n is the factor on the load that makes
     sigma_ar = Se. Ref. 2, Eq. (9.19).
     """
     _check(sigma_a, load_line, Se=Se)
