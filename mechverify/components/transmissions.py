@@ -230,12 +230,15 @@ class ScrewDrive(_Reduction):
     torques at the friction coefficient ``mu`` give the forward efficiency η = F·l/(2π·T_raise)
     and the back-drive efficiency η' = −2π·T_lower/(F·l) (negative when self-locking) [2]. Both
     torques are proportional to the axial force, so they are evaluated once for a unit force.
-    ``inertia`` is the screw shaft's (and coupling's) inertia.
+    ``inertia`` is the screw shaft's (and coupling's) inertia; ``collar_mu``/``collar_diameter``
+    add thrust-collar friction (passed to the screw's torque methods).
     """
 
     screw: Any
     mu: Any
     inertia: Any = None
+    collar_mu: Any = 0.0
+    collar_diameter: Any = None
     name: str = "lead screw"
     input_kind: str = field(default="angle", init=False)
     output_kind: str = field(default="length", init=False)
@@ -247,8 +250,9 @@ class ScrewDrive(_Reduction):
         object.__setattr__(self, "mu", mu)
         lead = to_si(self.screw.lead, "length", f"{self.name}.screw.lead")
         unit = Q(1.0, "N")
-        k_raise = to_si(self.screw.raise_torque(unit, mu), "torque", "raise_torque")
-        k_lower = to_si(self.screw.lower_torque(unit, mu), "torque", "lower_torque")
+        collar = (self.collar_mu, self.collar_diameter)
+        k_raise = to_si(self.screw.raise_torque(unit, mu, *collar), "torque", "raise_torque")
+        k_lower = to_si(self.screw.lower_torque(unit, mu, *collar), "torque", "lower_torque")
         object.__setattr__(self, "_lead", lead)
         object.__setattr__(self, "_eta_f", lead / (2 * math.pi * k_raise))
         object.__setattr__(self, "_eta_b", -2 * math.pi * k_lower / lead)
