@@ -1,0 +1,127 @@
+"""Checks of rolling bearings (rating life, static safety, speed) and plain bushings (p, v, pv).
+
+Each returns a :class:`CheckResult` oriented so that it passes while demand <= capacity / required_sf.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from mechverify.checks.result import CheckResult
+from mechverify.components.bearings import (
+    BallBearing,
+    PlainBushing,
+    equivalent_static_load,
+    life_hours,
+    reliability_factor,
+)
+from mechverify.units import Q, fmt, to_si
+
+ISO281 = "ISO 281:2007, Eq. (1), Table 3 (X, Y, e), Table 12 (a1)"
+ISO76 = "ISO 76:2006, Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0"
+
+
+def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
+    fa = Q(to_si(Fa, "force", "Fa"), "N")
+    if fa > b.axial_load_limit:
+        return (f"axial load {fmt(fa.to('kN'))} exceeds {fmt(b.axial_load_limit)} recommended for "
+                f"deep groove ball bearing {b.designation} (SKF 17000 EN: 0.25 C0 small/light series, else 0.5 C0)",)
+    return ()
+
+
+def bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_life: Any, *, reliability: float = 0.9,
+                 load_case: str = "") -> CheckResult:
+    """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours."""
+    eq = b.equivalent_load(Fr, Fa)
+    a1 = reliability_factor(reliability)
+    L = b.rating_life(Fr, Fa, reliability)
+    Lh = life_hours(L, speed)
+    req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
+    return CheckResult(
+        check="bearing_life", component=b.designation, demand=req, capacity=Lh,
+        title="Bearing rating life", formula=r"L_{nh} = a_1 \left(\frac{C}{P}\right)^3 \frac{10^6}{60 n},\ "
+                                             r"P = X F_r + Y F_a",
+        source=ISO281,
+        inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"),
+                "n": Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm"), "C": b.C, "C0": b.C0,
+                "f0": b.f0, "reliability": reliability},
+        notes=(f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} (f0·Fa/C0 = {eq.relative_axial_load:.3g}, "
+               f"e = {eq.e:.3g})", f"a1 = {a1:.3g} for reliability {reliability:g}",
+               "basic rating life only: no aISO/aSKF factor for lubrication or contamination"),
+        warnings=_axial_warning(b, Fa), load_case=load_case,
+        details={"P": eq.P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L})
+
+
+def bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, required_s0: float = 1.0,
+                          load_case: str = "") -> CheckResult:
+    """Static safety s0 = C0/P0 against the required s0 (SKF guideline for rotating ball bearings: 1,
+    1.5 with shock loads, 2 where low noise matters; ISO 76)."""
+    P0 = equivalent_static_load(Fr, Fa)
+    return CheckResult(
+        check="bearing_static_safety", component=b.designation, demand=P0.to("N"), capacity=b.C0.to("N"),
+        required_sf=required_s0, title="Bearing static safety (s0)",
+        formula=r"s_0 = C_0 / P_0,\ P_0 = \max(0.6 F_r + 0.5 F_a,\ F_r)", source=ISO76,
+        inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"), "C0": b.C0},
+        notes=(f"required s0 = {required_s0:g} (SKF 17000 EN guideline: >= 1 normal, 1.5 shock, 2 quiet running)",),
+        warnings=_axial_warning(b, Fa), load_case=load_case)
+
+
+def bearing_speed(b: BallBearing, speed: Any, *, load_case: str = "") -> CheckResult:
+    """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
+    n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
+    warnings: tuple[str, ...] = ()
+    if b.variant == "sealed":
+        warnings = (f"{b.designation} has contact seals: the catalogue limiting speed used here is the open "
+                    "bearing's; contact-sealed variants are limited much lower (see the catalogue)",)
+    notes = [f"limiting speed {fmt(b.limiting_speed.to('rpm'))} (open bearing); reference speed "
+             f"{fmt(b.reference_speed.to('rpm'))} (thermal, oil)"]
+    if n > b.reference_speed:
+        notes.append("above the reference speed: check the permissible speed for the actual load and lubrication")
+    return CheckResult(
+        check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
+        title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
+        notes=tuple(notes), warnings=warnings, load_case=load_case)
+
+
+def _bushing_inputs(bush: PlainBushing, F: Any, v: Any) -> dict[str, Any]:
+    return {"F": Q(to_si(F, "force", "F"), "N"), "v": Q(to_si(v, "velocity", "v"), "m/s"), "d": bush.d,
+            "L": bush.length}
+
+
+def _bushing_notes(bush: PlainBushing) -> tuple[str, ...]:
+    m = bush.material_record
+    return (f"limits from {'material ' + repr(m.name) if m is not None else 'the given values'}; "
+            "p = F/(d L) is the mean projected pressure",)
+
+
+def bushing_pressure_check(bush: PlainBushing, F: Any, *, load_case: str = "") -> CheckResult:
+    """Projected pressure p = F/(dL) against p_max."""
+    return CheckResult(
+        check="bushing_pressure", component=bush.name, demand=bush.pressure(F), capacity=bush.limit("p_max"),
+        title="Bushing pressure", formula=r"p = \frac{F}{d L} \le p_{max}",
+        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        inputs={"F": Q(to_si(F, "force", "F"), "N"), "d": bush.d, "L": bush.length},
+        notes=_bushing_notes(bush), load_case=load_case)
+
+
+def bushing_velocity_check(bush: PlainBushing, v: Any, *, load_case: str = "") -> CheckResult:
+    """Sliding speed against v_max."""
+    vv = Q(abs(to_si(v, "velocity", "v")), "m/s")
+    return CheckResult(
+        check="bushing_velocity", component=bush.name, demand=vv, capacity=bush.limit("v_max"),
+        title="Bushing sliding speed", formula=r"v \le v_{max}",
+        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        inputs={"v": vv}, notes=_bushing_notes(bush), load_case=load_case)
+
+
+def bushing_pv_check(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "") -> CheckResult:
+    """p·v against pv_max (the wear/heating limit of dry-running bushings)."""
+    return CheckResult(
+        check="bushing_pv", component=bush.name, demand=bush.pv(F, v), capacity=bush.limit("pv_max"),
+        title="Bushing pv", formula=r"p\,v = \frac{F}{d L} v \le (pv)_{max}",
+        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case)
+
+
+__all__ = ["bearing_life", "bearing_static_safety", "bearing_speed", "bushing_pressure_check",
+           "bushing_velocity_check", "bushing_pv_check"]

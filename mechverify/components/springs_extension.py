@@ -1,0 +1,179 @@
+"""Helical extension springs with full-loop (machine) hooks: rate, initial tension, body and hook stresses.
+
+References
+----------
+[1] Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed., McGraw-Hill 2015, Sec. 10-11
+    (extension springs: Nₐ = N_b + G/E, L₀ = (2C - 1 + N_b)d, hook stresses at A (bending) and B (torsion),
+    preferred initial stress range, Fig. 10-7) and Table 10-7 (static allowables).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import pint
+
+from mechverify.components import spring_formulas as sf
+from mechverify.errors import InputError
+from mechverify.materials.material import Material
+from mechverify.units import Q, fmt, to_si
+
+
+def hook_bending_factor(C1: float) -> float:
+    """(K)_A = (4C₁² - C₁ - 1)/(4C₁(C₁ - 1)), C₁ = 2r₁/d (Shigley [1] Sec. 10-11)."""
+    if not C1 > 1:
+        raise InputError(f"hook bend index C1 = 2 r1/d must exceed 1, got {C1:g}")
+    return (4 * C1 * C1 - C1 - 1) / (4 * C1 * (C1 - 1))
+
+
+def hook_torsion_factor(C2: float) -> float:
+    """(K)_B = (4C₂ - 1)/(4C₂ - 4), C₂ = 2r₂/d (Shigley [1] Sec. 10-11)."""
+    if not C2 > 1:
+        raise InputError(f"hook side-bend index C2 = 2 r2/d must exceed 1, got {C2:g}")
+    return (4 * C2 - 1) / (4 * C2 - 4)
+
+
+@dataclass(frozen=True)
+class ExtensionSpring:
+    """A helical extension spring with full-loop hooks.
+
+    ``d`` wire, one of ``D``/``OD``/``ID``, ``Nb`` body coils, ``Fi`` initial tension, ``r1`` the
+    mean radius of the hook bend at A (default D/2, a full loop), ``r2`` the side-bend radius at B
+    (needed only for the hook torsion stress), ``material`` (default A228 music wire).
+    """
+
+    d: Any
+    Nb: float
+    D: Any = None
+    OD: Any = None
+    ID: Any = None
+    Fi: Any = "0 N"
+    r1: Any = None
+    r2: Any = None
+    material: str | Material = "A228"
+    G: Any = None
+    E: Any = None
+    Sut: Any = None
+    spring_class: str | None = None
+    name: str = "extension spring"
+    _si: dict[str, float] = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        d = to_si(self.d, "length", "d")
+        if d <= 0:
+            raise InputError(f"{self.name}: wire diameter d must be positive")
+        given = [k for k in ("D", "OD", "ID") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise InputError(f"{self.name}: give exactly one of D, OD or ID; got {given or 'none'}")
+        raw = to_si(getattr(self, given[0]), "length", given[0])
+        D = {"D": raw, "OD": raw - d, "ID": raw + d}[given[0]]
+        if D <= d:
+            raise InputError(f"{self.name}: mean coil diameter D = {fmt(Q(D, 'm'), 'mm')} must exceed "
+                             f"d = {fmt(Q(d, 'm'), 'mm')}")
+        Nb = float(self.Nb)
+        if Nb <= 0:
+            raise InputError(f"{self.name}: body coils must be positive, got Nb = {Nb:g}")
+        Fi = to_si(self.Fi, "force", "Fi")
+        if Fi < 0:
+            raise InputError(f"{self.name}: initial tension must be >= 0")
+        r1 = D / 2 if self.r1 is None else to_si(self.r1, "length", "r1")
+        r2 = math.nan if self.r2 is None else to_si(self.r2, "length", "r2")
+        mat = sf.resolve_material(self.material)
+        G = to_si(self.G if self.G is not None else mat.require("G"), "pressure", "G")
+        E = to_si(self.E if self.E is not None else mat.require("E"), "pressure", "E")
+        Sut = to_si(self.Sut if self.Sut is not None else sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut")
+        object.__setattr__(self, "_si", dict(d=d, D=D, Nb=Nb, Fi=Fi, r1=r1, r2=r2, G=G, E=E, Sut=Sut))
+        object.__setattr__(self, "_class", sf.spring_wire_class(mat, self.spring_class))
+
+    @property
+    def index(self) -> float:
+        return self._si["D"] / self._si["d"]
+
+    @property
+    def active_coils(self) -> float:
+        """Nₐ = N_b + G/E (the hooks add G/E coils; Shigley [1] Sec. 10-11)."""
+        s = self._si
+        return s["Nb"] + s["G"] / s["E"]
+
+    @property
+    def free_length(self) -> pint.Quantity:
+        """Free length inside the hooks L₀ = 2(D - d) + (N_b + 1)d = (2C - 1 + N_b)d ([1] Sec. 10-11)."""
+        s = self._si
+        return Q(2 * (s["D"] - s["d"]) + (s["Nb"] + 1) * s["d"], "m").to("mm")
+
+    @property
+    def rate(self) -> pint.Quantity:
+        s = self._si
+        return sf.helical_rate(Q(s["d"], "m"), Q(s["D"], "m"), self.active_coils, Q(s["G"], "Pa")).to("N/mm")
+
+    @property
+    def initial_tension(self) -> pint.Quantity:
+        return Q(self._si["Fi"], "N")
+
+    def force(self, extension: Any) -> pint.Quantity:
+        """F = F_i + k·y."""
+        y = to_si(extension, "length", "extension")
+        if y < 0:
+            raise InputError(f"{self.name}: extension must be >= 0")
+        return Q(self._si["Fi"] + self.rate.m_as("N/m") * y, "N")
+
+    def extension(self, force: Any) -> pint.Quantity:
+        """y = (F - F_i)/k; zero below the initial tension."""
+        F = to_si(force, "force", "force")
+        return Q(max(F - self._si["Fi"], 0.0) / self.rate.m_as("N/m"), "m").to("mm")
+
+    def body_stress(self, force: Any) -> pint.Quantity:
+        """Body shear stress τ = K_B·8FD/(πd³) ([1] Eq. (10-7))."""
+        s = self._si
+        KB = sf.bergstrasser_factor(self.index)
+        return sf.helical_shear_stress(force, Q(s["D"], "m"), Q(s["d"], "m"), KB).to("MPa")
+
+    def hook_bending_stress(self, force: Any) -> pint.Quantity:
+        """Bending + tension at hook section A: σ_A = F[(K)_A·16D/(πd³) + 4/(πd²)], C₁ = 2r₁/d ([1] Sec. 10-11)."""
+        s = self._si
+        F = to_si(force, "force", "force")
+        KA = hook_bending_factor(2 * s["r1"] / s["d"])
+        return Q(F * (KA * 16 * s["D"] / (math.pi * s["d"] ** 3) + 4 / (math.pi * s["d"] ** 2)), "Pa").to("MPa")
+
+    def hook_torsion_stress(self, force: Any) -> pint.Quantity:
+        """Torsion at hook section B: τ_B = (K)_B·8FD/(πd³), C₂ = 2r₂/d ([1] Sec. 10-11)."""
+        s = self._si
+        if math.isnan(s["r2"]):
+            raise InputError(f"{self.name}: the hook torsion stress needs the side-bend radius r2")
+        KB = hook_torsion_factor(2 * s["r2"] / s["d"])
+        return sf.helical_shear_stress(force, Q(s["D"], "m"), Q(s["d"], "m"), KB).to("MPa")
+
+    @property
+    def initial_stress(self) -> pint.Quantity:
+        """Uncorrected initial torsional stress τᵢ = 8FᵢD/(πd³) (as plotted in [1] Fig. 10-7)."""
+        s = self._si
+        return sf.helical_shear_stress(Q(s["Fi"], "N"), Q(s["D"], "m"), Q(s["d"], "m"), 1.0).to("MPa")
+
+    def initial_stress_range(self) -> tuple[pint.Quantity, pint.Quantity]:
+        """Preferred range of τᵢ: 33 500/exp(0.105C) ± 1000(4 - (C - 3)/6.5) [psi] ([1] Sec. 10-11, Fig. 10-7)."""
+        C = self.index
+        mid = 33500 / math.exp(0.105 * C)
+        half = 1000 * (4 - (C - 3) / 6.5)
+        return Q(mid - half, "psi").to("MPa"), Q(mid + half, "psi").to("MPa")
+
+    def allowable(self, where: str = "body") -> pint.Quantity:
+        """Static allowable stress ([1] Table 10-7): ``body`` torsion, hook ``end_torsion``, hook ``end_bending``."""
+        key = {"body": "extension_body", "end_torsion": "extension_end_torsion",
+               "end_bending": "extension_end_bending"}
+        if where not in key:
+            from mechverify.errors import UnknownNameError
+            raise UnknownNameError("extension-spring stress location", where, key)
+        return (sf.class_fraction(self._class, key[where]) * Q(self._si["Sut"], "Pa")).to("MPa")  # type: ignore[attr-defined]
+
+    @property
+    def tensile_strength(self) -> pint.Quantity:
+        return Q(self._si["Sut"], "Pa").to("MPa")
+
+    def __repr__(self) -> str:
+        return (f"<ExtensionSpring {self.name!r} d={fmt(Q(self._si['d'], 'm'), 'mm')} "
+                f"D={fmt(Q(self._si['D'], 'm'), 'mm')} Nb={self._si['Nb']:g} Fi={fmt(self.initial_tension)}>")
+
+
+__all__ = ["ExtensionSpring", "hook_bending_factor", "hook_torsion_factor"]
