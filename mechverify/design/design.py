@@ -76,7 +76,7 @@ class Design:
         out = []
         for case, comps in self.data.load_cases.items():
             loads = comps.get(entry.name)
-            if loads is not None and all(n in loads for n in spec.needs):
+            if loads is not None and all(any(a in loads for a in n.split("|")) for n in spec.needs):
                 out.append((case, loads))
         return out
 
@@ -85,8 +85,9 @@ class Design:
         for entry in self.data.components.values():
             for spec, _ in self.enabled_checks(entry):
                 if spec.needs and not self._cases_for(entry, spec):
+                    needs = ", ".join(n.replace("|", " or ") for n in spec.needs)
                     errors.append((f"components.{entry.name}.checks.{spec.name}",
-                                   f"needs {', '.join(spec.needs)} from a load case, and no [load_cases.*."
+                                   f"needs {needs} from a load case, and no [load_cases.*."
                                    f"{entry.name}] gives it (give it, or disable the check with "
                                    f"checks.{spec.name} = false)"))
         if errors:

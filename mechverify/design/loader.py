@@ -334,7 +334,7 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
         if any(p == path or p.startswith(path + ".") for p, _ in col.errors[:n_before]):
             continue  # its fields already failed validation
         try:
-            e.obj = e.type.build(e.params, ctx)
+            e.obj = e.type.build({**e.params, "_name": e.name}, ctx)
         except MechverifyError as exc:
             col.add(path, str(exc))
 

@@ -50,7 +50,8 @@ class CheckSpec:
     ``run(component, loads, context) -> CheckResult | list[CheckResult]``; ``loads`` is the mapping of
     this component's load fields in one load case (``None`` when the check needs no loads, i.e.
     ``needs`` is empty); ``context`` gives requirements and the check's required safety factor.
-    ``sf_kind`` names the project-wide safety-factor class it uses by default (``static``,
+    ``needs`` lists load names every case must give for the check to run there; ``"a|b"`` accepts
+    either. ``sf_kind`` names the project-wide safety-factor class it uses by default (``static``,
     ``buckling``, ``fatigue``, ...).
     """
 

@@ -1,0 +1,92 @@
+"""``lead_screw``: a lead screw with its nut (thread, supports, nut material, friction range, limits)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from mechverify.checks import screws as sc
+from mechverify.components.power_screw import LeadScrew, Nut
+from mechverify.design.adapters.common import pick
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+
+END_CASES = ("fixed-free", "pinned-pinned", "supported-supported", "fixed-pinned", "fixed-supported", "fixed-fixed")
+
+
+@dataclass(frozen=True)
+class ScrewDrive:
+    """A lead screw and the nut that runs on it."""
+
+    screw: LeadScrew
+    nut: Nut
+
+
+def _build(p: dict[str, Any], ctx: dict[str, Any]) -> ScrewDrive:
+    screw = LeadScrew(name=p["_name"], **pick(p, "thread", "length", "material", "end_supports"))
+    nut = Nut(name=f"{p['_name']} nut", **pick(p, "mu_min", "mu_max", material="nut_material", length="nut_length",
+                                                  engaged_threads="nut_engaged_threads", p_allow="nut_p_allow",
+                                                  pv_allow="nut_pv_allow"))
+    return ScrewDrive(screw, nut)
+
+
+def _speed(loads: dict[str, Any]) -> dict[str, Any]:
+    return pick(loads, "rotational_speed") if "rotational_speed" in loads else {"speed": loads["speed"]}
+
+
+TYPE = REGISTRY.register(ComponentType(
+    name="lead_screw",
+    doc="A lead screw and its nut: thread by designation (Tr10x2, Tr16x8P4, 1/2-10 ACME), length between the "
+        "supports, end supports, nut material, friction range and limits.",
+    fields=(
+        Field("thread", "str", "thread designation, e.g. 'Tr10x2'", required=True),
+        Field("length", "length", "length between the end supports", required=True),
+        Field("material", "material", "screw material"),
+        Field("end_supports", "choice", "end fixity for buckling and whirling", choices=END_CASES,
+              default="fixed-pinned"),
+        Field("nut_material", "material", "nut material (friction and limits are taken from it when not given)"),
+        Field("nut_length", "length", "length of the nut's thread"),
+        Field("nut_engaged_threads", "float", "engaged turns (instead of nut_length)"),
+        Field("mu_min", "dimensionless", "lowest friction coefficient nut/screw (self-locking, holding)"),
+        Field("mu_max", "dimensionless", "highest friction coefficient nut/screw (drive torque)"),
+        Field("nut_p_allow", "pressure", "allowable flank pressure of the nut"),
+        Field("nut_pv_allow", "pv", "pv limit of the nut material"),
+    ),
+    build=lambda p, ctx: _build(p, ctx),
+    loads=(
+        Field("axial_force", "force", "axial force on the screw (magnitude)"),
+        Field("speed", "velocity", "linear speed of the nut"),
+        Field("rotational_speed", "angular_velocity", "screw speed"),
+        Field("holding_torque", "torque", "torque available to hold the load at rest (motor detent/holding, brake)"),
+        Field("compressive", "bool", "the axial force compresses the screw between its supports", default=True),
+    ),
+    checks=(
+        CheckSpec("self_locking", lambda c, loads, ctx: sc.check_self_locking(c.screw, c.nut),
+                  "Self-locking", sf_kind="self_locking",
+                  explain="Lead angle against the friction angle at the lowest mu of the nut's range "
+                          "(Shigley 9th ed. Sec. 8-2, Hamrock 3rd ed. Sec. 16.3)."),
+        CheckSpec("holding_torque", lambda c, loads, ctx: sc.check_holding_torque(
+            c.screw, c.nut, loads["axial_force"], loads["holding_torque"]),
+            "Back-drive holding torque", needs=("axial_force", "holding_torque"), default=False,
+            explain="Torque the load puts back on the screw at mu_min against the torque available at rest."),
+        CheckSpec("nut_flank_pressure", lambda c, loads, ctx: sc.check_nut_flank_pressure(
+            c.screw, c.nut, loads["axial_force"]), "Nut flank pressure", needs=("axial_force",), sf_kind="pressure",
+            explain="Mean flank pressure p = F/(pi d2 H1 n) against the nut's allowable pressure (DIN 103)."),
+        CheckSpec("nut_pv", lambda c, loads, ctx: sc.check_nut_pv(c.screw, c.nut, loads["axial_force"],
+                                                                 **_speed(loads)),
+                  "Nut pv", needs=("axial_force", "speed|rotational_speed"), sf_kind="pressure",
+                  explain="Flank pressure times sliding speed at d2 against the nut material's pv limit."),
+        CheckSpec("screw_strength", lambda c, loads, ctx: sc.check_screw_strength(c.screw, loads["axial_force"],
+                                                                                  nut=c.nut),
+                  "Screw body stress", needs=("axial_force",), sf_kind="static",
+                  explain="Von Mises stress at the minor diameter from axial force and the raising torque at mu_max."),
+        CheckSpec("buckling", lambda c, loads, ctx: sc.check_screw_buckling(c.screw, loads["axial_force"])
+                  if loads.get("compressive", True) else [],
+                  "Screw buckling", needs=("axial_force",), sf_kind="buckling",
+                  explain="Axial force against the Euler/Johnson critical load of the root section with the "
+                          "end-fixity constant of Shigley 10th ed. Table 4-2 (recommended values)."),
+        CheckSpec("critical_speed", lambda c, loads, ctx: sc.check_critical_speed(
+            c.screw, c.screw.rotational_speed(loads["speed"]) if "speed" in loads else loads["rotational_speed"]),
+            "Critical (whirling) speed", needs=("speed|rotational_speed",), sf_kind="speed",
+            explain="Operating speed against the first bending (whirling) speed of the screw between its supports."),
+    ),
+))
