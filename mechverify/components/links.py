@@ -1,0 +1,414 @@
+"""Straight links between two pin holes (or bars with end conditions) and their closed-form formulas.
+
+* :class:`Lug` — the eye at a pin hole: hole diameter, width across the hole, thickness, distance
+  from the hole centre to the end (``R``), straight or rounded end.
+* :class:`Link` — length between pin centres, body :class:`~mechverify.components.sections.Section`,
+  material, optional lug (same at both ends), pin diameter, buckling end condition and an optional
+  strength knock-down for 3D-printed parts (``strength_factor``, e.g. printed orientation).
+
+Formulas (one function each):
+
+* body stresses under axial force, bending and torsion (elementary beam theory; von Mises);
+* stress-concentration factor of a hole in a finite-width strip in tension (Heywood, in Peterson);
+* pin shear, pin bearing, net-section tension;
+* lug strength after ASME BTH-1 (Duerr's empirical pinned-plate equations): tension through the
+  pinhole, fracture (tear-out) beyond the pinhole, double-plane shear-out, bearing;
+* column buckling via :mod:`mechverify.components.columns`;
+* maximum deflection and moment of the common beam cases (Shigley Table A-9).
+
+References
+----------
+1. ASME BTH-1-2008, *Design of Below-the-Hook Lifting Devices*, Sec. 3-3.3 (pinned connections),
+   Eqs. (3-45) to (3-52), Commentary Eq. (C3-2); D. Duerr, "Pinned connection strength and
+   behavior", J. Struct. Eng. 132(2) (2006) 182-194.
+2. W. D. Pilkey, D. F. Pilkey, *Peterson's Stress Concentration Factors*, 3rd ed., Wiley 2008,
+   Sec. 4.3 and Chart 4.1 (circular hole in a finite-width plate in tension; Heywood's formula).
+3. R. G. Budynas, J. K. Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed., 2015,
+   Table A-9 (shear, moment and deflection of beams); Sec. 3-13 (Kt for static loading).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import pint
+
+from mechverify.components import columns
+from mechverify.components.sections import Section, make_section
+from mechverify.errors import InputError, UnknownNameError
+from mechverify.materials import Material
+from mechverify.materials import get as get_material
+from mechverify.units import from_si, si_function, to_si
+
+BTH1_SOURCE = "ASME BTH-1-2008, Sec. 3-3.3.1, Eqs. (3-45) to (3-52), Commentary Eq. (C3-2)"
+BRITTLE_ELONGATION = 0.05  # elongation at break below which a material is treated as brittle (Shigley Sec. 2-1)
+
+
+def _pos(v: Any, dim: str, name: str, *, allow_zero: bool = False) -> float:
+    x = to_si(v, dim, name)
+    if x < 0 or (x == 0 and not allow_zero):
+        raise InputError(f"{name}: must be {'zero or ' if allow_zero else ''}positive, got {v!r}")
+    return x
+
+
+# ------------------------------------------------------------------------------------ formulas
+@si_function(returns="dimensionless", d="length", w="length")
+def kt_hole_finite_width_tension(d: float, w: float) -> float:
+    """Net-section ``Ktn = 2 + (1 - d/w)^3`` of a central hole in a strip in tension (Heywood).
+
+    Peterson's SCF 3rd ed., Sec. 4.3.2, Chart 4.1; within about 2 % of Howland's exact values for
+    ``0 <= d/w <= 0.7`` (``Ktn = sigma_max / sigma_net``, ``sigma_net = P / ((w - d) t)``).
+    """
+    if not 0 < d < w:
+        raise InputError(f"kt_hole_finite_width_tension: need 0 < d < w, got d = {d * 1e3:g} mm, w = {w * 1e3:g} mm")
+    return 2.0 + (1.0 - d / w) ** 3
+
+
+@si_function(returns="pressure", force="force", d="length")
+def pin_shear_stress(force: float, d: float, planes: int = 2) -> float:
+    """Average shear stress in a pin ``tau = F / (n pi d^2 / 4)`` [Pa], ``n`` shear planes (2: clevis)."""
+    if not (isinstance(planes, int) and planes > 0):
+        raise InputError(f"planes: a positive whole number of shear planes, got {planes!r}")
+    if d <= 0:
+        raise InputError("pin diameter must be positive")
+    return abs(force) / (planes * math.pi * d * d / 4)
+
+
+@si_function(returns="pressure", force="force", d="length", t="length")
+def bearing_stress(force: float, d: float, t: float) -> float:
+    """Projected-area bearing stress ``sigma_br = F / (d t)`` [Pa] of a pin of diameter d in a plate of thickness t."""
+    if d <= 0 or t <= 0:
+        raise InputError("bearing_stress: d and t must be positive")
+    return abs(force) / (d * t)
+
+
+@si_function(returns="pressure", force="force", w="length", d="length", t="length")
+def net_section_stress(force: float, w: float, d: float, t: float) -> float:
+    """Nominal net-section stress at a hole ``sigma = F / ((w - d) t)`` [Pa]."""
+    if not 0 < d < w or t <= 0:
+        raise InputError("net_section_stress: need 0 < d < w and t > 0")
+    return force / ((w - d) * t)
+
+
+@si_function(returns="dimensionless", pin_d="length", hole_d="length")
+def bth1_pin_clearance_factor(pin_d: float, hole_d: float) -> float:
+    """``Cr = 1 - 0.275 sqrt(1 - Dp^2/Dh^2)`` [-], strength reduction for pin-to-hole clearance (BTH-1 Eq. 3-46)."""
+    if not 0 < pin_d <= hole_d:
+        raise InputError(f"pin diameter {pin_d * 1e3:g} mm must be positive and not exceed the hole "
+                         f"{hole_d * 1e3:g} mm")
+    return 1.0 - 0.275 * math.sqrt(1.0 - (pin_d / hole_d) ** 2)
+
+
+@dataclass(frozen=True)
+class Lug:
+    """The eye of a link at a pin hole (plate-type lug), dimensions in the plane of the link.
+
+    ``width``: across the hole, perpendicular to the load; ``edge_distance`` ``R``: from the hole
+    centre to the end of the lug along the load; ``thickness`` ``t``; ``rounded_end``: a curved
+    (semicircular) end of radius ``R`` rather than a square one.
+    """
+
+    hole_diameter: Any
+    width: Any
+    thickness: Any
+    edge_distance: Any
+    rounded_end: bool = True
+
+    def __post_init__(self) -> None:
+        D = _pos(self.hole_diameter, "length", "lug.hole_diameter")
+        w = _pos(self.width, "length", "lug.width")
+        t = _pos(self.thickness, "length", "lug.thickness")
+        R = _pos(self.edge_distance, "length", "lug.edge_distance")
+        if D >= w:
+            raise InputError(f"lug: hole diameter {D * 1e3:g} mm must be smaller than the lug width {w * 1e3:g} mm")
+        if R <= D / 2:
+            raise InputError(f"lug: edge distance {R * 1e3:g} mm must exceed the hole radius {D * 500:g} mm "
+                             "(the hole would break through the end)")
+        for k, v in (("hole_diameter", D), ("width", w), ("thickness", t), ("edge_distance", R)):
+            object.__setattr__(self, k, from_si(v, "length"))
+
+    @property
+    def be(self) -> pint.Quantity:
+        """Side ligament: plate width beside the hole, perpendicular to the load, ``(w - D)/2`` [m]."""
+        return (self.width - self.hole_diameter) / 2
+
+    @property
+    def a(self) -> pint.Quantity:
+        """End ligament: from the edge of the hole to the end of the lug along the load, ``R - D/2`` [m]."""
+        return self.edge_distance - self.hole_diameter / 2
+
+
+@dataclass(frozen=True)
+class LugStrength:
+    """Nominal (ultimate, unfactored) lug strengths after ASME BTH-1; the standard's allowable is
+    ``P / (1.20 Nd)`` for the first three and ``P / Nd`` for bearing."""
+
+    tension: pint.Quantity  # through the pinhole, Pt
+    fracture_beyond: pint.Quantity  # single-plane fracture (tear-out) beyond the hole, Pb
+    shear_out: pint.Quantity  # double-plane shear beyond the hole, Pv
+    bearing: pint.Quantity  # 1.25 Fy Dp t
+    Cr: float
+    b_eff: pint.Quantity
+    shear_area: pint.Quantity  # Av
+    phi: pint.Quantity  # shear-plane angle
+    source: str = BTH1_SOURCE
+
+    @property
+    def governing(self) -> tuple[str, pint.Quantity]:
+        """Weakest of tension, fracture beyond, shear-out (after the 1.20 factor these share one design factor)."""
+        modes = {"tension": self.tension, "fracture_beyond": self.fracture_beyond, "shear_out": self.shear_out}
+        k = min(modes, key=lambda m: modes[m].m_as("N"))
+        return k, modes[k]
+
+
+def lug_strength(lug: Lug, pin_diameter: Any, Fy: Any, Fu: Any) -> LugStrength:
+    """Nominal strengths of a plate lug after ASME BTH-1-2008 Sec. 3-3.3.1 (Duerr 2006).
+
+    * ``b_eff = min(be, 4t, 0.6 (Fu/Fy) sqrt(Dh/be) be)``                       (3-47), (3-48)
+    * tension through the pinhole ``Pt = Cr Fu 2 t b_eff``                       (3-45)
+    * fracture beyond the pinhole ``Pb = Cr Fu [1.13 (R - Dh/2) + 0.92 be/(1 + be/Dh)] t``   (3-49)
+    * double-plane shear ``Pv = 0.70 Fu Av``, ``Av = 2 [a + Dp/2 (1 - cos phi) - Z'] t``,
+      ``phi = 55 Dp/Dh`` [deg], ``Z' = r - sqrt(r^2 - (Dp/2 sin phi)^2)`` for a rounded end of
+      radius ``r = R`` (0 for a square end)                                      (3-50)-(3-52), (C3-2)
+    * bearing ``Pp = 1.25 Fy Dp t``                                              (Sec. 3-3.3.3)
+
+    ``Cr`` from :func:`bth1_pin_clearance_factor`. The equations were fitted to tests on steel
+    plates; for other materials they are an estimate.
+    """
+    Dh, w, t, R = (lug.hole_diameter.m_as("m"), lug.width.m_as("m"), lug.thickness.m_as("m"),
+                   lug.edge_distance.m_as("m"))
+    Dp = _pos(pin_diameter, "length", "pin_diameter")
+    fy, fu = _pos(Fy, "pressure", "Fy"), _pos(Fu, "pressure", "Fu")
+    if fy > fu:
+        raise InputError("lug_strength: Fy exceeds Fu")
+    Cr = bth1_pin_clearance_factor.si(Dp, Dh)
+    be, a = (w - Dh) / 2, R - Dh / 2
+    b_eff = min(be, 4 * t, 0.6 * (fu / fy) * math.sqrt(Dh / be) * be)
+    Pt = Cr * fu * 2 * t * b_eff
+    Pb = Cr * fu * (1.13 * (R - Dh / 2) + 0.92 * be / (1 + be / Dh)) * t
+    phi = math.radians(55.0 * Dp / Dh)
+    z_prime = R - math.sqrt(R * R - (Dp / 2 * math.sin(phi)) ** 2) if lug.rounded_end else 0.0
+    Av = 2 * (a + Dp / 2 * (1 - math.cos(phi)) - z_prime) * t
+    Pv = 0.70 * fu * Av
+    Pp = 1.25 * fy * Dp * t
+    return LugStrength(tension=from_si(Pt, "force"), fracture_beyond=from_si(Pb, "force"),
+                       shear_out=from_si(Pv, "force"), bearing=from_si(Pp, "force"), Cr=Cr,
+                       b_eff=from_si(b_eff, "length"), shear_area=from_si(Av, "area"), phi=from_si(phi, "angle"))
+
+
+# --------------------------------------------------------------------------------- beam cases
+@dataclass(frozen=True)
+class BeamCase:
+    """One case of Shigley Table A-9: ``y_max = c_deflection P l^n / (E I)``, ``M_max = c_moment P l^m``."""
+
+    name: str
+    table_case: str
+    load_kind: str  # "force", "line_load" or "moment"
+    c_deflection: float
+    c_moment: float
+    where: str
+
+
+_BEAM_CASES = {c.name: c for c in (
+    BeamCase("cantilever_end_load", "A-9-1", "force", 1 / 3, 1.0, "free end; moment at the wall"),
+    BeamCase("cantilever_uniform", "A-9-3", "line_load", 1 / 8, 1 / 2, "free end; moment at the wall"),
+    BeamCase("cantilever_end_moment", "A-9-4", "moment", 1 / 2, 1.0, "free end; uniform moment"),
+    BeamCase("simply_supported_center_load", "A-9-5", "force", 1 / 48, 1 / 4, "mid-span"),
+    BeamCase("simply_supported_uniform", "A-9-7", "line_load", 5 / 384, 1 / 8, "mid-span"),
+    BeamCase("fixed_pinned_center_load", "A-9-11", "force", 1 / (48 * math.sqrt(5)), 3 / 16,
+             "deflection at l/sqrt(5) from the pinned end; moment at the fixed end"),
+    BeamCase("fixed_pinned_uniform", "A-9-13", "line_load", (39 + 55 * math.sqrt(33)) / 65536, 1 / 8,
+             "deflection at 0.4215 l from the pinned end; moment at the fixed end"),
+    BeamCase("fixed_fixed_center_load", "A-9-14", "force", 1 / 192, 1 / 8, "mid-span; moment at ends and centre"),
+    BeamCase("fixed_fixed_uniform", "A-9-16", "line_load", 1 / 384, 1 / 12, "deflection mid-span; moment at the ends"),
+)}
+_LOAD_DIMS = {"force": ("force", 3, 1), "line_load": ("force_per_length", 4, 2), "moment": ("torque", 2, 0)}
+
+
+def beam_cases() -> list[str]:
+    return list(_BEAM_CASES)
+
+
+def beam_case(name: str) -> BeamCase:
+    key = name.strip().lower().replace("-", "_").replace(" ", "_").replace("centre", "center")
+    if key not in _BEAM_CASES:
+        raise UnknownNameError("beam case", name, list(_BEAM_CASES))
+    return _BEAM_CASES[key]
+
+
+def beam_max_deflection(case: str, load: Any, length: Any, E: Any, I: Any) -> pint.Quantity:
+    """Largest deflection magnitude of a prismatic beam [m] (Shigley 10th ed., Table A-9).
+
+    ``load`` is a force (point-load cases), a force per length (uniform cases) or a moment.
+    Cases: see :func:`beam_cases` (e.g. ``"cantilever_end_load"``: ``F l^3 / (3 E I)``;
+    ``"simply_supported_uniform"``: ``5 w l^4 / (384 E I)``; ``"fixed_pinned_uniform"``: ``w l^4/(185 E I)``).
+    """
+    c = beam_case(case)
+    dim, n, _ = _LOAD_DIMS[c.load_kind]
+    P = abs(to_si(load, dim, "load"))
+    L, e, i = _pos(length, "length", "length"), _pos(E, "pressure", "E"), _pos(I, "second_moment", "I")
+    return from_si(c.c_deflection * P * L**n / (e * i), "length")
+
+
+def beam_max_moment(case: str, load: Any, length: Any) -> pint.Quantity:
+    """Largest bending-moment magnitude [N m] for a case of Shigley Table A-9 (see :func:`beam_max_deflection`)."""
+    c = beam_case(case)
+    dim, _, m = _LOAD_DIMS[c.load_kind]
+    P = abs(to_si(load, dim, "load"))
+    L = _pos(length, "length", "length")
+    return from_si(c.c_moment * P * L**m, "torque")
+
+
+# --------------------------------------------------------------------------------------- links
+@dataclass(frozen=True)
+class LinkStresses:
+    """Nominal stresses in the link body (away from holes) [Pa]."""
+
+    axial: pint.Quantity
+    bending: pint.Quantity  # |My|/Wel_y + |Mz|/Wel_z (extreme fibre, conservative for biaxial bending)
+    torsion: pint.Quantity  # |T| / Wt
+    shear: pint.Quantity  # average transverse shear V / A_s (added to torsion, conservative)
+    von_mises: pint.Quantity  # sqrt((|sigma_axial| + sigma_bending)^2 + 3 tau^2)
+
+
+@dataclass(frozen=True)
+class Link:
+    """A straight link: pin-centre ``length``, body ``section``, ``material`` and optional pin eyes.
+
+    ``section`` is a :class:`Section` or a table for :func:`make_section` (``{"kind": "rectangle",
+    "width": "10 mm", "height": "4 mm"}``); ``material`` a :class:`Material` or a database name.
+    ``lug`` describes both eyes (a :class:`Lug` or a table of its fields), ``pin_diameter`` defaults
+    to the hole diameter. ``end`` is the buckling end condition (name or C, see
+    :mod:`~mechverify.components.columns`). ``strength_factor`` (0 < f <= 1) scales the material's
+    strengths, e.g. for a printed orientation weaker than the test bars; ``print_orientation`` is
+    the label reported with it.
+    """
+
+    length: Any
+    section: Any
+    material: Any
+    lug: Any = None
+    pin_diameter: Any = None
+    end: str | float = "pinned-pinned"
+    strength_factor: float = 1.0
+    print_orientation: str = ""
+    name: str = "link"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "length", from_si(_pos(self.length, "length", f"{self.name}.length"), "length"))
+        sec = self.section
+        if isinstance(sec, dict):
+            sec = make_section(sec.get("kind", ""), **{k: v for k, v in sec.items() if k != "kind"})
+        if not isinstance(sec, Section):
+            raise InputError(f"{self.name}.section: expected a Section or a table with 'kind', "
+                             f"got {type(sec).__name__}")
+        object.__setattr__(self, "section", sec)
+        mat = self.material if isinstance(self.material, Material) else get_material(self.material)
+        object.__setattr__(self, "material", mat)
+        lug = self.lug
+        if isinstance(lug, dict):
+            lug = Lug(**lug)
+        if lug is not None and not isinstance(lug, Lug):
+            raise InputError(f"{self.name}.lug: expected a Lug or a table, got {type(lug).__name__}")
+        object.__setattr__(self, "lug", lug)
+        if self.pin_diameter is not None:
+            dp = from_si(_pos(self.pin_diameter, "length", f"{self.name}.pin_diameter"), "length")
+            if lug is not None and dp > lug.hole_diameter:
+                raise InputError(f"{self.name}: pin diameter {dp.to('mm'):~P} exceeds the hole "
+                                 f"{lug.hole_diameter.to('mm'):~P}")
+            object.__setattr__(self, "pin_diameter", dp)
+        elif lug is not None:
+            object.__setattr__(self, "pin_diameter", lug.hole_diameter)
+        f = float(self.strength_factor)
+        if not 0 < f <= 1:
+            raise InputError(f"{self.name}.strength_factor: must lie in (0, 1], got {self.strength_factor!r}")
+        object.__setattr__(self, "strength_factor", f)
+        columns.end_condition_constant(self.end)  # validates the name now
+        if self.lug is not None and 2 * self.lug.edge_distance > self.length:
+            raise InputError(f"{self.name}: the two eyes (edge distance {self.lug.edge_distance.to('mm'):~P}) "
+                             f"overlap in a link {self.length.to('mm'):~P} long")
+
+    # ------------------------------------------------------------- material
+    @property
+    def yield_strength(self) -> pint.Quantity:
+        """Material yield strength times ``strength_factor``."""
+        return self.material.require("yield_strength") * self.strength_factor
+
+    @property
+    def ultimate_strength(self) -> pint.Quantity:
+        m = self.material
+        su = m.ultimate_strength if m.ultimate_strength is not None else m.require("yield_strength")
+        return su * self.strength_factor
+
+    @property
+    def is_brittle(self) -> bool | None:
+        """True when elongation at break < 5 % (Shigley Sec. 2-1); None when the material has no elongation."""
+        el = self.material.elongation
+        return None if el is None else float(el.m_as("")) < BRITTLE_ELONGATION
+
+    # ------------------------------------------------------------- stresses
+    def stresses(self, axial: Any = "0 N", moment_y: Any = "0 N*m", moment_z: Any = "0 N*m", torque: Any = "0 N*m",
+                 shear: Any = "0 N") -> LinkStresses:
+        """Nominal body stresses: ``N/A``, ``|My|/Wel_y + |Mz|/Wel_z``, ``|T|/Wt`` (+ ``|V|/A_s``), von Mises."""
+        s = self.section.si()
+        N = to_si(axial, "force", "axial")
+        My, Mz = to_si(moment_y, "torque", "moment_y"), to_si(moment_z, "torque", "moment_z")
+        T, V = to_si(torque, "torque", "torque"), to_si(shear, "force", "shear")
+        sa = N / s["area"]
+        sb = abs(My) / s["Wel_y"] + abs(Mz) / s["Wel_z"]
+        tt = abs(T) / s["Wt"]
+        tv = abs(V) / min(s["Asy"], s["Asz"])
+        vm = math.sqrt((abs(sa) + sb) ** 2 + 3 * (tt + tv) ** 2)
+        return LinkStresses(axial=from_si(sa, "pressure"), bending=from_si(sb, "pressure"),
+                            torsion=from_si(tt, "pressure"), shear=from_si(tv, "pressure"),
+                            von_mises=from_si(vm, "pressure"))
+
+    def eye_net_stress(self, axial: Any) -> pint.Quantity:
+        """Nominal net-section stress across the pin hole ``F / ((w - D) t)`` [Pa]."""
+        if self.lug is None:
+            raise InputError(f"{self.name}: no lug (pin eye) defined")
+        L = self.lug
+        return net_section_stress(axial, L.width, L.hole_diameter, L.thickness)
+
+    def eye_kt(self) -> pint.Quantity:
+        """Heywood's net-section Kt of the eye's hole (unloaded hole; a pin-loaded hole is higher)."""
+        if self.lug is None:
+            raise InputError(f"{self.name}: no lug (pin eye) defined")
+        return kt_hole_finite_width_tension(self.lug.hole_diameter, self.lug.width)
+
+    def lug_strength(self) -> LugStrength:
+        """BTH-1 nominal strengths of the eye (see :func:`lug_strength`), with knocked-down strengths."""
+        if self.lug is None:
+            raise InputError(f"{self.name}: no lug (pin eye) defined")
+        return lug_strength(self.lug, self.pin_diameter, self.yield_strength, self.ultimate_strength)
+
+    # ------------------------------------------------------------- stability and stiffness
+    def buckling(self, end: str | float | None = None, basis: str = "recommended") -> columns.ColumnBuckling:
+        """Euler/Johnson buckling about the least principal axis (``I2``) over the pin-centre length."""
+        s = self.section
+        return columns.column_buckling(self.material.require("E"), self.yield_strength, s.area, s.I2, self.length,
+                                       self.end if end is None else end, basis)
+
+    def deflection(self, case: str, load: Any, axis: str = "z") -> pint.Quantity:
+        """Max deflection for a Table A-9 case over the link length; ``axis`` = direction of the load (y or z)."""
+        I = self._I_for(axis)
+        return beam_max_deflection(case, load, self.length, self.material.require("E"), I)
+
+    def _I_for(self, axis: str) -> pint.Quantity:
+        if axis == "z":
+            return self.section.Iy  # load along z bends about y
+        if axis == "y":
+            return self.section.Iz
+        raise InputError(f"axis: 'y' or 'z', got {axis!r}")
+
+    def mass(self) -> pint.Quantity:
+        """Body mass over the pin-centre length (eyes not modelled) [kg]."""
+        rho = self.material.require("density")
+        return (self.section.area * self.length * rho).to("kg")
+
+
+__all__ = ["Lug", "LugStrength", "Link", "LinkStresses", "BeamCase", "lug_strength", "kt_hole_finite_width_tension",
+           "pin_shear_stress", "bearing_stress", "net_section_stress", "bth1_pin_clearance_factor", "beam_cases",
+           "beam_case", "beam_max_deflection", "beam_max_moment", "BTH1_SOURCE"]
