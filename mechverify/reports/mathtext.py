@@ -22,7 +22,10 @@ _REWRITES = [
     (re.compile(r"\\tfrac"), r"\\frac"),
     (re.compile(r"\\,|\\;|\\!"), " "),
     (re.compile(r"\\quad"), r"\\ \\ "),
-    (re.compile(r"\\cdot"), r"\\cdot"),
+    (re.compile(r"\\le(?![a-zA-Z])"), r"\\leq"),
+    (re.compile(r"\\ge(?![a-zA-Z])"), r"\\geq"),
+    (re.compile(r"\\lvert|\\rvert"), r"|"),
+    (re.compile(r"\\middle"), ""),
 ]
 
 

@@ -2,6 +2,7 @@
 
 Plotters are registered per check name (:func:`plotter`); each receives a
 :class:`~mechverify.checks.CheckResult` and returns a figure from its ``details``, or ``None``.
+One module per domain (``plots/screws.py``, ...) holds its plotters; :data:`DOMAINS` lists them.
 """
 
 from __future__ import annotations
@@ -14,6 +15,16 @@ from typing import Any
 from mechverify.checks import CheckResult
 
 PLOTTERS: dict[str, Callable[[CheckResult], Any]] = {}
+
+#: Domain modules with plotters, imported on first use.
+DOMAINS = ("screws",)
+
+
+def _load_domains() -> None:
+    import importlib
+
+    for d in DOMAINS:
+        importlib.import_module(f"mechverify.reports.plots.{d}")
 
 
 def plotter(*check_names: str) -> Callable:
@@ -54,6 +65,7 @@ def svg_data_uri(fig: Any) -> str:
 
 def figure_for(result: CheckResult) -> str | None:
     """A data URI of the check's figure, when a plotter is registered and has data."""
+    _load_domains()
     f = PLOTTERS.get(result.check)
     if f is None:
         return None
