@@ -1,0 +1,254 @@
+"""Checks of structural members: link body strength, pin eye (Kt, lug, pin), buckling, deflection, Roark plates.
+
+Each returns a :class:`CheckResult` oriented so that it passes while demand <= capacity / required_sf.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import pint
+
+from mechverify.checks.result import CheckResult
+from mechverify.components.links import BTH1_SOURCE, Link, pin_shear_stress
+from mechverify.components.plates import Plate, PlateEstimate
+from mechverify.errors import InputError
+from mechverify.materials import Material
+from mechverify.materials import get as get_material
+from mechverify.units import Q, fmt, to_si
+
+SHIGLEY_KT = "Shigley's Mechanical Engineering Design, 10th ed., Sec. 3-13 (Kt under static loading)"
+PETERSON_HOLE = "Peterson's Stress Concentration Factors, 3rd ed., Chart 4.1 (Heywood's formula)"
+
+
+def _strength_notes(link: Link) -> list[str]:
+    notes = [f"yield strength {fmt(link.yield_strength, 'MPa')} of {link.material.name}"]
+    if link.strength_factor != 1:
+        label = f" ({link.print_orientation})" if link.print_orientation else ""
+        notes.append(f"strength knock-down {link.strength_factor:g}{label} applied to the material strengths")
+    return notes
+
+
+def member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m", moment_z: Any = "0 N*m",
+                         torque: Any = "0 N*m", shear: Any = "0 N", *, required_sf: float = 1.0,
+                         load_case: str = "") -> CheckResult:
+    """Von Mises stress in the link body (away from the holes) against the yield strength."""
+    s = link.stresses(axial, moment_y, moment_z, torque, shear)
+    notes = [*_strength_notes(link),
+             "bending stresses of both axes added at one corner fibre and transverse shear added to torsion: "
+             "conservative for combined loading (distortion-energy criterion)"]
+    return CheckResult(
+        check="member_body_strength", component=link.name, demand=s.von_mises.to("MPa"),
+        capacity=link.yield_strength.to("MPa"), required_sf=required_sf, title="Link body stress (von Mises)",
+        formula=r"\sigma_{vM} = \sqrt{\left(\left|\frac{N}{A}\right| + \frac{|M_y|}{W_y} + \frac{|M_z|}{W_z}\right)^2"
+                r" + 3\left(\frac{|T|}{W_t} + \frac{|V|}{A_s}\right)^2} \le S_y",
+        source="elementary beam theory; distortion-energy criterion (Shigley 10th ed., Sec. 5-5)",
+        inputs={"N": Q(to_si(axial, "force", "axial"), "N"), "My": Q(to_si(moment_y, "torque", "moment_y"), "N*m"),
+                "Mz": Q(to_si(moment_z, "torque", "moment_z"), "N*m"), "T": Q(to_si(torque, "torque", "torque"), "N*m"),
+                "A": link.section.area.to("mm**2"), "Wel_y": link.section.Wel_y.to("mm**3"),
+                "Wel_z": link.section.Wel_z.to("mm**3")},
+        notes=tuple(notes), load_case=load_case,
+        details={"axial": s.axial, "bending": s.bending, "torsion": s.torsion, "shear": s.shear})
+
+
+def eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_kt: bool | None = None,
+                    load_case: str = "") -> CheckResult:
+    """Net-section tension across the pin hole, with Kt where it matters.
+
+    ``apply_kt=None`` (default) applies Heywood's Kt for brittle materials (elongation < 5 %) and
+    when the elongation is unknown; ductile materials under static load are checked on the nominal
+    net stress (Shigley 10th ed., Sec. 3-13: local yielding relieves the peak).
+    """
+    if link.lug is None:
+        raise InputError(f"{link.name}: eye_net_section needs a lug (pin eye)")
+    sigma = link.eye_net_stress(axial)
+    kt = float(link.eye_kt().m_as(""))
+    brittle = link.is_brittle
+    use_kt = (brittle is not False) if apply_kt is None else bool(apply_kt)
+    demand = abs(sigma) * (kt if use_kt else 1.0)
+    notes = _strength_notes(link)
+    warnings: list[str] = []
+    if use_kt:
+        if apply_kt:
+            why = "requested"
+        elif brittle:
+            why = "brittle material (elongation < 5 %)"
+        else:
+            why = "elongation unknown: Kt applied conservatively"
+        notes.append(f"Kt = {kt:.3g} applied ({why}); Heywood's Kt is for an unloaded hole, a pin-loaded hole "
+                     "concentrates more")
+        if apply_kt is None and brittle:
+            warnings.append("brittle material at a pin-loaded hole: the unloaded-hole Kt may be unconservative; "
+                            "confirm with FEA or a test")
+    else:
+        notes.append(f"Kt = {kt:.3g} not applied: ductile material under static load ({SHIGLEY_KT})")
+    if axial is not None and to_si(axial, "force", "axial") < 0:
+        notes.append("compressive axial force: the net section bears on the pin; checked as tension (conservative)")
+    L = link.lug
+    return CheckResult(
+        check="eye_net_section", component=link.name, demand=demand.to("MPa"), capacity=link.yield_strength.to("MPa"),
+        required_sf=required_sf, title="Pin eye net section",
+        formula=r"\sigma = K_t \frac{F}{(w - D) t} \le S_y" if use_kt else r"\sigma = \frac{F}{(w - D) t} \le S_y",
+        source=f"{PETERSON_HOLE}; {SHIGLEY_KT}",
+        inputs={"F": Q(to_si(axial, "force", "axial"), "N"), "w": L.width.to("mm"), "D": L.hole_diameter.to("mm"),
+                "t": L.thickness.to("mm"), "Kt": kt},
+        notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
+        details={"sigma_net": sigma.to("MPa"), "Kt": kt, "kt_applied": use_kt})
+
+
+def lug_checks(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> list[CheckResult]:
+    """Lug strength after ASME BTH-1: tension through the pinhole, fracture beyond it, double-plane
+    shear-out (each with required SF ``1.20 Nd``) and pin bearing (``Nd``).
+
+    ``design_factor`` Nd: 2.0 for BTH-1 Design Category A, 3.0 for Category B.
+    """
+    if link.lug is None:
+        raise InputError(f"{link.name}: lug_checks needs a lug (pin eye)")
+    if not design_factor > 0:
+        raise InputError(f"design_factor must be positive, got {design_factor!r}")
+    F = Q(abs(to_si(force, "force", "force")), "N")
+    s = link.lug_strength()
+    L = link.lug
+    notes = [*_strength_notes(link), f"Nd = {design_factor:g}; BTH-1 allowable = nominal / (1.20 Nd) for the "
+             "plate failure modes, nominal / Nd for bearing", f"pin-hole clearance factor Cr = {s.Cr:.3g}"]
+    warnings: list[str] = []
+    if not str(link.material.category).startswith(("steel", "aluminium", "aluminum")):
+        warnings.append(f"BTH-1's pinned-plate equations were fitted to steel tests; {link.material.name} "
+                        f"({link.material.category}) is outside their basis")
+    if L.thickness > L.width:
+        warnings.append("lug thicker than wide: outside the plate-type lug geometry of BTH-1")
+    inputs = {"F": F, "Dh": L.hole_diameter.to("mm"), "Dp": link.pin_diameter.to("mm"), "w": L.width.to("mm"),
+              "t": L.thickness.to("mm"), "R": L.edge_distance.to("mm"), "Fy": link.yield_strength.to("MPa"),
+              "Fu": link.ultimate_strength.to("MPa")}
+    modes = [
+        ("lug_tension", "Lug tension through the pinhole", s.tension, 1.2 * design_factor,
+         r"P_t = C_r F_u 2 t b_{eff}", "Eq. (3-45)"),
+        ("lug_fracture_beyond", "Lug fracture (tear-out) beyond the pinhole", s.fracture_beyond, 1.2 * design_factor,
+         r"P_b = C_r F_u \left[1.13\left(R - \frac{D_h}{2}\right) + \frac{0.92 b_e}{1 + b_e/D_h}\right] t",
+         "Eq. (3-49)"),
+        ("lug_shear_out", "Lug double-plane shear-out", s.shear_out, 1.2 * design_factor,
+         r"P_v = 0.70 F_u A_v,\ A_v = 2\left[a + \frac{D_p}{2}(1 - \cos\phi) - Z'\right] t", "Eqs. (3-50)-(3-52)"),
+        ("lug_bearing", "Pin bearing on the lug", s.bearing, design_factor, r"P_p = 1.25 F_y D_p t", "Sec. 3-3.3.3"),
+    ]
+    return [CheckResult(check=check, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
+                        title=title, formula=formula, source=f"{BTH1_SOURCE}: {eq}", inputs=inputs,
+                        notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
+                        details={"b_eff": s.b_eff.to("mm"), "Av": s.shear_area.to("mm**2"), "Cr": s.Cr})
+            for check, title, cap, sf, formula, eq in modes]
+
+
+def pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, required_sf: float = 1.0,
+              load_case: str = "") -> CheckResult:
+    """Average shear stress in the pin ``F/(n pi d^2/4)`` against the pin's shear yield strength.
+
+    Shear yield is the material's ``shear_yield_strength``, else ``0.577 Sy`` (distortion energy,
+    Shigley 10th ed., Eq. (5-21)).
+    """
+    if link.pin_diameter is None:
+        raise InputError(f"{link.name}: pin_shear needs a pin diameter (lug or pin_diameter)")
+    mat = pin_material if isinstance(pin_material, Material) else get_material(pin_material)
+    tau = pin_shear_stress(force, link.pin_diameter, planes)
+    if mat.shear_yield_strength is not None:
+        cap, how = mat.shear_yield_strength, "material shear yield strength"
+    else:
+        cap, how = 0.577 * mat.require("yield_strength"), "0.577 Sy (distortion energy, Shigley Eq. (5-21))"
+    return CheckResult(
+        check="pin_shear", component=link.name, demand=tau.to("MPa"), capacity=cap.to("MPa"), required_sf=required_sf,
+        title="Pin shear", formula=r"\tau = \frac{F}{n \pi d^2 / 4} \le S_{sy}",
+        source="average direct shear tau = F/A; Ssy = 0.577 Sy (Shigley's Mechanical Engineering Design, "
+               "10th ed., Eq. (5-21))",
+        inputs={"F": Q(to_si(force, "force", "force"), "N"), "d": link.pin_diameter.to("mm"), "n": planes},
+        notes=(f"{planes} shear plane(s); pin {mat.name}, S_sy = {how}",
+               "average shear stress; the peak in a round pin is 4/3 of it (transverse shear)"),
+        load_case=load_case)
+
+
+def member_buckling(link: Link, compression: Any, *, required_sf: float = 1.0, end: str | float | None = None,
+                    basis: str = "recommended", load_case: str = "") -> CheckResult:
+    """Compressive force against the Euler/Johnson critical load about the least principal axis."""
+    P = to_si(compression, "force", "compression")
+    b = link.buckling(end, basis)
+    notes = [f"end condition {b.end}, C = {b.C:g} ({basis}, Shigley Table 4-2)",
+             f"l/k = {b.slenderness:.4g}, (l/k)_1 = {b.transition_slenderness:.4g}: {b.regime} column",
+             *_strength_notes(link)]
+    if P < 0:
+        notes.append("the given force is negative (tension): no buckling demand")
+    formula = (r"P_{cr} = \frac{C \pi^2 E I_{min}}{l^2}" if b.regime == "euler" else
+               r"P_{cr} = A\left[S_y - \left(\frac{S_y l}{2\pi k}\right)^2 \frac{1}{C E}\right]")
+    return CheckResult(
+        check="member_buckling", component=link.name, demand=Q(max(P, 0.0), "N"), capacity=b.critical_load.to("N"),
+        required_sf=required_sf, title="Link buckling", formula=formula, source=b.source,
+        inputs={"P": Q(P, "N"), "l": link.length.to("mm"), "I_min": link.section.I2.to("mm**4"),
+                "A": link.section.area.to("mm**2"), "E": link.material.require("E").to("GPa")},
+        notes=tuple(notes), load_case=load_case,
+        details={"slenderness": b.slenderness, "transition_slenderness": b.transition_slenderness, "regime": b.regime})
+
+
+_FRACTION = re.compile(r"^\s*(?:l|L|span)\s*/\s*([0-9.]+)\s*$")
+
+
+def deflection_limit(limit: Any, span: Any = None) -> pint.Quantity:
+    """A deflection limit as a length: a length (``"1 mm"``), a fraction of the span (``0.01``) or
+    ``"L/250"`` / ``"span/250"``."""
+    if isinstance(limit, str):
+        m = _FRACTION.match(limit)
+        if m:
+            frac = 1.0 / float(m.group(1))
+        else:
+            return Q(to_si(limit, "length", "limit"), "m")
+    elif isinstance(limit, int | float) and not isinstance(limit, bool):
+        frac = float(limit)
+    else:
+        return Q(to_si(limit, "length", "limit"), "m")
+    if not 0 < frac < 1:
+        raise InputError(f"limit: a fraction of the span must lie in (0, 1), got {frac:g}")
+    if span is None:
+        raise InputError(f"limit {limit!r} is a fraction of the span: give span")
+    return Q(frac * to_si(span, "length", "span"), "m")
+
+
+def deflection_check(deflection: Any, limit: Any, *, span: Any = None, component: str = "member",
+                     load_case: str = "", source: str = "") -> CheckResult:
+    """Deflection against a limit given as a length, a fraction of ``span`` (0.01) or ``"L/250"``."""
+    y = Q(abs(to_si(deflection, "length", "deflection")), "m")
+    lim = deflection_limit(limit, span)
+    if lim.magnitude <= 0:
+        raise InputError("limit: must be positive")
+    inputs: dict[str, Any] = {"deflection": y.to("mm"), "limit": lim.to("mm")}
+    if span is not None:
+        inputs["span"] = Q(to_si(span, "length", "span"), "m").to("mm")
+    return CheckResult(
+        check="deflection", component=component, demand=y.to("mm"), capacity=lim.to("mm"),
+        title="Deflection", formula=r"\delta \le \delta_{lim}", source=source or "limit set by the design",
+        inputs=inputs, notes=(f"limit {limit!r}" + (f" of span {fmt(Q(to_si(span, 'length', 'span'), 'm'), 'mm')}"
+                                                   if span is not None and not isinstance(limit, pint.Quantity)
+                                                   else ""),),
+        load_case=load_case)
+
+
+def link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis: str = "z", load_case: str = ""
+                    ) -> CheckResult:
+    """Deflection of the link for a Shigley Table A-9 case (over its pin-centre length) against a limit."""
+    y = link.deflection(case, load, axis)
+    return deflection_check(y, limit, span=link.length, component=link.name, load_case=load_case,
+                            source=f"Shigley's Mechanical Engineering Design, 10th ed., Table A-9 ({case})")
+
+
+def plate_stress(plate: Plate, estimate: PlateEstimate, *, required_sf: float = 1.0, load_case: str = ""
+                 ) -> CheckResult:
+    """A Roark plate estimate's largest bending stress against the plate's yield strength."""
+    sy = plate.material.require("yield_strength")
+    warnings = list(estimate.warnings)
+    if plate.holes or plate.cutouts:
+        warnings.append("the plate has holes/cut-outs: Roark's closed form ignores them (use the FEA plate model)")
+    return CheckResult(
+        check="plate_stress", component=plate.name, demand=estimate.max_stress.to("MPa"), capacity=sy.to("MPa"),
+        required_sf=required_sf, title="Plate bending stress (Roark)", formula=r"\sigma_{max} \le S_y",
+        source=estimate.source, inputs={"t": Q(plate.thickness, "m").to("mm")},
+        notes=(estimate.case, f"largest stress at the {estimate.stress_location}"), warnings=tuple(warnings),
+        load_case=load_case, details={k: v.to("MPa") for k, v in estimate.stresses.items()})
+
+
+__all__ = ["member_body_strength", "eye_net_section", "lug_checks", "pin_shear", "member_buckling",
+           "deflection_limit", "deflection_check", "link_deflection", "plate_stress"]
