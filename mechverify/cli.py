@@ -223,6 +223,87 @@ def materials(name: Annotated[str | None, typer.Argument(help="show one material
     out.print(t)
 
 
+def _table(title: str, columns: list[str], rows: list[list[str]]) -> None:
+    t = Table(title=title, title_justify="left")
+    for c in columns:
+        t.add_column(c, justify="left" if c in columns[:1] else "right")
+    for r in rows:
+        t.add_row(*r)
+    out.print(t)
+
+
+def _opt(q: Any, unit: str, digits: int = 4) -> str:
+    return fmt(q, unit, digits) if q is not None else "-"
+
+
+@app.command()
+def threads(
+    name: Annotated[str | None, typer.Argument(help="a designation, e.g. Tr10x2 or 1/2-10 ACME")] = None,
+) -> None:
+    """List the thread tables (ISO 2904 trapezoidal, ASME B1.5 Acme), or show one thread's geometry."""
+    from mechverify.components.threads import known_designations, thread
+
+    names = [name] if name else known_designations()
+    rows = []
+    for n in names:
+        t = thread(n)
+        rows.append([t.designation, _opt(t.d, "mm"), _opt(t.pitch, "mm"), _opt(t.lead, "mm"), str(t.starts),
+                     _opt(t.d2, "mm"), _opt(t.d3, "mm"), _opt(t.H1, "mm"), _opt(t.lead_angle, "deg", 3)])
+    _table("threads", ["designation", "d", "P", "lead", "starts", "d2", "d3", "H1", "lead angle"], rows)
+    if name:
+        t = thread(name)
+        out.print(f"source: {t.source}")
+        for n in t.notes:
+            out.print(f"note: {n}")
+
+
+@app.command()
+def bearings(name: Annotated[str | None, typer.Argument(help="a designation, e.g. 608-2Z")] = None) -> None:
+    """List the rolling-bearing catalogue, or show one bearing."""
+    from mechverify.components.bearings import bearing, bearing_names
+
+    rows = []
+    for n in [name] if name else bearing_names():
+        b = bearing(n)
+        rows.append([b.designation, _opt(b.d, "mm"), _opt(b.D, "mm"), _opt(b.B, "mm"), _opt(b.C, "kN"),
+                     _opt(b.C0, "kN"), _opt(b.Pu, "kN"), _opt(b.reference_speed, "rpm", 5),
+                     _opt(b.limiting_speed, "rpm", 5), f"{b.f0:g}"])
+    _table("ball bearings", ["designation", "d", "D", "B", "C", "C0", "Pu", "ref. speed", "limit speed", "f0"],
+           rows)
+    if name:
+        out.print(f"source: {bearing(name).source}")
+
+
+@app.command()
+def motors(name: Annotated[str | None, typer.Argument(help="a catalogue name")] = None) -> None:
+    """List the motor and gearhead catalogues, or show one entry with its source."""
+    from mechverify.components.gearheads import gearhead, gearhead_names
+    from mechverify.components.motors import motor, motor_names
+
+    if name:
+        try:
+            item: Any = motor(name)
+        except MechverifyError:
+            item = gearhead(name)
+        out.print(repr(item))
+        out.print(f"source: {getattr(item, 'source', '')}")
+        return
+    rows = []
+    for n in motor_names():
+        m = motor(n)
+        torque = getattr(m, "holding_torque", None) or getattr(m, "stall_torque", None)
+        rows.append([n, type(m).__name__, _opt(getattr(m, "nominal_voltage", None), "V", 3),
+                     _opt(torque, "N*m", 3), _opt(getattr(m, "nominal_torque", None), "N*m", 3),
+                     _opt(getattr(m, "rotor_inertia", None), "g*cm**2", 3)])
+    _table("motors", ["name", "kind", "voltage", "holding/stall torque", "nominal torque", "rotor inertia"], rows)
+    rows = []
+    for n in gearhead_names():
+        g = gearhead(n)
+        rows.append([n, f"{g.ratio:.5g}", f"{g.efficiency:.3g}", _opt(g.continuous_torque, "N*m", 3),
+                     _opt(getattr(g, "intermittent_torque", None), "N*m", 3)])
+    _table("gearheads", ["name", "ratio", "efficiency", "continuous torque", "intermittent torque"], rows)
+
+
 @app.command()
 def explain(check_name: Annotated[str | None, typer.Argument(metavar="CHECK", help="a check name")] = None) -> None:
     """Formula, source and assumptions of a check (without CHECK: list all checks)."""

@@ -22,6 +22,7 @@ from mechverify.errors import InputError, UnitError
 
 ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 ureg.formatter.default_format = "~P"
+ureg.formatter.default_sort_func = None  # keep units as written: N·m, not m·N
 Quantity = ureg.Quantity
 
 # Units met in datasheets that pint lacks or names differently.

@@ -121,3 +121,19 @@ def test_materials_and_schema_commands(tmp_path, capsys):
     doc["components"]["rod"]["colour"] = "red"
     with pytest.raises(jsonschema.ValidationError):
         jsonschema.validate(doc, schema)
+
+
+def test_browse_commands(capsys):
+    """Catalogue browsing: ISO 2904 gives Tr10x2 d2 = 9 mm, d3 = 7.5 mm; SKF 608 has C = 3.45 kN."""
+    assert main(["threads", "Tr10x2"]) == 0
+    out = capsys.readouterr().out
+    assert "9 mm" in out and "7.5 mm" in out
+    assert main(["threads", "Tr10x4"]) == 2
+    assert "did you mean" in capsys.readouterr().err
+    assert main(["bearings", "608"]) == 0
+    assert "3.45 kN" in capsys.readouterr().out
+    assert main(["motors"]) == 0
+    assert "N·m" in capsys.readouterr().out
+    assert main(["explain"]) == 0
+    assert main(["explain", "self_locking"]) == 0
+    assert "friction angle" in capsys.readouterr().out
