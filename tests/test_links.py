@@ -33,7 +33,7 @@ def test_eye_and_pin():
     link = pla_link()
     assert link.pin_diameter == Q(22, "mm")
     assert link.eye_net_stress("110 N").m_as("MPa") == pytest.approx(110 / (11 * 6))
-    assert link.eye_kt().m_as("") == pytest.approx(2 + (1 - 22 / 33) ** 3)
+    assert link.eye_kt().m_as("") == pytest.approx(2.0 + 0.284 / 3 - 0.600 / 9 + 1.32 / 27)  # Peterson Eq. (4.1)
     assert pin_shear_stress("100 N", "5 mm", planes=2).m_as("MPa") == pytest.approx(100 / (2 * math.pi * 6.25))
     assert bearing_stress("100 N", "5 mm", "4 mm").m_as("MPa") == pytest.approx(5.0)
     assert link.is_brittle is True  # printed PLA, 1 % elongation

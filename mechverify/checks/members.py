@@ -19,7 +19,7 @@ from mechverify.materials import get as get_material
 from mechverify.units import Q, fmt, to_si
 
 SHIGLEY_KT = "Shigley's Mechanical Engineering Design, 10th ed., Sec. 3-13 (Kt under static loading)"
-PETERSON_HOLE = "Peterson's Stress Concentration Factors, 3rd ed., Chart 4.1 (Heywood's formula)"
+PETERSON_HOLE = "Peterson's Stress Concentration Factors, 3rd ed., Eq. (4.1), Chart 4.1"
 
 
 def _strength_notes(link: Link) -> list[str]:
@@ -56,9 +56,9 @@ def eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_k
                     load_case: str = "") -> CheckResult:
     """Net-section tension across the pin hole, with Kt where it matters.
 
-    ``apply_kt=None`` (default) applies Heywood's Kt for brittle materials (elongation < 5 %) and
-    when the elongation is unknown; ductile materials under static load are checked on the nominal
-    net stress (Shigley 10th ed., Sec. 3-13: local yielding relieves the peak).
+    ``apply_kt=None`` (default) applies the open-hole Kt (Peterson Eq. (4.1)) for brittle materials
+    (elongation < 5 %) and when the elongation is unknown; ductile materials under static load are
+    checked on the nominal net stress (Shigley 10th ed., Sec. 3-13: local yielding relieves the peak).
     """
     if link.lug is None:
         raise InputError(f"{link.name}: eye_net_section needs a lug (pin eye)")
@@ -76,7 +76,7 @@ def eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_k
             why = "brittle material (elongation < 5 %)"
         else:
             why = "elongation unknown: Kt applied conservatively"
-        notes.append(f"Kt = {kt:.3g} applied ({why}); Heywood's Kt is for an unloaded hole, a pin-loaded hole "
+        notes.append(f"Kt = {kt:.3g} applied ({why}); it is the open-hole value, a pin-loaded hole "
                      "concentrates more")
         if apply_kt is None and brittle:
             warnings.append("brittle material at a pin-loaded hole: the unloaded-hole Kt may be unconservative; "

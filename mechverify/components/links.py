@@ -9,7 +9,7 @@
 Formulas (one function each):
 
 * body stresses under axial force, bending and torsion (elementary beam theory; von Mises);
-* stress-concentration factor of a hole in a finite-width strip in tension (Heywood, in Peterson);
+* stress-concentration factor of the eye's hole (Peterson Eq. (4.1), via :mod:`mechverify.fatigue.notch`);
 * pin shear, pin bearing, net-section tension;
 * lug strength after ASME BTH-1 (Duerr's empirical pinned-plate equations): tension through the
   pinhole, fracture (tear-out) beyond the pinhole, double-plane shear-out, bearing;
@@ -22,7 +22,7 @@ References
    Eqs. (3-45) to (3-52), Commentary Eq. (C3-2); D. Duerr, "Pinned connection strength and
    behavior", J. Struct. Eng. 132(2) (2006) 182-194.
 2. W. D. Pilkey, D. F. Pilkey, *Peterson's Stress Concentration Factors*, 3rd ed., Wiley 2008,
-   Sec. 4.3 and Chart 4.1 (circular hole in a finite-width plate in tension; Heywood's formula).
+   Eq. (4.1), Chart 4.1 (circular hole in a finite-width plate in tension).
 3. R. G. Budynas, J. K. Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed., 2015,
    Table A-9 (shear, moment and deflection of beams); Sec. 3-13 (Kt for static loading).
 """
@@ -38,6 +38,7 @@ import pint
 from mechverify.components import columns
 from mechverify.components.sections import Section, make_section
 from mechverify.errors import InputError, UnknownNameError
+from mechverify.fatigue.notch import kt_plate_hole
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.units import from_si, si_function, to_si
@@ -54,18 +55,6 @@ def _pos(v: Any, dim: str, name: str, *, allow_zero: bool = False) -> float:
 
 
 # ------------------------------------------------------------------------------------ formulas
-@si_function(returns="dimensionless", d="length", w="length")
-def kt_hole_finite_width_tension(d: float, w: float) -> float:
-    """Net-section ``Ktn = 2 + (1 - d/w)^3`` of a central hole in a strip in tension (Heywood).
-
-    Peterson's SCF 3rd ed., Sec. 4.3.2, Chart 4.1; within about 2 % of Howland's exact values for
-    ``0 <= d/w <= 0.7`` (``Ktn = sigma_max / sigma_net``, ``sigma_net = P / ((w - d) t)``).
-    """
-    if not 0 < d < w:
-        raise InputError(f"kt_hole_finite_width_tension: need 0 < d < w, got d = {d * 1e3:g} mm, w = {w * 1e3:g} mm")
-    return 2.0 + (1.0 - d / w) ** 3
-
-
 @si_function(returns="pressure", force="force", d="length")
 def pin_shear_stress(force: float, d: float, planes: int = 2) -> float:
     """Average shear stress in a pin ``tau = F / (n pi d^2 / 4)`` [Pa], ``n`` shear planes (2: clevis)."""
@@ -373,10 +362,11 @@ class Link:
         return net_section_stress(axial, L.width, L.hole_diameter, L.thickness)
 
     def eye_kt(self) -> pint.Quantity:
-        """Heywood's net-section Kt of the eye's hole (unloaded hole; a pin-loaded hole is higher)."""
+        """Net-section Kt of the eye's hole as an open hole in a strip in tension (Peterson Eq. (4.1),
+        :func:`mechverify.fatigue.notch.kt_plate_hole`); a pin-loaded hole concentrates more."""
         if self.lug is None:
             raise InputError(f"{self.name}: no lug (pin eye) defined")
-        return kt_hole_finite_width_tension(self.lug.hole_diameter, self.lug.width)
+        return kt_plate_hole(self.lug.width, self.lug.hole_diameter)
 
     def lug_strength(self) -> LugStrength:
         """BTH-1 nominal strengths of the eye (see :func:`lug_strength`), with knocked-down strengths."""
@@ -409,6 +399,6 @@ class Link:
         return (self.section.area * self.length * rho).to("kg")
 
 
-__all__ = ["Lug", "LugStrength", "Link", "LinkStresses", "BeamCase", "lug_strength", "kt_hole_finite_width_tension",
-           "pin_shear_stress", "bearing_stress", "net_section_stress", "bth1_pin_clearance_factor", "beam_cases",
-           "beam_case", "beam_max_deflection", "beam_max_moment", "BTH1_SOURCE"]
+__all__ = ["Lug", "LugStrength", "Link", "LinkStresses", "BeamCase", "lug_strength", "pin_shear_stress",
+           "bearing_stress", "net_section_stress", "bth1_pin_clearance_factor", "beam_cases", "beam_case",
+           "beam_max_deflection", "beam_max_moment", "BTH1_SOURCE"]
