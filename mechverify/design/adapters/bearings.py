@@ -1,0 +1,154 @@
+"""``ball_bearing`` (deep groove ball bearing from the catalogue) and ``plain_bushing`` (p, v, pv)."""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import pint
+
+from mechverify.checks import bearings as bc
+from mechverify.checks.result import CheckResult
+from mechverify.components.bearings import BallBearing, PlainBushing, bearing, reliability_factor, sliding_speed
+from mechverify.design.adapters.common import pick
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.errors import InputError
+from mechverify.units import DIMENSIONS, Q, fmt, to_si
+
+
+@dataclasses.dataclass(frozen=True)
+class BearingInstallation:
+    """A catalogue ball bearing with its life requirement and reliability (from the design file)."""
+
+    bearing: BallBearing
+    required_life: pint.Quantity | None = None
+    reliability: float = 0.9
+
+
+def _build_bearing(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallation:
+    b = bearing(p["model"])
+    changes = pick(p, C="dynamic_load_rating", C0="static_load_rating", limiting_speed="limiting_speed")
+    if changes:
+        b = dataclasses.replace(b, **changes)
+    R = float(p["reliability"])
+    if not 0.9 <= R <= 0.9995:
+        raise InputError(f"reliability must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {R:g}")
+    if "required_life" in p and p["required_life"].magnitude <= 0:
+        raise InputError(f"required_life must be positive, got {fmt(p['required_life'])}")
+    return BearingInstallation(b, p.get("required_life"), R)
+
+
+def _forces(loads: dict[str, Any]) -> tuple[pint.Quantity, pint.Quantity]:
+    Fr, Fa = loads.get("radial_force", Q(0, "N")), loads.get("axial_force", Q(0, "N"))
+    for name, f in (("radial_force", Fr), ("axial_force", Fa)):
+        if f.magnitude < 0:
+            raise InputError(f"{name} must be >= 0 (a magnitude), got {fmt(f)}")
+    return Fr.to("N"), Fa.to("N")
+
+
+def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    Fr, Fa = _forces(loads)
+    required = inst.required_life if inst.required_life is not None else ctx.requirements["bearing_life"]
+    r = bc.bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability)
+    source = "component's required_life" if inst.required_life is not None else "requirements.bearing_life"
+    return dataclasses.replace(r, notes=(*r.notes, f"required life from the {source}"),
+                               details={**r.details, "a1": reliability_factor(inst.reliability)})
+
+
+BALL = REGISTRY.register(ComponentType(
+    name="ball_bearing",
+    doc="A single-row deep groove ball bearing from the catalogue by designation (608, 6200-2Z, 6001-2RS1): "
+        "ISO 281 rating life, ISO 76 static safety, speed.",
+    fields=(
+        Field("model", "str", "catalogue designation, e.g. '608-2Z' (see `mechverify bearings`)", required=True),
+        Field("required_life", "time", "required rating life of this bearing, instead of requirements.bearing_life"),
+        Field("reliability", "float", "reliability of the rating life (ISO 281 Table 12: 0.90 .. 0.9995)",
+              default=0.9),
+        Field("dynamic_load_rating", "force", "C, instead of the catalogue's"),
+        Field("static_load_rating", "force", "C0, instead of the catalogue's"),
+        Field("limiting_speed", "angular_velocity", "limiting speed, instead of the catalogue's (e.g. the lower "
+                                                    "one of a contact-sealed variant)"),
+    ),
+    build=lambda p, ctx: _build_bearing(p, ctx),
+    loads=(
+        Field("radial_force", "force", "radial load Fr on this bearing"),
+        Field("axial_force", "force", "axial load Fa on this bearing"),
+        Field("speed", "angular_velocity", "rotational speed of the inner ring relative to the outer"),
+    ),
+    checks=(
+        CheckSpec("life", _life, "Bearing rating life", needs=("radial_force|axial_force", "speed"),
+                  sf_kind="bearing",
+                  explain="L10h = a1 (C/P)^3 10^6/(60 n), P = X Fr + Y Fa (ISO 281 Eq. (1), Table 3), against the "
+                          "required life."),
+        CheckSpec("static_safety", lambda c, loads, ctx: bc.bearing_static_safety(
+            c.bearing, *_forces(loads), required_s0=ctx.required_sf),
+            "Bearing static safety (s0)", needs=("radial_force|axial_force",), sf_kind="bearing",
+            explain="s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) (ISO 76); the required s0 is the bearing class "
+                    "factor (SKF: 1 normal, 1.5 shock loads, 2 quiet running)."),
+        CheckSpec("speed", lambda c, loads, ctx: bc.bearing_speed(c.bearing, loads["speed"]),
+                  "Bearing speed", needs=("speed",), sf_kind="speed",
+                  explain="Speed against the catalogue limiting speed (the reference speed is noted)."),
+    ),
+))
+
+
+# ------------------------------------------------------------------------------------------- plain bushing
+def _sliding(b: PlainBushing, loads: dict[str, Any]) -> pint.Quantity:
+    if "sliding_speed" in loads:
+        return abs(loads["sliding_speed"]).to("m/s")
+    return sliding_speed(b.d, loads["speed"]).to("m/s")
+
+
+_LIMIT_UNITS = {"p_max": ("pressure", "MPa"), "v_max": ("velocity", "m/s"), "pv_max": ("pv", "MPa*m/s")}
+
+
+def _build_bushing(p: dict[str, Any], ctx: dict[str, Any]) -> PlainBushing:
+    b = PlainBushing(d=p["bore"], length=p["length"], name=p["_name"], **pick(p, "material", *_LIMIT_UNITS))
+    # PlainBushing.__post_init__ (components/bearings.py) labels the SI magnitude of each limit with the display
+    # unit (60 MPa becomes 6e7 MPa); set the limits here from the same sources, converted properly.
+    for name, (dim, unit) in _LIMIT_UNITS.items():
+        v = p.get(name)
+        if v is None and b.material_record is not None:
+            v = getattr(b.material_record, name)
+        if v is not None:
+            object.__setattr__(b, name, Q(to_si(v, dim, name), DIMENSIONS[dim][1]).to(unit))
+    return b
+
+
+def _radial(loads: dict[str, Any]) -> pint.Quantity:
+    F = loads["radial_force"].to("N")
+    if F.magnitude < 0:
+        raise InputError(f"radial_force must be >= 0 (a magnitude), got {fmt(F)}")
+    return F
+
+
+BUSHING = REGISTRY.register(ComponentType(
+    name="plain_bushing",
+    doc="A plain journal bushing or linear slide bush: projected pressure, sliding speed and pv against the "
+        "material's (or given) limits (Shigley 10th ed. Sec. 12-15).",
+    fields=(
+        Field("bore", "length", "bore (shaft or rod) diameter d", required=True),
+        Field("length", "length", "bushing length L", required=True),
+        Field("material", "material", "bushing material (its p_max, v_max, pv_max are used when not given)"),
+        Field("p_max", "pressure", "allowable projected pressure, instead of the material's"),
+        Field("v_max", "velocity", "allowable sliding speed, instead of the material's"),
+        Field("pv_max", "pv", "pv limit, instead of the material's"),
+    ),
+    build=lambda p, ctx: _build_bushing(p, ctx),
+    loads=(
+        Field("radial_force", "force", "load across the bushing"),
+        Field("sliding_speed", "velocity", "sliding speed (linear bush: rod speed)"),
+        Field("speed", "angular_velocity", "shaft speed (instead of sliding_speed): v = omega d/2"),
+    ),
+    checks=(
+        CheckSpec("pressure", lambda c, loads, ctx: bc.bushing_pressure_check(c, _radial(loads)),
+                  "Bushing pressure", needs=("radial_force",), sf_kind="pressure",
+                  explain="p = F/(dL) against p_max."),
+        CheckSpec("velocity", lambda c, loads, ctx: bc.bushing_velocity_check(c, _sliding(c, loads)),
+                  "Bushing sliding speed", needs=("sliding_speed|speed",), sf_kind="speed",
+                  explain="Sliding speed against v_max."),
+        CheckSpec("pv", lambda c, loads, ctx: bc.bushing_pv_check(c, _radial(loads), _sliding(c, loads)),
+                  "Bushing pv", needs=("radial_force", "sliding_speed|speed"), sf_kind="pressure",
+                  explain="p v against the material's pv limit (wear and heating of dry-running bushings)."),
+    ),
+))
