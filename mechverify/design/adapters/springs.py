@@ -132,7 +132,8 @@ def _static(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckR
 def _buckling(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     end = loads.get("end_condition", inst.end_condition)
     r = sc.spring_buckling(inst.spring, _max_force(inst.spring, loads), end=end, required_sf=ctx.required_sf)
-    return dataclasses.replace(r, details={**r.details, **_figure_data(inst, ctx, end)})
+    inputs = {k: (v.to("GPa") if k in ("E", "G") else v) for k, v in r.inputs.items()}
+    return dataclasses.replace(r, inputs=inputs, details={**r.details, **_figure_data(inst, ctx, end)})
 
 
 def _fatigue(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
@@ -140,7 +141,11 @@ def _fatigue(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> Check
     r = sc.spring_fatigue(s, _min_force(s, loads), _max_force(s, loads), criterion=inst.fatigue_criterion,
                           required_sf=ctx.required_sf)
     f = s.fatigue(_min_force(s, loads), _max_force(s, loads), inst.fatigue_criterion)
-    return dataclasses.replace(r, details={**r.details, "criterion": inst.fatigue_criterion, "tau_a": f.tau_a,
+    # the check's formula has \text{...} with spaces, which the report's mathtext rewrite runs together
+    formula = (r"\tau_a = K_B \frac{8 F_a D}{\pi d^3},\ \tau_m = K_B \frac{8 F_m D}{\pi d^3},\ "
+               r"n_f = S_{sa}/\tau_a")
+    return dataclasses.replace(r, formula=formula,
+                               details={**r.details, "criterion": inst.fatigue_criterion, "tau_a": f.tau_a,
                                            "Ssa_zimmerli": f.zimmerli.Ssa.to("MPa"),
                                            "Ssm_zimmerli": f.zimmerli.Ssm.to("MPa")})
 
@@ -249,7 +254,7 @@ def extension_hook_bending(s: ExtensionSpring, F: Any, *, required_sf: float = 1
         capacity=s.allowable("end_bending"), required_sf=required_sf, title="Extension spring hook bending (A)",
         formula=r"\sigma_A = F \left[(K)_A \frac{16 D}{\pi d^3} + \frac{4}{\pi d^2}\right],\ "
                 r"(K)_A = \frac{4 C_1^2 - C_1 - 1}{4 C_1 (C_1 - 1)},\ C_1 = 2 r_1/d",
-        source=f"{SHIGLEY}, Sec. 10-11, Eqs. (10-34), (10-35), Table 10-7",
+        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
         inputs={**_ext_inputs(s, Fq), "r1": Q(s._si["r1"], "m").to("mm")}, notes=tuple(notes))
 
 
@@ -262,7 +267,7 @@ def extension_hook_torsion(s: ExtensionSpring, F: Any, *, required_sf: float = 1
         check="extension_hook_torsion", component=s.name, demand=s.hook_torsion_stress(Fq),
         capacity=s.allowable("end_torsion"), required_sf=required_sf, title="Extension spring hook torsion (B)",
         formula=r"\tau_B = (K)_B \frac{8 F D}{\pi d^3},\ (K)_B = \frac{4 C_2 - 1}{4 C_2 - 4},\ C_2 = 2 r_2/d",
-        source=f"{SHIGLEY}, Sec. 10-11, Eqs. (10-36), (10-37), Table 10-7",
+        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
         inputs={**_ext_inputs(s, Fq), "r2": Q(s._si["r2"], "m").to("mm")})]
 
 
@@ -338,7 +343,7 @@ def torsion_bending_stress(s: TorsionSpring, M: Any, *, required_sf: float = 1.0
         check="torsion_spring_stress", component=s.name, demand=s.bending_stress(Mq), capacity=s.yield_strength,
         required_sf=required_sf, title="Torsion spring bending stress",
         formula=r"\sigma = K_i \frac{32 M}{\pi d^3} \le S_y,\ K_i = \frac{4 C^2 - C - 1}{4 C (C - 1)}",
-        source=f"{SHIGLEY}, Sec. 10-12, Eqs. (10-43), (10-44), (10-57)", inputs=_tor_inputs(s, Mq),
+        source=f"{SHIGLEY}, Sec. 10-12, Eq. (10-43) (K_i), Eq. (10-57) (S_y)", inputs=_tor_inputs(s, Mq),
         notes=(f"K_i = {Ki:.4g} (inner fibre, where the stress is highest when the spring winds up)",
                "the load must close (wind up) the coils; unwinding loads need the residual-stress-free allowable"))
 
@@ -352,9 +357,9 @@ def torsion_arbor_clearance(inst: TorsionInstallation, M: Any) -> CheckResult:
         check="torsion_spring_arbor", component=s.name, demand=inst.arbor_diameter.to("mm"), capacity=Di,
         title="Torsion spring clearance on its arbor",
         formula=r"D_{arbor} \le D_i' = \frac{D N_b}{N_b + \theta_c'} - d",
-        source=f"{SHIGLEY}, Sec. 10-12, Eq. (10-54)", inputs={**_tor_inputs(s, Mq), "angle": s.angle(Mq)},
+        source=f"{SHIGLEY}, Sec. 10-12 (coil diameter under load)", inputs={**_tor_inputs(s, Mq), "angle": s.angle(Mq)},
         notes=("theta_c' = body turns of wind-up (legs excluded), friction-corrected rate (Eq. (10-51))",
-               "Shigley Ex. 10-8 keeps about 10 % diametral clearance on the arbor: set required_sf = 1.1"))
+               "to keep a diametral clearance margin, set a required_sf (1.1 = 10 %)"))
 
 
 TORSION = REGISTRY.register(ComponentType(
