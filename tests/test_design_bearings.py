@@ -181,6 +181,20 @@ def test_bearing_errors_name_their_key(tmp_path):
     assert any(p == "components.g.checks.velocity [run]" and "v_max" in m for p, m in exc.value.errors)
 
 
+def test_catalogue_listing_has_each_bearing_once():
+    """bearing_catalogue() (for `mechverify bearings`): each row once, aliases kept on the row; the 608 row is
+    SKF's (8 x 22 x 7 mm, C = 3.45 kN, C0 = 1.37 kN, as quoted in seed 004, Tabla 9)."""
+    from mechverify.components.bearings import bearing_catalogue, bearing_names
+
+    rows = bearing_catalogue()
+    names = [b.designation for b in rows]
+    assert len(names) == len(set(names)) and set(names) <= set(bearing_names())
+    assert set(bearing_names()) == set(names) | {a for b in rows for a in b.aliases}
+    b608 = rows[names.index("608")]
+    assert (b608.d.m_as("mm"), b608.D.m_as("mm"), b608.B.m_as("mm")) == (8, 22, 7)
+    assert (b608.C.m_as("kN"), b608.C0.m_as("kN")) == (3.45, 1.37)
+
+
 def test_report_draws_life_over_load(tmp_path):
     design = lift(tmp_path)
     html = render_html([(design, design.verify())], date="2025-01-01")

@@ -130,6 +130,11 @@ def bearing_names() -> list[str]:
     return list(_catalogue())
 
 
+def bearing_catalogue() -> list[BallBearing]:
+    """Every catalogue bearing once, in catalogue order (for listings: designation, d x D x B, C, C0, speeds)."""
+    return list({id(b): b for b in _catalogue().values()}.values())
+
+
 _SHIELD = {"Z", "ZZ", "2Z", "LB", "LLB", "VV", "RZ", "2RZ", "Z1", "2Z1"}
 _SEAL = {"RS", "2RS", "RS1", "2RS1", "RSH", "2RSH", "RSR", "2RSR", "LU", "LLU", "DDU", "DD", "RSL", "2RSL"}
 
@@ -317,6 +322,6 @@ class PlainBushing:
         return v
 
 
-__all__ = ["BallBearing", "EquivalentLoad", "PlainBushing", "bearing", "bearing_names", "iso281_factors",
-           "equivalent_dynamic_load", "basic_rating_life", "life_hours", "reliability_factor",
+__all__ = ["BallBearing", "EquivalentLoad", "PlainBushing", "bearing", "bearing_names", "bearing_catalogue",
+           "iso281_factors", "equivalent_dynamic_load", "basic_rating_life", "life_hours", "reliability_factor",
            "equivalent_static_load", "bushing_pressure", "sliding_speed"]
