@@ -458,6 +458,9 @@ def _sf(ctx: Any) -> float:
 
 def _peak(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult:
     r = mc.check_peak_torque(dem, margin=_sf(ctx), supply_voltage=d.supply_voltage)
+    missing = _not_checked(d)
+    if missing:
+        r = dataclasses.replace(r, notes=(*r.notes, "not checked, rating missing: " + "; ".join(missing)))
     return _with_rms(r, dem, d, prof, _sf(ctx))
 
 
@@ -467,25 +470,43 @@ def _rms(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None
     return _with_rms(mc.check_rms_torque(dem), dem, d, prof, _sf(ctx))
 
 
-def _hint(check: str, exc: MechverifyError) -> InputError:
-    return InputError(f"{exc} (or disable the check: checks.{check} = false)")
+def _not_checked(d: Drive) -> list[str]:
+    """Motor-fit checks that cannot run because a rating is missing (named in the peak-torque check's notes)."""
+    m, g, out = d.motor, d.gearhead, []
+    if m.speed_limit is None:
+        out.append("motor speed (no speed rating)")
+    if m.kind == "dc" and m.continuous_torque is None:
+        out.append("RMS torque (no nominal torque)")
+    if m.kind != "servo" and m.rotor_inertia is None:
+        out.append("inertia ratio (no rotor inertia)")
+    if g is not None:
+        for attr, what in (("continuous_torque", "gearhead continuous torque"),
+                           ("intermittent_torque", "gearhead intermittent torque")):
+            if getattr(g, attr) is None:
+                out.append(f"{what} (no rating)")
+        if g.max_input_speed is None and g.max_input_speed_intermittent is None:
+            out.append("gearhead input speed (no max. input speed)")
+    if d.driver_current is not None and m.kind == "gearmotor" and m.stall_current is None:
+        out.append("driver current (no stall current)")
+    return out
 
 
-def _speed(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult:
+def _or_none(fn: Callable[[], CheckResult]) -> CheckResult | None:
+    """The check, or None when the data lack the rating it needs (listed by :func:`_not_checked`)."""
     try:
-        return _with_rms(mc.check_max_speed(dem), dem, d, prof, _sf(ctx))
-    except InputError as exc:
-        raise _hint("motor_max_speed", exc) from None
+        return fn()
+    except InputError:
+        return None
 
 
-def _gear(fn: Callable[..., CheckResult], check: str) -> Callable[..., CheckResult | None]:
+def _speed(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
+    r = _or_none(lambda: mc.check_max_speed(dem))
+    return None if r is None else _with_rms(r, dem, d, prof, _sf(ctx))
+
+
+def _gear(fn: Callable[..., CheckResult]) -> Callable[..., CheckResult | None]:
     def run(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
-        if d.gearhead is None:
-            return None
-        try:
-            return fn(dem, d.gearhead)
-        except InputError as exc:
-            raise _hint(check, exc) from None
+        return None if d.gearhead is None else _or_none(lambda: fn(dem, d.gearhead))
 
     return run
 
@@ -493,10 +514,7 @@ def _gear(fn: Callable[..., CheckResult], check: str) -> Callable[..., CheckResu
 def _inertia(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
     if d.motor.kind == "servo":
         return None
-    try:
-        return mc.check_inertia_ratio(dem, max_ratio=d.inertia_ratio_limit)
-    except InputError as exc:
-        raise _hint("inertia_ratio", exc) from None
+    return _or_none(lambda: mc.check_inertia_ratio(dem, max_ratio=d.inertia_ratio_limit))
 
 
 def _voltage(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
@@ -508,10 +526,7 @@ def _voltage(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | 
 def _current(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
     if d.driver_current is None or not hasattr(d.motor, "current_si"):
         return None
-    try:
-        return mc.check_driver_current(dem, d.driver_current)
-    except InputError as exc:
-        raise _hint("driver_current", exc) from None
+    return _or_none(lambda: mc.check_driver_current(dem, d.driver_current))
 
 
 _MARGIN = ("Margin (motor class, default 1.5): the torque comes from estimated friction, efficiency and load, so it "
@@ -568,16 +583,14 @@ DRIVE = REGISTRY.register(ComponentType(
                           "(maxon Key information; THK). Not for steppers (they run at rated current). " + _MARGIN),
         CheckSpec("motor_max_speed", _drive_check(_speed), "Motor speed", sf_kind="speed",
                   explain="Peak motor speed against its limit speed (maxon Key information). " + _LIMIT),
-        CheckSpec("gearhead_continuous_torque", _drive_check(_gear(mc.check_gearhead_continuous_torque,
-                                                                   "gearhead_continuous_torque")),
+        CheckSpec("gearhead_continuous_torque", _drive_check(_gear(mc.check_gearhead_continuous_torque)),
                   "Gearhead continuous torque", sf_kind="motor",
                   explain="RMS output torque of the gearhead against its max. continuous torque (maxon gear Key "
                           "information). " + _MARGIN),
-        CheckSpec("gearhead_intermittent_torque", _drive_check(_gear(mc.check_gearhead_intermittent_torque,
-                                                                     "gearhead_intermittent_torque")),
+        CheckSpec("gearhead_intermittent_torque", _drive_check(_gear(mc.check_gearhead_intermittent_torque)),
                   "Gearhead intermittent torque", sf_kind="motor",
                   explain="Peak output torque of the gearhead against its max. intermittent torque. " + _MARGIN),
-        CheckSpec("gearhead_input_speed", _drive_check(_gear(mc.check_gearhead_input_speed, "gearhead_input_speed")),
+        CheckSpec("gearhead_input_speed", _drive_check(_gear(mc.check_gearhead_input_speed)),
                   "Gearhead input speed", sf_kind="speed",
                   explain="Peak input speed against the gearhead's max. input speed. " + _LIMIT),
         CheckSpec("inertia_ratio", _drive_check(_inertia), "Inertia ratio", sf_kind="deflection",
