@@ -85,7 +85,9 @@ def test_bushing_pressure_velocity_pv():
     assert v.m_as("m/s") == pytest.approx(3.14159265 * 0.01 * 10)
     assert bush.pressure("100 N").m_as("MPa") == pytest.approx(1.0)
     assert bushing_pv_check(bush, "100 N", v).demand.m_as("MPa*m/s") == pytest.approx(0.1 * 3.14159265)
-    assert bushing_pv_check(bush, "100 N", v).verdict == "pass"
+    assert bushing_pv_check(bush, "100 N", v).capacity.m_as("MPa*m/s") == pytest.approx(0.34)
+    assert bushing_pv_check(bush, "100 N", v).verdict == "warn"  # 0.314 / 0.34 = 0.92 > 0.9
+    assert bushing_pressure_check(bush, "100 N").capacity.m_as("MPa") == pytest.approx(60.0)
     assert bushing_pressure_check(bush, "100 N").verdict == "pass"
     assert bushing_velocity_check(bush, "2 m/s").verdict == "fail"
     with pytest.raises(InputError, match="pv_max"):

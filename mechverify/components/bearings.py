@@ -299,7 +299,7 @@ class PlainBushing:
             if v is None and mat is not None:
                 v = getattr(mat, nm)
             if v is not None:
-                v = Q(to_si(v, dim, nm), {"pressure": "MPa", "velocity": "m/s", "pv": "MPa*m/s"}[dim])
+                v = from_si(to_si(v, dim, nm), dim).to({"pressure": "MPa", "velocity": "m/s", "pv": "MPa*m/s"}[dim])
                 if v.magnitude <= 0:
                     raise InputError(f"{self.name}: {nm} must be positive")
             object.__setattr__(self, nm, v)

@@ -101,6 +101,7 @@ REGISTRY = Registry()
 #: Safety-factor classes a design's ``[requirements.safety_factors]`` may set, with defaults.
 DEFAULT_SAFETY_FACTORS: dict[str, float] = {
     "static": 2.0,
+    "spring": 1.2,  # Shigley 10th ed. Sec. 10-7: springs are designed for n_s >= 1.2 at solid
     "buckling": 3.0,
     "fatigue": 1.5,
     "self_locking": 1.0,

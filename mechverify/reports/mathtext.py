@@ -14,7 +14,7 @@ from functools import lru_cache
 
 # LaTeX commands mathtext lacks, mapped to ones it has.
 _REWRITES = [
-    (re.compile(r"\\text\{([^}]*)\}"), r"\\mathrm{\1}"),
+    (re.compile(r"\\text\{([^}]*)\}"), lambda m: r"\mathrm{" + m.group(1).replace(" ", r"\ ") + "}"),
     (re.compile(r"\\operatorname\{([^}]*)\}"), r"\\mathrm{\1}"),
     (re.compile(r"\\left\\\{"), r"\\{"),
     (re.compile(r"\\right\\\}"), r"\\}"),

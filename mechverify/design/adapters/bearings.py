@@ -13,7 +13,7 @@ from mechverify.components.bearings import BallBearing, PlainBushing, bearing, r
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError
-from mechverify.units import DIMENSIONS, Q, fmt, to_si
+from mechverify.units import Q, fmt
 
 
 @dataclasses.dataclass(frozen=True)
@@ -103,16 +103,7 @@ _LIMIT_UNITS = {"p_max": ("pressure", "MPa"), "v_max": ("velocity", "m/s"), "pv_
 
 
 def _build_bushing(p: dict[str, Any], ctx: dict[str, Any]) -> PlainBushing:
-    b = PlainBushing(d=p["bore"], length=p["length"], name=p["_name"], **pick(p, "material", *_LIMIT_UNITS))
-    # PlainBushing.__post_init__ (components/bearings.py) labels the SI magnitude of each limit with the display
-    # unit (60 MPa becomes 6e7 MPa); set the limits here from the same sources, converted properly.
-    for name, (dim, unit) in _LIMIT_UNITS.items():
-        v = p.get(name)
-        if v is None and b.material_record is not None:
-            v = getattr(b.material_record, name)
-        if v is not None:
-            object.__setattr__(b, name, Q(to_si(v, dim, name), DIMENSIONS[dim][1]).to(unit))
-    return b
+    return PlainBushing(d=p["bore"], length=p["length"], name=p["_name"], **pick(p, "material", *_LIMIT_UNITS))
 
 
 def _radial(loads: dict[str, Any]) -> pint.Quantity:

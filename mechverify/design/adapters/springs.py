@@ -188,11 +188,11 @@ COMPRESSION = REGISTRY.register(ComponentType(
     ),
     checks=(
         CheckSpec("static_stress", _static, "Spring shear stress at maximum working force",
-                  needs=("force|deflection",), sf_kind="static",
+                  needs=("force|deflection",), sf_kind="spring",
                   explain="tau = K_B 8FD/(pi d^3) (K_s with set removed) against S_sy of Shigley Table 10-6; "
                           "Shigley Sec. 10-7 designs springs for n_s >= 1.2."),
         CheckSpec("solid_stress", lambda c, loads, ctx: sc.spring_solid_stress(c.spring, required_sf=ctx.required_sf),
-                  "Spring shear stress at solid length", sf_kind="static",
+                  "Spring shear stress at solid length", sf_kind="spring",
                   explain="Stress when closed solid, F = k(L0 - Ls), against S_sy: a solid-safe spring takes no "
                           "set if it is closed by accident (Shigley Sec. 10-7)."),
         CheckSpec("buckling", _buckling, "Spring buckling (critical deflection)", needs=("force|deflection",),
