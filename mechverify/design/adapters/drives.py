@@ -401,7 +401,13 @@ def _with_rms(r: CheckResult, dem: TorqueDemand, drive: Drive, prof: Any, margin
     """Add the RMS torque, continuous rating and the profile samples to the details for the report plots."""
     det = dict(r.details)
     det["rms_torque"] = dem.rms_torque
-    det["margin"] = margin
+    if r.check == "motor_peak_torque":
+        det["margin"] = margin
+    elif r.check == "motor_supply_voltage" and margin > 0:  # the line the check allows: at U/SF
+        U = to_si(drive.supply_voltage, "voltage", "supply_voltage") / margin
+        w, T = drive.motor.torque_speed_curve(Q(U, "V"), n=50)
+        det["margin_speed"], det["margin_torque"] = w.to("rpm"), T
+        det["margin_label"] = f"speed-torque line at U/SF = {U:.4g} V"
     det["motor_kind"] = drive.motor.kind
     if drive.motor.continuous_torque is not None:
         det["continuous_torque"] = drive.motor.continuous_torque

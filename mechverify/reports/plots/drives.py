@@ -27,6 +27,9 @@ def _torque_speed(ax: Any, r: CheckResult) -> bool:
         if stepper and lw[0] > 0:
             ax.plot([0, lw[0]], [lt[0], lt[0]], ":", color="#0969da", lw=1.2,
                     label="below the first point: its torque (assumed)")
+        if "margin_speed" in d and "margin_torque" in d:
+            ax.plot(d["margin_speed"].m_as("rpm"), d["margin_torque"].m_as("mN*m"), "--", color="#0969da", lw=1,
+                    label=d.get("margin_label", "limit with the required SF"))
         margin = float(d.get("margin", 1.0))
         if margin > 1:
             ax.plot(lw, lt / margin, "--", color="#0969da", lw=1, label=f"limit / required SF {margin:g}")
@@ -102,4 +105,32 @@ def peak_torque_plot(r: CheckResult) -> Any:
             a.tick_params(labelbottom=False)
         axes.append(a)
     axes[-1].set_xlabel("time [s] (dashed: governing point)", fontsize=7)
+    return fig
+
+
+@plotter("gearhead_continuous_torque", "gearhead_intermittent_torque")
+def gearhead_torque_plot(r: CheckResult) -> Any:
+    """Gearhead output torque over the cycle with its RMS, the rating and the rating / required SF."""
+    import numpy as np
+
+    d = r.details
+    if not {"time", "output_torque"} <= set(d):
+        return None
+    t = np.asarray(d["time"].m_as("s"), float)
+    T = np.asarray(d["output_torque"].m_as("N*m"), float)
+    cap = float(r.capacity.m_as("N*m"))
+    fig, ax = new_figure(6.0, 3.4)
+    ax.plot(t, T, color="#0969da", lw=1.3, label="output torque T_out(t)")
+    if len(t) > 1 and t[-1] > t[0]:
+        rms = float(np.sqrt(np.trapezoid(T * T, t) / (t[-1] - t[0])))
+        ax.axhline(rms, color="#8250df", ls=":", lw=1.5, label=f"RMS {rms:.4g} N·m")
+    word = "continuous" if r.check == "gearhead_continuous_torque" else "intermittent"
+    ax.axhline(cap, color="#bf8700", lw=1.2, label=f"{word} rating {cap:.4g} N·m")
+    if r.required_sf > 1:
+        ax.axhline(cap / r.required_sf, color="#bf8700", ls="--", lw=1,
+                   label=f"rating / required SF {r.required_sf:g}")
+    ax.set_ylim(min(0.0, float(T.min()) * 1.1), max(cap, float(np.abs(T).max())) * 1.15)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("gearhead output torque [N·m]")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
     return fig
