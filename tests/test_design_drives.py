@@ -332,6 +332,18 @@ def test_stage_and_load_errors(tmp_path):
     assert "not both" in errors_of(tmp_path, text)["components.lift"]
 
 
+def test_bad_load_case_reported_once_and_every_time(tmp_path):
+    d = load(write(tmp_path, ROTARY + '\n[load_cases.a.neck]\nmass = "1 kg"\n'))
+    for _ in range(2):  # a second verify() reports it again
+        with pytest.raises(DesignFileError) as info:
+            d.verify()
+        assert info.value.errors == [("components.neck.checks.motor_peak_torque",
+                                      "load case 'a': a linear-load key (mass, payload, external_force) in a load "
+                                      "case of a rotary drive")]
+    errs = errors_of(tmp_path, ROTARY + 'cycle_time = "0.5 s"\n')
+    assert errs["components.neck"] == "cycle_time: 0.5 s is shorter than the profile 'nod' (1.0 s)"
+
+
 def test_sequence_cycle_is_an_error(tmp_path):
     text = SCREW.replace("[components.lift_screw]", '[profiles.a]\ntype = "sequence"\nsteps = ["b"]\n\n'
                                                     '[profiles.b]\ntype = "sequence"\nsteps = ["a"]\n\n'

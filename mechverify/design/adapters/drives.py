@@ -305,6 +305,7 @@ class Drive:
     supply_voltage: Any = None
     driver_current: Any = None
     inertia_ratio_limit: float | None = None
+    reported: dict[str, Any] = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
     def make_load(self, case: Mapping[str, Any]) -> LinearLoad | RotaryLoad:
         """The load with a load case's replacements: mass/inertia/external/gravity replaced, payload added,
@@ -351,14 +352,18 @@ class Drive:
         profiles = ctx.design.profiles if ctx is not None and getattr(ctx, "design", None) is not None else {}
         out = []
         for case, loads in cases:
+            where = f"load case {case!r}: " if case else ""
             prof_name = loads.get("profile", self.profile)
             prof = profiles[prof_name]
             cycle = loads.get("cycle_time", self.cycle_time)
             try:
-                out.append((case, prof, [(lab, tr.demand(prof, cycle_time=cycle)) for lab, tr in self.trains(loads)]))
+                trains = self.trains(loads)
             except MechverifyError as exc:
-                raise InputError(f"{'load case ' + repr(case) + ': ' if case else ''}profile {prof_name!r}: {exc}") \
-                    from None
+                raise InputError(f"{where}{exc}") from None
+            try:
+                out.append((case, prof, [(lab, tr.demand(prof, cycle_time=cycle)) for lab, tr in trains]))
+            except MechverifyError as exc:
+                raise InputError(f"{where}profile {prof_name!r}: {exc}") from None
         return out
 
 
@@ -391,6 +396,9 @@ def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
         words = {"length": "linear", "angle": "rotary"}
         raise InputError(f"profile: {p['profile']!r} is a {words[prof.kind]} move but the load is "
                          f"{words[tr.load.kind]} ({'mass' if kind == 'length' else 'inertia'} given)")
+    if prof is not None and "cycle_time" in p and p["cycle_time"] < prof.duration * (1 - 1e-9):
+        raise InputError(f"cycle_time: {p['cycle_time']:~P} is shorter than the profile {p['profile']!r} "
+                         f"({prof.duration:~P})")
     return d
 
 
@@ -436,8 +444,14 @@ def _drive_check(fn: Callable[[Drive, TorqueDemand, Any, Any], CheckResult | Non
     """Run ``fn(drive, demand, ctx, profile)`` for every load case and friction variant; per case keep the worst."""
 
     def run(drive: Drive, loads: Any, ctx: Any) -> list[CheckResult]:
+        try:
+            demands = drive.demands(ctx)
+        except MechverifyError as exc:  # report a bad load case at one check, not at every one
+            if drive.reported.setdefault(str(exc), fn) is not fn:
+                return []
+            raise
         results = []
-        for case, prof, variants in drive.demands(ctx):
+        for case, prof, variants in demands:
             found = []
             for label, dem in variants:
                 r = fn(drive, dem, ctx, prof)
