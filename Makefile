@@ -23,7 +23,7 @@ demo: $(STAMP) sysdeps
 	$(BIN)/python -m mechverify.demo
 
 lint: $(STAMP)
-	$(BIN)/ruff check mechverify tests benchmarks examples
+	$(BIN)/ruff check $(wildcard mechverify tests benchmarks examples)
 
 test: $(STAMP) sysdeps lint
 	$(BIN)/python -m pytest

@@ -13,6 +13,7 @@ from typing import Annotated, Any
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from mechverify.checks import ResultSet, Verdict
@@ -331,6 +332,20 @@ def explain(check_name: Annotated[str | None, typer.Argument(metavar="CHECK", he
 
 
 @app.command()
+def init(
+    path: Annotated[Path, typer.Argument(help="where to write the starter design")] = Path("design.toml"),
+    force: Annotated[bool, typer.Option("--force", help="overwrite an existing file")] = False,
+) -> None:
+    """Write a commented starter design file (a lead-screw lift) to PATH."""
+    from importlib import resources
+
+    if path.exists() and not force:
+        raise Invalid(f"{path} exists; pass --force to overwrite it")
+    _write_atomic(path, resources.files("mechverify.design").joinpath("starter.toml").read_text(encoding="utf-8"))
+    out.print(f"wrote {path}; verify it with: mechverify check {path}")
+
+
+@app.command()
 def schema(output: Annotated[Path | None, typer.Option("--output", "-o", help="write to a file")] = None) -> None:
     """Print the JSON Schema of the design-file format."""
     import json
@@ -351,11 +366,8 @@ def main(argv: list[str] | None = None) -> int:
         return int(code or 0)
     except typer.Exit as exc:
         return exc.exit_code
-    except Invalid as exc:
-        err.print(f"[red]error:[/red] {exc}", markup=True, soft_wrap=True)
-        return 2
-    except MechverifyError as exc:
-        err.print(f"[red]error:[/red] {exc}", soft_wrap=True)
+    except (Invalid, MechverifyError) as exc:
+        err.print(f"[red]error:[/red] {escape(str(exc))}", soft_wrap=True)
         return 2
     except (typer.BadParameter, typer.Abort) as exc:  # click errors
         err.print(f"error: {exc}")

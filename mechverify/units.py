@@ -190,7 +190,11 @@ def fmt(q: pint.Quantity, unit: str | None = None, digits: int = 4) -> str:
         q = q.to(unit)
     m = q.magnitude
     if _is_scalar(m):
-        text = f"{m:.{digits}g}"
+        m = float(m)
+        if m != 0 and 1e-3 <= abs(m) < 1e7:  # no exponent where people would not write one: 10000 h, 0.2526
+            text = np.format_float_positional(m, precision=digits, unique=False, fractional=False, trim="-")
+        else:
+            text = f"{m:.{digits}g}"
     else:
         text = np.array2string(np.asarray(m), precision=digits)
     u = f"{q.units:~P}"

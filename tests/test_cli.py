@@ -137,3 +137,11 @@ def test_browse_commands(capsys):
     assert main(["explain"]) == 0
     assert main(["explain", "self_locking"]) == 0
     assert "friction angle" in capsys.readouterr().out
+
+
+def test_init_writes_a_starter_that_verifies(tmp_path, capsys):
+    p = tmp_path / "design.toml"
+    assert main(["init", str(p)]) == 0
+    assert main(["init", str(p)]) == 2  # refuses to overwrite
+    assert main(["check", str(p), "-q"]) in (0, 1)
+    assert "lift_screw" in p.read_text()

@@ -109,5 +109,6 @@ DEFAULT_SAFETY_FACTORS: dict[str, float] = {
     "bearing": 1.0,
     "deflection": 1.0,
     "speed": 1.25,
+    "limit": 1.0,  # hard limits that already contain their margin (guidelines, ratings with margin)
     "pressure": 1.0,
 }

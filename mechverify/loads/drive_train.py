@@ -228,8 +228,19 @@ def rms(t: np.ndarray, y: np.ndarray, cycle_time: float | None = None) -> float:
 
 
 def _direction(v: np.ndarray, a: np.ndarray, vscale: float, ascale: float) -> np.ndarray:
-    d = np.where(np.abs(v) > 1e-9 * vscale, np.sign(v), np.sign(np.where(np.abs(a) > 1e-9 * ascale, a, 0.0)))
-    return d
+    """Sense of motion per sample (+1/-1/0), which decides the efficiency and friction directions.
+
+    Where the load is at rest the sample belongs to the adjacent motion: the move it ends (the
+    previous sample's sense) or, after a dwell, the move it starts (the next sample's sense); a sample
+    with no moving neighbour takes the sense of its acceleration.
+    """
+    moving = np.abs(v) > 1e-9 * vscale
+    d = np.where(moving, np.sign(v), 0.0)
+    prev = np.concatenate(([0.0], d[:-1]))
+    nxt = np.concatenate((d[1:], [0.0]))
+    acc = np.sign(np.where(np.abs(a) > 1e-9 * ascale, a, 0.0))
+    at_rest = np.where(prev != 0, prev, np.where(nxt != 0, nxt, acc))
+    return np.where(moving, d, at_rest)
 
 
 @dataclass(frozen=True)

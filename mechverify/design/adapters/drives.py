@@ -551,8 +551,8 @@ def _current(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | 
 
 _MARGIN = ("Margin (motor class, default 1.5): the torque comes from estimated friction, efficiency and load, so it "
            "carries their uncertainty (Oriental Motor: 1.5-2 on a stepper's pull-out torque).")
-_LIMIT = ("A kinematic limit: the profile fixes the speed exactly, so the speed class applies (default 1.25; set "
-          "[requirements.safety_factors] speed = 1.0 to treat the rating as a hard limit).")
+_LIMIT = ("A rating that already carries the maker's margin: class limit (default 1.0; raise "
+          "[requirements.safety_factors] limit for more).")
 
 DRIVE = REGISTRY.register(ComponentType(
     name="drive",
@@ -601,7 +601,7 @@ DRIVE = REGISTRY.register(ComponentType(
         CheckSpec("motor_rms_torque", _drive_check(_rms), "Motor RMS torque", sf_kind="motor",
                   explain="T_rms = sqrt(1/t_c ∫T² dt) over the duty cycle against the continuous (nominal) torque "
                           "(maxon Key information; THK). Not for steppers (they run at rated current). " + _MARGIN),
-        CheckSpec("motor_max_speed", _drive_check(_speed), "Motor speed", sf_kind="speed",
+        CheckSpec("motor_max_speed", _drive_check(_speed), "Motor speed", sf_kind="limit",
                   explain="Peak motor speed against its limit speed (maxon Key information). " + _LIMIT),
         CheckSpec("gearhead_continuous_torque", _drive_check(_gear(mc.check_gearhead_continuous_torque)),
                   "Gearhead continuous torque", sf_kind="motor",
@@ -611,15 +611,15 @@ DRIVE = REGISTRY.register(ComponentType(
                   "Gearhead intermittent torque", sf_kind="motor",
                   explain="Peak output torque of the gearhead against its max. intermittent torque. " + _MARGIN),
         CheckSpec("gearhead_input_speed", _drive_check(_gear(mc.check_gearhead_input_speed)),
-                  "Gearhead input speed", sf_kind="speed",
+                  "Gearhead input speed", sf_kind="limit",
                   explain="Peak input speed against the gearhead's max. input speed. " + _LIMIT),
-        CheckSpec("inertia_ratio", _drive_check(_inertia), "Inertia ratio", sf_kind="deflection",
+        CheckSpec("inertia_ratio", _drive_check(_inertia), "Inertia ratio", sf_kind="limit",
                   explain="Load inertia reflected to the motor, sum J_i/r_i², over the rotor inertia against the "
                           "limit (default 10; Oriental Motor, THK). A serviceability guideline like a deflection limit "
-                          "(class deflection, default 1.0): the limit already is the margin. Not for hobby servos."),
-        CheckSpec("motor_supply_voltage", _drive_check(_voltage), "Supply voltage", sf_kind="speed",
+                          "(class limit, default 1.0): the limit already is the margin. Not for hobby servos."),
+        CheckSpec("motor_supply_voltage", _drive_check(_voltage), "Supply voltage", sf_kind="limit",
                   explain="DC motors with supply_voltage: U = R(|T|/k_t + I_0) + |omega|/k_n at the worst point "
-                          "against the supply (maxon). Mostly back-EMF, i.e. speed: the speed class applies."),
+                          "against the supply (maxon): a hard limit (class limit, default 1.0)."),
         CheckSpec("driver_current", _drive_check(_current), "Driver current", sf_kind="motor",
                   explain="With driver_current: I = |T|/k_t + I_0 at the worst point against the driver's current "
                           "(maxon). Scales with the torque, so the torque margin applies. " + _MARGIN),
