@@ -84,6 +84,26 @@ def wire_tensile_strength(material: Material, d: Any) -> pint.Quantity:
 
 
 # ----------------------------------------------------------------------------------------- geometry
+def coil_geometry(name: str, d: Any, D: Any = None, OD: Any = None, ID: Any = None) -> tuple[float, float]:
+    """Wire and mean coil diameter [m] from ``d`` and exactly one of ``D`` (mean), ``OD`` or ``ID``.
+
+    ``D = OD - d = ID + d``; raises :class:`InputError` for a non-positive wire or ``D <= d``.
+    """
+    dm = to_si(d, "length", "d")
+    if dm <= 0:
+        raise InputError(f"{name}: wire diameter d must be positive, got {fmt(as_quantity(d, 'length'))}")
+    given = {k: v for k, v in (("D", D), ("OD", OD), ("ID", ID)) if v is not None}
+    if len(given) != 1:
+        raise InputError(f"{name}: give exactly one of D (mean), OD or ID coil diameter; got {list(given) or 'none'}")
+    (key, value), = given.items()
+    raw = to_si(value, "length", key)
+    Dm = {"D": raw, "OD": raw - dm, "ID": raw + dm}[key]
+    if Dm <= dm:
+        raise InputError(f"{name}: mean coil diameter D = {fmt(Q(Dm, 'm'), 'mm')} must exceed the wire "
+                         f"diameter d = {fmt(Q(dm, 'm'), 'mm')} (spring index C = D/d > 1)")
+    return dm, Dm
+
+
 @si_function(D="length", d="length")
 def spring_index(D: float, d: float) -> float:
     """Spring index C = D/d [-], D mean coil diameter, d wire diameter. Shigley [1] Eq. (10-1)."""

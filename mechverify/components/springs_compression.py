@@ -24,7 +24,7 @@ from mechverify.components import spring_formulas as sf
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue import criteria
 from mechverify.materials.material import Material
-from mechverify.units import Q, as_quantity, fmt, from_si, to_si
+from mechverify.units import Q, fmt, from_si, to_si
 
 SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed. (2015)"
 
@@ -127,18 +127,7 @@ class CompressionSpring:
 
     def __post_init__(self) -> None:
         s = object.__setattr__
-        d = to_si(self.d, "length", "d")
-        if d <= 0:
-            raise InputError(f"{self.name}: wire diameter d must be positive, got {fmt(as_quantity(self.d, 'length'))}")
-        given = [k for k in ("D", "OD", "ID") if getattr(self, k) is not None]
-        if len(given) != 1:
-            raise InputError(f"{self.name}: give exactly one of D (mean), OD or ID coil diameter; "
-                             f"got {given or 'none'}")
-        raw = to_si(getattr(self, given[0]), "length", given[0])
-        D = {"D": raw, "OD": raw - d, "ID": raw + d}[given[0]]
-        if D <= d:
-            raise InputError(f"{self.name}: mean coil diameter D = {fmt(Q(D, 'm'), 'mm')} must exceed the wire "
-                             f"diameter d = {fmt(Q(d, 'm'), 'mm')} (spring index C = D/d > 1)")
+        d, D = sf.coil_geometry(self.name, self.d, self.D, self.OD, self.ID)
         end = EndType.of(self.end)
         if (self.Na is None) == (self.Nt is None):
             raise InputError(f"{self.name}: give exactly one of Na (active coils) or Nt (total coils)")

@@ -42,17 +42,7 @@ class TorsionSpring:
     _si: dict[str, float] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        d = to_si(self.d, "length", "d")
-        if d <= 0:
-            raise InputError(f"{self.name}: wire diameter d must be positive")
-        given = [k for k in ("D", "OD", "ID") if getattr(self, k) is not None]
-        if len(given) != 1:
-            raise InputError(f"{self.name}: give exactly one of D, OD or ID; got {given or 'none'}")
-        raw = to_si(getattr(self, given[0]), "length", given[0])
-        D = {"D": raw, "OD": raw - d, "ID": raw + d}[given[0]]
-        if D <= d:
-            raise InputError(f"{self.name}: mean coil diameter D = {fmt(Q(D, 'm'), 'mm')} must exceed "
-                             f"d = {fmt(Q(d, 'm'), 'mm')}")
+        d, D = sf.coil_geometry(self.name, self.d, self.D, self.OD, self.ID)
         Nb = float(self.Nb)
         if Nb <= 0:
             raise InputError(f"{self.name}: body turns must be positive, got Nb = {Nb:g}")
