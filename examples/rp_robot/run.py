@@ -161,16 +161,18 @@ def python_results(safety_factors: dict[str, float] | None = None) -> ResultSet:
     Each result gets the required safety factor of its class from ``safety_factors`` (the design's
     ``[requirements.safety_factors]``), as the design-file framework would give it.
     """
-    sf = {"motor": 1.5, "speed": 1.25, "deflection": 1.0, "self_locking": 1.0, **(safety_factors or {})}
-    kind = {"motor_max_speed": "speed", "gearhead_input_speed": "speed", "inertia_ratio": "deflection",
-            "self_locking": "self_locking"}
+    from mechverify.design import adapters  # noqa: F401  (registers the component types)
+    from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY
+
+    sf = {**DEFAULT_SAFETY_FACTORS, **(safety_factors or {})}
+    kind = {c.name: c.sf_kind for t in ("drive", "lead_screw") for c in REGISTRY.types[t].checks}
     screw, n = lead_screw(), nut()
     tagged = [("prismatic_screw", sc.check_self_locking(screw, n))]
     for comp, motor_name, gear in (("prismatic_maxon", "maxon RE13", "GP 13 A 17:1"),
                                    ("prismatic_pololu", "Pololu 150:1", None)):
         dem = prismatic_demand(motor_name, gear)
         tagged += [(comp, r) for r in mc.motor_fit_checks(dem, margin=sf["motor"])]
-    out = [dataclasses.replace(r, component=comp, required_sf=sf[kind.get(r.check, "motor")]) for comp, r in tagged]
+    out = [dataclasses.replace(r, component=comp, required_sf=sf[kind[r.check]]) for comp, r in tagged]
     return ResultSet(out, "prismatic joint (Python API)")
 
 
