@@ -1,0 +1,600 @@
+"""``link`` and ``plate``: structural members with their closed-form checks.
+
+* ``link`` — a straight member between two pin holes, or a bar with end conditions
+  (:class:`~mechverify.components.links.Link`): body section by kind and dimensions (flat keys),
+  material, optional pin eye (lug) and pin, end condition (buckling and beam case), optional
+  print-orientation knock-down. Loads per case: axial force, bending moments, a transverse point or
+  distributed load (Shigley Table A-9 case picked from the end condition), torsion, pin force.
+* ``plate`` — a rectangular or circular plate on Roark's closed-form cases (all edges simply
+  supported or clamped; uniform pressure or a central load): bending stress and deflection. Plates
+  on bolts or with cut-outs are outside these cases and need the FEA plate model.
+
+The checks are those of :mod:`mechverify.checks.members`; this module only maps design-file
+values onto them and adds plot data (beam diagram, column curve) to the results.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import inspect
+import math
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.checks import members as mc
+from mechverify.checks.result import CheckResult
+from mechverify.components import sections
+from mechverify.components.links import Link, Lug, beam_case, beam_max_moment
+from mechverify.components.plates import Plate, PlateEstimate, roark_circular_plate, roark_rectangular_plate
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.errors import InputError, MechverifyError
+from mechverify.materials import Material
+from mechverify.units import Q, fmt, to_si
+
+SHIGLEY_A9 = "Shigley's Mechanical Engineering Design, 10th ed., Table A-9"
+
+# ------------------------------------------------------------------------------------------ sections
+#: Section kinds a design file may name, with the constructor of :mod:`~mechverify.components.sections`.
+SECTION_KINDS = tuple(k for k in sections.section_kinds() if k != "polygon")
+SECTION_ALIASES = {"rect": "rectangle", "bar": "rectangle", "flat": "rectangle", "round": "circle", "rod": "circle",
+                   "pipe": "tube", "chs": "tube", "rhs": "hollow_rectangle", "shs": "hollow_rectangle",
+                   "box": "hollow_rectangle", "ipe": "i_section", "tee": "t_section", "angle": "l_section",
+                   "channel": "c_section"}
+SECTION_DIMENSIONS = ("width", "height", "diameter", "outer_diameter", "inner_diameter", "thickness",
+                      "web_thickness", "flange_thickness", "root_radius", "outer_radius", "toe_radius")
+
+
+def _section_parameters(kind: str) -> tuple[list[str], list[str]]:
+    """(required, optional) dimension keys of a section constructor."""
+    sig = inspect.signature(getattr(sections, kind))
+    req = [n for n, p in sig.parameters.items() if p.default is inspect.Parameter.empty]
+    opt = [n for n, p in sig.parameters.items() if p.default is not inspect.Parameter.empty]
+    return req, opt
+
+
+def build_section(p: dict[str, Any]) -> sections.Section:
+    """The body section from the flat keys ``section`` (kind) and its dimensions."""
+    kind = SECTION_ALIASES.get(p["section"], p["section"])
+    req, opt = _section_parameters(kind)
+    given = {k: p[k] for k in SECTION_DIMENSIONS if k in p}
+    extra = [k for k in given if k not in req + opt]
+    if extra:
+        raise InputError(f"{extra[0]}: not a dimension of a {kind} section (it takes {', '.join(req + opt)})")
+    if kind == "tube" and "thickness" not in given and "inner_diameter" not in given:
+        raise InputError("thickness: missing; a tube needs outer_diameter and thickness (or inner_diameter)")
+    missing = [k for k in req if k not in given]
+    if missing:
+        raise InputError(f"{missing[0]}: missing; a {kind} section needs {', '.join(req)}")
+    return sections.make_section(kind, **given)
+
+
+# ------------------------------------------------------------------------------------------ beam cases
+#: Link end condition -> (Table A-9 support name, name of the point-load case's load position).
+BEAM_SUPPORT = {"pinned-pinned": ("simply_supported", "center_load"), "fixed-free": ("cantilever", "end_load"),
+                "fixed-pinned": ("fixed_pinned", "center_load"), "fixed-fixed": ("fixed_fixed", "center_load")}
+#: Largest end reaction (= largest shear) per Table A-9 case, as a multiple of F or w l.
+REACTION = {"simply_supported_center_load": 0.5, "simply_supported_uniform": 0.5, "cantilever_end_load": 1.0,
+            "cantilever_uniform": 1.0, "fixed_pinned_center_load": 11 / 16, "fixed_pinned_uniform": 5 / 8,
+            "fixed_fixed_center_load": 0.5, "fixed_fixed_uniform": 0.5}
+
+
+def beam_case_name(end: str, uniform: bool) -> str:
+    support, point = BEAM_SUPPORT[end]
+    return f"{support}_{'uniform' if uniform else point}"
+
+
+def beam_moment_diagram(case: str, load: float, length: float, n: int = 201) -> tuple[np.ndarray, np.ndarray]:
+    """Bending moment along the beam [N m] (sagging positive, load downward, fixed end at x = 0) by
+    statics with the Table A-9 reactions; ``load`` in N (point cases) or N/m (uniform cases)."""
+    x = np.linspace(0.0, length, n)
+    L, P = length, load
+    step = np.where(x > L / 2, x - L / 2, 0.0)  # Macaulay bracket <x - l/2>
+    M = {
+        "simply_supported_center_load": P / 2 * x - P * step,
+        "simply_supported_uniform": P * x * (L - x) / 2,
+        "cantilever_end_load": -P * (L - x),
+        "cantilever_uniform": -P * (L - x) ** 2 / 2,
+        "fixed_pinned_center_load": -3 * P * L / 16 + 11 * P / 16 * x - P * step,
+        "fixed_pinned_uniform": -P * L**2 / 8 + 5 * P * L / 8 * x - P * x**2 / 2,
+        "fixed_fixed_center_load": -P * L / 8 + P / 2 * x - P * step,
+        "fixed_fixed_uniform": -P * L**2 / 12 + P * L / 2 * x - P * x**2 / 2,
+    }[case]
+    return x, M
+
+
+def beam_deflection_curve(case: str, load: float, length: float, EI: float, n: int = 201
+                          ) -> tuple[np.ndarray, np.ndarray]:
+    """Deflection along the beam [m] (upward positive) from ``E I y'' = M`` integrated twice with the
+    kinematic conditions of the supports (y = y' = 0 at a fixed x = 0; y = 0 at both simple supports)."""
+    x, M = beam_moment_diagram(case, load, length, n)
+    k = M / EI
+    slope = np.concatenate(([0.0], np.cumsum((k[1:] + k[:-1]) / 2 * np.diff(x))))
+    y = np.concatenate(([0.0], np.cumsum((slope[1:] + slope[:-1]) / 2 * np.diff(x))))
+    if case.startswith("simply_supported"):
+        y = y - y[-1] * x / length  # add c1 x so that y(l) = 0
+    return x, y
+
+
+# ------------------------------------------------------------------------------------------ the link
+@dataclasses.dataclass(frozen=True)
+class LinkMember:
+    """A link as declared in a design file: the :class:`Link`, the pin's material and shear planes,
+    and the deflection limit (a length, ``"L/250"`` or a fraction of the length)."""
+
+    link: Link
+    pin_material: Material
+    pin_material_given: bool
+    shear_planes: int
+    deflection_limit: Any
+    lug_defaults: tuple[str, ...] = ()
+
+
+def _build_link(p: dict[str, Any], ctx: dict[str, Any]) -> LinkMember:
+    name = p["_name"]
+    section = build_section(p)
+    lug_keys = ("lug_width", "lug_thickness", "edge_distance", "pin_diameter", "pin_material", "rounded_end")
+    lug = None
+    defaults: list[str] = []
+    if "hole_diameter" in p:
+        w, t = p.get("lug_width"), p.get("lug_thickness")
+        if w is None or t is None:
+            kind = SECTION_ALIASES.get(p["section"], p["section"])
+            if kind != "rectangle":
+                miss = "lug_width" if w is None else "lug_thickness"
+                raise InputError(f"{miss}: missing; give lug_width and lug_thickness of the eye (they default to "
+                                 "the bar's larger and smaller dimension only for a rectangle section)")
+            big, small = sorted((p["width"], p["height"]), key=lambda q: q.m_as("m"), reverse=True)
+            if w is None:
+                w = big
+                defaults.append(f"lug_width = {fmt(big, 'mm')} (the bar's larger dimension)")
+            if t is None:
+                t = small
+                defaults.append(f"lug_thickness = {fmt(small, 'mm')} (the bar's smaller dimension)")
+        R = p.get("edge_distance")
+        if R is None:
+            R = w / 2
+            defaults.append(f"edge_distance = {fmt(R.to('mm'), 'mm')} (half the lug width: a full round end)")
+        try:
+            lug = Lug(p["hole_diameter"], w, t, R, p["rounded_end"])
+        except InputError as exc:
+            msg = str(exc).removeprefix("lug: ")
+            key = "edge_distance" if "edge distance" in msg else "hole_diameter"
+            raise InputError(f"{key}: {msg}") from None
+    else:
+        given = [k for k in lug_keys if k in p and not (k == "rounded_end" and p[k] is True)]
+        if given:
+            raise InputError(f"{given[0]}: a pin eye needs hole_diameter (no hole given)")
+    if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
+        raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
+    limit: Any = p.get("deflection_limit")
+    if limit is None:
+        limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
+    try:
+        mc.deflection_limit(limit, p["length"])
+    except MechverifyError as exc:
+        key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
+        raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the length: "
+                         f"{str(exc).split(': ', 1)[-1]}") from None
+    if not 0 < p["strength_factor"] <= 1:
+        raise InputError(f"strength_factor: must lie in (0, 1], got {p['strength_factor']!r}")
+    if p["pin_shear_planes"] < 1:
+        raise InputError(f"pin_shear_planes: a positive whole number, got {p['pin_shear_planes']!r}")
+    try:
+        link = Link(p["length"], section, p["material"], lug=lug, pin_diameter=p.get("pin_diameter"), end=p["end"],
+                    strength_factor=p["strength_factor"], print_orientation=p.get("print_orientation", ""),
+                    name=name)
+    except InputError as exc:
+        msg = str(exc).removeprefix(f"{name}: ").removeprefix(f"{name}.")
+        key = "pin_diameter" if "pin diameter" in msg else "length" if "overlap" in msg else ""
+        raise InputError(f"{key}: {msg}" if key else msg) from None
+    return LinkMember(link, p.get("pin_material", p["material"]), "pin_material" in p, p["pin_shear_planes"], limit,
+                      tuple(defaults))
+
+
+def _transverse(m: LinkMember, loads: dict[str, Any]) -> tuple[str, float, pint.Quantity] | None:
+    """(Table A-9 case, load in SI, load as given) of a transverse load, or None."""
+    if "transverse_load" in loads and "distributed_load" in loads:
+        raise InputError("give transverse_load or distributed_load, not both")
+    for key, uniform in (("transverse_load", False), ("distributed_load", True)):
+        if key in loads:
+            q = loads[key]
+            return beam_case_name(_end(m), uniform), abs(to_si(q, _dim(key), key)), q
+    return None
+
+
+def _dim(key: str) -> str:
+    return "force" if key == "transverse_load" else "force_per_length"
+
+
+def _end(m: LinkMember) -> str:
+    return str(m.link.end)  # one of BEAM_SUPPORT (a choice field)
+
+
+def _moments(m: LinkMember, loads: dict[str, Any]) -> tuple[float, float, list[str]]:
+    """(|M| about y, |shear| V) from bending_moment plus the transverse load's Table A-9 maximum."""
+    M = abs(to_si(loads.get("bending_moment", "0 N*m"), "torque", "bending_moment"))
+    V, notes = 0.0, []
+    tr = _transverse(m, loads)
+    if tr is not None:
+        case, P, q = tr
+        L = m.link.length.m_as("m")
+        Mt = beam_max_moment(case, Q(P, "N" if _dim_of(case) == "force" else "N/m"), m.link.length).m_as("N*m")
+        c = beam_case(case)
+        V = REACTION[case] * P * (1.0 if c.load_kind == "force" else L)
+        notes.append(f"transverse load {fmt(q)}: {SHIGLEY_A9}-{c.table_case[4:]} ({case.replace('_', ' ')}), "
+                     f"M_max = {Mt:.4g} N·m ({c.where}), V_max = {V:.4g} N")
+        if M:
+            notes.append("bending_moment and the transverse load's largest moment added (conservative: they may "
+                         "peak at different sections)")
+        M += Mt
+    return M, V, notes
+
+
+def _dim_of(case: str) -> str:
+    return "force" if beam_case(case).load_kind == "force" else "force_per_length"
+
+
+def _pin_force(m: LinkMember, loads: dict[str, Any]) -> tuple[pint.Quantity, str]:
+    """The pin force of a case: ``pin_force``, else the resultant of the axial force and the largest end reaction."""
+    if "pin_force" in loads:
+        return Q(abs(loads["pin_force"].m_as("N")), "N"), "pin_force given by the load case"
+    N = abs(to_si(loads.get("axial_force", "0 N"), "force", "axial_force"))
+    tr = _transverse(m, loads)
+    R = 0.0
+    if tr is not None:
+        case, P, _ = tr
+        R = REACTION[case] * P * (1.0 if beam_case(case).load_kind == "force" else m.link.length.m_as("m"))
+    if R:
+        return Q(math.hypot(N, R), "N"), (f"pin force = resultant of the axial force {N:.4g} N and the largest end "
+                                          f"reaction {R:.4g} N of the transverse load (Table A-9)")
+    return Q(N, "N"), "pin force = |axial force| (no pin_force given)"
+
+
+def _with(r: CheckResult, notes: list[str] = (), details: dict[str, Any] | None = None, **kw: Any) -> CheckResult:
+    return dataclasses.replace(r, notes=(*r.notes, *notes), details={**r.details, **(details or {})}, **kw)
+
+
+def _body_strength(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    M, V, notes = _moments(m, loads)
+    Mz = loads.get("lateral_moment", Q(0, "N*m"))
+    r = mc.member_body_strength(m.link, loads.get("axial_force", "0 N"), Q(M, "N*m"), Mz,
+                                loads.get("torque", "0 N*m"), Q(V, "N"), required_sf=ctx.required_sf)
+    if m.link.lug is None:
+        notes.append("no hole_diameter given: the eye, lug and pin checks do not apply")
+    else:
+        notes.append("stress at the pin holes: see the eye net-section check (Kt policy there)")
+    inputs = {**r.inputs, "My": Q(M, "N*m").to("N*m")}
+    details: dict[str, Any] = {}
+    tr = _transverse(m, loads)
+    if V:
+        inputs["V"] = Q(V, "N")
+    if tr is not None:
+        E, I = m.link.material.require("E"), m.link.section.Iy
+        details = {"beam_case": tr[0], "load_si": tr[1], "length": m.link.length.to("mm"),
+                   "EI": (E * I).to("N*m**2")}
+        N = to_si(loads.get("axial_force", "0 N"), "force", "axial_force")
+        if N < 0:
+            pe = (math.pi**2 * E * I / m.link.length**2).m_as("N")  # Euler load in the plane of the transverse load
+            notes.append(f"compression with a transverse load: the beam-column amplification of the moment, about "
+                         f"1/(1 - P/P_e) = {1 / max(1 - abs(N) / pe, 1e-9):.3g} (P_e = pi^2 E I_y/l^2 = {pe:.4g} N; "
+                         "Timoshenko & Gere, Theory of Elastic Stability, Sec. 1.11), is not included")
+    return _with(r, notes, details, inputs=inputs)
+
+
+def _eye(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
+    if m.link.lug is None:
+        return []
+    F, how = _pin_force(m, loads)
+    r = mc.eye_net_section(m.link, F, required_sf=ctx.required_sf)
+    return [_with(r, [how, *m.lug_defaults])]
+
+
+def _lug(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
+    """BTH-1 lug modes with the design's factor as Nd: the 1.20 of the plate modes goes into the capacity."""
+    if m.link.lug is None:
+        return []
+    F, how = _pin_force(m, loads)
+    out = []
+    for r in mc.lug_checks(m.link, F, design_factor=ctx.required_sf):
+        if r.check == "lug_bearing":
+            out.append(_with(r, [how]))
+            continue
+        out.append(_with(r, [how, "capacity = BTH-1 nominal strength / 1.20, so the required SF is Nd (BTH-1 "
+                                  "Sec. 3-3.3.1: allowable = P / (1.20 Nd))"],
+                         capacity=(r.capacity / 1.2).to("N"),
+                         formula=r.formula + r",\ \ P_{allow} = P / (1.20\,N_d)"))
+    nd = (f"Nd = the required SF {ctx.required_sf:g} (BTH-1: 2.0 for Design Category A, 3.0 for Category B; "
+          "set it with checks.lug = { required_sf = ... })")
+    return [dataclasses.replace(r, notes=tuple(nd if n.startswith("Nd =") else n for n in r.notes)) for r in out]
+
+
+def _pin(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
+    if m.link.pin_diameter is None:
+        return []
+    F, how = _pin_force(m, loads)
+    r = mc.pin_shear(m.link, F, m.pin_material, planes=m.shear_planes, required_sf=ctx.required_sf)
+    notes = [how]
+    if not m.pin_material_given:
+        notes.append(f"pin_material not given: the link's material ({m.pin_material.name}) assumed for the pin")
+    return [_with(r, notes)]
+
+
+def _buckling(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    N = to_si(loads["axial_force"], "force", "axial_force")
+    r = mc.member_buckling(m.link, Q(-N, "N"), required_sf=ctx.required_sf)
+    b = m.link.buckling()
+    s = m.link.section
+    return _with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"],
+                 details={"C": b.C, "E": m.link.material.require("E").to("GPa"),
+                          "Sy": m.link.yield_strength.to("MPa"), "area": s.area.to("mm**2"),
+                          "critical_stress": (b.critical_load / s.area).to("MPa")})
+
+
+def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    case, P, q = _transverse(m, loads)
+    load = Q(P, "N" if _dim_of(case) == "force" else "N/m")
+    r = mc.link_deflection(m.link, case, load, m.deflection_limit)
+    E, I = m.link.material.require("E"), m.link.section.Iy
+    c = beam_case(case)
+    return _with(r, [f"{c.table_case} {case.replace('_', ' ')}: largest deflection at {c.where.split(';')[0]}",
+                     "load in the plane of the section's height (bending about the section's y axis, I_y)"],
+                 check="link_deflection", title="Link deflection",
+                 formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}",
+                 inputs={**r.inputs, "load": q, "E": E.to("GPa"), "I": I.to("mm**4")},
+                 details={"beam_case": case, "load_si": P, "length": m.link.length.to("mm"), "EI": (E * I).to("N*m**2"),
+                          "limit": r.capacity})
+
+
+ANY_LINK_LOAD = "axial_force|bending_moment|lateral_moment|transverse_load|distributed_load|torque|pin_force"
+
+LINK = REGISTRY.register(ComponentType(
+    name="link",
+    doc="A straight member between two pin holes, or a bar with end conditions: body section (kind and its "
+        "dimensions), material, length between pin centres, pin eye and pin, end condition, optional "
+        "3D-print knock-down.",
+    fields=(
+        Field("length", "length", "length between the pin centres (the span)", required=True),
+        Field("section", "choice", "body section kind", required=True,
+              choices=(*SECTION_KINDS, *SECTION_ALIASES)),
+        Field("width", "length", "section width (along the section's y axis; rectangle, hollow rectangle, I/T/L/C)"),
+        Field("height", "length", "section height, in the bending plane of transverse loads"),
+        Field("diameter", "length", "diameter of a circle section"),
+        Field("outer_diameter", "length", "outer diameter of a tube"),
+        Field("inner_diameter", "length", "inner diameter of a tube (instead of thickness)"),
+        Field("thickness", "length", "wall thickness of a tube, hollow rectangle or angle"),
+        Field("web_thickness", "length", "web thickness of an I, T or C section"),
+        Field("flange_thickness", "length", "flange thickness of an I, T or C section"),
+        Field("root_radius", "length", "root fillet radius of an I, T, L or C section"),
+        Field("outer_radius", "length", "outer corner radius of a hollow rectangle"),
+        Field("toe_radius", "length", "toe radius of an angle"),
+        Field("material", "material", "link material", required=True),
+        Field("end", "choice", "end condition: buckling constant C (Shigley Table 4-2, recommended) and the "
+                               "Table A-9 beam case of transverse loads",
+              choices=tuple(BEAM_SUPPORT), default="pinned-pinned"),
+        Field("hole_diameter", "length", "pin-hole diameter of the eyes (same at both ends)"),
+        Field("lug_width", "length", "eye width across the hole (default for a rectangle: its larger dimension)"),
+        Field("lug_thickness", "length", "eye thickness along the pin (default for a rectangle: its smaller "
+                                         "dimension)"),
+        Field("edge_distance", "length", "hole centre to the end of the eye along the link (default lug_width/2)"),
+        Field("rounded_end", "bool", "the eye's end is rounded (radius = edge_distance)", default=True),
+        Field("pin_diameter", "length", "pin diameter (default: the hole diameter)"),
+        Field("pin_material", "material", "pin material (default: the link's material)"),
+        Field("pin_shear_planes", "int", "shear planes of the pin (2: link in a clevis)", default=2),
+        Field("strength_factor", "float", "knock-down of the material strengths, 0 < f <= 1 (e.g. a printed "
+                                          "orientation weaker than the datasheet)", default=1.0),
+        Field("print_orientation", "str", "label reported with strength_factor, e.g. 'Z (across layers)'"),
+        Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' "
+                                         "(default: requirements.deflection_limit)"),
+        Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the length (0.01)"),
+    ),
+    build=lambda p, ctx: _build_link(p, ctx),
+    loads=(
+        Field("axial_force", "force", "axial force, positive in tension, negative in compression"),
+        Field("bending_moment", "torque", "bending moment in the plane of the section's height (about y)"),
+        Field("lateral_moment", "torque", "bending moment in the plane of the section's width (about z)"),
+        Field("transverse_load", "force", "point load across the link in the height plane (centre of a "
+                                          "supported span, tip of a cantilever)"),
+        Field("distributed_load", "force_per_length", "uniform load across the link in the height plane"),
+        Field("torque", "torque", "torsion about the link axis"),
+        Field("pin_force", "force", "force through each pin (default: resultant of the axial force and the end "
+                                    "reaction of the transverse load)"),
+    ),
+    checks=(
+        CheckSpec("body_strength", lambda c, loads, ctx: _body_strength(c, loads, ctx), "Link body stress",
+                  needs=(ANY_LINK_LOAD,), sf_kind="static",
+                  explain="Von Mises stress of N/A, M_y/W_y + M_z/W_z (the transverse load's Table A-9 maximum "
+                          "moment added), T/W_t + V/A_s against S_y (knocked down by strength_factor); "
+                          "Shigley 10th ed. Sec. 5-5."),
+        CheckSpec("eye_net_section", lambda c, loads, ctx: _eye(c, loads, ctx), "Pin eye net section",
+                  needs=(ANY_LINK_LOAD,), sf_kind="static",
+                  explain="F/((w - D) t) across the hole against S_y; the open-hole Kt (Peterson Eq. 4.1) is "
+                          "applied to brittle materials or unknown elongation, not to ductile ones under static "
+                          "load (Shigley 10th ed. Sec. 3-13). Runs when hole_diameter is given."),
+        CheckSpec("lug", lambda c, loads, ctx: _lug(c, loads, ctx), "Lug (BTH-1)", needs=(ANY_LINK_LOAD,),
+                  sf_kind="static",
+                  explain="ASME BTH-1-2008 Sec. 3-3.3.1 pinned-plate strengths: tension through the pinhole, "
+                          "fracture beyond it, double-plane shear-out (allowable P/(1.20 Nd)) and pin bearing "
+                          "(P/Nd), with the required SF as Nd (2.0 = Design Category A). Runs when hole_diameter "
+                          "is given."),
+        CheckSpec("pin_shear", lambda c, loads, ctx: _pin(c, loads, ctx), "Pin shear", needs=(ANY_LINK_LOAD,),
+                  sf_kind="static",
+                  explain="Average shear F/(n pi d^2/4) in the pin against its S_sy (material value or 0.577 S_y, "
+                          "Shigley 10th ed. Eq. 5-21). Runs when hole_diameter or pin_diameter is given."),
+        CheckSpec("buckling", lambda c, loads, ctx: _buckling(c, loads, ctx), "Link buckling",
+                  needs=("axial_force",), sf_kind="buckling",
+                  explain="Compression against the Euler (C pi^2 E I/l^2, Shigley Eq. 4-42) or Johnson (Eq. 4-46) "
+                          "critical load about the least principal axis, C from the end condition (Table 4-2)."),
+        CheckSpec("deflection", lambda c, loads, ctx: _deflection(c, loads, ctx), "Link deflection",
+                  needs=("transverse_load|distributed_load",), sf_kind="deflection",
+                  explain="Largest deflection of the Table A-9 case (end condition and load kind) against the "
+                          "limit: a length, 'L/250' or a fraction of the length (requirements.deflection_limit)."),
+    ),
+))
+
+
+# ------------------------------------------------------------------------------------------ the plate
+FEA_NOTE = ("Roark's closed forms cover a whole plate on its edges only: a plate on bolts or corner supports, or "
+            "with holes or cut-outs, needs the FEA plate model")
+
+
+@dataclasses.dataclass(frozen=True)
+class RoarkPlate:
+    """A plate as a design file declares it for Roark's closed forms: ``plate`` (outline geometry,
+    thickness, material), its shape and size, edge condition, central-load radius, deflection limit."""
+
+    plate: Plate
+    shape: str  # "rectangle" or "circle"
+    size: tuple[pint.Quantity, ...]  # (width, height) or (diameter,)
+    edges: str
+    load_radius: pint.Quantity
+    deflection_limit: Any
+
+    @property
+    def span(self) -> pint.Quantity:
+        """The span of the deflection limit: the shorter side, or the diameter."""
+        return min(self.size, key=lambda q: q.m_as("m"))
+
+    def estimate(self, load: pint.Quantity, loading: str) -> PlateEstimate:
+        E = self.plate.material.require("E")
+        t = self.plate.thickness_q
+        if self.shape == "rectangle":
+            return roark_rectangular_plate(*self.size, t, E, load, self.edges, loading, self.load_radius)
+        nu = self.plate.material.nu
+        if nu is None:
+            raise InputError(f"material {self.plate.material.name!r} has no Poisson's ratio (needed for a circular "
+                             "plate)")
+        return roark_circular_plate(self.size[0] / 2, t, E, nu, load, self.edges, loading, self.load_radius)
+
+
+def _circle_outline(d: pint.Quantity, n: int = 96) -> pint.Quantity:
+    r = d.m_as("m") / 2
+    a = np.linspace(0, 2 * math.pi, n, endpoint=False)
+    return Q(np.column_stack((r + r * np.cos(a), r + r * np.sin(a))), "m")
+
+
+def _build_plate(p: dict[str, Any], ctx: dict[str, Any]) -> RoarkPlate:
+    name, shape = p["_name"], p["shape"]
+    needs = ("width", "height") if shape == "rectangle" else ("diameter",)
+    other = ("diameter",) if shape == "rectangle" else ("width", "height")
+    for k in needs:
+        if k not in p:
+            raise InputError(f"{k}: missing; a {shape} plate needs {' and '.join(needs)}")
+    for k in other:
+        if k in p:
+            raise InputError(f"{k}: not a dimension of a {shape} plate (it takes {' and '.join(needs)})")
+    for k in (*needs, "thickness"):
+        if p[k].magnitude <= 0:
+            raise InputError(f"{k}: must be positive, got {fmt(p[k])}")
+    if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
+        raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
+    limit: Any = p.get("deflection_limit")
+    if limit is None:
+        limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
+    size = tuple(p[k] for k in needs)
+    try:
+        mc.deflection_limit(limit, min(size, key=lambda q: q.m_as("m")))
+    except MechverifyError as exc:
+        key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
+        raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the span: "
+                         f"{str(exc).split(': ', 1)[-1]}") from None
+    if p["load_radius"].magnitude < 0:
+        raise InputError(f"load_radius: must be zero or positive, got {fmt(p['load_radius'])}")
+    if shape == "rectangle":
+        plate = Plate.rectangle(p["width"], p["height"], p["thickness"], p["material"], name=name)
+    else:
+        plate = Plate(_circle_outline(p["diameter"]), p["thickness"], p["material"], name=name)
+    return RoarkPlate(plate, shape, size, p["edges"], p["load_radius"], limit)
+
+
+def _plate_load(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> tuple[pint.Quantity, str, list[str]]:
+    """(load, loading, notes): pressure (+ self-weight) or central force."""
+    if "pressure" in loads and "central_force" in loads:
+        raise InputError("give pressure or central_force, not both (Roark's cases take one load)")
+    notes: list[str] = []
+    if "central_force" in loads:
+        if loads.get("self_weight"):
+            raise InputError("self_weight: only with a pressure load (Roark's cases take one load)")
+        return loads["central_force"].to("N"), "central", notes
+    q = loads["pressure"].to("Pa")
+    if loads.get("self_weight"):
+        g = ctx.requirements.get("g", Q(9.80665, "m/s**2"))
+        qw = (rp.plate.material.require("density") * rp.plate.thickness_q * g).to("Pa")
+        notes.append(f"self-weight rho g t = {fmt(qw, 'Pa')} added to the pressure {fmt(q, 'Pa')}")
+        q = q + qw
+    return q, "uniform", notes
+
+
+def _plate_stress(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    load, loading, notes = _plate_load(rp, loads, ctx)
+    est = rp.estimate(load, loading)
+    r = mc.plate_stress(rp.plate, est, required_sf=ctx.required_sf)
+    inputs = {**r.inputs, ("q" if loading == "uniform" else "W"): load.to("kPa" if loading == "uniform" else "N"),
+              "E": rp.plate.material.require("E").to("GPa")}
+    inputs.update({k: v.to("mm") for k, v in zip(("a", "b") if rp.shape == "rectangle" else ("d",), rp.size,
+                                                  strict=True)})
+    formula = {("rectangle", "uniform"): r"\sigma_{max} = \beta \frac{q b^2}{t^2} \le S_y",
+               ("rectangle", "central"): r"\sigma_{max} = \frac{3 W}{2 \pi t^2}\left[(1 + \nu)"
+                                         r"\ln\frac{2 b}{\pi r_0'} + \beta\right] \le S_y",
+               ("circle", "uniform"): r"\sigma_{max} = \frac{3 (3 + \nu) q a^2}{8 t^2}\ \mathrm{or}\ "
+                                      r"\frac{3 q a^2}{4 t^2} \le S_y",
+               ("circle", "central"): r"\sigma_{max} = \frac{3 W}{2 \pi t^2}\left[(1 + \nu)\ln\frac{a}{r_0'}"
+                                      r" + 1\right]\ \mathrm{or}\ \ldots \le S_y"}[(rp.shape, loading)]
+    coefs = ", ".join(f"{k} = {v:.4g}" for k, v in est.coefficients.items() if k != "r0_equivalent")
+    if coefs:
+        notes.append(f"coefficients {coefs} (nu = 0.3 table)")
+    return _with(r, [*notes, FEA_NOTE], inputs=inputs, formula=formula)
+
+
+def _plate_deflection(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResult:
+    load, loading, notes = _plate_load(rp, loads, ctx)
+    est = rp.estimate(load, loading)
+    r = mc.deflection_check(est.max_deflection, rp.deflection_limit, span=rp.span, source=est.source)
+    formula = (r"y_{max} = \alpha \frac{q b^4}{E t^3} \le \delta_{lim}" if rp.shape == "rectangle" and
+               loading == "uniform" else r"y_{max} = \alpha \frac{W b^2}{E t^3} \le \delta_{lim}"
+               if rp.shape == "rectangle" else r"y_{max} = \frac{q a^4}{64 D}\,\frac{5 + \nu}{1 + \nu}\ \mathrm{etc.},"
+               r"\ D = \frac{E t^3}{12 (1 - \nu^2)}")
+    return _with(r, [*notes, est.case, f"span for the limit: {fmt(rp.span, 'mm')} (shorter side or diameter)",
+                     FEA_NOTE], check="plate_deflection", title="Plate deflection (Roark)", formula=formula,
+                 warnings=tuple(est.warnings))
+
+
+PLATE = REGISTRY.register(ComponentType(
+    name="plate",
+    doc="A rectangular or circular plate of uniform thickness on Roark's closed-form cases: all edges simply "
+        "supported or clamped, uniform pressure or a central load. Plates on bolts or with cut-outs need the FEA "
+        "plate model.",
+    fields=(
+        Field("shape", "choice", "plate outline", choices=("rectangle", "circle"), default="rectangle"),
+        Field("width", "length", "side of a rectangular plate"),
+        Field("height", "length", "other side of a rectangular plate"),
+        Field("diameter", "length", "diameter of a circular plate"),
+        Field("thickness", "length", "plate thickness", required=True),
+        Field("material", "material", "plate material (E, yield strength; Poisson's ratio for a circle)",
+              required=True),
+        Field("edges", "choice", "all edges simply supported or clamped", choices=("simply_supported", "clamped"),
+              default="simply_supported"),
+        Field("load_radius", "length", "radius of the central load's contact (0: a point, Roark's r0')",
+              default="0 mm"),
+        Field("deflection_limit", "str", "deflection limit as a length ('0.5 mm') or 'L/250' of the shorter side "
+                                         "(default: requirements.deflection_limit)"),
+        Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the shorter side"),
+    ),
+    build=lambda p, ctx: _build_plate(p, ctx),
+    loads=(
+        Field("pressure", "pressure", "uniform pressure over the whole plate"),
+        Field("central_force", "force", "total force on a small central circle (radius load_radius)"),
+        Field("self_weight", "bool", "add the plate's weight rho g t to the pressure", default=False),
+    ),
+    checks=(
+        CheckSpec("stress", lambda c, loads, ctx: _plate_stress(c, loads, ctx), "Plate bending stress",
+                  needs=("pressure|central_force",), sf_kind="static",
+                  explain="Largest surface bending stress of Roark 8th ed. Table 11.4 (rectangle: cases 1a, 1b, "
+                          "8a, 8b) or Table 11.2 (circle: cases 10a, 10b, 16, 17) against S_y."),
+        CheckSpec("deflection", lambda c, loads, ctx: _plate_deflection(c, loads, ctx), "Plate deflection",
+                  needs=("pressure|central_force",), sf_kind="deflection",
+                  explain="Largest deflection of the same Roark case against the limit (a length, 'L/250' or a "
+                          "fraction of the shorter side)."),
+    ),
+))
