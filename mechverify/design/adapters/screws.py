@@ -7,8 +7,10 @@ from typing import Any
 
 from mechverify.checks import screws as sc
 from mechverify.components.power_screw import LeadScrew, Nut
+from mechverify.components.threads import generic
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.errors import InputError
 
 END_CASES = ("fixed-free", "pinned-pinned", "supported-supported", "fixed-pinned", "fixed-supported", "fixed-fixed")
 
@@ -21,8 +23,26 @@ class ScrewDrive:
     nut: Nut
 
 
+GENERIC = ("lead", "starts", "pitch_diameter", "flank_angle", "major_diameter", "minor_diameter", "flank_engagement")
+
+
+def _thread(p: dict[str, Any]) -> Any:
+    """The designation, or a catalogue screw from lead, starts and pitch diameter (components.threads.generic)."""
+    given = [k for k in GENERIC if k in p]
+    if "thread" in p:
+        if given:
+            raise InputError(f"give either thread (a designation) or {', '.join(given)}, not both")
+        return p["thread"]
+    missing = [k for k in ("lead", "starts", "pitch_diameter") if k not in p]
+    if missing:
+        raise InputError("give thread (a designation such as 'Tr10x2'), or lead, starts and pitch_diameter for a "
+                         f"catalogue screw (missing: {', '.join(missing)})")
+    return generic(p["lead"], p["starts"], p["pitch_diameter"], p.get("flank_angle", "15 deg"),
+                   **pick(p, d="major_diameter", d3="minor_diameter", H1="flank_engagement"))
+
+
 def _build(p: dict[str, Any], ctx: dict[str, Any]) -> ScrewDrive:
-    screw = LeadScrew(name=p["_name"], **pick(p, "thread", "length", "material", "end_supports"))
+    screw = LeadScrew(name=p["_name"], thread=_thread(p), **pick(p, "length", "material", "end_supports"))
     nut = Nut(name=f"{p['_name']} nut", **pick(p, "mu_min", "mu_max", material="nut_material", length="nut_length",
                                                   engaged_threads="nut_engaged_threads", p_allow="nut_p_allow",
                                                   pv_allow="nut_pv_allow"))
@@ -35,10 +55,18 @@ def _speed(loads: dict[str, Any]) -> dict[str, Any]:
 
 TYPE = REGISTRY.register(ComponentType(
     name="lead_screw",
-    doc="A lead screw and its nut: thread by designation (Tr10x2, Tr16x8P4, 1/2-10 ACME), length between the "
-        "supports, end supports, nut material, friction range and limits.",
+    doc="A lead screw and its nut: thread by designation (Tr10x2, Tr16x8P4, 1/2-10 ACME) or, for a catalogue "
+        "screw, by lead, starts and pitch diameter; length between the supports, end supports, nut material, "
+        "friction range and limits.",
     fields=(
-        Field("thread", "str", "thread designation, e.g. 'Tr10x2'", required=True),
+        Field("thread", "str", "thread designation, e.g. 'Tr10x2' (or give lead, starts, pitch_diameter)"),
+        Field("lead", "length", "catalogue screw: lead (axial advance per turn)"),
+        Field("starts", "int", "catalogue screw: number of starts"),
+        Field("pitch_diameter", "length", "catalogue screw: pitch diameter d2"),
+        Field("flank_angle", "angle", "catalogue screw: half thread angle (15 deg trapezoidal, 14.5 deg Acme)"),
+        Field("major_diameter", "length", "catalogue screw: major diameter d (default d2 + P/2)"),
+        Field("minor_diameter", "length", "catalogue screw: minor diameter d3 (default by ISO 2904 proportions)"),
+        Field("flank_engagement", "length", "catalogue screw: flank engagement H1 (default P/2)"),
         Field("length", "length", "length between the end supports", required=True),
         Field("material", "material", "screw material"),
         Field("end_supports", "choice", "end fixity for buckling and whirling", choices=END_CASES,
