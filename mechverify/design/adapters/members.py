@@ -321,30 +321,35 @@ def _pin(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
     return [_with(r, notes)]
 
 
-def _buckling(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
+def _buckling(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
+    if "axial_force" not in loads:
+        return []
     N = to_si(loads["axial_force"], "force", "axial_force")
     r = mc.member_buckling(m.link, Q(-N, "N"), required_sf=ctx.required_sf)
     b = m.link.buckling()
     s = m.link.section
-    return _with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"],
-                 details={"C": b.C, "E": m.link.material.require("E").to("GPa"),
-                          "Sy": m.link.yield_strength.to("MPa"), "area": s.area.to("mm**2"),
-                          "critical_stress": (b.critical_load / s.area).to("MPa")})
+    return [_with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"],
+                  details={"C": b.C, "E": m.link.material.require("E").to("GPa"),
+                           "Sy": m.link.yield_strength.to("MPa"), "area": s.area.to("mm**2"),
+                           "critical_stress": (b.critical_load / s.area).to("MPa")})]
 
 
-def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
-    case, P, q = _transverse(m, loads)
+def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
+    tr = _transverse(m, loads)
+    if tr is None:
+        return []
+    case, P, q = tr
     load = Q(P, "N" if _dim_of(case) == "force" else "N/m")
     r = mc.link_deflection(m.link, case, load, m.deflection_limit)
     E, I = m.link.material.require("E"), m.link.section.Iy
     c = beam_case(case)
-    return _with(r, [f"{c.table_case} {case.replace('_', ' ')}: largest deflection at {c.where.split(';')[0]}",
+    return [_with(r, [f"{c.table_case} {case.replace('_', ' ')}: largest deflection at {c.where.split(';')[0]}",
                      "load in the plane of the section's height (bending about the section's y axis, I_y)"],
                  check="link_deflection", title="Link deflection",
                  formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}",
                  inputs={**r.inputs, "load": q, "E": E.to("GPa"), "I": I.to("mm**4")},
                  details={"beam_case": case, "load_si": P, "length": m.link.length.to("mm"), "EI": (E * I).to("N*m**2"),
-                          "limit": r.capacity})
+                          "limit": r.capacity})]
 
 
 ANY_LINK_LOAD = "axial_force|bending_moment|lateral_moment|transverse_load|distributed_load|torque|pin_force"
@@ -423,13 +428,15 @@ LINK = REGISTRY.register(ComponentType(
                   explain="Average shear F/(n pi d^2/4) in the pin against its S_sy (material value or 0.577 S_y, "
                           "Shigley 10th ed. Eq. 5-21). Runs when hole_diameter or pin_diameter is given."),
         CheckSpec("buckling", lambda c, loads, ctx: _buckling(c, loads, ctx), "Link buckling",
-                  needs=("axial_force",), sf_kind="buckling",
+                  needs=(ANY_LINK_LOAD,), sf_kind="buckling",
                   explain="Compression against the Euler (C pi^2 E I/l^2, Shigley Eq. 4-42) or Johnson (Eq. 4-46) "
-                          "critical load about the least principal axis, C from the end condition (Table 4-2)."),
+                          "critical load about the least principal axis, C from the end condition (Table 4-2). "
+                          "Runs in the load cases that give axial_force."),
         CheckSpec("deflection", lambda c, loads, ctx: _deflection(c, loads, ctx), "Link deflection",
-                  needs=("transverse_load|distributed_load",), sf_kind="deflection",
+                  needs=(ANY_LINK_LOAD,), sf_kind="deflection",
                   explain="Largest deflection of the Table A-9 case (end condition and load kind) against the "
-                          "limit: a length, 'L/250' or a fraction of the length (requirements.deflection_limit)."),
+                          "limit: a length, 'L/250' or a fraction of the length (requirements.deflection_limit). "
+                          "Runs in the load cases that give transverse_load or distributed_load."),
     ),
 ))
 
