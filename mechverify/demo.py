@@ -1,9 +1,9 @@
 """``make demo``: verify the bundled lead-screw lift example and write its report.
 
 ``python -m mechverify.demo`` (what ``make demo`` runs) verifies ``examples/lead_screw_lift/design.toml``
-(reference project 004: a Tr10x2 lead-screw lift for two wearable robotic arms) together with the checks its
-``run.py`` adds through the Python API (the screw bent in the horizontal posture), prints the results table,
-and writes ``out/lead_screw_lift/report.html`` and ``report.pdf`` in the repository (``--out DIR`` elsewhere,
+(reference project 004: a Tr10x2 lead-screw lift for two wearable robotic arms: screw, nut, bearings, stepper
+drive, the screw bent in the horizontal posture) with the example's ``run.py``, prints the results table, and
+writes ``out/lead_screw_lift/report.html`` and ``report.pdf`` in the repository (``--out DIR`` elsewhere,
 ``--no-pdf`` for the HTML only).
 
 The demo writes into ``out/`` (ignored by git) and never over the committed ``examples/lead_screw_lift/report.*``:
@@ -11,7 +11,7 @@ a report records the date and the git commit it was made from, so regenerating t
 demo would leave the working tree modified. The committed report is regenerated on purpose with
 ``python examples/lead_screw_lift/run.py``.
 
-The design as the document specifies it FAILS three checks (motor torque at 540 rpm with the nut's highest
+The design as the document specifies it FAILS three checks (stepper torque at 540 rpm with the nut's highest
 friction, nut pv, screw bending in the horizontal posture): that is the finding, not an error of the demo,
 which exits 0 once the report is written (2 if the example cannot be found or is invalid). The comparison
 with every number of the document is in ``docs/examples/lead_screw_lift.md``.

@@ -11,30 +11,31 @@ file cannot hold yet, with the Python API:
 2. Screw bending in the horizontal posture (torso bent 90°): 120 N at mid-span between the end
    supports, Shigley 10th ed. Table A-9 cases 5 (pinned ends: what two single-row ball bearings give)
    and 14 (clamped ends), for Tr8x1.5 and Tr10x2, with the root section (d3) for strength and the
-   root/pitch/major diameters bracketing the stiffness; the pinned case is a check in the report.
-   The FEA beam model is not in mechverify yet (see docs/examples/lead_screw_lift.md).
+   root/pitch/major diameters bracketing the stiffness, next to the document's Inventor figures; the
+   design file checks the pinned Tr10x2 case (``screw_horizontal``, a ``link``). The FEA beam model is
+   not in mechverify yet (see docs/examples/lead_screw_lift.md). Also the load shared by the screw and
+   the two guide rods in proportion to their bending stiffness.
 3. Closed-form estimates of the arm plate (4 vs 6 mm) and the base plate (8 vs 6 mm). They are nominal
    stresses (lower bounds on the peak), not a replacement for the plate-bending FEA, which mechverify
    does not have yet; they are printed, not turned into pass/fail checks.
 
 ``python examples/lead_screw_lift/run.py`` prints the tables and writes ``report.html`` and
 ``report.pdf`` next to this file (``--out DIR`` elsewhere, ``--no-pdf`` to skip the PDF).
-``mechverify.demo`` (``make demo``) calls :func:`verify` and :func:`write_reports` of this file.
+``mechverify.demo`` (``make demo``) calls :func:`verify` and :func:`write_reports` of this file; the
+report is the same as ``mechverify check design.toml --report report.html`` writes.
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
-import dataclasses
 import math
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from mechverify.checks import members as mc
 from mechverify.checks import screws as sc
-from mechverify.checks.result import CheckResult, ResultSet
+from mechverify.checks.result import ResultSet
 from mechverify.components.links import Link, beam_max_deflection, beam_max_moment
 from mechverify.components.plates import roark_rectangular_plate
 from mechverify.components.power_screw import LeadScrew, Nut
@@ -184,30 +185,6 @@ def load_sharing(designation: str = "Tr10x2", total: Any = LOAD) -> dict[str, An
             "rod_stress": (m_rod / rod.section.Wel_y).to("MPa")}
 
 
-def bending_checks() -> list[CheckResult]:
-    """The Tr10x2 screw in the horizontal posture as a check (pinned ends, the document's 120 N)."""
-    screw = LeadScrew("Tr10x2", SPAN, SCREW_MATERIAL)
-    link = Link(SPAN, circle(screw.thread.d3), SCREW_MATERIAL, name="lift_screw (horizontal posture)")
-    m = beam_max_moment(BEAM_CASES["pinned"], SIDE_LOAD, SPAN)
-    r = mc.member_body_strength(link, moment_y=m, required_sf=2.0,
-                                load_case="torso bent 90°: 120 N at mid-span, pinned ends (608 bearings)")
-    y = beam_max_deflection(BEAM_CASES["pinned"], SIDE_LOAD, SPAN, link.material.E, link.section.Iy)
-    notes = (*(n for n in r.notes if "distortion-energy" not in n),
-             f"M = F L/4 = {m.to('N*m'):.3g~P} (Shigley 10th ed. Table A-9 case 5); root section d3 = 7.5 mm",
-             "pinned ends: a single-row deep groove ball bearing gives no useful moment restraint; the document's "
-             "Inventor figures (SF 1.2, 0.8 mm) match clamped ends (Table A-9 case 14), see run.py",
-             f"deflection at mid-span F L³/(48 E I) = {y.to('mm'):.3g~P} (root cylinder); no limit given by the "
-             "document")
-    return [dataclasses.replace(
-        r, check="screw_bending", component="lift_screw", notes=notes,
-        title="Screw bending, horizontal posture (root section)",
-        formula=r"\sigma = \frac{F L/4}{\pi d_3^3/32} \le S_y",
-        source="Shigley's Mechanical Engineering Design, 10th ed., Table A-9 case 5 (simply supported, centre load); "
-               "sigma = M c / I (Sec. 3-10)",
-        inputs={"F": SIDE_LOAD, "L": SPAN.to("mm"), "d3": screw.thread.d3.to("mm"), "M": m.to("N*m"),
-                "Sy": link.material.yield_strength.to("MPa")})]
-
-
 # ---------------------------------------------------------------- 3. plates (closed-form estimates)
 def arm_plate(thickness_mm: float, with_payload: bool = True) -> dict[str, float]:
     """Nominal stress in the arm plate beside the carriage: the arm's moment twists the plate strip.
@@ -271,12 +248,11 @@ def plates_markdown() -> str:
 
 # ---------------------------------------------------------------- design + extras, reports
 def verify(design_path: str | Path = DESIGN) -> tuple[Any, ResultSet]:
-    """Verify ``design.toml`` and add the horizontal-posture screw check; (design, results)."""
+    """Verify ``design.toml``: (design, results), as ``mechverify check`` does."""
     from mechverify.design import load
 
     design = load(design_path)
-    rs = design.verify()
-    return design, ResultSet([*rs, *bending_checks()], name=rs.name)
+    return design, design.verify()
 
 
 def write_reports(out_dir: str | Path = HERE, pdf: bool = True, run: tuple[Any, ResultSet] | None = None

@@ -1,0 +1,176 @@
+"""Reference project 004 (lead-screw lift, the ``make demo`` example) end to end: examples/lead_screw_lift/.
+
+Every expected number is worked out here from the published formula it names, with the document's inputs:
+Tr10x2 (ISO 2904: d2 = d - P/2 = 9 mm, d3 = d - 2 h3 = 7.5 mm, H1 = P/2 = 1 mm, flank 15°), 450 mm, 350 N,
+iglidur R nut (Tabla 3: mu 0.09..0.25, pv 0.27 MPa·m/s, 23 MPa), 18 mm/s = 540 rpm, SKF 608 (Tabla 9:
+C 3.45 kN, C0 1.37 kN, f0 12), the Tabla 8 stepper (82 g·cm², two curve points 0.35 N·m @ 500 rpm,
+0.25 N·m @ 850 rpm), Inventor's default steel (E 210 GPa, Sy 207 MPa, 7850 kg/m³).
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import sys
+from pathlib import Path
+
+import pytest
+
+import mechverify.design
+from mechverify.cli import main
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lead_screw_lift"
+DESIGN = EXAMPLE / "design.toml"
+
+F, L, D2, D3, LEAD, H1 = 350.0, 0.450, 9e-3, 7.5e-3, 2e-3, 1e-3
+E, SY, RHO = 210e9, 207e6, 7850.0
+MU_MIN, MU_MAX = 0.09, 0.25
+N_RPM = 0.018 / LEAD * 60  # 540 rpm
+
+
+def _run_module():
+    spec = importlib.util.spec_from_file_location("lead_screw_lift_run_test", EXAMPLE / "run.py")
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = mod  # dataclasses look their module up while the class is created
+    spec.loader.exec_module(mod)
+    return mod
+
+
+@pytest.fixture(scope="module")
+def results():
+    return mechverify.design.load(DESIGN).verify()
+
+
+def _one(results, component, check):
+    found = list(results.where(component=component, check=check))
+    assert len(found) == 1, [(r.component, r.check) for r in results]
+    return found[0]
+
+
+def _angles(lead, d2):
+    """Lead angle tan(lam) = l/(pi d2) and the normal-plane flank angle tan(an) = tan(15°) cos(lam)
+    (Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., Eqs. 16.4 and 16.8)."""
+    lam = math.atan(lead / (math.pi * d2))
+    return lam, math.atan(math.tan(math.radians(15)) * math.cos(lam))
+
+
+def _torque_per_newton(mu, lead=LEAD, d2=D2):
+    """Raising torque / F = d2/2 (cos an tan lam + mu)/(cos an - mu tan lam) (Hamrock 3rd ed. Eq. 16.10)."""
+    lam, an = _angles(lead, d2)
+    return d2 / 2 * (math.cos(an) * math.tan(lam) + mu) / (math.cos(an) - mu * math.tan(lam))
+
+
+def test_cli_check_exits_1_because_the_design_fails(capsys):
+    assert main(["check", str(DESIGN)]) == 1
+    assert "3 fail" in capsys.readouterr().out
+
+
+def test_failing_checks_are_the_three_the_example_documents(results):
+    failed = sorted((r.component, r.check) for r in results if r.verdict.value == "fail")
+    assert failed == [("lift", "motor_peak_torque"), ("lift_screw", "nut_pv"),
+                      ("screw_horizontal", "member_body_strength")]
+
+
+def test_self_locking_angles(results):
+    """lam = atan(2/(9 pi)) = 4.046°, rho' = atan(0.09/cos an) = 5.322° (Hamrock Eq. 16.8; Shigley 9th ed. Sec. 8-2)."""
+    lam, an = _angles(LEAD, D2)
+    r = _one(results, "lift_screw", "self_locking")
+    assert r.demand.m_as("deg") == pytest.approx(math.degrees(lam), rel=1e-9)
+    assert r.capacity.m_as("deg") == pytest.approx(math.degrees(math.atan(MU_MIN / math.cos(an))), rel=1e-9)
+    assert r.passed
+
+
+def test_motor_torque_at_540_rpm_with_the_highest_friction(results):
+    """Peak at the end of the 0.1 m/s² ramp: T = m (g + a) T/F(mu_max) + (J_rotor + J_screw) a 2 pi/l, with
+    J_screw = pi rho L d2^4/32 (solid cylinder); limit by linear interpolation of the two curve points."""
+    m, g, a = 35.68, 9.80665, 0.1
+    j = 82e-7 + math.pi * RHO * L * D2**4 / 32
+    t = m * (g + a) * _torque_per_newton(MU_MAX) + j * a * 2 * math.pi / LEAD
+    limit = 0.35 + (N_RPM - 500) / (850 - 500) * (0.25 - 0.35)
+    r = _one(results, "lift", "motor_peak_torque")
+    assert r.demand.m_as("N*m") == pytest.approx(t, rel=1e-6)
+    assert r.capacity.m_as("N*m") == pytest.approx(limit, rel=1e-9)
+    assert F * _torque_per_newton(MU_MAX) > limit  # fails even without the 1.5 margin and without acceleration
+
+
+def test_nut_pressure_and_pv(results):
+    """p = F/(pi d2 H1 n), n = 10 mm / 2 mm (DIN 103 mean flank pressure); v = pi d2 n_rot / cos(lam)."""
+    lam, _ = _angles(LEAD, D2)
+    p = F / (math.pi * D2 * H1 * 5)
+    v = math.pi * D2 * N_RPM / 60 / math.cos(lam)
+    assert _one(results, "lift_screw", "nut_flank_pressure").demand.m_as("Pa") == pytest.approx(p, rel=1e-9)
+    assert _one(results, "lift_screw", "nut_pv").demand.m_as("Pa*m/s") == pytest.approx(p * v, rel=1e-9)
+    assert p * v > 0.27e6
+    # the nut length pv needs at 540 rpm: p v L = const -> L = 10 mm x pv / 0.27
+    assert 10 * p * v / 0.27e6 == pytest.approx(23.4, abs=0.05)
+
+
+def test_buckling_and_critical_speed(results):
+    """Euler, pinned ends: P = pi² E I/L², I = pi d3^4/64 (Shigley 10th ed. Eq. 4-42, C = 1); first whirl of a
+    pinned-pinned shaft n = (pi/(2 L²)) sqrt(E I/(rho A)) [rev/s] (Blevins 1979, Table 8-1, lambda = pi)."""
+    i = math.pi * D3**4 / 64
+    a = math.pi * D3**2 / 4
+    pcr = math.pi**2 * E * i / L**2
+    nc = math.pi / (2 * L**2) * math.sqrt(E * i / (RHO * a)) * 60
+    assert _one(results, "lift_screw", "screw_buckling").capacity.m_as("N") == pytest.approx(pcr, rel=1e-6)
+    assert _one(results, "lift_screw", "critical_speed").capacity.m_as("rpm") == pytest.approx(nc, rel=1e-5)  # lambda_1 tabulated
+    assert pcr == pytest.approx(1590, rel=1e-3) and nc == pytest.approx(4514, rel=1e-3)
+
+
+def test_bearing_608_life(results):
+    """ISO 281: f0 Fa/C0 = 12·350/1370 = 3.066 -> Y by linear interpolation of Table 3 between 2.07 (1.31) and
+    3.45 (1.15); Fr = 0 so X = 0.56; L10h = (C/P)^3 10^6/(60 n)."""
+    y = 1.31 + (12 * F / 1370 - 2.07) / (3.45 - 2.07) * (1.15 - 1.31)
+    p = 0.56 * 0 + y * F
+    l10h = (3450 / p) ** 3 * 1e6 / (60 * N_RPM)
+    r = _one(results, "screw_bearing", "bearing_life")
+    assert r.capacity.m_as("h") == pytest.approx(l10h, rel=1e-4)
+    assert r.verdict.value == "warn"  # passes 10 000 h, but Fa > 0.25 C0 = 342.5 N (SKF guideline)
+
+
+def test_screw_bending_horizontal_posture(results):
+    """120 N at mid-span, pinned ends: M = F L/4 (Shigley 10th ed. Table A-9 case 5), sigma = 32 M/(pi d3³)."""
+    sigma = 120 * L / 4 * 32 / (math.pi * D3**3)
+    r = _one(results, "screw_horizontal", "member_body_strength")
+    assert r.demand.m_as("Pa") == pytest.approx(sigma, rel=1e-3)  # + a negligible transverse-shear term
+    assert SY / sigma < 1  # yields even without a safety factor
+
+
+def test_clamped_ends_reproduce_the_documents_inventor_figures():
+    """Table A-9 case 14 (fixed-fixed, centre load): M = F L/8, y = F L³/(192 E I). The document's Tr10x2 figures
+    (SF 1.2, 0.8 mm) match clamped ends: SF at d3 = 1.27, y with the d2 cylinder = 0.84 mm."""
+    run = _run_module()
+    row = run.screw_bending("Tr10x2", "clamped")
+    sf = SY / (120 * L / 8 * 32 / (math.pi * D3**3))
+    y = 120 * L**3 / (192 * E * math.pi * D2**4 / 64)
+    assert row.safety_factor == pytest.approx(sf, rel=1e-9)
+    assert row.deflection["d2"] == pytest.approx(y * 1e3, rel=1e-9)
+    assert sf == pytest.approx(1.27, abs=0.01) and y * 1e3 == pytest.approx(0.84, abs=0.01)
+
+
+def test_document_thread_table_formulas_and_the_corrected_table():
+    """The document's Tabla 2/4 values follow its Formulas 2-4 as printed (alpha = tan(l/(pi D2)) instead of the
+    arctangent, tan(beta_n) = tan(beta) tan(alpha)); with the correct angles Tr12x3 and Tr16x4 ARE self-locking."""
+    run = _run_module()
+    rows = {r.designation: r for r in run.thread_table()}
+    for r in rows.values():
+        doc = r.doc
+        lead = {"Tr6x2P1": 2.0}.get(r.designation) or float(r.designation.split("x")[1].split("P")[0])
+        alpha_doc = math.tan(lead / (math.pi * float(doc["D2_mm"])))
+        assert float(doc["alpha_rad"]) == pytest.approx(alpha_doc, rel=1e-6)
+        beta_n = math.atan(math.tan(math.radians(15)) * math.tan(alpha_doc))
+        assert float(doc["delta_rad"]) == pytest.approx(math.atan(MU_MIN / math.cos(beta_n)), rel=1e-6)
+        lam, an = _angles(lead * 1e-3, float(doc["D2_mm"]) * 1e-3)
+        assert r.lead_angle == pytest.approx(lam, rel=1e-9)
+        assert r.self_locking == (lam <= math.atan(MU_MIN / math.cos(an)))
+    assert [d for d, r in rows.items() if r.self_locking != (r.doc["self_locking"] == "yes")] == ["Tr12x3", "Tr16x4"]
+    assert rows["Tr10x2"].torque_max == pytest.approx(F * _torque_per_newton(MU_MAX), rel=1e-9)
+    assert rows["Tr10x2"].torque_max == pytest.approx(0.529, abs=5e-4)
+
+
+def test_demo_writes_the_report_outside_the_example(tmp_path, capsys):
+    from mechverify import demo
+
+    assert demo.main(["--no-pdf", "--out", str(tmp_path)]) == 0
+    assert (tmp_path / "report.html").stat().st_size > 10_000
+    assert "3 fail" in capsys.readouterr().out
