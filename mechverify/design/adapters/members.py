@@ -288,7 +288,11 @@ def _eye(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
         return []
     F, how = _pin_force(m, loads)
     r = mc.eye_net_section(m.link, F, required_sf=ctx.required_sf)
-    return [_with(r, [how, *m.lug_defaults])]
+    notes = [how, *m.lug_defaults]
+    if to_si(loads.get("axial_force", "0 N"), "force", "axial_force") < 0:
+        notes.append("compressive axial force: the eye bears on the pin; checked as net-section tension "
+                     "(conservative)")
+    return [_with(r, notes)]
 
 
 def _lug(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
