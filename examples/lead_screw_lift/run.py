@@ -20,7 +20,8 @@ file cannot hold yet, with the Python API:
    does not have yet; they are printed, not turned into pass/fail checks.
 
 ``python examples/lead_screw_lift/run.py`` prints the tables and writes ``report.html`` and
-``report.pdf`` next to this file (``--out DIR`` elsewhere, ``--no-pdf`` to skip the PDF).
+``report.pdf`` next to this file (``--out DIR`` elsewhere, ``--no-pdf`` to skip the PDF); it exits 1
+because the design as specified fails checks.
 ``mechverify.demo`` (``make demo``) calls :func:`verify` and :func:`write_reports` of this file; the
 report is the same as ``mechverify check design.toml --report report.html`` writes.
 """

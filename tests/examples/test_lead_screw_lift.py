@@ -49,13 +49,13 @@ def _one(results, component, check):
 
 def _angles(lead, d2):
     """Lead angle tan(lam) = l/(pi d2) and the normal-plane flank angle tan(an) = tan(15°) cos(lam)
-    (Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., Eqs. 16.4 and 16.8)."""
+    (Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., Sec. 16.3, Eq. 16.8)."""
     lam = math.atan(lead / (math.pi * d2))
     return lam, math.atan(math.tan(math.radians(15)) * math.cos(lam))
 
 
 def _torque_per_newton(mu, lead=LEAD, d2=D2):
-    """Raising torque / F = d2/2 (cos an tan lam + mu)/(cos an - mu tan lam) (Hamrock 3rd ed. Eq. 16.10)."""
+    """Raising torque / F = d2/2 (cos an tan lam + mu)/(cos an - mu tan lam) (Hamrock 3rd ed. Eqs. 16.8-16.10)."""
     lam, an = _angles(lead, d2)
     return d2 / 2 * (math.cos(an) * math.tan(lam) + mu) / (math.cos(an) - mu * math.tan(lam))
 
