@@ -346,12 +346,20 @@ def test_hole_larger_than_the_lug(tmp_path):
 def test_bad_deflection_limit_and_plate_geometry(tmp_path):
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"L/250"', '"2 N"'))
     assert "components.bar: deflection_limit: expected a length" in msg
+    msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"L/250"', '"L/0"'))
+    assert "components.bar: deflection_limit: expected a length" in msg and "got 'L/0'" in msg
+    msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"400 mm"', '"-4 mm"'))
+    assert "components.bar: length: must be positive, got -4 mm" in msg
     msg = errors_of(tmp_path, PLATE.format(geometry='shape = "circle"\nwidth = "20 mm"\ndiameter = "20 mm"',
                                            extra="", loads='pressure = "1 kPa"'), materials="")
     assert "components.p: width: not a dimension of a circle plate" in msg
     msg = errors_of(tmp_path, PLATE.format(geometry='width = "20 mm"', extra="", loads='pressure = "1 kPa"'),
                     materials="")
     assert "components.p: height: missing; a rectangle plate needs width and height" in msg
+    msg = errors_of(tmp_path, PLATE.format(geometry='shape = "circle"\ndiameter = "20 mm"', extra="",
+                                           loads='pressure = "1 kPa"').replace('"alu"', '"PLA (FDM, XY flat)"'),
+                    materials="")
+    assert "components.p: material: 'PLA (FDM, XY flat)' has no Poisson's ratio" in msg
 
 
 def test_check_needing_a_missing_load_names_the_key_path(tmp_path):

@@ -131,8 +131,14 @@ class LinkMember:
     lug_defaults: tuple[str, ...] = ()
 
 
+def _why(exc: Exception, limit: Any) -> str:
+    return str(exc).split(": ", 1)[-1] if isinstance(exc, MechverifyError) else f"got {limit!r}"
+
+
 def _build_link(p: dict[str, Any], ctx: dict[str, Any]) -> LinkMember:
     name = p["_name"]
+    if p["length"].magnitude <= 0:
+        raise InputError(f"length: must be positive, got {fmt(p['length'])}")
     section = build_section(p)
     lug_keys = ("lug_width", "lug_thickness", "edge_distance", "pin_diameter", "pin_material", "rounded_end")
     lug = None
@@ -173,10 +179,10 @@ def _build_link(p: dict[str, Any], ctx: dict[str, Any]) -> LinkMember:
         limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
     try:
         mc.deflection_limit(limit, p["length"])
-    except MechverifyError as exc:
+    except (MechverifyError, ZeroDivisionError) as exc:
         key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
         raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the length: "
-                         f"{str(exc).split(': ', 1)[-1]}") from None
+                         + _why(exc, limit)) from None
     if not 0 < p["strength_factor"] <= 1:
         raise InputError(f"strength_factor: must lie in (0, 1], got {p['strength_factor']!r}")
     if p["pin_shear_planes"] < 1:
@@ -506,12 +512,15 @@ def _build_plate(p: dict[str, Any], ctx: dict[str, Any]) -> RoarkPlate:
     size = tuple(p[k] for k in needs)
     try:
         mc.deflection_limit(limit, min(size, key=lambda q: q.m_as("m")))
-    except MechverifyError as exc:
+    except (MechverifyError, ZeroDivisionError) as exc:
         key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
         raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the span: "
-                         f"{str(exc).split(': ', 1)[-1]}") from None
+                         + _why(exc, limit)) from None
     if p["load_radius"].magnitude < 0:
         raise InputError(f"load_radius: must be zero or positive, got {fmt(p['load_radius'])}")
+    if shape == "circle" and p["material"].nu is None:
+        raise InputError(f"material: {p['material'].name!r} has no Poisson's ratio, which a circular plate needs; "
+                         "define a derived material with nu = ...")
     if shape == "rectangle":
         plate = Plate.rectangle(p["width"], p["height"], p["thickness"], p["material"], name=name)
     else:
@@ -555,6 +564,9 @@ def _plate_stress(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResul
     coefs = ", ".join(f"{k} = {v:.4g}" for k, v in est.coefficients.items() if k != "r0_equivalent")
     if coefs:
         notes.append(f"coefficients {coefs} (nu = 0.3 table)")
+    nu = rp.plate.material.nu
+    if rp.shape == "rectangle" and nu is not None and abs(nu.m_as("") - 0.3) > 0.02:
+        notes.append(f"Roark's Table 11.4 coefficients are for nu = 0.3; the material's nu = {nu.m_as(''):.3g}")
     return _with(r, [*notes, FEA_NOTE], inputs=inputs, formula=formula)
 
 
