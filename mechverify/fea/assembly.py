@@ -1,0 +1,236 @@
+"""Vectorised assembly kernels for isoparametric-free (straight-sided) quadratic simplices.
+
+scikit-fem supplies the meshes, element definitions (reference basis functions) and quadrature;
+the element matrices of linear elasticity are formed here for all elements at once with batched
+matrix products (no Python loop over elements), then scattered into one CSR matrix.
+
+DOF numbering: scalar P2 DOF ``k`` (vertex ``k`` for ``k < nverts``, else edge ``k - nverts``, as
+scikit-fem numbers them) carries displacement components ``dim*k + i``; node-interleaved, so
+algebraic multigrid can use the block size.
+
+Everything here works in plain SI floats and ndarrays.
+
+References
+----------
+1. Zienkiewicz, Taylor & Zhu, The Finite Element Method: Its Basis and Fundamentals, 7th ed., 2013,
+   ch. 6 (elasticity, B-matrix form) and Table 6.3 (tetrahedron quadrature).
+2. Hughes, The Finite Element Method, Dover 2000, sec. 3.10 (element assembly).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cache
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import ElementTetP2, ElementTriP2
+from skfem.quadrature import get_quadrature
+from skfem.refdom import RefTet, RefTri
+
+
+@cache
+def reference_gradients(dim: int, order: int = 2) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Reference P2 basis values and gradients at a quadrature rule of ``order``.
+
+    Returns ``(phi[nb, nq], dphi[nb, dim, nq], weights[nq])`` on the reference simplex.
+    """
+    elem, ref = (ElementTetP2(), RefTet) if dim == 3 else (ElementTriP2(), RefTri)
+    X, W = get_quadrature(ref, order)
+    nb = elem.doflocs.shape[0]
+    phi = np.empty((nb, X.shape[1]))
+    dphi = np.empty((nb, dim, X.shape[1]))
+    for i in range(nb):
+        p, dp = elem.lbasis(X, i)
+        phi[i], dphi[i] = p, dp
+    return phi, dphi, W
+
+
+def reference_gradients_at_nodes(dim: int) -> np.ndarray:
+    """Gradients ``[nb(node), nb(basis), dim]`` of the reference P2 basis at the element's own nodes."""
+    elem = ElementTetP2() if dim == 3 else ElementTriP2()
+    X = elem.doflocs.T
+    nb = X.shape[1]
+    out = np.empty((nb, nb, dim))
+    for i in range(nb):
+        _, dp = elem.lbasis(X, i)
+        out[:, i, :] = dp.T
+    return out
+
+
+def jacobians(p: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per-element inverse Jacobian ``invJ[e, dim, dim]`` and determinant ``detJ[e]`` (straight sides)."""
+    x0 = p[:, t[0]]
+    J = np.stack([p[:, t[k]] - x0 for k in range(1, t.shape[0])], axis=2).transpose(1, 0, 2)  # e, xyz, ref
+    return np.linalg.inv(J), np.linalg.det(J)
+
+
+def global_gradients(invJ: np.ndarray, dref: np.ndarray) -> np.ndarray:
+    """Physical gradients ``g[e, q, a, i]`` from reference ones ``dref[a, k, q]``: g = dref · J^-1."""
+    return np.einsum("akq,eki->eqai", dref, invJ, optimize=True)
+
+
+def lame(E: float, nu: float, plane: str | None = None) -> tuple[float, float]:
+    """Lamé constants (λ, μ) [Pa]; ``plane="stress"`` gives the plane-stress λ* = 2λμ/(λ+2μ)."""
+    lam = E * nu / ((1 + nu) * (1 - 2 * nu))
+    mu = E / (2 * (1 + nu))
+    if plane == "stress":
+        lam = 2 * lam * mu / (lam + 2 * mu)
+    return lam, mu
+
+
+#: Local edges of scikit-fem's P2 simplices (vertex pairs of the mid-edge DOFs, in DOF order).
+EDGES = {3: ((0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)), 2: ((0, 1), (1, 2), (0, 2))}
+
+#: 4-point (tet) and 3-point (triangle) degree-2 rules in barycentric coordinates, weights summing to 1.
+_A, _B = 0.5854101966249685, 0.1381966011250105
+_RULES = {3: (np.full((4, 4), _B) + np.eye(4) * (_A - _B), np.full(4, 0.25)),
+          2: (np.full((3, 3), 1 / 6) + np.eye(3) * (2 / 3 - 1 / 6), np.full(3, 1 / 3))}
+
+
+@cache
+def _barycentric_coefficients(dim: int) -> np.ndarray:
+    """``R[(a,b), (k,l)] = Σ_q w_q (∂N_a/∂L_k)(∂N_b/∂L_l)`` for the P2 basis written in barycentrics.
+
+    With ``∇N_a = Σ_k (∂N_a/∂L_k) ∇L_k``, the element integral ``∫ ∇N_a ⊗ ∇N_b dV`` is
+    ``V Σ_kl R[a,b,k,l] ∇L_k ⊗ ∇L_l``; the rule is exact because the integrand is quadratic.
+    Vertex basis ``L_a(2L_a - 1)``, edge basis ``4 L_i L_j`` (ref. 1, sec. 6.3).
+    """
+    L, w = _RULES[dim]
+    nv = dim + 1
+    edges = EDGES[dim]
+    nb = nv + len(edges)
+    C = np.zeros((L.shape[0], nb, nv))  # q, a, k
+    for a in range(nv):
+        C[:, a, a] = 4 * L[:, a] - 1
+    for m, (i, j) in enumerate(edges):
+        C[:, nv + m, i] = 4 * L[:, j]
+        C[:, nv + m, j] = 4 * L[:, i]
+    R = np.einsum("q,qak,qbl->abkl", w, C, C)
+    return R.reshape(nb * nb, nv * nv)
+
+
+def barycentric_gradients(p: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``∇L_k[e, k, i]`` of the barycentric coordinates and element measures (volume/area)."""
+    dim = p.shape[0]
+    invJ, detJ = jacobians(p, t[: dim + 1])
+    gL = np.empty((invJ.shape[0], dim + 1, dim))
+    gL[:, 1:, :] = invJ
+    gL[:, 0, :] = -invJ.sum(axis=1)
+    measure = np.abs(detJ) / (6.0 if dim == 3 else 2.0)
+    return gL, measure
+
+
+def elasticity_blocks(p: np.ndarray, t: np.ndarray, lam: float, mu: float, thickness: float = 1.0) -> np.ndarray:
+    """Element stiffness of isotropic linear elasticity as 3x3 (2x2) blocks ``K[(a,b), e, i*dim+j]``.
+
+    Block ``(a, b)`` couples displacement component ``i`` of node ``a`` with ``j`` of node ``b``:
+    ``K_ab = λ M_ab + μ M_abᵀ + μ tr(M_ab) I`` with ``M_ab = ∫ ∇N_a ⊗ ∇N_b dV`` (ref. 1, eq. 6.13).
+    All ``M_ab`` of all elements come from one matrix product of the constant table
+    :func:`_barycentric_coefficients` with the per-element products ``∇L_k ⊗ ∇L_l``.
+    """
+    dim = p.shape[0]
+    gL, measure = barycentric_gradients(p, t)
+    ne, nv = gL.shape[0], dim + 1
+    P = np.einsum("eki,elj->kleij", gL, gL * (measure * thickness)[:, None, None], optimize=True)
+    # λ M + μ Mᵀ + μ tr(M) I is linear in M, so form it on the small ∇L ⊗ ∇L table before the product.
+    Pc = lam * P + mu * P.transpose(0, 1, 2, 4, 3)
+    tr = np.trace(P, axis1=3, axis2=4)
+    for i in range(dim):
+        Pc[:, :, :, i, i] += mu * tr
+    R = _barycentric_coefficients(dim)
+    K = R @ Pc.reshape(nv * nv, ne * dim * dim)
+    return K.reshape(-1, ne, dim * dim)
+
+
+@dataclass(frozen=True)
+class BlockPattern:
+    """Where each element block lands in a block-sparse (BSR) matrix; computed once per mesh."""
+
+    indptr: np.ndarray
+    indices: np.ndarray
+    order: np.ndarray  # sorts the (a,b,e) block list by target block
+    starts: np.ndarray  # first entry of each target block in the sorted list
+    n: int  # number of block rows (scalar DOFs)
+
+
+def block_pattern(element_dofs: np.ndarray, n: int) -> BlockPattern:
+    """The BSR pattern of ``element_dofs[nb, e]`` (scalar DOFs) coupling every pair of local nodes."""
+    nb, ne = element_dofs.shape
+    rows = np.repeat(element_dofs, nb, axis=0).astype(np.int64)  # (a,b) -> ed[a]
+    cols = np.tile(element_dofs, (nb, 1)).astype(np.int64)  # (a,b) -> ed[b]
+    key = (rows * n + cols).ravel()
+    order = np.argsort(key, kind="stable")
+    sk = key[order]
+    starts = np.flatnonzero(np.r_[True, sk[1:] != sk[:-1]])
+    uniq = sk[starts]
+    brow = uniq // n
+    indptr = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(np.bincount(brow, minlength=n), out=indptr[1:])
+    return BlockPattern(indptr, (uniq % n).astype(np.int32), order, starts, n)
+
+
+def assemble_blocks(blocks: np.ndarray, pattern: BlockPattern, dim: int) -> sp.bsr_matrix:
+    """Sum element blocks ``[(a,b), e, dim*dim]`` into a BSR matrix with ``dim x dim`` blocks."""
+    flat = blocks.reshape(-1, dim * dim)[pattern.order]
+    data = np.add.reduceat(flat, pattern.starts, axis=0).reshape(-1, dim, dim)
+    n = pattern.n * dim
+    return sp.bsr_matrix((data, pattern.indices, pattern.indptr), shape=(n, n))
+
+
+def vector_dofs(element_dofs: np.ndarray, dim: int) -> np.ndarray:
+    """Vector DOFs ``[e, nb*dim]`` ordered (node a, component i) -> dim*dof + i."""
+    return (dim * element_dofs.T[:, :, None] + np.arange(dim)[None, None, :]).reshape(element_dofs.shape[1], -1)
+
+
+def mass_element_matrices(p: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Scalar P2 mass matrices ``Me[e, nb, nb] = ∫ φ_a φ_b dV`` (order-4 rule, exact for P2·P2)."""
+    dim = p.shape[0]
+    phi, _, W = reference_gradients(dim, 4)
+    _, detJ = jacobians(p, t[: dim + 1])
+    ref = np.einsum("aq,bq,q->ab", phi, phi, W)
+    return np.abs(detJ)[:, None, None] * ref[None]
+
+
+def strain_at_nodes(p: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, u: np.ndarray,
+                    corners_only: bool = False) -> np.ndarray:
+    """Small strain ``eps[e, a, dim, dim]`` at the P2 nodes of every element (exact, P2 gradients are linear).
+
+    With ``corners_only`` just the ``dim + 1`` vertices (enough to define the linear strain field).
+    """
+    dim = p.shape[0]
+    gref = reference_gradients_at_nodes(dim)  # node, basis, k
+    if corners_only:
+        gref = gref[: dim + 1]
+    invJ, _ = jacobians(p, t[: dim + 1])
+    g = np.einsum("nak,eki->enai", gref, invJ, optimize=True)  # e node basis i
+    ue = u.reshape(-1, dim)[element_dofs.T]  # e basis j
+    grad = np.einsum("enai,eaj->enji", g, ue, optimize=True)  # du_j/dx_i
+    return 0.5 * (grad + grad.transpose(0, 1, 3, 2))
+
+
+def natural_point_order(dim: int) -> np.ndarray:
+    """Permutation of scikit-fem's order-2 simplex rule into natural order: the point nearest vertex 0,
+    then those nearest vertices 1, 2, (3) - the order CalculiX uses for C3D10 integration points."""
+    elem, ref = (ElementTetP2(), RefTet) if dim == 3 else (ElementTriP2(), RefTri)
+    X, _ = get_quadrature(ref, 2)
+    first = int(np.argmin(X.sum(axis=0)))
+    return np.array([first] + [int(np.argmax(X[k])) for k in range(dim)])
+
+
+def strain_at_points(p: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """Small strain ``eps[e, q, dim, dim]`` at the order-2 quadrature points (CalculiX's integration points)."""
+    dim = p.shape[0]
+    _, dref, _ = reference_gradients(dim)
+    invJ, _ = jacobians(p, t[: dim + 1])
+    g = global_gradients(invJ, dref)  # e q a i
+    ue = u.reshape(-1, dim)[element_dofs.T]
+    grad = np.einsum("eqai,eaj->eqji", g, ue, optimize=True)
+    return 0.5 * (grad + grad.transpose(0, 1, 3, 2))
+
+
+def hooke(eps: np.ndarray, lam: float, mu: float) -> np.ndarray:
+    """Isotropic stress σ = λ tr(ε) I + 2μ ε for a batch of tensors ``[..., d, d]``."""
+    d = eps.shape[-1]
+    tr = np.trace(eps, axis1=-2, axis2=-1)
+    return lam * tr[..., None, None] * np.eye(d) + 2 * mu * eps

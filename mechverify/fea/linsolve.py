@@ -1,0 +1,245 @@
+"""Solving K u = f with supports: a rigid-body check first, then the right solver for the size.
+
+- :func:`rigid_modes` - the rigid-body motions (translations, rotations) of a node set.
+- :func:`check_supported` - which rigid motions the supports leave free; a :class:`ModelError`
+  naming the free direction instead of a singular matrix.
+- :func:`solve` - eliminates the held DOFs, then a sparse direct solve (SuperLU, symmetric mode,
+  minimum-degree ordering of A + Aᵀ) for small systems, or conjugate gradients preconditioned by
+  multigrid for large 3D systems: Gauss-Seidel on the quadratic elements, then the linear-element
+  system by smoothed-aggregation algebraic multigrid (pyamg, rigid-body modes as near-null space).
+
+References
+----------
+1. Vaněk, Mandel & Brezina, "Algebraic multigrid by smoothed aggregation for second and fourth
+   order elliptic problems", Computing 56 (1996) 179-196.
+2. Saad, Iterative Methods for Sparse Linear Systems, 2nd ed., SIAM 2003, Alg. 9.1 (PCG).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spl
+
+from mechverify.errors import ModelError
+
+#: Above this many unknowns a 3D solid is solved by AMG-preconditioned CG rather than SuperLU.
+ITERATIVE_THRESHOLD_3D = 12_000
+
+
+def rigid_modes(points: np.ndarray) -> tuple[np.ndarray, list[str]]:
+    """Rigid-body motions ``[n*dim, k]`` of nodes ``points[dim, n]`` (node-interleaved DOFs) and their names.
+
+    3D: translations x, y, z and rotations about x, y, z through the centroid (k = 6); 2D: x, y and
+    the in-plane rotation (k = 3). Rotations are scaled by the model size so all columns are O(1).
+    """
+    dim, n = points.shape
+    c = points.mean(axis=1, keepdims=True)
+    scale = max(float(np.max(np.ptp(points, axis=1))), 1e-300)
+    X = (points - c) / scale
+    if dim == 2:
+        B = np.zeros((n, 2, 3))
+        B[:, 0, 0] = B[:, 1, 1] = 1.0
+        B[:, 0, 2], B[:, 1, 2] = -X[1], X[0]
+        return B.reshape(-1, 3), ["translation along x", "translation along y", "rotation about z"]
+    B = np.zeros((n, 3, 6))
+    B[:, 0, 0] = B[:, 1, 1] = B[:, 2, 2] = 1.0
+    B[:, 1, 3], B[:, 2, 3] = -X[2], X[1]  # about x
+    B[:, 0, 4], B[:, 2, 4] = X[2], -X[0]  # about y
+    B[:, 0, 5], B[:, 1, 5] = -X[1], X[0]  # about z
+    names = ["translation along x", "translation along y", "translation along z",
+             "rotation about x", "rotation about y", "rotation about z"]
+    return B.reshape(-1, 6), names
+
+
+def describe_mode(v: np.ndarray, names: list[str], centroid: np.ndarray, scale: float) -> str:
+    """Words for a rigid motion given by coefficients ``v`` of :func:`rigid_modes`."""
+    v = v / np.max(np.abs(v))
+    dim = 2 if len(v) == 3 else 3
+    t, w = (v[:2], v[2:]) if dim == 2 else (v[:3], v[3:])
+    if np.linalg.norm(w) < 1e-6:
+        parts = [f"{names[i]}" for i in range(dim) if abs(t[i]) > 1e-6]
+        return "translation along " + " + ".join(p.split()[-1] for p in parts)
+    if dim == 2:
+        # u = t + w ez x (x - c) / scale is zero at x = c + scale * (-t_y, t_x) / w
+        pole = centroid + scale * np.array([-t[1], t[0]]) / w[0]
+        return f"rotation about z through ({pole[0] * 1e3:.4g}, {pole[1] * 1e3:.4g}) mm"
+    axis = w / np.linalg.norm(w)
+    along = float(np.dot(t, axis))
+    # the axis of a rigid motion passes through c + scale * (w x t)/|w|^2
+    pt = centroid + scale * np.cross(w, t) / np.dot(w, w)
+    pt = np.where(np.abs(pt) < 1e-9 * scale, 0.0, pt)
+    axis = np.where(np.abs(axis) < 1e-9, 0.0, axis)
+    words = f"rotation about the axis ({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g}) through " \
+            f"({pt[0] * 1e3:.4g}, {pt[1] * 1e3:.4g}, {pt[2] * 1e3:.4g}) mm"
+    if abs(along) > 1e-6:
+        words += " (with a slide along it)"
+    for i, ax in enumerate("xyz"):
+        if abs(abs(axis[i]) - 1) < 1e-6:
+            words = words.replace(f"the axis ({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g})",
+                                  f"an axis parallel to {ax}")
+    return words
+
+
+def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarray | None = None) -> None:
+    """Raise :class:`ModelError` naming every rigid motion the held DOFs do not prevent.
+
+    ``held`` are node-interleaved DOF indices held at prescribed values; a rigid motion is free
+    when it moves none of them (the restricted mode matrix has a null vector).
+    """
+    B, names = rigid_modes(points)
+    dofs = held if spring_dofs is None else np.union1d(held, spring_dofs)
+    Bc = B[dofs]
+    G = Bc.T @ Bc
+    w, V = np.linalg.eigh(G)
+    tol = 1e-10 * max(float(np.trace(B.T @ B)) / B.shape[1], 1.0)
+    free = V[:, w <= tol]
+    if free.shape[1]:
+        c = points.mean(axis=1)
+        scale = max(float(np.max(np.ptp(points, axis=1))), 1e-300)
+        # present the free space in the plainest basis: snap to coordinate modes where possible
+        motions = [describe_mode(free[:, k], names, c, scale) for k in range(free.shape[1])]
+        raise ModelError("the model is not fully supported: the supports leave free "
+                         + "; ".join(motions) + ". Add a support that prevents this motion.")
+
+
+@dataclass(frozen=True)
+class SolveInfo:
+    """How a system was solved (for reports and the benchmark)."""
+
+    method: str
+    unknowns: int
+    iterations: int
+    residual: float
+    seconds: float
+
+
+def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, prescribed: np.ndarray | None = None,
+          method: str = "auto", rtol: float = 1e-10, progress: Callable[[str], None] | None = None,
+          prolongation: sp.csr_matrix | None = None) -> tuple[np.ndarray, SolveInfo]:
+    """Solve ``K u = f`` with ``u[held] = prescribed`` (zero by default) after the rigid-body check.
+
+    ``points[dim, n]`` are the node coordinates (node-interleaved DOFs ``dim*node + i``). ``method``:
+    ``"direct"``, ``"amg"`` or ``"auto"`` (multigrid-CG for 3D systems above
+    :data:`ITERATIVE_THRESHOLD_3D` unknowns). ``prolongation`` (:func:`p1_prolongation`) enables the
+    multigrid of quadratic elements.
+    """
+    t0 = time.perf_counter()
+    dim = points.shape[0]
+    n = K.shape[0]
+    held = np.unique(np.asarray(held, dtype=np.int64))
+    check_supported(points, held)
+    u = np.zeros(n)
+    if prescribed is not None:
+        u[held] = prescribed
+    free_mask = np.ones(n, dtype=bool)
+    free_mask[held] = False
+    free = np.flatnonzero(free_mask)
+    Kc = K.tocsr()
+    rhs = f[free] - (Kc[free][:, held] @ u[held] if prescribed is not None and np.any(u[held]) else 0.0)
+    Kff = Kc[free][:, free]
+    if method == "auto":
+        big = dim == 3 and free.size > ITERATIVE_THRESHOLD_3D and prolongation is not None
+        method = "amg" if big else "direct"
+    if progress:
+        progress(f"solving {free.size} unknowns ({method})")
+    if method == "direct":
+        try:
+            lu = spl.splu(Kff.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                          options={"SymmetricMode": True})
+        except RuntimeError as exc:  # exactly singular although supported: an internal mechanism
+            raise ModelError(f"the stiffness matrix is singular ({exc}); the model has a mechanism") from None
+        x = lu.solve(rhs)
+        iters = 0
+    elif method == "amg":
+        if prolongation is None:
+            raise ValueError("method 'amg' needs the P1 -> P2 prolongation")
+        x, iters = _pmg_cg(Kff, rhs, points, free, dim, rtol, prolongation)
+    else:
+        raise ValueError(f"unknown method {method!r}")
+    if not np.all(np.isfinite(x)):
+        raise ModelError("the solve produced non-finite displacements; the model has a mechanism")
+    res = float(np.linalg.norm(Kff @ x - rhs) / max(np.linalg.norm(rhs), 1e-300))
+    u[free] = x
+    return u, SolveInfo(method, int(free.size), iters, res, time.perf_counter() - t0)
+
+
+def p1_prolongation(nverts: int, edges: np.ndarray, dim: int) -> sp.csr_matrix:
+    """Interpolation of linear (vertex) fields into the P2 space: ``[dim*N, dim*nverts]``.
+
+    A vertex keeps its value; a mid-edge node takes the mean of its edge's two vertices. Since
+    P1 is a subspace of P2 on the same mesh, ``Pᵀ K P`` is exactly the linear-element stiffness.
+    """
+    ne = edges.shape[1]
+    rows = np.r_[np.arange(nverts), nverts + np.arange(ne), nverts + np.arange(ne)]
+    cols = np.r_[np.arange(nverts), edges[0], edges[1]]
+    vals = np.r_[np.ones(nverts), np.full(2 * ne, 0.5)]
+    Ps = sp.csr_matrix((vals, (rows, cols)), shape=(nverts + ne, nverts))
+    return sp.kron(Ps, sp.identity(dim, format="csr"), format="csr")
+
+
+def _pmg_cg(A: sp.csr_matrix, b: np.ndarray, points: np.ndarray, free: np.ndarray, dim: int, rtol: float,
+            prolongation: sp.csr_matrix) -> tuple[np.ndarray, int]:
+    """CG preconditioned by a two-stage multigrid: symmetric Gauss-Seidel on the quadratic system,
+    coarse correction on the linear-element system ``Pᵀ A P`` by one smoothed-aggregation AMG V-cycle.
+
+    Smoothed aggregation on the P2 matrix itself coarsens far too fast (each node couples to ~60
+    others), so the P2 -> P1 step comes first (p-multigrid, ref. 1 and Saad ch. 13).
+    """
+    import pyamg
+    from pyamg.relaxation.relaxation import gauss_seidel
+
+    n_dofs = points.shape[1] * dim
+    held_mask = np.ones(n_dofs, dtype=bool)
+    held_mask[free] = False
+    ncoarse = prolongation.shape[1]
+    coarse_free = np.flatnonzero(~held_mask[:ncoarse])  # vertex DOFs come first in the numbering
+    P = prolongation[free][:, coarse_free].tocsr()
+    PT = P.T.tocsr()
+    A1 = (PT @ A @ P).tocsr()
+    B, _ = rigid_modes(points[:, : ncoarse // dim])
+    ml = pyamg.smoothed_aggregation_solver(
+        A1, B=B[coarse_free], max_coarse=1500, coarse_solver="splu",
+        presmoother=("gauss_seidel", {"sweep": "symmetric"}), postsmoother=("gauss_seidel", {"sweep": "symmetric"}))
+    coarse = ml.aspreconditioner(cycle="V")
+
+    def apply(r: np.ndarray) -> np.ndarray:
+        x = np.zeros_like(r)
+        gauss_seidel(A, x, r, iterations=1, sweep="forward")
+        x += P @ coarse(PT @ (r - A @ x))
+        gauss_seidel(A, x, r, iterations=1, sweep="backward")
+        return x
+
+    return pcg(A, b, apply, rtol)
+
+
+def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np.ndarray], rtol: float,
+        maxiter: int = 2000) -> tuple[np.ndarray, int]:
+    """Preconditioned conjugate gradients (ref. 2, Alg. 9.1), stopping on the true residual
+    ``‖b - A x‖ ≤ rtol ‖b‖``; :class:`ModelError` when it does not get there."""
+    bnorm = float(np.linalg.norm(b))
+    x = np.zeros_like(b)
+    if bnorm == 0:
+        return x, 0
+    r = b.copy()
+    z = precondition(r)
+    p = z.copy()
+    rz = float(r @ z)
+    for k in range(1, maxiter + 1):
+        Ap = A @ p
+        alpha = rz / float(p @ Ap)
+        x += alpha * p
+        r -= alpha * Ap
+        if np.linalg.norm(r) <= rtol * bnorm:
+            return x, k
+        z = precondition(r)
+        rz_new = float(r @ z)
+        p *= rz_new / rz
+        p += z
+        rz = rz_new
+    raise ModelError(f"multigrid-preconditioned CG did not converge in {maxiter} iterations (relative residual "
+                     f"{np.linalg.norm(r) / bnorm:.2e}); the model may be nearly a mechanism")

@@ -1,0 +1,102 @@
+"""Supports and loads of continuum models, declared in physical terms on regions (never node numbers).
+
+- :class:`Fixed` - every displacement component of a region held at zero (a clamped face).
+- :class:`Support` - chosen components held (a roller or symmetry plane: ``Support(r, x=True)``).
+- :class:`Force` - a total force spread uniformly (per unit area) over a region: a bolt or pin
+  load on a hole wall, a load on a face.
+- :class:`Pressure` - a pressure acting on a region, pushing into the surface when positive.
+- :class:`Gravity` - self-weight, ρ·g over the volume.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+from mechverify.errors import InputError
+from mechverify.fea.regions import Region
+from mechverify.units import to_si
+
+
+def _region(region: Any, what: str) -> Region:
+    if not isinstance(region, Region):
+        raise InputError(f"{what}: expected a region (Plane, Box, Cylinder, Named, ...), got {region!r}")
+    return region
+
+
+def _vector(value: Any, dim: str, name: str) -> tuple[float, ...]:
+    if isinstance(value, str) or not isinstance(value, Sequence) or len(value) not in (2, 3):
+        raise InputError(f"{name}: expected 2 or 3 components, got {value!r}")
+    return tuple(to_si(v, dim, f"{name}[{i}]") for i, v in enumerate(value))
+
+
+@dataclass(frozen=True)
+class Fixed:
+    """All displacement components of ``region`` are zero."""
+
+    region: Region
+
+    def __post_init__(self) -> None:
+        _region(self.region, "Fixed")
+
+    @property
+    def components(self) -> tuple[bool, bool, bool]:
+        return (True, True, True)
+
+
+@dataclass(frozen=True)
+class Support:
+    """The chosen displacement components of ``region`` are zero (roller, slider, symmetry)."""
+
+    region: Region
+    x: bool = False
+    y: bool = False
+    z: bool = False
+
+    def __post_init__(self) -> None:
+        _region(self.region, "Support")
+        if not (self.x or self.y or self.z):
+            raise InputError("Support: hold at least one of x, y, z")
+
+    @property
+    def components(self) -> tuple[bool, bool, bool]:
+        return (self.x, self.y, self.z)
+
+
+@dataclass(frozen=True, init=False)
+class Force:
+    """A total force vector [N] spread uniformly over the area of ``region``."""
+
+    region: Region
+    vector: tuple[float, ...]
+
+    def __init__(self, region: Region, vector: Any):
+        object.__setattr__(self, "region", _region(region, "Force"))
+        object.__setattr__(self, "vector", _vector(vector, "force", "Force.vector"))
+
+
+@dataclass(frozen=True, init=False)
+class Pressure:
+    """A pressure [Pa] on ``region``; positive pushes into the body (along the inward normal)."""
+
+    region: Region
+    value: float
+
+    def __init__(self, region: Region, value: Any):
+        object.__setattr__(self, "region", _region(region, "Pressure"))
+        object.__setattr__(self, "value", to_si(value, "pressure", "Pressure.value"))
+
+
+@dataclass(frozen=True, init=False)
+class Gravity:
+    """Self-weight: a body force ρ·g; ``acceleration`` defaults to standard gravity along -z (-y in 2D)."""
+
+    acceleration: tuple[float, ...] | None
+
+    def __init__(self, acceleration: Any = None):
+        acc = None if acceleration is None else _vector(acceleration, "acceleration", "Gravity.acceleration")
+        object.__setattr__(self, "acceleration", acc)
+
+
+STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 (ISO 80000-3)

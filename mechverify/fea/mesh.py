@@ -1,0 +1,276 @@
+"""Solid meshes: linear tetrahedra (scikit-fem ``MeshTet``) that the solver raises to quadratic (P2).
+
+Builders: :func:`box` (structured, no mesher needed), :func:`cylinder` and :func:`from_stl` (gmsh,
+an optional GPL extra imported only when called), :func:`from_arrays`. STL files are read and
+checked with trimesh (:func:`stl_properties`: watertightness, volume, mass properties).
+
+Named regions (gmsh physical surfaces, or the faces a builder names) are stored as facet vertex
+triples so that :class:`mechverify.fea.regions.Named` can select them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from skfem import Basis, ElementTetP2, MeshTet
+
+from mechverify.errors import InputError, ModelError
+from mechverify.units import Q, to_si
+
+GMSH_HINT = ("this needs the gmsh mesher, an optional extra (GPL-licensed): "
+             "pip install 'mechverify[mesh]'  (or: pip install gmsh)")
+
+
+def import_gmsh() -> Any:
+    """Import gmsh lazily; a clear :class:`ModelError` with the install command when it is missing."""
+    try:
+        import gmsh
+    except (ImportError, OSError) as exc:
+        raise ModelError(f"{GMSH_HINT} [{exc}]") from None
+    return gmsh
+
+
+def orient(p: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Tetrahedra with positive volume (vertices 1 and 2 swapped where negative); degenerate ones rejected."""
+    t = np.array(t, dtype=np.int64, copy=True)
+    a, b, c, d = (p[:, t[k]] for k in range(4))
+    det = np.einsum("ie,ie->e", np.cross(b - a, c - a, axis=0), d - a)
+    scale = np.max(np.ptp(p, axis=1)) ** 3
+    if np.any(np.abs(det) <= 1e-14 * scale):
+        raise ModelError(f"mesh has {int(np.sum(np.abs(det) <= 1e-14 * scale))} degenerate (zero-volume) tetrahedra")
+    neg = det < 0
+    t[1, neg], t[2, neg] = t[2, neg].copy(), t[1, neg].copy()
+    return t
+
+
+@dataclass(frozen=True, eq=False)
+class SolidMesh:
+    """A tetrahedral mesh in metres with named boundary regions.
+
+    ``mesh`` is a scikit-fem ``MeshTet`` (linear geometry); the P2 basis and its DOF locations are
+    built once on first use (:attr:`basis`).
+    """
+
+    mesh: MeshTet
+    named: Mapping[str, np.ndarray] = field(default_factory=dict)  # name -> sorted facet vertex triples [k, 3]
+
+    @cached_property
+    def basis(self) -> Basis:
+        return Basis(self.mesh, ElementTetP2(), intorder=1)
+
+    @property
+    def points(self) -> np.ndarray:
+        """Coordinates of the P2 nodes (vertices, then edge midpoints) ``[3, n]`` [m]."""
+        return self.basis.doflocs
+
+    @property
+    def n_nodes(self) -> int:
+        return self.basis.N
+
+    @property
+    def n_dofs(self) -> int:
+        return 3 * self.basis.N
+
+    @property
+    def size(self) -> float:
+        """Bounding-box diagonal [m]."""
+        return float(np.linalg.norm(np.ptp(self.mesh.p, axis=1)))
+
+    def named_facets(self, name: str) -> np.ndarray:
+        """Boundary facet indices of the named region."""
+        from mechverify.errors import UnknownNameError
+        if name not in self.named:
+            raise UnknownNameError("mesh region", name, list(self.named))
+        fac = np.sort(self.mesh.facets.T, axis=1).astype(np.int64)
+        want = self.named[name].astype(np.int64)
+        n = self.mesh.nvertices
+        key_all = (fac[:, 0] * n + fac[:, 1]) * n + fac[:, 2]
+        key_want = (want[:, 0] * n + want[:, 1]) * n + want[:, 2]
+        return np.flatnonzero(np.isin(key_all, key_want))
+
+
+def from_arrays(points: Any, tetrahedra: Any, named: Mapping[str, Any] | None = None, unit: str = "m") -> SolidMesh:
+    """A mesh from vertex coordinates ``[n, 3]`` (in ``unit``) and tetrahedra ``[e, 4]`` (0-based)."""
+    p = np.asarray(points, float).T * Q(1, unit).m_as("m")
+    t = np.asarray(tetrahedra, np.int64).T
+    if p.shape[0] != 3 or t.shape[0] != 4:
+        raise InputError("from_arrays: expected points [n, 3] and tetrahedra [e, 4]")
+    if t.min() < 0 or t.max() >= p.shape[1]:
+        raise InputError("from_arrays: tetrahedra refer to points that do not exist")
+    nm = {k: np.sort(np.asarray(v, np.int64).reshape(-1, 3), axis=1) for k, v in (named or {}).items()}
+    return SolidMesh(MeshTet(p, orient(p, t)), nm)
+
+
+def box(size: Any, divisions: tuple[int, int, int], origin: Any = ("0 m", "0 m", "0 m")) -> SolidMesh:
+    """A structured tetrahedral mesh of a box; faces named ``xmin, xmax, ymin, ymax, zmin, zmax``.
+
+    ``size`` is three lengths, ``divisions`` the number of cells along each (each cell is split into
+    tetrahedra by scikit-fem's ``MeshTet.init_tensor``).
+    """
+    L = [to_si(s, "length", f"size[{i}]") for i, s in enumerate(size)]
+    o = [to_si(s, "length", f"origin[{i}]") for i, s in enumerate(origin)]
+    if len(L) != 3 or min(L) <= 0:
+        raise InputError(f"box: size must be three positive lengths, got {size!r}")
+    if len(divisions) != 3 or min(divisions) < 1:
+        raise InputError(f"box: divisions must be three positive integers, got {divisions!r}")
+    axes = [np.linspace(o[i], o[i] + L[i], int(divisions[i]) + 1) for i in range(3)]
+    m = MeshTet.init_tensor(*axes)
+    t = orient(m.p, m.t)
+    m = MeshTet(m.p, t)
+    named = {}
+    bf = m.boundary_facets()
+    fp = m.p[:, m.facets[:, bf]]  # 3, 3(vertex), k
+    tol = 1e-9 * max(L)
+    for i, c in enumerate("xyz"):
+        for side, val in (("min", o[i]), ("max", o[i] + L[i])):
+            on = np.all(np.abs(fp[i] - val) <= tol, axis=0)
+            named[f"{c}{side}"] = np.sort(m.facets[:, bf[on]].T, axis=1)
+    return SolidMesh(m, named)
+
+
+def _from_gmsh_model(gmsh: Any) -> SolidMesh:
+    """Read the tetrahedra and named physical surfaces of the current gmsh model (mm or m as built)."""
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    coords = coords.reshape(-1, 3).T
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(tags.size)
+    _, ntags = gmsh.model.mesh.getElementsByType(4)
+    if ntags.size == 0:
+        raise ModelError("gmsh produced no tetrahedra (is the geometry a closed volume?)")
+    t = index[ntags.astype(np.int64)].reshape(-1, 4).T
+    used = np.unique(t)
+    remap = np.full(tags.size, -1, dtype=np.int64)
+    remap[used] = np.arange(used.size)
+    p = coords[:, used]
+    t = remap[t]
+    named: dict[str, np.ndarray] = {}
+    for dim, ptag in gmsh.model.getPhysicalGroups(2):
+        name = gmsh.model.getPhysicalName(dim, ptag) or f"surface{ptag}"
+        tris = []
+        for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, ptag):
+            _, _, ent_nodes = gmsh.model.mesh.getElements(dim, ent)
+            if len(ent_nodes):
+                tris.append(remap[index[ent_nodes[0].astype(np.int64)]].reshape(-1, 3))
+        if tris:
+            named[name] = np.sort(np.vstack(tris), axis=1)
+    return SolidMesh(MeshTet(p, orient(p, t)), named)
+
+
+def _gmsh_session(gmsh: Any, mesh_size: float) -> None:
+    gmsh.initialize(interruptible=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.option.setNumber("General.NumThreads", 1)
+    gmsh.option.setNumber("Mesh.MeshSizeMax", mesh_size)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", mesh_size / 10)
+    gmsh.model.add("mechverify")
+
+
+def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> SolidMesh:
+    """A solid round bar along ``axis`` from 0 to ``length``, meshed by gmsh.
+
+    Named regions: ``start`` and ``end`` (the flat ends) and ``side`` (the curved surface).
+    """
+    gmsh = import_gmsh()
+    r, L, h = (to_si(radius, "length", "radius"), to_si(length, "length", "length"),
+               to_si(mesh_size, "length", "mesh_size"))
+    for name, v in (("radius", r), ("length", L), ("mesh_size", h)):
+        if v <= 0:
+            raise InputError(f"cylinder: {name} must be positive")
+    if axis not in ("x", "y", "z"):
+        raise InputError(f"cylinder: axis must be 'x', 'y' or 'z', got {axis!r}")
+    d = [0.0, 0.0, 0.0]
+    d["xyz".index(axis)] = L
+    _gmsh_session(gmsh, h)
+    try:
+        vol = gmsh.model.occ.addCylinder(0, 0, 0, *d, r)
+        gmsh.model.occ.synchronize()
+        faces = {}
+        for _, tag in gmsh.model.getBoundary([(3, vol)], oriented=False):
+            com = gmsh.model.occ.getCenterOfMass(2, tag)
+            s = com["xyz".index(axis)]
+            faces.setdefault("start" if abs(s) < 1e-9 * L else "end" if abs(s - L) < 1e-9 * L else "side",
+                             []).append(tag)
+        for name, tags in faces.items():
+            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
+        gmsh.model.addPhysicalGroup(3, [vol])
+        gmsh.model.mesh.generate(3)
+        return _from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()
+
+
+@dataclass(frozen=True)
+class StlProperties:
+    """What trimesh reports about a closed STL surface (SI)."""
+
+    watertight: bool
+    volume: Any  # m^3
+    area: Any  # m^2
+    centroid: Any  # m [3]
+    mass: Any | None  # kg, when a density was given
+    inertia: Any | None  # kg m^2 [3, 3] about the centroid, when a density was given
+
+
+def stl_properties(path: str | Path, unit: str = "mm", density: Any = None) -> StlProperties:
+    """Load an STL with trimesh and report watertightness and mass properties.
+
+    ``unit`` is the length unit the file's coordinates are in (STL carries none; CAD exports mm).
+    """
+    import trimesh
+
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"STL file {str(path)!r} does not exist")
+    tm = trimesh.load(path, force="mesh")
+    s = Q(1, unit).m_as("m")
+    tm.apply_scale(s)
+    rho = to_si(density, "density", "density") if density is not None else None
+    mass = inertia = None
+    if rho is not None:
+        if not tm.is_watertight:
+            raise ModelError(f"{path.name}: the surface is not watertight, so it encloses no volume to weigh")
+        tm.density = rho
+        mass = Q(tm.mass, "kg")
+        inertia = Q(tm.moment_inertia, "kg*m**2")
+    return StlProperties(bool(tm.is_watertight), Q(abs(tm.volume), "m**3"), Q(tm.area, "m**2"),
+                         Q(np.asarray(tm.center_mass), "m"), mass, inertia)
+
+
+def from_stl(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
+    """Tetrahedral mesh of the volume inside a watertight STL surface (trimesh check, gmsh mesh).
+
+    The STL triangles are used as the boundary mesh as they are (gmsh fills the volume), so the
+    surface resolution is the file's; ``mesh_size`` bounds the interior element size. The whole
+    surface is the named region ``surface``.
+    """
+    props = stl_properties(path, unit)
+    if not props.watertight:
+        raise ModelError(f"{Path(path).name}: the STL surface is not watertight (holes or non-manifold edges); "
+                         "repair it in CAD before meshing")
+    import trimesh
+
+    gmsh = import_gmsh()
+    h = to_si(mesh_size, "length", "mesh_size")
+    tm = trimesh.load(Path(path), force="mesh")
+    tm.apply_scale(Q(1, unit).m_as("m"))
+    tm.merge_vertices()
+    _gmsh_session(gmsh, h)
+    try:
+        surf = gmsh.model.addDiscreteEntity(2)
+        ntags = np.arange(1, len(tm.vertices) + 1)
+        gmsh.model.mesh.addNodes(2, surf, ntags, np.asarray(tm.vertices, float).ravel())
+        gmsh.model.mesh.addElementsByType(surf, 2, [], (np.asarray(tm.faces, np.int64) + 1).ravel())
+        loop = gmsh.model.geo.addSurfaceLoop([surf])
+        vol = gmsh.model.geo.addVolume([loop])
+        gmsh.model.geo.synchronize()
+        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [surf]), "surface")
+        gmsh.model.addPhysicalGroup(3, [vol])
+        gmsh.model.mesh.generate(3)
+        return _from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()

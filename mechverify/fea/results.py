@@ -1,0 +1,198 @@
+"""One results object for every continuum model (solid, plane stress, plate): fields at the nodes,
+maxima and where they occur, reactions, safety factors, VTU export and a report figure.
+
+Stresses are nodal tensors smoothed by L2 projection (see :mod:`mechverify.fea.recovery`); von
+Mises and principal stresses are derived from them. Everything is stored in SI and returned as
+pint quantities.
+
+References
+----------
+1. von Mises equivalent stress: Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed.,
+   2015, eq. 5-12. Principal stresses: ibid., sec. 3-7 (eigenvalues of the stress tensor).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pint
+
+from mechverify.errors import InputError
+from mechverify.fea.linsolve import SolveInfo
+from mechverify.materials.material import Material
+from mechverify.units import Q
+
+
+@dataclass(frozen=True)
+class Extreme:
+    """A field's extreme value, where it occurs (node coordinates) and the node's index."""
+
+    value: pint.Quantity
+    location: pint.Quantity  # [3] m
+    node: int
+
+    def __str__(self) -> str:
+        loc = ", ".join(f"{c:.4g}" for c in self.location.m_as("mm"))
+        return f"{self.value:.4g~P} at ({loc}) mm"
+
+
+def von_mises(s: np.ndarray) -> np.ndarray:
+    """Von Mises stress of tensors ``s[..., 3, 3]`` [Pa] (ref. 1, eq. 5-12)."""
+    dev = s - np.trace(s, axis1=-2, axis2=-1)[..., None, None] / 3.0 * np.eye(3)
+    return np.sqrt(1.5 * np.einsum("...ij,...ij->...", dev, dev))
+
+
+def principal(s: np.ndarray) -> np.ndarray:
+    """Principal stresses ``[..., 3]`` in descending order (σ1 ≥ σ2 ≥ σ3)."""
+    return np.linalg.eigvalsh(s)[..., ::-1]
+
+
+@dataclass(frozen=True, eq=False)
+class FieldResults:
+    """Results of a linear static continuum analysis.
+
+    Raw SI arrays: ``points[n, 3]`` (m), ``u[n, 3]`` (m), ``sigma[n, 3, 3]`` (Pa, nodal, projected),
+    ``reaction[3]`` and ``applied[3]`` (N, totals), ``cells`` meshio blocks for export,
+    ``surface[k, 3]`` triangles (node indices) for figures, ``extra`` further nodal fields
+    (e.g. top/bottom surface stresses of a plate).
+    """
+
+    kind: str
+    points: np.ndarray
+    u: np.ndarray
+    sigma: np.ndarray
+    material: Material
+    reaction: np.ndarray
+    applied: np.ndarray
+    cells: list[tuple[str, np.ndarray]]
+    surface: np.ndarray
+    info: SolveInfo
+    timings: Mapping[str, float] = field(default_factory=dict)
+    extra: Mapping[str, np.ndarray] = field(default_factory=dict)
+    notes: tuple[str, ...] = ()
+
+    # -- fields -------------------------------------------------------------------------------
+    @property
+    def displacement(self) -> pint.Quantity:
+        """Nodal displacement vectors ``[n, 3]``."""
+        return Q(self.u, "m")
+
+    @property
+    def stress(self) -> pint.Quantity:
+        """Nodal stress tensors ``[n, 3, 3]`` (projected)."""
+        return Q(self.sigma, "Pa")
+
+    @cached_property
+    def _vm(self) -> np.ndarray:
+        return von_mises(self.sigma)
+
+    @property
+    def von_mises(self) -> pint.Quantity:
+        """Nodal von Mises stress ``[n]``."""
+        return Q(self._vm, "Pa")
+
+    @property
+    def principal_stresses(self) -> pint.Quantity:
+        """Nodal principal stresses ``[n, 3]``, σ1 ≥ σ2 ≥ σ3."""
+        return Q(principal(self.sigma), "Pa")
+
+    @property
+    def reactions(self) -> pint.Quantity:
+        """Total support reaction force ``[3]`` (balances the applied loads)."""
+        return Q(self.reaction, "N")
+
+    @property
+    def applied_load(self) -> pint.Quantity:
+        """Total applied force ``[3]`` (surface loads plus self-weight)."""
+        return Q(self.applied, "N")
+
+    # -- extremes -----------------------------------------------------------------------------
+    def _extreme(self, values: np.ndarray, unit: str, largest: bool = True) -> Extreme:
+        i = int(np.argmax(values) if largest else np.argmin(values))
+        return Extreme(Q(float(values[i]), unit), Q(self.points[i], "m"), i)
+
+    @property
+    def max_displacement(self) -> Extreme:
+        """Largest displacement magnitude and where."""
+        return self._extreme(np.linalg.norm(self.u, axis=1), "m")
+
+    @property
+    def max_von_mises(self) -> Extreme:
+        """Largest von Mises stress and where."""
+        return self._extreme(self._vm, "Pa")
+
+    @property
+    def max_principal(self) -> Extreme:
+        """Largest (most tensile) principal stress and where."""
+        return self._extreme(principal(self.sigma)[:, 0], "Pa")
+
+    @property
+    def min_principal(self) -> Extreme:
+        """Most compressive principal stress and where."""
+        return self._extreme(principal(self.sigma)[:, 2], "Pa", largest=False)
+
+    # -- safety -------------------------------------------------------------------------------
+    def safety_factor(self, strength: str = "yield_strength") -> pint.Quantity:
+        """Nodal static safety factor ``strength / σ_vM`` against the material (distortion energy).
+
+        ``strength`` names a material property (``yield_strength`` or ``ultimate_strength``);
+        unstressed nodes get ``inf``. Ref. 1, eq. 5-19 (n = Sy/σ').
+        """
+        if strength not in ("yield_strength", "ultimate_strength"):
+            raise InputError(f"strength must be 'yield_strength' or 'ultimate_strength', got {strength!r}")
+        S = self.material.require(strength).m_as("Pa")
+        with np.errstate(divide="ignore"):
+            sf = np.where(self._vm > 0, S / np.maximum(self._vm, 1e-300), np.inf)
+        return Q(sf, "")
+
+    def min_safety_factor(self, strength: str = "yield_strength") -> Extreme:
+        """Smallest static safety factor and where (at the largest von Mises stress)."""
+        return self._extreme(self.safety_factor(strength).m, "", largest=False)
+
+    # -- export -------------------------------------------------------------------------------
+    def to_vtu(self, path: str | Path) -> Path:
+        """Write nodes, cells and fields (displacement, stress, von Mises, principal, safety) to VTU."""
+        import meshio
+
+        path = Path(path)
+        s = self.sigma
+        data: dict[str, np.ndarray] = {
+            "displacement_m": self.u,
+            "von_mises_Pa": self._vm,
+            "principal_Pa": principal(s),
+            "stress_Pa": np.column_stack([s[:, 0, 0], s[:, 1, 1], s[:, 2, 2], s[:, 0, 1], s[:, 1, 2], s[:, 0, 2]]),
+        }
+        if self.material.yield_strength is not None:
+            data["safety_factor_yield"] = np.minimum(self.safety_factor().m, 1e6)
+        for k, v in self.extra.items():
+            data[k] = v
+        meshio.Mesh(self.points, self.cells, point_data=data).write(path)
+        return path
+
+    def plot(self, path: str | Path | None = None, field: str = "von_mises", scale: float | None = None,
+             title: str | None = None) -> Any:
+        """Contour of ``field`` (``von_mises``, ``displacement``, ``safety``) on the deformed shape,
+        the maximum marked. Deformation is magnified to 5 % of the model size unless ``scale`` is
+        given. Saves to ``path`` when given; returns the matplotlib figure.
+        """
+        from mechverify.fea.figures import contour_figure
+
+        return contour_figure(self, path, field, scale, title)
+
+    def summary(self) -> dict[str, Any]:
+        """Headline numbers: maxima with locations, minimum safety factor, reactions, solver."""
+        out: dict[str, Any] = {
+            "max_displacement": self.max_displacement,
+            "max_von_mises": self.max_von_mises,
+            "reaction": self.reactions,
+            "applied": self.applied_load,
+            "solver": self.info,
+        }
+        if self.material.yield_strength is not None:
+            out["min_safety_factor"] = self.min_safety_factor()
+        return out
