@@ -145,3 +145,30 @@ def test_init_writes_a_starter_that_verifies(tmp_path, capsys):
     assert main(["init", str(p)]) == 2  # refuses to overwrite
     assert main(["check", str(p), "-q"]) in (0, 1)
     assert "lift_screw" in p.read_text()
+
+
+def test_published_schema_is_current(monkeypatch):
+    """docs/design.schema.json is what `mechverify schema` prints (regenerate it when component types change:
+    `mechverify schema -o docs/design.schema.json`)."""
+    from pathlib import Path
+
+    from mechverify.design import REGISTRY
+    from mechverify.design.schema import design_schema
+
+    monkeypatch.delitem(REGISTRY.types, "test_rod")  # the test-only type of conftest.py
+
+    published = json.loads((Path(__file__).parents[1] / "docs" / "design.schema.json").read_text())
+    assert published == json.loads(json.dumps(design_schema()))
+
+
+def test_every_example_validates_against_the_schema():
+    import tomllib
+    from pathlib import Path
+
+    import jsonschema
+
+    schema = json.loads((Path(__file__).parents[1] / "docs" / "design.schema.json").read_text())
+    files = sorted((Path(__file__).parents[1] / "examples").glob("*/design*.toml"))
+    assert files
+    for f in files:
+        jsonschema.validate(tomllib.loads(f.read_text()), schema)
