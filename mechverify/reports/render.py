@@ -35,6 +35,8 @@ def _value(v: Any) -> str:
         return fmt(v)
     if isinstance(v, Material):
         return v.name
+    if isinstance(v, dict):  # an inline table (e.g. motor_data): one "key = value" per line
+        return "\n".join(f"{k} = {_value(x)}" for k, x in v.items())
     if isinstance(v, list | tuple):
         return ", ".join(_value(x) for x in v)
     if isinstance(v, float):
