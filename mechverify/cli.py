@@ -372,10 +372,8 @@ def main(argv: list[str] | None = None) -> int:
     except (typer.BadParameter, typer.Abort) as exc:  # click errors
         err.print(f"error: {exc}")
         return 2
-    except Exception as exc:  # click usage errors and anything unforeseen
-        import click
-
-        if isinstance(exc, click.ClickException):
+    except Exception as exc:  # click usage errors (typer vendors click) and anything unforeseen
+        if hasattr(exc, "show") and hasattr(exc, "exit_code"):  # a click usage error
             exc.show()
             return 2
         err.print(f"[red]internal error:[/red] {type(exc).__name__}: {exc}\n"

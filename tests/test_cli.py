@@ -172,3 +172,9 @@ def test_every_example_validates_against_the_schema():
     assert files
     for f in files:
         jsonschema.validate(tomllib.loads(f.read_text()), schema)
+
+
+def test_usage_errors_exit_2(capsys):
+    assert main(["check"]) == 2
+    assert main(["chek", "x.toml"]) == 2
+    assert "Traceback" not in capsys.readouterr().err

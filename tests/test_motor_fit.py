@@ -180,3 +180,17 @@ def test_gearhead_ratio_from_stages():
 def triangular_1s():
     from mechverify.loads.profiles import triangular
     return triangular("1 rad", duration="1 s")
+
+
+def test_stepper_without_curve_checks_standstill_only():
+    """Holding torque is the stepper's torque at rest (energised); a running torque needs the pull-out curve."""
+    import numpy as np
+
+    from mechverify.components.motors import StepperMotor
+    from mechverify.errors import InputError
+
+    m = StepperMotor("annex stepper", step_angle="1.8 deg", holding_torque="66 ozf*in")
+    hold = 66 * 0.45359237 / 16 * 9.80665 * 0.0254  # 66 oz·in in N·m (exact definitions)
+    assert m.available_torque_si(np.zeros(3)) == pytest.approx(np.full(3, hold))
+    with pytest.raises(InputError, match="only holding at standstill"):
+        m.available_torque_si(np.array([0.0, 1.0]))

@@ -94,6 +94,9 @@ def check_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: float 
     if m.kind == "stepper":
         notes.append(f"required margin {margin:g} on pull-out torque ({_SRC_ORIENTAL}: 1.5-2); "
                      f"curve measured with: {m.drive or 'driver not stated'}")
+    if m.kind == "stepper" and not m.has_curve:
+        notes.append("no pull-out curve: at standstill only, against the holding torque (energised, at rest)")
+    elif m.kind == "stepper":
         ws = m.pullout_speeds.magnitude
         if np.max(np.abs(demand.motor_speed)) > ws[-1]:
             warnings.append(f"speed beyond the pull-out curve's last point ({fmt(Q(ws[-1], 'rad/s'), 'rpm')}): "

@@ -349,11 +349,17 @@ class StepperMotor:
         return self.pullout_speeds is not None
 
     def available_torque_si(self, speed: Any, voltage: float | None = None) -> np.ndarray:
-        """Pull-out torque [N·m] at ``speed`` [rad/s] (see class notes for outside the points)."""
-        if not self.has_curve:
-            raise InputError(f"stepper {self.name!r} has no pull-out curve; give pullout_speeds and pullout_torques "
-                             "from the datasheet (holding torque is not a running torque)")
+        """Pull-out torque [N·m] at ``speed`` [rad/s] (see class notes for outside the points).
+
+        Without a pull-out curve only standstill is known: the holding torque (energised, at rest).
+        """
         w = np.abs(np.asarray(speed, float))
+        if not self.has_curve:
+            if np.all(w == 0):
+                return np.full_like(w, _si(self.holding_torque))
+            raise InputError(f"stepper {self.name!r} has no pull-out curve, so only holding at standstill can be "
+                             "checked; give pullout_speeds and pullout_torques from the datasheet (holding torque "
+                             "is not a running torque)")
         ws, ts = self.pullout_speeds.magnitude, self.pullout_torques.magnitude
         return np.interp(w, ws, ts, left=ts[0], right=0.0) * (w <= ws[-1] * (1 + 1e-12))
 
