@@ -1,8 +1,10 @@
 """Rolling-bearing life and static safety against ISO 281:2007, ISO 76:2006 and the SKF catalogue.
 
 Sources: ISO 281:2007 Table 3 (X, Y, e of radial ball bearings) and Table 12 (a1); ISO 76:2006
-Sec. 6.2.2; SKF Rolling bearings catalogue (PUB BU/P1 17000/1 EN, 2018), calculation example 1
-(SKF Explorer 6309, C = 55.3 kN, Fr = 10 kN, 3000 r/min: L10 = 169 million revolutions, L10h = 940 h);
+Sec. 6.2.2; SKF Rolling bearings catalogue, "Selecting bearing size - Calculation examples", Example 1
+(SKF Explorer 6309 at 3 000 r/min, F_r = 10 kN; C = 55,3 kN: L10 = 169 million revolutions,
+L10h = 940 operating hours) - text verified 2026-11-22 in the copy at yumpu.com/en/document/view/55668573
+(viewer page 92), an edition of the catalogue earlier than 17000 EN (the example is the same);
 SKF product data for the 608 as quoted in reference project 004, Table 9.
 """
 
@@ -20,7 +22,7 @@ from mechverify.components.bearings import (
 
 
 def test_skf_example_6309_basic_rating_life():
-    """SKF 17000 EN calculation example: L10 = (55.3/10)³ = 169 Mrev; L10h = 10⁶/(60·3000)·169 = 940 h."""
+    """SKF catalogue calculation example 1 (verified text, see module docstring): L10 = (55.3/10)³ = 169 Mrev; L10h = 10⁶/(60·3000)·169 = 940 h."""
     L10 = basic_rating_life("55.3 kN", "10 kN")
     assert L10.m_as("revolution") / 1e6 == pytest.approx(169, rel=2e-3)
     assert life_hours(L10, "3000 rpm").m_as("hour") == pytest.approx(940, rel=2e-3)
@@ -76,3 +78,13 @@ def test_skf_608_catalogue_row():
     assert (b.reference_speed.m_as("rpm"), b.limiting_speed.m_as("rpm"), b.f0) == (75000, 48000, 12)
     # s0 for the project's 350 N axial screw load: P0 = 0.5·350 = 175 N, s0 = 1370/175 = 7.83
     assert b.static_safety("0 N", "350 N") == pytest.approx(1370 / 175)
+
+
+@pytest.mark.parametrize(("name", "d", "D", "B"), [
+    ("6200", 10, 30, 9), ("6201", 12, 32, 10), ("6202", 15, 35, 11),
+    ("6203", 17, 40, 12), ("6204", 20, 47, 14), ("6205", 25, 52, 15)])
+def test_62xx_boundary_dimensions(name, d, D, B):
+    """Boundary dimensions of diameter series 2 (ISO 15), as printed in a maker's open deep-groove table
+    (gist.github.com/nagae/8756dc2de16082219e1ae6a80a73dfb3); only d, D, B are maker-independent."""
+    b = bearing(name)
+    assert (b.d.m_as("mm"), b.D.m_as("mm"), b.B.m_as("mm")) == (d, D, B)
