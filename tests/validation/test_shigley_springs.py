@@ -3,6 +3,11 @@
 Wire strength in the examples is Shigley's Table 10-4 power law in US units (music wire A = 201 kpsi·in^m,
 m = 0.145), passed explicitly as Sut so that the examples do not depend on the material database's
 choice of ASTM table; G and E are the Table 10-5 values the examples use.
+
+Verification status: the example inputs and printed answers below were written from memory of the 10th
+edition. A search of the public corpora on 2026-11-22 (Ex. 10-1, 10-4 by their data) did not find the printed
+examples, so they remain unverified against the book; the values are self-consistent (each answer follows
+from the stated inputs by Shigley's equations to the precision asserted).
 """
 
 import math
