@@ -318,7 +318,7 @@ class DriveTrain:
             effort = st.input_effort_si(effort, d) + st.inertia_at_input_si * a
         J_rotor = 0.0
         if self.motor is not None and getattr(self.motor, "rotor_inertia", None) is not None:
-            J_rotor = float(self.motor.rotor_inertia.magnitude)
+            J_rotor = float(self.motor.rotor_inertia.m_as("kg*m**2"))
         torque = effort + J_rotor * a
         return TorqueDemand(self, t - t[0], v, a, torque, tuple(labels), tuple(reversed(stage_data)), tc,
                             self.load_inertia_at_motor_si())
