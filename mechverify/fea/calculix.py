@@ -98,11 +98,46 @@ def read_frd(path: Path, n: int) -> tuple[np.ndarray, np.ndarray]:
                 block = {"DISP": disp, "STRESS": stress}.get(name)
             elif line.startswith(" -1") and block is not None:
                 node = int(line[3:13])
+                if node > n:  # nodes CalculiX added itself (expanded shells, knots)
+                    continue
                 vals = [float(line[13 + 12 * k: 25 + 12 * k]) for k in range((len(line.rstrip()) - 13) // 12)]
                 block[node - 1, : len(vals)] = vals[: block.shape[1]]
             elif line.startswith(" -3"):
                 block = None
     return disp, stress
+
+
+def read_frd_expanded(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """All nodes of an ASCII ``.frd`` with coordinates: ``(xyz[m, 3], disp[m, 3], stress[m, 6])``.
+
+    Shell elements are written on the nodes CalculiX expands them to (bottom, middle and top
+    surface, ref. 1 sec. 6.2.12), which do not exist in the input deck; match them by coordinates.
+    """
+    ids: dict[int, int] = {}
+    xyz: list[list[float]] = []
+    disp: dict[int, list[float]] = {}
+    stress: dict[int, list[float]] = {}
+    block = None
+    with open(path) as fh:
+        for line in fh:
+            if line.startswith("    2C"):
+                block = "nodes"
+            elif line.startswith(" -4"):
+                block = {"DISP": disp, "STRESS": stress}.get(line[5:13].strip())
+            elif line.startswith(" -3"):
+                block = None
+            elif line.startswith(" -1") and block is not None:
+                node = int(line[3:13])
+                vals = [float(line[13 + 12 * k: 25 + 12 * k]) for k in range((len(line.rstrip()) - 13) // 12)]
+                if block == "nodes":
+                    ids[node] = len(xyz)
+                    xyz.append(vals[:3])
+                else:
+                    block[node] = vals
+    order = sorted(ids, key=ids.get)
+    D = np.array([disp.get(k, [np.nan] * 3)[:3] for k in order])
+    S = np.array([stress.get(k, [np.nan] * 6)[:6] for k in order])
+    return np.array(xyz), D, S
 
 
 def read_dat_stress(path: Path, ne: int) -> np.ndarray:

@@ -133,8 +133,8 @@ def box(size: Any, divisions: tuple[int, int, int], origin: Any = ("0 m", "0 m",
     return SolidMesh(m, named)
 
 
-def _from_gmsh_model(gmsh: Any) -> SolidMesh:
-    """Read the tetrahedra and named physical surfaces of the current gmsh model (mm or m as built)."""
+def from_gmsh_model(gmsh: Any) -> SolidMesh:
+    """Read the tetrahedra and named physical surfaces of the current gmsh model (coordinates in metres)."""
     tags, coords, _ = gmsh.model.mesh.getNodes()
     coords = coords.reshape(-1, 3).T
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
@@ -161,7 +161,7 @@ def _from_gmsh_model(gmsh: Any) -> SolidMesh:
     return SolidMesh(MeshTet(p, orient(p, t)), named)
 
 
-def _gmsh_session(gmsh: Any, mesh_size: float) -> None:
+def gmsh_session(gmsh: Any, mesh_size: float) -> None:
     gmsh.initialize(interruptible=False)
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.option.setNumber("General.NumThreads", 1)
@@ -185,7 +185,7 @@ def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> Solid
         raise InputError(f"cylinder: axis must be 'x', 'y' or 'z', got {axis!r}")
     d = [0.0, 0.0, 0.0]
     d["xyz".index(axis)] = L
-    _gmsh_session(gmsh, h)
+    gmsh_session(gmsh, h)
     try:
         vol = gmsh.model.occ.addCylinder(0, 0, 0, *d, r)
         gmsh.model.occ.synchronize()
@@ -199,7 +199,7 @@ def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> Solid
             gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
         gmsh.model.addPhysicalGroup(3, [vol])
         gmsh.model.mesh.generate(3)
-        return _from_gmsh_model(gmsh)
+        return from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()
 
@@ -259,7 +259,7 @@ def from_stl(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
     tm = trimesh.load(Path(path), force="mesh")
     tm.apply_scale(Q(1, unit).m_as("m"))
     tm.merge_vertices()
-    _gmsh_session(gmsh, h)
+    gmsh_session(gmsh, h)
     try:
         surf = gmsh.model.addDiscreteEntity(2)
         ntags = np.arange(1, len(tm.vertices) + 1)
@@ -271,6 +271,6 @@ def from_stl(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
         gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [surf]), "surface")
         gmsh.model.addPhysicalGroup(3, [vol])
         gmsh.model.mesh.generate(3)
-        return _from_gmsh_model(gmsh)
+        return from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()

@@ -1,0 +1,18 @@
+"""Run every benchmark (``make bench``). Each writes its results under ``benchmarks/results/``."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import fea_vs_calculix
+
+
+def main() -> None:
+    fea_vs_calculix.main([])
+
+
+if __name__ == "__main__":
+    main()
