@@ -67,6 +67,7 @@ def describe_mode(v: np.ndarray, names: list[str], centroid: np.ndarray, scale: 
     if dim == 2:
         # u = t + w ez x (x - c) / scale is zero at x = c + scale * (-t_y, t_x) / w
         pole = centroid + scale * np.array([-t[1], t[0]]) / w[0]
+        pole = np.where(np.abs(pole) < 1e-9 * scale, 0.0, pole)
         return f"rotation about z through ({pole[0] * 1e3:.4g}, {pole[1] * 1e3:.4g}) mm"
     axis = w / np.linalg.norm(w)
     along = float(np.dot(t, axis))

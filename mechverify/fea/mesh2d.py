@@ -50,7 +50,8 @@ def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float
 
 def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri:
     """Mesh a shapely polygon (metres) with element size ``size``, graded to ``hole_size`` (default
-    size/3) at the holes' edges. Straight segments of the polygon are kept as mesh edges."""
+    size/3) at the holes and at curved parts of the outline (runs of segments shorter than size/2:
+    fillets, arcs). Straight segments of the polygon are kept as mesh edges."""
     gmsh = import_gmsh()
     if size <= 0:
         raise InputError("mesh size must be positive")
@@ -66,12 +67,16 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
             lines = [geo.addLine(tags[i], tags[(i + 1) % len(tags)]) for i in range(len(tags))]
             return geo.addCurveLoop(lines), lines
 
-        outer, _ = ring(region.exterior.coords)
+        outer, outer_lines = ring(region.exterior.coords)
         inner, hole_lines = [], []
         for interior in region.interiors:
             loop, lines = ring(interior.coords)
             inner.append(loop)
             hole_lines += lines
+        # arcs of the outline (fillets, a hole cut by a symmetry line) come as runs of short segments
+        ext = np.asarray(region.exterior.coords)
+        seg = np.linalg.norm(np.diff(ext, axis=0), axis=1)
+        hole_lines += [line for line, s in zip(outer_lines, seg) if s < size / 2]
         geo.addPlaneSurface([outer, *inner])
         geo.synchronize()
         if hole_lines and hole_size < size:

@@ -146,8 +146,9 @@ class FieldResults:
         if strength not in ("yield_strength", "ultimate_strength"):
             raise InputError(f"strength must be 'yield_strength' or 'ultimate_strength', got {strength!r}")
         S = self.material.require(strength).m_as("Pa")
-        with np.errstate(divide="ignore"):
-            sf = np.where(self._vm > 0, S / np.maximum(self._vm, 1e-300), np.inf)
+        sf = np.full(self._vm.shape, np.inf)
+        stressed = self._vm > 1e-12 * S
+        sf[stressed] = S / self._vm[stressed]
         return Q(sf, "")
 
     def min_safety_factor(self, strength: str = "yield_strength") -> Extreme:

@@ -1,0 +1,81 @@
+"""Plane and plate models: unsupported models name the free motion, bolt-hole supports, self-weight,
+equilibrium, export."""
+
+import meshio
+import numpy as np
+import pytest
+from shapely.geometry import box as shapely_box
+
+from mechverify.components import plates as P
+from mechverify.errors import InputError, ModelError
+from mechverify.fea import mesh2d
+from mechverify.fea.loads import Fixed, Force, Gravity, Support
+from mechverify.fea.plane import PlaneModel
+from mechverify.fea.plate import check_plate_supported, solve_plate
+from mechverify.fea.regions import Box, Plane
+
+
+def strip():
+    return mesh2d.rectangle(0.1, 0.02, 10, 2)
+
+
+def test_plane_unsupported_names_free_motion():
+    model = PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Support(Plane(x="0 m"), x=True),),
+                       loads=(Force(Plane(x="100 mm"), ("100 N", "0 N")),))
+    with pytest.raises(ModelError, match="translation along y"):
+        model.solve()
+    pin = Box(("0 m", "0 m"), ("0 m", "0 m"))
+    model = PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Fixed(pin),),
+                       loads=(Force(Plane(x="100 mm"), ("100 N", "0 N")),))
+    with pytest.raises(ModelError, match=r"rotation about z through \(0, 0\) mm"):
+        model.solve()
+
+
+def test_plane_cantilever_equilibrium_gravity_and_vtu(tmp_path):
+    model = PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Fixed(Plane(x="0 m")),),
+                       loads=(Force(Plane(x="100 mm"), ("0 N", "-50 N")), Gravity()))
+    res = model.solve()
+    weight = 7850 * 9.80665 * 0.1 * 0.02 * 0.005
+    assert res.reactions.m_as("N")[:2] == pytest.approx([0, 50 + weight], rel=1e-9, abs=1e-9)
+    back = meshio.read(res.to_vtu(tmp_path / "p.vtu"))
+    assert back.cells[0].type == "triangle6"
+    res.plot(tmp_path / "p.png")
+    with pytest.raises(InputError, match="no boundary edge"):
+        PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Fixed(Plane(x="0 m")),),
+                   loads=(Force(Plane(x="50 mm"), ("1 N", "0 N")),)).solve()
+
+
+def test_plate_rigid_motions_named():
+    pts = np.array([[0.0, 0.1], [0.0, 0.0]])  # two points on y = 0
+    with pytest.raises(ModelError, match=r"rotation about the line through \(0, 0\) mm along \(1, 0\)|along \(-1, -?0\)"):
+        check_plate_supported(pts, np.zeros((2, 0)))
+    with pytest.raises(ModelError, match="translation along z"):
+        check_plate_supported(np.zeros((2, 0)), np.array([[1.0], [0.0]]))
+    check_plate_supported(np.array([[0.0, 0.1, 0.0], [0.0, 0.0, 0.1]]), np.zeros((2, 0)))
+
+
+def test_plate_on_two_corner_points_fails_clearly():
+    plate = P.Plate.rectangle("200 mm", "100 mm", "4 mm", "Inventor Aluminum 6061")
+    model = P.PlateModel(plate, supports=(P.PointSupport(("0 mm", "0 mm")), P.PointSupport(("200 mm", "0 mm"))),
+                         loads=(P.PressureLoad("-1 kPa"),))
+    with pytest.raises(ModelError, match="rotation about the line"):
+        solve_plate(model, mesh_size="20 mm")
+
+
+def test_bolted_plate_with_cutout_self_weight_and_point_loads(tmp_path):
+    """An arm-support plate like the one of seed 004 (335 x 160 mm, 6 mm aluminium, four corner bolts,
+    a lightening cut-out): reactions balance 2 x 120 N plus the plate's weight."""
+    pytest.importorskip("gmsh")
+    holes = P.corner_holes("335 mm", "160 mm", "15 mm", "6.5 mm")
+    plate = P.Plate.rectangle("335 mm", "160 mm", "6 mm", "Inventor Aluminum 6061", holes=holes,
+                              cutouts=[[("120 mm", "50 mm"), ("215 mm", "50 mm"), ("215 mm", "110 mm"),
+                                        ("120 mm", "110 mm")]])
+    loads = (P.PointLoad(("60 mm", "80 mm"), "-120 N"), P.PointLoad(("275 mm", "80 mm"), "-120 N"), P.SelfWeight())
+    model = P.PlateModel(plate, supports=(P.HoleSupport("all", "clamped", washer_diameter="12 mm"),), loads=loads)
+    res = solve_plate(model, mesh_size="10 mm")
+    weight = plate.weight.m_as("N")
+    assert res.reactions.m_as("N")[2] == pytest.approx(240 + weight, rel=1e-6)
+    assert res.max_displacement.value.m_as("mm") > 0
+    assert res.min_safety_factor().value.m > 1
+    res.plot(tmp_path / "plate.png")
+    assert shapely_box(0, 0, 0.335, 0.16).contains(plate.region)
