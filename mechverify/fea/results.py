@@ -155,6 +155,52 @@ class FieldResults:
         """Smallest static safety factor and where (at the largest von Mises stress)."""
         return self._extreme(self.safety_factor(strength).m, "", largest=False)
 
+    def signed_von_mises(self) -> pint.Quantity:
+        """Von Mises stress with the sign of the principal stress of largest magnitude (tension +),
+        the equivalent stress FEA tools use for fatigue with mean stress."""
+        p = principal(self.sigma)
+        dominant = np.where(np.abs(p[:, 0]) >= np.abs(p[:, 2]), p[:, 0], p[:, 2])
+        return Q(np.where(dominant < 0, -self._vm, self._vm), "Pa")
+
+    def fatigue_safety_factor(self, criterion: str = "goodman", stress_ratio: float = -1.0,
+                              cycles: float | None = None, endurance: Any = None,
+                              load_line: str = "proportional") -> pint.Quantity:
+        """Nodal fatigue safety factor when the loads cycle between ``stress_ratio`` x this load case and
+        the load case itself (R = -1 fully reversed, R = 0 repeated on-off).
+
+        Equivalent stress: signed von Mises ``σ_eq``; amplitude ``|1 - R|/2 |σ_eq|``, mean ``(1 + R)/2 σ_eq``.
+        Fatigue strength ``Se``: ``endurance`` if given, else the material's S-N curve (fully reversed
+        amplitudes) at ``cycles`` (its last point, the endurance level, when ``cycles`` is None), else its
+        endurance limit. Mean-stress ``criterion`` from :mod:`mechverify.fatigue.criteria` (Goodman
+        default: Shigley 10th ed., eq. 6-46, n = 1/(σa/Se + σm/Sut)).
+        """
+        from mechverify.fatigue import criteria
+        from mechverify.units import to_si
+
+        mat = self.material
+        if endurance is not None:
+            Se = to_si(endurance, "pressure", "endurance")
+        elif mat.sn_curve is not None:
+            sn = mat.sn_curve
+            Se = sn.stress_at(cycles if cycles is not None else sn.cycles[-1]).m_as("Pa")
+        elif mat.endurance_limit is not None:
+            Se = mat.endurance_limit.m_as("Pa")
+        else:
+            raise InputError(f"material {mat.name!r} has no S-N curve or endurance limit; give endurance=")
+        if not -1.0 <= float(stress_ratio) < 1.0:
+            raise InputError(f"stress_ratio must lie in [-1, 1), got {stress_ratio!r}")
+        seq = self.signed_von_mises().m_as("Pa")
+        sa = abs(1 - stress_ratio) / 2 * np.abs(seq)
+        sm = (1 + stress_ratio) / 2 * seq
+        kw = {"Sut": mat.ultimate_strength.m_as("Pa") if mat.ultimate_strength is not None else None,
+              "Sy": mat.yield_strength.m_as("Pa") if mat.yield_strength is not None else None}
+        n = criteria.safety_factor.si(criterion, sa, sm, Se, load_line=load_line, **kw)
+        return Q(np.asarray(n, float), "")
+
+    def min_fatigue_safety_factor(self, **kw: Any) -> Extreme:
+        """Smallest fatigue safety factor and where (arguments of :meth:`fatigue_safety_factor`)."""
+        return self._extreme(self.fatigue_safety_factor(**kw).m, "", largest=False)
+
     # -- export -------------------------------------------------------------------------------
     def to_vtu(self, path: str | Path) -> Path:
         """Write nodes, cells and fields (displacement, stress, von Mises, principal, safety) to VTU."""
