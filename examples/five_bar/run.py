@@ -105,7 +105,8 @@ def gearhead_fit(point_mm: tuple[float, float] = (50.0, 150.0)) -> dict[str, flo
             for fx, fy in ((1, 0), (0, 1))]
     k = float(np.linalg.norm(np.column_stack(cols), 2))
     gh = gearhead(GEARHEAD)
-    return {"torque_per_N": k, "pose": pose.label(), "continuous": gh.continuous_torque.m_as("N*m"),
+    return {"torque_per_N": k, "pose": pose.label(), "theta_left_deg": pose.theta_left.m_as("deg"),
+            "theta_right_deg": pose.theta_right.m_as("deg"), "continuous": gh.continuous_torque.m_as("N*m"),
             "intermittent": gh.intermittent_torque.m_as("N*m"), "F_allow": gh.continuous_torque.m_as("N*m") / k,
             "ratio": float(gh.ratio), "efficiency": float(gh.efficiency),
             "motor_torque_for_40Nm": 40.0 / (float(gh.ratio) * float(gh.efficiency))}
