@@ -11,7 +11,7 @@ in its own process so that peak memory (max RSS) is comparable:
 
 Prints a table and writes ``benchmarks/results/fea_vs_calculix.json``. Usage::
 
-    python benchmarks/fea_vs_calculix.py [--dofs 50000 200000]
+    python benchmarks/fea_vs_calculix.py [--dofs 50000 200000] [--baseline]
 """
 
 from __future__ import annotations
@@ -98,7 +98,48 @@ def child(path: str) -> None:
                       "method": res.info.method, "max_vm": float(res.max_von_mises.value.m_as("MPa"))}))
 
 
-def run_case(target: int) -> dict:
+def baseline_child(path: str) -> None:
+    """Plain scikit-fem on the same mesh (generic vector P2 assembly, SciPy direct solve, projection of
+    von Mises): the starting point this work was measured against."""
+    from scipy.sparse.linalg import spsolve
+    from skfem import Basis, ElementTetP2, ElementVector, MeshTet, asm, condense, solve
+    from skfem.helpers import ddot, sym_grad, trace
+    from skfem.models.elasticity import lame_parameters, linear_elasticity
+
+    data = np.load(path, allow_pickle=False)
+    t0 = time.perf_counter()
+    m = MeshTet(data["points"].T, data["tets"].T)
+    ib = Basis(m, ElementVector(ElementTetP2()))
+    lam, mu = lame_parameters(200e9, 0.3)
+    K = asm(linear_elasticity(lam, mu), ib)
+    clamp = ib.get_dofs(lambda X: np.isclose(X[0], 0.0)).all()
+    f = np.zeros(K.shape[0])
+    zdofs = ib.get_dofs(lambda X: np.isclose(np.hypot(X[0] - 0.1, X[1] - 0.02), 0.008, rtol=0.05)).all("u^3")
+    f[zdofs] = -5000.0 / max(len(zdofs), 1)  # a load of the same size; the timing is what matters
+    u = solve(*condense(K, f, D=clamp), solver=spsolve)
+    sb = ib.with_element(ElementTetP2())
+    from skfem import BilinearForm, LinearForm
+
+    @LinearForm
+    def vm_rhs(v, w):
+        e = sym_grad(w["u"])
+        s = 2 * mu * e + lam * trace(e) * np.eye(3)[:, :, None, None] * 1.0
+        dev = s - trace(s) / 3 * np.eye(3)[:, :, None, None]
+        return np.sqrt(1.5 * ddot(dev, dev)) * v
+
+    @BilinearForm
+    def mass(a, b, w):
+        return a * b
+
+    M = asm(mass, sb)
+    rhs = asm(vm_rhs, sb, u=ib.interpolate(u))
+    solve(M, rhs)
+    wall = time.perf_counter() - t0
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    print(json.dumps({"wall": wall, "peak": peak}))
+
+
+def run_case(target: int, baseline: bool = False) -> dict:
     from mechverify.fea import calculix
 
     m = mesh_for(target)
@@ -109,6 +150,11 @@ def run_case(target: int) -> dict:
         out = subprocess.run([sys.executable, __file__, "--child", path], capture_output=True, text=True, check=True)
         mine = json.loads(out.stdout.strip().splitlines()[-1])
         u = np.load(path + ".u.npy")
+        base = None
+        if baseline:
+            out = subprocess.run([sys.executable, __file__, "--baseline-child", path], capture_output=True,
+                                 text=True, check=True)
+            base = json.loads(out.stdout.strip().splitlines()[-1])
     ccx = {}
     for threads in (1, 2):
         r = calculix.run_model(model, threads=threads)
@@ -117,24 +163,34 @@ def run_case(target: int) -> dict:
     best = min(ccx, key=lambda k: ccx[k]["wall"])
     return {"dofs": m.n_dofs, "elements": m.mesh.nelements, "mechverify": mine, "calculix": ccx,
             "ratio": mine["wall"] / ccx[best]["wall"], "memory_ratio": mine["peak"] / ccx[best]["peak"],
-            "ccx_threads": best, "max_displacement_difference": err}
+            "ccx_threads": best, "max_displacement_difference": err, "plain_scikit_fem": base}
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--dofs", type=int, nargs="*", default=[50_000, 200_000])
+    ap.add_argument("--baseline", action="store_true",
+                    help="also time plain scikit-fem + SciPy direct on the smallest mesh")
     ap.add_argument("--child")
+    ap.add_argument("--baseline-child")
     args = ap.parse_args(argv)
     if args.child:
         child(args.child)
         return []
-    rows = [run_case(t) for t in args.dofs]
+    if args.baseline_child:
+        baseline_child(args.baseline_child)
+        return []
+    rows = [run_case(t, args.baseline and i == 0) for i, t in enumerate(args.dofs)]
     print(f"{'DOF':>8} {'mechverify s':>13} {'ccx s (thr)':>12} {'ratio':>6} {'mv MB':>7} {'ccx MB':>7}  iters")
     for r in rows:
         c = r["calculix"][r["ccx_threads"]]
         print(f"{r['dofs']:>8} {r['mechverify']['wall']:>13.2f} {c['wall']:>9.2f} ({r['ccx_threads']}) "
               f"{r['ratio']:>6.2f} {r['mechverify']['peak'] / 1e6:>7.0f} {c['peak'] / 1e6:>7.0f}  "
               f"{r['mechverify']['iterations']}")
+        if r.get("plain_scikit_fem"):
+            b = r["plain_scikit_fem"]
+            print(f"{'':>8} plain scikit-fem + SciPy direct: {b['wall']:.2f} s, {b['peak'] / 1e6:.0f} MB "
+                  f"(ratio to CalculiX {b['wall'] / c['wall']:.2f})")
     out = HERE / "results"
     out.mkdir(exist_ok=True)
     (out / "fea_vs_calculix.json").write_text(json.dumps(rows, indent=2, default=str))
