@@ -411,12 +411,10 @@ class Frame:
     # --------------------------------------------------------------------------- geometry helpers
     def point(self, where: Where, what: str = "point") -> np.ndarray:
         """The coordinates [m] of a node name or a point."""
-        if isinstance(where, str) and not any(c.isdigit() for c in where.split()[0][:1]) and " " not in where:
+        if isinstance(where, str):
             if where not in self.nodes:
                 raise UnknownNameError("node", where, self.nodes)
             return self.nodes[where]
-        if isinstance(where, str):
-            raise InputError(f"{what}: expected a node name or three lengths, got {where!r}")
         return _vector(where, "length", what)
 
     def _locate(self, p: np.ndarray) -> list[tuple[int, float]]:
