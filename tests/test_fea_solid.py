@@ -134,3 +134,29 @@ def test_cylinder_primitive_named_regions():
     kappa = 6 * (1 + nu) / (7 + 6 * nu)
     expect = P * L**3 / (3 * E * I) + P * L / (kappa * G * A)
     assert res.max_displacement.value.m_as("m") == pytest.approx(expect, rel=0.03)
+
+
+def test_bolt_holes_as_regions_and_step_import(tmp_path):
+    """A link with two pin holes: one pin held (hole wall fixed), 800 N pulling on the other pin,
+    selected by a Cylinder region; the same as the named hole; a STEP file is read in metres."""
+    gmsh = pytest.importorskip("gmsh")
+    link = mesh.block_with_holes(("100 mm", "30 mm", "6 mm"), [(("15 mm", "15 mm"), "8 mm"), (("85 mm", "15 mm"), "8 mm")],
+                                 "6 mm")
+    pin_a = Cylinder(("15 mm", "15 mm", "0 mm"), "4 mm", axis=(0, 0, 1))
+    pin_b = Cylinder(("85 mm", "15 mm", "0 mm"), "4 mm", axis=(0, 0, 1))
+    res = solid.SolidModel(link, "Structural Steel", supports=(Fixed(pin_a),),
+                           loads=(Force(pin_b, ("800 N", "0 N", "0 N")),)).solve()
+    assert res.reactions.m_as("N") == pytest.approx([-800, 0, 0], abs=1e-6)
+    named = solid.SolidModel(link, "Structural Steel", supports=(Fixed(Named("hole0")),),
+                             loads=(Force(Named("hole1"), ("800 N", "0 N", "0 N")),)).solve()
+    assert named.max_displacement.value.m == pytest.approx(res.max_displacement.value.m, rel=1e-9)
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.occ.addBox(0, 0, 0, 40, 20, 10)
+    gmsh.model.occ.synchronize()
+    gmsh.write(str(tmp_path / "block.step"))
+    gmsh.finalize()
+    step = mesh.from_step(tmp_path / "block.step", "5 mm")
+    assert step.mesh.p.max(axis=1) == pytest.approx([0.04, 0.02, 0.01])
+    with pytest.raises(InputError, match="does not fit"):
+        mesh.block_with_holes(("10 mm", "10 mm", "5 mm"), [(("5 mm", "5 mm"), "12 mm")])

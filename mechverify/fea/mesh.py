@@ -204,6 +204,100 @@ def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> Solid
         gmsh.finalize()
 
 
+def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_mesh_size: Any = None) -> SolidMesh:
+    """A rectangular block from the origin to ``size`` (x, y, z lengths) with through-holes along z,
+    ``holes`` = [((x, y), diameter), ...] (bolt or pin holes; lengths or strings), meshed by gmsh
+    with ``hole_mesh_size`` (default mesh_size / 2) at the holes.
+
+    Named regions: ``xmin, xmax, ymin, ymax, zmin, zmax`` (faces) and ``hole0``, ``hole1``, ... (walls).
+    """
+    gmsh = import_gmsh()
+    L = [to_si(v, "length", f"size[{i}]") for i, v in enumerate(size)]
+    if len(L) != 3 or min(L) <= 0:
+        raise InputError(f"block_with_holes: size must be three positive lengths, got {size!r}")
+    h = to_si(mesh_size, "length", "mesh_size")
+    hh = h / 2 if hole_mesh_size is None else to_si(hole_mesh_size, "length", "hole_mesh_size")
+    hs = []
+    for i, (center, d) in enumerate(holes):
+        cx, cy = (to_si(c, "length", f"holes[{i}].center") for c in center)
+        r = to_si(d, "length", f"holes[{i}].diameter") / 2
+        if not (r > 0 and r < cx < L[0] - r and r < cy < L[1] - r):
+            raise InputError(f"holes[{i}]: a hole of diameter {2 * r * 1e3:g} mm at ({cx * 1e3:g}, {cy * 1e3:g}) mm "
+                             "does not fit inside the block")
+        hs.append((cx, cy, r))
+    gmsh_session(gmsh, h)
+    try:
+        occ = gmsh.model.occ
+        vol = occ.addBox(0, 0, 0, *L)
+        if hs:
+            tools = [(3, occ.addCylinder(cx, cy, -0.1 * L[2], 0, 0, 1.2 * L[2], r)) for cx, cy, r in hs]
+            out, _ = occ.cut([(3, vol)], tools)
+            vol = out[0][1]
+        occ.synchronize()
+        groups: dict[str, list[int]] = {}
+        for _, tag in gmsh.model.getBoundary([(3, vol)], oriented=False):
+            com = occ.getCenterOfMass(2, tag)
+            name = None
+            for i, c in enumerate("xyz"):
+                if abs(com[i]) < 1e-9 * max(L):
+                    name = f"{c}min"
+                elif abs(com[i] - L[i]) < 1e-9 * max(L):
+                    name = f"{c}max"
+            if name is None:
+                k = int(np.argmin([np.hypot(com[0] - cx, com[1] - cy) for cx, cy, _ in hs]))
+                name = f"hole{k}"
+            groups.setdefault(name, []).append(tag)
+        for name, tags in groups.items():
+            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
+        gmsh.model.addPhysicalGroup(3, [vol])
+        hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
+        if hole_faces and hh < h:
+            f = gmsh.model.mesh.field
+            dist = f.add("Distance")
+            f.setNumbers(dist, "SurfacesList", hole_faces)
+            thr = f.add("Threshold")
+            f.setNumber(thr, "InField", dist)
+            f.setNumber(thr, "SizeMin", hh)
+            f.setNumber(thr, "SizeMax", h)
+            f.setNumber(thr, "DistMin", 0.0)
+            f.setNumber(thr, "DistMax", 3 * h)
+            f.setAsBackgroundMesh(thr)
+            gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
+        gmsh.model.mesh.generate(3)
+        return from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()
+
+
+def from_step(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
+    """Tetrahedral mesh of the solid(s) in a STEP file (gmsh/OpenCASCADE); ``unit`` is the unit the
+    file's lengths are in when it declares none (CAD exports are usually mm). Each CAD face becomes a
+    named region ``face<k>`` (gmsh's face tag)."""
+    gmsh = import_gmsh()
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"STEP file {str(path)!r} does not exist")
+    h = to_si(mesh_size, "length", "mesh_size")
+    gmsh_session(gmsh, h)
+    try:
+        gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+        try:
+            ents = gmsh.model.occ.importShapes(str(path))
+        except Exception as exc:  # gmsh raises a bare Exception with its log message
+            raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
+        gmsh.model.occ.synchronize()
+        vols = [t for d, t in ents if d == 3]
+        if not vols:
+            raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+        for _, tag in gmsh.model.getEntities(2):
+            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [tag]), f"face{tag}")
+        gmsh.model.addPhysicalGroup(3, vols)
+        gmsh.model.mesh.generate(3)
+        return from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()
+
+
 @dataclass(frozen=True)
 class StlProperties:
     """What trimesh reports about a closed STL surface (SI)."""

@@ -98,7 +98,7 @@ class PlaneModel:
             raise InputError("named regions are not available on 2D meshes; use Plane, Box or Cylinder")
         nodes, length, normal = self._boundary
         inside = region.contains(self.basis.doflocs, 1e-6 * self.size)
-        sel = np.all(inside[nodes], axis=1)
+        sel = np.all(inside[nodes[:, :2]], axis=1)  # by the end vertices (a chord's middle is off an arc)
         if not np.any(sel):
             raise InputError(f"{region.describe()} contains no boundary edge of the mesh")
         return nodes[sel], length[sel], normal[sel]
@@ -132,13 +132,15 @@ class PlaneModel:
         if not self.supports:
             raise ModelError("the model has no supports; add Fixed(...) or Support(...) on a region")
         nodes_all, _, _ = self._boundary
-        bnodes = np.unique(nodes_all)
+        bverts = np.unique(nodes_all[:, :2])
         held = []
         for s in self.supports:
-            inside = s.region.contains(self.basis.doflocs[:, bnodes], 1e-6 * self.size)
+            inside = np.zeros(self.basis.N, dtype=bool)
+            inside[bverts] = s.region.contains(self.basis.doflocs[:, bverts], 1e-6 * self.size)
             if not np.any(inside):
                 raise InputError(f"{s.region.describe()} contains no boundary node of the mesh")
-            nodes = bnodes[inside]
+            edge_in = inside[nodes_all[:, 0]] & inside[nodes_all[:, 1]]
+            nodes = np.unique(np.r_[np.flatnonzero(inside), nodes_all[edge_in, 2]])
             for i, on in enumerate(s.components[:2]):
                 if on:
                     held.append(2 * nodes + i)

@@ -109,9 +109,11 @@ class SolidModel:
         if isinstance(region, Named):
             sel = np.isin(bf, self.mesh.named_facets(region.name))
         else:
+            # judged by the facet's vertices: a straight mid-edge node of a curved surface (a hole wall)
+            # lies on the chord, inside the true surface
             tol = 1e-6 * self.mesh.size
             inside = region.contains(self.mesh.points, tol)
-            sel = np.all(inside[nodes], axis=1)
+            sel = np.all(inside[nodes[:, :3]], axis=1)
         if not np.any(sel):
             raise InputError(f"{region.describe()} contains no boundary facet of the mesh")
         return Facets(nodes[sel], area[sel], normal[sel])
@@ -142,13 +144,21 @@ class SolidModel:
         return f
 
     def _support_nodes(self, region: Region, bnodes: np.ndarray) -> np.ndarray:
-        """Boundary nodes in ``region``: a face, an edge (a degenerate box) or a point may be held."""
+        """Nodes held by a support on ``region``: the boundary vertices in it and the mid-edge nodes of
+        boundary edges with both ends in it (a face, an edge - a degenerate box - or a point)."""
         if isinstance(region, Named):
             return np.unique(self.facets(region).nodes)
-        inside = region.contains(self.mesh.points[:, bnodes], 1e-6 * self.mesh.size)
+        m = self.mesh.mesh
+        bf = self._boundary[0]
+        bverts = np.unique(m.facets[:, bf])
+        inside = np.zeros(m.nvertices, dtype=bool)
+        inside[bverts] = region.contains(m.p[:, bverts], 1e-6 * self.mesh.size)
         if not np.any(inside):
             raise InputError(f"{region.describe()} contains no boundary node of the mesh")
-        return bnodes[inside]
+        edges = np.unique(m.f2e[:, bf])
+        ends = m.edges[:, edges]
+        held_edges = edges[inside[ends[0]] & inside[ends[1]]]
+        return np.concatenate([np.flatnonzero(inside), m.nvertices + held_edges])
 
     def load_vector(self) -> np.ndarray:
         """The consistent nodal load vector ``[3n]`` [N] (node-interleaved DOFs)."""
@@ -163,10 +173,8 @@ class SolidModel:
         if not self.supports:
             raise ModelError("the model has no supports; add Fixed(...) or Support(...) on a region")
         held = []
-        _, bnodes, _, _ = self._boundary
-        bnodes = np.unique(bnodes)
         for s in self.supports:
-            nodes = self._support_nodes(s.region, bnodes)
+            nodes = self._support_nodes(s.region, np.empty(0))
             for i, on in enumerate(s.components):
                 if on:
                     held.append(3 * nodes + i)
