@@ -38,7 +38,10 @@ class Extreme:
 
     def __str__(self) -> str:
         loc = ", ".join(f"{c:.4g}" for c in self.location.m_as("mm"))
-        return f"{self.value:.4g~P} at ({loc}) mm"
+        v = self.value
+        unit = {"[length]": "mm", "[mass] / [length] / [time] ** 2": "MPa"}.get(str(v.dimensionality))
+        text = f"{v.m_as(unit):.4g} {unit}" if unit else f"{v.m:.4g}"
+        return f"{text} at ({loc}) mm"
 
 
 def von_mises(s: np.ndarray) -> np.ndarray:
