@@ -38,6 +38,9 @@ def _value(v: Any) -> str:
     if isinstance(v, dict):  # an inline table (e.g. motor_data): one "key = value" per line
         return "\n".join(f"{k} = {_value(x)}" for k, x in v.items())
     if isinstance(v, list | tuple):
+        if any(isinstance(x, dict) for x in v):  # a list of tables (members, supports): one table per line
+            return "\n".join("; ".join(f"{k} = {_value(y)}" for k, y in x.items()) if isinstance(x, dict)
+                             else _value(x) for x in v)
         return ", ".join(_value(x) for x in v)
     if isinstance(v, float):
         return f"{v:.4g}"
