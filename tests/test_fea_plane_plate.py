@@ -79,3 +79,30 @@ def test_bolted_plate_with_cutout_self_weight_and_point_loads(tmp_path):
     assert res.min_safety_factor().value.m > 1
     res.plot(tmp_path / "plate.png")
     assert shapely_box(0, 0, 0.335, 0.16).contains(plate.region)
+
+
+def test_pin_load_bears_on_the_near_half_only():
+    """A 2D link, pin hole A held, pin B pulled along +x by 1 kN: the load is exactly 1 kN, all of it on
+    the half of hole B's wall towards +x, and the reactions balance it."""
+    pytest.importorskip("gmsh")
+    from shapely.geometry import Point
+
+    from mechverify.fea.loads import PinLoad
+    from mechverify.fea.plane import mesh_region
+    from mechverify.fea.regions import Cylinder
+
+    region = shapely_box(0, 0, 0.1, 0.03).difference(Point(0.015, 0.015).buffer(0.004, 32)).difference(
+        Point(0.085, 0.015).buffer(0.004, 32))
+    model = PlaneModel(mesh_region(region, "4 mm", "1 mm"), "5 mm", "Structural Steel",
+                       supports=(Fixed(Cylinder(("15 mm", "15 mm"), "4 mm")),),
+                       loads=(PinLoad(Cylinder(("85 mm", "15 mm"), "4 mm"), ("1 kN", "0 N")),))
+    _, area = __import__("mechverify.fea.assembly", fromlist=["x"]).barycentric_gradients(model.mesh.p, model.mesh.t)
+    f = model.load_vector(area).reshape(-1, 2)
+    assert f.sum(axis=0) == pytest.approx([1000, 0], abs=1e-9)
+    x = model.basis.doflocs
+    loaded = np.abs(f).sum(axis=1) > 0
+    assert np.all(x[0, loaded] >= 0.085 - 1e-9)
+    res = model.solve()
+    assert res.reactions.m_as("N")[:2] == pytest.approx([-1000, 0], abs=1e-6)
+    with pytest.raises(InputError):
+        PinLoad(Cylinder(("85 mm", "15 mm"), "4 mm"), ("0 N", "0 N"))

@@ -5,6 +5,8 @@
 - :class:`Force` - a total force spread uniformly (per unit area) over a region: a bolt or pin
   load on a hole wall, a load on a face.
 - :class:`Pressure` - a pressure acting on a region, pushing into the surface when positive.
+- :class:`PinLoad` - a pin bearing on a hole: a total force spread over the half of the hole's wall
+  the pin presses on, as a pressure ``p0 cos θ`` normal to the wall (θ from the force direction).
 - :class:`Gravity` - self-weight, ρ·g over the volume.
 """
 
@@ -17,6 +19,29 @@ from typing import Any
 from mechverify.errors import InputError
 from mechverify.fea.regions import Region
 from mechverify.units import to_si
+
+
+def pin_tractions(vector: Any, area: Any, normal: Any) -> Any:
+    """Tractions ``[k, d]`` on wall facets (areas ``[k]``, outward normals ``[k, d]``) for a pin force.
+
+    The body's outward normal on a hole wall points into the hole, so ``cos θ = -n·F̂``; facets with
+    cos θ > 0 carry ``p0 cos θ`` along ``-n``; a uniform share on the loaded facets removes the small
+    resultant error of a faceted wall, so the facets' resultant is exactly ``vector``.
+    """
+    import numpy as np
+
+    F = np.asarray(vector, float)[: normal.shape[1]]
+    fhat = F / np.linalg.norm(F)
+    c = np.clip(-normal @ fhat, 0.0, None)
+    if not np.any(c > 0):
+        raise InputError("PinLoad: no wall facet faces the force direction")
+    shape = c[:, None] * -normal  # traction per unit p0
+    R = (area[:, None] * shape).sum(axis=0)
+    p0 = float(F @ fhat) / float(R @ fhat)
+    t = p0 * shape
+    loaded = c > 0
+    t[loaded] += (F - p0 * R) / area[loaded].sum()
+    return t
 
 
 def _region(region: Any, what: str) -> Region:
@@ -74,6 +99,24 @@ class Force:
     def __init__(self, region: Region, vector: Any):
         object.__setattr__(self, "region", _region(region, "Force"))
         object.__setattr__(self, "vector", _vector(vector, "force", "Force.vector"))
+
+
+@dataclass(frozen=True, init=False)
+class PinLoad:
+    """A pin pressing on the wall of a hole (``region``, usually a :class:`Cylinder`) with a total
+    force ``vector`` [N]: normal pressure ``p0 cos θ`` on the half of the wall facing the force,
+    ``p0`` chosen so the resultant is exactly the force (the cosine bearing distribution usually assumed
+    for a close-fitting pin)."""
+
+    region: Region
+    vector: tuple[float, ...]
+
+    def __init__(self, region: Region, vector: Any):
+        object.__setattr__(self, "region", _region(region, "PinLoad"))
+        vec = _vector(vector, "force", "PinLoad.vector")
+        if not any(vec):
+            raise InputError("PinLoad.vector: the force must not be zero")
+        object.__setattr__(self, "vector", vec)
 
 
 @dataclass(frozen=True, init=False)

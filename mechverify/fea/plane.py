@@ -29,7 +29,7 @@ from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import mesh2d
 from mechverify.fea.linsolve import solve
-from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, Pressure, Support
+from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, PinLoad, Pressure, Support, pin_tractions
 from mechverify.fea.progress import Steps
 from mechverify.fea.recovery import project
 from mechverify.fea.regions import Named, Region
@@ -56,7 +56,7 @@ class PlaneModel:
     thickness: Any
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
-    loads: tuple[Force | Pressure | Gravity, ...] = ()
+    loads: tuple[Force | Pressure | PinLoad | Gravity, ...] = ()
     plane: str = "stress"
 
     def __post_init__(self) -> None:
@@ -120,6 +120,8 @@ class PlaneModel:
             nodes, length, normal = self._edges(ld.region)
             if isinstance(ld, Force):
                 traction = np.broadcast_to(np.array(ld.vector[:2]) / (length.sum() * t), normal.shape)
+            elif isinstance(ld, PinLoad):
+                traction = pin_tractions(ld.vector, length * t, normal)
             else:
                 traction = -ld.value * normal
             w = np.array([1 / 6, 1 / 6, 2 / 3])

@@ -32,7 +32,7 @@ import numpy as np
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea.linsolve import p1_prolongation, solve
-from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, Pressure, Support
+from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, PinLoad, Pressure, Support, pin_tractions
 from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
 from mechverify.fea.recovery import project
@@ -71,7 +71,7 @@ class SolidModel:
     mesh: SolidMesh
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
-    loads: tuple[Force | Pressure | Gravity, ...] = ()
+    loads: tuple[Force | Pressure | PinLoad | Gravity, ...] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, SolidMesh):
@@ -83,8 +83,8 @@ class SolidModel:
             if not isinstance(s, Fixed | Support):
                 raise InputError(f"supports: expected Fixed or Support, got {s!r}")
         for ld in self.loads:
-            if not isinstance(ld, Force | Pressure | Gravity):
-                raise InputError(f"loads: expected Force, Pressure or Gravity, got {ld!r}")
+            if not isinstance(ld, Force | Pressure | PinLoad | Gravity):
+                raise InputError(f"loads: expected Force, Pressure, PinLoad or Gravity, got {ld!r}")
 
     # -- geometry of regions ------------------------------------------------------------------
     @cached_property
@@ -135,6 +135,8 @@ class SolidModel:
             fc = self.facets(ld.region)
             if isinstance(ld, Force):
                 traction = np.broadcast_to(np.array(ld.vector, float) / fc.area.sum(), fc.normal.shape)
+            elif isinstance(ld, PinLoad):
+                traction = pin_tractions(ld.vector, fc.area, fc.normal)
             else:
                 traction = -ld.value * fc.normal
             mids = fc.nodes[:, 3:]
