@@ -1,0 +1,617 @@
+"""``plate_fea``: a flat plate of any outline solved by the FEA plate-bending model.
+
+The plate lies in its own x-y plane (loads along z): a rectangle (``width`` x ``height``, lower-left
+corner at the origin) or an ``outline`` polygon, with groups of circular ``holes`` (one diameter, a
+list of centres) and ``cutouts`` (rectangles with an optional corner radius, or polygons). Points
+are strings ``"x, y"``: two numbers in the component's ``unit`` (default mm) or two lengths with
+units (``"12 mm, 0.1 m"``). Supports hold outline edges, points or the rims of bolt holes, fixed
+(clamped: deflection and slope held) or pinned (simply supported: deflection held). Load cases give
+point forces and moments, patch loads, a uniform pressure and self-weight.
+
+The plate is solved once per load case with :func:`mechverify.fea.plate.solve_plate` (Kirchhoff,
+Morley triangles) and the result is kept for both checks and the report figure:
+
+* ``plate_stress`` — the largest von Mises stress at the plate surfaces (bending) against the yield
+  strength, with the governing location in the notes;
+* ``plate_deflection`` — the largest deflection against a limit (a length, ``"L/250"`` or a fraction
+  of the span: the ``span`` field, else the shorter side of the plate's bounding box).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+import shapely
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Polygon as ShapelyPolygon
+
+from mechverify.checks import members as mc
+from mechverify.checks.result import CheckResult
+from mechverify.components import plates as pl
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.errors import InputError, MechverifyError, suggest
+from mechverify.fea.plate import solve_plate
+from mechverify.fea.results import FieldResults
+from mechverify.units import Q, as_quantity, fmt
+
+SUPPORT_TYPES = {"fixed": "clamped", "clamped": "clamped", "pinned": "simply_supported",
+                 "simply_supported": "simply_supported"}
+RECT_EDGES = {"bottom": 0, "right": 1, "top": 2, "left": 3}
+FEA_SOURCE = ("Kirchhoff plate bending, Morley triangles (Morley 1971; Timoshenko & Woinowsky-Krieger, Theory of "
+              "Plates and Shells, 2nd ed., ch. 4); verified against Roark 7th ed. Tables 11.2 and 11.4")
+VM_SOURCE = ("surface bending stresses sigma = 6 M / t^2 (Timoshenko & Woinowsky-Krieger 2nd ed., eq. 101); von "
+             "Mises criterion, Shigley 10th ed. Eq. 5-13")
+
+
+# --------------------------------------------------------------------------------------------- the component
+@dataclasses.dataclass(frozen=True, eq=False)
+class PlateFEA:
+    """A plate as a design file declares it, with its supports, mesh, limits and the solved load cases."""
+
+    name: str
+    plate: pl.Plate
+    supports: tuple[Any, ...]
+    mesh_size: Any
+    hole_mesh_size: Any
+    deflection_limit: Any
+    span: Any
+    unit: str = "mm"
+    solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
+
+    def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
+        """The plate model and its FEA result of one load case (solved on first use, then cached)."""
+        if case not in self.solved:
+            model = self.model(loads, case, g)
+            self.solved[case] = (model, solve_plate(model, self.mesh_size, self.hole_mesh_size))
+        return self.solved[case]
+
+    def model(self, loads: Mapping[str, Any], case: str, g: Any) -> pl.PlateModel:
+        plate_loads = _loads(loads, f"load_cases.{case}.{self.name}", self.unit, g)
+        try:
+            return pl.PlateModel(self.plate, self.supports, plate_loads, name=case)
+        except MechverifyError as exc:
+            raise InputError(f"load_cases.{case}.{self.name}.{exc}") from None
+
+
+# ----------------------------------------------------------------------------------------------------- parsing
+def _number_or_length(s: str, unit: str, path: str) -> Any:
+    s = s.strip()
+    try:
+        return Q(float(s), unit)
+    except ValueError:
+        return as_quantity(s, "length", path)
+
+
+def parse_point(v: Any, unit: str, path: str) -> tuple[Any, Any]:
+    """``"x, y"`` (numbers in ``unit``, or lengths with units) -> two length quantities."""
+    if not isinstance(v, str):
+        raise InputError(f"{path}: expected a point as a string \"x, y\" (in {unit}), got {v!r}")
+    parts = v.split(",")
+    if len(parts) != 2 or not all(p.strip() for p in parts):
+        raise InputError(f"{path}: expected a point \"x, y\" (two numbers in {unit}, or two lengths), got {v!r}")
+    try:
+        return (_number_or_length(parts[0], unit, f"{path}.x"), _number_or_length(parts[1], unit, f"{path}.y"))
+    except MechverifyError as exc:
+        raise InputError(f"{path}: {str(exc).split(': ', 1)[-1]} in {v!r}") from None
+
+
+def _points(v: Any, unit: str, path: str, minimum: int = 3) -> list[tuple[Any, Any]]:
+    if not isinstance(v, list):
+        raise InputError(f"{path}: expected a list of points \"x, y\", got {v!r}")
+    pts = [parse_point(p, unit, f"{path}[{i}]") for i, p in enumerate(v)]
+    if len(pts) < minimum:
+        raise InputError(f"{path}: a polygon needs at least {minimum} points, got {len(pts)}")
+    return pts
+
+
+def _si(pt: tuple[Any, Any]) -> tuple[float, float]:
+    return pt[0].m_as("m"), pt[1].m_as("m")
+
+
+def _table(v: Any, path: str, keys: tuple[str, ...], required: tuple[str, ...] = ()) -> dict[str, Any]:
+    if not isinstance(v, dict):
+        raise InputError(f"{path}: expected a table, got {v!r}")
+    for k in v:
+        if k not in keys:
+            hint = suggest(k, keys, 1)
+            raise InputError(f"{path}.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint else
+                                                           f" (allowed: {', '.join(keys)})"))
+    for k in required:
+        if k not in v:
+            raise InputError(f"{path}.{k}: missing")
+    return v
+
+
+def _q(v: Any, dim: str, path: str) -> Any:
+    if isinstance(v, bool) or not isinstance(v, str):
+        raise InputError(f"{path}: expected a {dim.replace('_', ' ')} as a string with units, got {v!r}")
+    try:
+        return as_quantity(v, dim, path)
+    except MechverifyError as exc:
+        raise InputError(f"{path}: {str(exc).split(': ', 1)[-1]}") from None
+
+
+def _positive(v: Any, dim: str, path: str) -> Any:
+    q = _q(v, dim, path)
+    if not q.magnitude > 0:
+        raise InputError(f"{path}: must be positive, got {v!r}")
+    return q
+
+
+def _holes(p: Mapping[str, Any], unit: str, shell: ShapelyPolygon) -> tuple[list[pl.Hole], dict[str, list[str]]]:
+    holes: list[pl.Hole] = []
+    groups: dict[str, list[str]] = {}
+    for g, t in enumerate(p.get("holes", [])):
+        path = f"holes[{g}]"
+        t = _table(t, path, ("name", "diameter", "centers"), ("diameter", "centers"))
+        d = _positive(t["diameter"], "length", f"{path}.diameter")
+        name = str(t.get("name", f"hole{g + 1}"))
+        if name in groups:
+            raise InputError(f"{path}.name: {name!r} is used by another hole group")
+        centers = t["centers"]
+        if not isinstance(centers, list) or not centers:
+            raise InputError(f"{path}.centers: expected a list of points \"x, y\", got {centers!r}")
+        groups[name] = []
+        for k, c in enumerate(centers):
+            cpath = f"{path}.centers[{k}]"
+            pt = parse_point(c, unit, cpath)
+            hname = name if len(centers) == 1 else f"{name}_{k + 1}"
+            disc = ShapelyPoint(_si(pt)).buffer(d.m_as("m") / 2, quad_segs=32)
+            if not shell.contains(disc):
+                where = "outside the plate" if not shell.intersects(disc) else "across the plate's edge"
+                raise InputError(f"{cpath}: the hole of {fmt(d, 'mm')} at ({c}) lies {where}")
+            holes.append(pl.Hole(pt, d, hname))
+            groups[name].append(hname)
+    return holes, groups
+
+
+def _cutouts(p: Mapping[str, Any], unit: str, shell: ShapelyPolygon) -> list[Any]:
+    out = []
+    for i, t in enumerate(p.get("cutouts", [])):
+        path = f"cutouts[{i}]"
+        t = _table(t, path, ("center", "size", "corner_radius", "polygon"))
+        if ("polygon" in t) == ("center" in t):
+            raise InputError(f"{path}: give either polygon = [points] or center and size (a rectangle)")
+        if "polygon" in t:
+            if "size" in t or "corner_radius" in t:
+                raise InputError(f"{path}: size and corner_radius belong to a rectangle (center and size), "
+                                 "not to a polygon")
+            poly = ShapelyPolygon([_si(q) for q in _points(t["polygon"], unit, f"{path}.polygon")])
+            if not poly.is_valid or poly.area <= 0:
+                raise InputError(f"{path}.polygon: the cut-out crosses itself or encloses no area")
+        else:
+            if "size" not in t:
+                raise InputError(f"{path}.size: missing (\"dx, dy\" of the rectangle)")
+            cx, cy = _si(parse_point(t["center"], unit, f"{path}.center"))
+            dx, dy = parse_point(t["size"], unit, f"{path}.size")
+            dx, dy = dx.m_as("m"), dy.m_as("m")
+            if not (dx > 0 and dy > 0):
+                raise InputError(f"{path}.size: both sides must be positive, got {t['size']!r}")
+            poly = shapely.box(cx - dx / 2, cy - dy / 2, cx + dx / 2, cy + dy / 2)
+            if "corner_radius" in t:
+                r = _positive(t["corner_radius"], "length", f"{path}.corner_radius").m_as("m")
+                if not 2 * r < min(dx, dy):
+                    raise InputError(f"{path}.corner_radius: must be less than half the shorter side")
+                poly = poly.buffer(-r, join_style="mitre").buffer(r, quad_segs=6)
+        if not shell.contains(poly):
+            raise InputError(f"{path}: the cut-out is not inside the plate outline")
+        out.append(Q(np.asarray(poly.exterior.coords)[:-1], "m"))
+    return out
+
+
+def _supports(p: Mapping[str, Any], plate: pl.Plate, groups: dict[str, list[str]], unit: str) -> tuple[Any, ...]:
+    out: list[Any] = []
+    n_edges = len(plate.outline)
+    for i, t in enumerate(p["supports"]):
+        path = f"supports[{i}]"
+        t = _table(t, path, ("edges", "point", "holes", "type", "washer_diameter"))
+        where = [k for k in ("edges", "point", "holes") if k in t]
+        if len(where) != 1:
+            raise InputError(f"{path}: give exactly one of edges, point or holes")
+        kind = t.get("type", "fixed")
+        if kind not in SUPPORT_TYPES:
+            hint = suggest(str(kind), tuple(SUPPORT_TYPES), 1)
+            raise InputError(f"{path}.type: expected fixed or pinned, got {kind!r}"
+                             + (f"; did you mean {hint[0]!r}?" if hint else ""))
+        cond = SUPPORT_TYPES[kind]
+        if "washer_diameter" in t and "holes" not in t:
+            raise InputError(f"{path}.washer_diameter: only a hole support has a washer")
+        if "edges" in t:
+            out.append(pl.EdgeSupport(_edges(t["edges"], plate, n_edges, f"{path}.edges"), cond))
+        elif "point" in t:
+            pt = parse_point(t["point"], unit, f"{path}.point")
+            if plate.region.distance(ShapelyPoint(_si(pt))) > 1e-9 * math.sqrt(plate.region.area):
+                raise InputError(f"{path}.point: ({t['point']}) is not on the plate (outside it or in a hole)")
+            out.append(pl.PointSupport(pt, cond))
+        else:
+            names = _hole_names(t["holes"], groups, f"{path}.holes")
+            washer = None
+            if "washer_diameter" in t:
+                washer = _positive(t["washer_diameter"], "length", f"{path}.washer_diameter")
+                for h in names:
+                    if washer.m_as("m") <= plate.hole(h).diameter:
+                        raise InputError(f"{path}.washer_diameter: {fmt(washer, 'mm')} must exceed the diameter of "
+                                         f"hole {h!r}")
+            out.append(pl.HoleSupport(names, cond, washer))
+    return tuple(out)
+
+
+def _edges(v: Any, plate: pl.Plate, n: int, path: str) -> Any:
+    if v == "all":
+        return "all"
+    items = v if isinstance(v, list) else [v]
+    idx = []
+    for k, e in enumerate(items):
+        if isinstance(e, str):
+            if not plate.is_rectangle() or e not in RECT_EDGES:
+                allowed = "bottom, right, top, left or indices" if plate.is_rectangle() else f"indices 0..{n - 1}"
+                raise InputError(f"{path}[{k}]: expected {allowed} (edge i runs from outline point i to i+1), "
+                                 f"got {e!r}")
+            idx.append(RECT_EDGES[e])
+        elif isinstance(e, int) and not isinstance(e, bool) and 0 <= e < n:
+            idx.append(e)
+        else:
+            raise InputError(f"{path}[{k}]: expected an edge index 0..{n - 1} (edge i runs from outline point i to "
+                             f"i+1), got {e!r}")
+    if not idx:
+        raise InputError(f"{path}: give \"all\" or at least one edge")
+    return tuple(idx)
+
+
+def _hole_names(v: Any, groups: dict[str, list[str]], path: str) -> Any:
+    if v == "all":
+        if not groups:
+            raise InputError(f"{path}: the plate has no holes")
+        return [h for g in groups.values() for h in g]
+    items = v if isinstance(v, list) else [v]
+    known = {h for g in groups.values() for h in g}
+    out: list[str] = []
+    for k, name in enumerate(items):
+        if name in groups:
+            out += groups[name]
+        elif name in known:
+            out.append(name)
+        else:
+            hint = suggest(str(name), (*groups, *sorted(known)), 1)
+            raise InputError(f"{path}[{k}]: no hole or hole group {name!r}"
+                             + (f"; did you mean {hint[0]!r}?" if hint else f" (holes: {', '.join(groups) or 'none'})"))
+    return out
+
+
+def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
+    out: list[Any] = []
+    for i, t in enumerate(loads.get("point_loads", [])):
+        path = f"{base}.point_loads[{i}]"
+        t = _table(t, path, ("at", "force", "moment_x", "moment_y"), ("at",))
+        if not any(k in t for k in ("force", "moment_x", "moment_y")):
+            raise InputError(f"{path}: give force and/or moment_x, moment_y")
+        kw = {"force": _q(t.get("force", "0 N"), "force", f"{path}.force"),
+              "moment_x": _q(t.get("moment_x", "0 N*m"), "torque", f"{path}.moment_x"),
+              "moment_y": _q(t.get("moment_y", "0 N*m"), "torque", f"{path}.moment_y")}
+        try:
+            out.append(pl.PointLoad(parse_point(t["at"], unit, f"{path}.at"), **kw))
+        except MechverifyError as exc:
+            raise InputError(f"{path}: {exc}") from None
+    for i, t in enumerate(loads.get("patch_loads", [])):
+        path = f"{base}.patch_loads[{i}]"
+        t = _table(t, path, ("center", "size", "polygon", "force", "pressure"))
+        if ("force" in t) == ("pressure" in t):
+            raise InputError(f"{path}: give exactly one of force (total) or pressure")
+        if ("polygon" in t) == ("center" in t):
+            raise InputError(f"{path}: give either polygon = [points] or center and size (a rectangle)")
+        kw = ({"force": _q(t["force"], "force", f"{path}.force")} if "force" in t
+              else {"pressure": _q(t["pressure"], "pressure", f"{path}.pressure")})
+        if "polygon" in t:
+            kw["polygon"] = _points(t["polygon"], unit, f"{path}.polygon")
+        else:
+            if "size" not in t:
+                raise InputError(f"{path}.size: missing (\"dx, dy\" of the rectangle)")
+            kw["center"] = parse_point(t["center"], unit, f"{path}.center")
+            kw["size"] = parse_point(t["size"], unit, f"{path}.size")
+        try:
+            out.append(pl.PatchLoad(**kw))
+        except MechverifyError as exc:
+            raise InputError(f"{path}: {exc}") from None
+    if "pressure" in loads:
+        out.append(pl.PressureLoad(loads["pressure"]))
+    if loads.get("self_weight"):
+        out.append(pl.SelfWeight(g=g))
+    if not out:
+        raise InputError(f"{base}: no load (point_loads, patch_loads, pressure or self_weight = true)")
+    return out
+
+
+def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
+    name = p["_name"]
+    unit = p["unit"]
+    try:
+        Q(1.0, unit).to("m")
+    except Exception:
+        raise InputError(f"unit: expected a length unit such as \"mm\", got {unit!r}") from None
+    rect = "width" in p or "height" in p
+    if rect and "outline" in p:
+        raise InputError("outline: give either width and height (a rectangle) or outline, not both")
+    if rect:
+        for k in ("width", "height"):
+            if k not in p:
+                raise InputError(f"{k}: missing; a rectangular plate needs width and height")
+            if not p[k].magnitude > 0:
+                raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
+        w, h = p["width"], p["height"]
+        outline = [(Q(0.0, "m"), Q(0.0, "m")), (w, Q(0.0, "m")), (w, h), (Q(0.0, "m"), h)]
+    elif "outline" in p:
+        outline = _points(p["outline"], unit, "outline")
+        ring = shapely.LinearRing([_si(q) for q in outline])
+        if not ring.is_simple:
+            raise InputError("outline: the outline crosses itself")
+    else:
+        raise InputError("width: missing; give width and height (a rectangle) or outline (a polygon)")
+    if not p["thickness"].magnitude > 0:
+        raise InputError(f"thickness: must be positive, got {fmt(p['thickness'], 'mm')}")
+    shell = ShapelyPolygon([_si(q) for q in outline])
+    if shell.area <= 0:
+        raise InputError("outline: the outline encloses no area")
+    holes, groups = _holes(p, unit, shell)
+    cutouts = _cutouts(p, unit, shell)
+    try:
+        plate = pl.Plate(Q(np.array([[a.m_as("m"), b.m_as("m")] for a, b in outline]), "m"), p["thickness"],
+                         p["material"], holes, cutouts, name=name)
+    except MechverifyError as exc:
+        raise InputError(str(exc).replace(f"{name}.", "", 1)) from None
+    supports = _supports(p, plate, groups, unit)
+    try:
+        pl.PlateModel(plate, supports)
+    except MechverifyError as exc:
+        raise InputError(f"supports: {exc}") from None
+    if p["material"].nu is None:
+        raise InputError(f"material: {p['material'].name!r} has no Poisson's ratio, which plate bending needs")
+    if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
+        raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
+    limit: Any = p.get("deflection_limit")
+    if limit is None:
+        limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
+    x0, y0, x1, y1 = shell.bounds
+    span = p.get("span") or Q(min(x1 - x0, y1 - y0), "m").to("mm")
+    try:
+        mc.deflection_limit(limit, span)
+    except (MechverifyError, ZeroDivisionError) as exc:
+        key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
+        raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the span: "
+                         + str(exc).split(": ", 1)[-1]) from None
+    for k in ("mesh_size", "hole_mesh_size", "span"):
+        if k in p and not p[k].magnitude > 0:
+            raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
+    return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
+                    unit)
+
+
+# ------------------------------------------------------------------------------------------------------ checks
+def _g(ctx: Any) -> Any:
+    return ctx.requirements.get("g", Q(9.80665, "m/s**2"))
+
+
+def _mm(xy: Any) -> str:
+    return f"({xy[0] * 1e3:.4g}, {xy[1] * 1e3:.4g}) mm"
+
+
+def _nearest_feature(c: PlateFEA, model: pl.PlateModel, xy: np.ndarray) -> str:
+    """Where a point lies: on a hole rim, a cut-out edge, the outline, at a load, or inside."""
+    pt = ShapelyPoint(xy)
+    tol = 0.02 * math.sqrt(c.plate.region.area)
+    cands: list[tuple[float, str]] = []
+    for hole in c.plate.holes:
+        cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - hole.radius),
+                      f"at the rim of hole {hole.name!r} (d = {hole.diameter * 1e3:.4g} mm)"))
+    for i, cut in enumerate(c.plate.cutouts):
+        cands.append((ShapelyPolygon(cut).exterior.distance(pt), f"at the edge of cut-out {i}"))
+    for i, (a, b) in enumerate(c.plate.edges()):
+        cands.append((shapely.LineString([a, b]).distance(pt), f"at outline edge {i} (from {_mm(a)} to {_mm(b)})"))
+    for i, ld in enumerate(model.loads):
+        if isinstance(ld, pl.PointLoad):
+            cands.append((float(np.hypot(*(xy - np.asarray(ld.point)))), f"at point load {i}"))
+    for s in model.supports:
+        if isinstance(s, pl.PointSupport):
+            cands.append((float(np.hypot(*(xy - np.asarray(s.point)))), f"at the point support {_mm(s.point)}"))
+    d, what = min(cands, key=lambda x: x[0])
+    return what if d <= tol else "inside the plate, away from holes and edges"
+
+
+def _singular_warning(c: PlateFEA, model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
+    xy = res.points[node, :2]
+    pts = res.points[:, :2]
+    h = float(np.median(np.linalg.norm(pts[res.surface[:, 1]] - pts[res.surface[:, 0]], axis=1)))
+    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PointLoad)
+            and np.hypot(*(xy - np.asarray(ld.point))) <= 2.5 * h]
+    near += [f"point support at {_mm(s.point)}" for s in model.supports if isinstance(s, pl.PointSupport)
+             and np.hypot(*(xy - np.asarray(s.point))) <= 2.5 * h]
+    if not near:
+        return ()
+    return (f"the largest stress is at a {near[0]}: plate theory makes the stress under a concentrated force or "
+            "support infinite, so this value depends on the mesh; spread the load over its real footprint "
+            "(patch_loads) or support on a hole rim or edge",)
+
+
+def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
+    model, res = c.solve(loads, ctx.load_case, _g(ctx))
+    mx = res.max_von_mises
+    sy = c.plate.material.require("yield_strength").to("MPa")
+    node = int(mx.node)
+    xy = res.points[node, :2]
+    s = res.sigma[node]
+    mom = [res.extra[k][node] for k in ("moment_xx_N", "moment_yy_N", "moment_xy_N")]
+    t = c.plate.thickness_q.to("mm")
+    notes = [f"governing location {_mm(xy)}, {_nearest_feature(c, model, xy)}",
+             f"there M_xx = {mom[0]:.4g}, M_yy = {mom[1]:.4g}, M_xy = {mom[2]:.4g} N·m/m; surface stresses "
+             f"sigma_x = {abs(s[0, 0]) / 1e6:.4g}, sigma_y = {abs(s[1, 1]) / 1e6:.4g} MPa in magnitude "
+             f"(top and bottom differ in sign only), tau_xy = {abs(s[0, 1]) / 1e6:.4g} MPa",
+             *res.notes, *_mesh_notes(c, res), *_load_notes(model, res)]
+    return CheckResult(
+        check="plate_stress", component=c.name, demand=mx.value.to("MPa"), capacity=sy,
+        title="Plate bending stress (FEA, von Mises at the surfaces)",
+        formula=r"\sigma_{vM} = \sqrt{\sigma_x^2 - \sigma_x \sigma_y + \sigma_y^2 + 3 \tau_{xy}^2},\ "
+                r"\sigma = \frac{6 M}{t^2} \le S_y",
+        source=f"{VM_SOURCE}; {FEA_SOURCE}",
+        inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
+                "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": c.plate.material.require("E").to("GPa"),
+                "nu": c.plate.material.require("nu")},
+        notes=tuple(notes), warnings=(*model.warnings(), *_singular_warning(c, model, res, node)),
+        details={"location": Q(xy, "m").to("mm"), "node": node})
+
+
+def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
+    model, res = c.solve(loads, ctx.load_case, _g(ctx))
+    w = res.u[:, 2]
+    k = int(np.argmax(np.abs(w)))
+    r = mc.deflection_check(Q(abs(w[k]), "m"), c.deflection_limit, span=c.span, component=c.name,
+                            source=f"limit set by the design; deflection by {FEA_SOURCE}")
+    return dataclasses.replace(
+        r, check="plate_deflection", title="Plate deflection (FEA)",
+        formula=r"\delta_{max} = \max |w(x, y)| \le \delta_{lim}",
+        notes=(*r.notes, f"largest deflection w = {w[k] * 1e3:.4g} mm at {_mm(res.points[k, :2])}, "
+                         f"{_nearest_feature(c, model, res.points[k, :2])}",
+               "span for a fractional limit: the 'span' field, else the shorter side of the plate's bounding box",
+               *_mesh_notes(c, res), *_load_notes(model, res)),
+        details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
+
+
+def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
+    size = "shorter side / 16 (default)" if c.mesh_size is None else fmt(c.mesh_size, "mm")
+    hole = "mesh size / 3 (default)" if c.hole_mesh_size is None else fmt(c.hole_mesh_size, "mm")
+    return [f"mesh: {len(res.surface)} Morley triangles, {res.points.shape[0]} vertices; element size {size}, "
+            f"at holes and cut-outs {hole}"]
+
+
+def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
+    sup = "; ".join(_describe_support(s) for s in model.supports)
+    return [f"supports: {sup}",
+            f"applied load {res.applied[2]:.4g} N along z, reactions {res.reaction[2]:.4g} N (equilibrium checked)"]
+
+
+def _describe_support(s: Any) -> str:
+    kind = "fixed" if s.condition == "clamped" else "pinned"
+    if isinstance(s, pl.EdgeSupport):
+        return f"{kind} edges {s.edges}"
+    if isinstance(s, pl.PointSupport):
+        return f"{kind} point {_mm(s.point)}"
+    washer = f" to washer d = {s.washer_diameter * 1e3:.4g} mm" if s.washer_diameter else ""
+    return f"{kind} rims of holes {s.holes}{washer}"
+
+
+# ------------------------------------------------------------------------------------------------------ figure
+def plate_figure(c: PlateFEA, res: FieldResults, case: str) -> Any:
+    """Von Mises contour (left) and deflection (right) on the plate, the maxima marked with a star."""
+    import matplotlib.pyplot as plt
+    from matplotlib.figure import Figure
+    from matplotlib.tri import Triangulation
+
+    del plt  # the object-oriented API only: no global figure state
+    x, y = res.points[:, 0] * 1e3, res.points[:, 1] * 1e3
+    tri = Triangulation(x, y, res.surface)
+    x0, y0, x1, y1 = c.plate.region.bounds
+    wide = (x1 - x0) >= (y1 - y0)
+    fig = Figure(figsize=(9.0, 3.6) if wide else (9.0, 5.0))
+    axes = fig.subplots(1, 2)
+    fields = ((res.von_mises.m_as("MPa"), "von Mises stress at the surfaces [MPa]", "turbo", True),
+              (res.u[:, 2] * 1e3, "deflection w [mm]", "viridis", False))
+    for ax, (vals, label, cmap, is_stress) in zip(axes, fields, strict=True):
+        cs = ax.tripcolor(tri, vals, shading="gouraud", cmap=cmap)
+        k = int(np.argmax(vals if is_stress else np.abs(vals)))
+        for ring in (c.plate.region.exterior, *c.plate.region.interiors):
+            rx, ry = np.asarray(ring.coords).T * 1e3
+            ax.plot(rx, ry, color="k", lw=0.6)
+        for s in c.supports:
+            _draw_support(ax, c.plate, s)
+        ax.plot(x[k], y[k], marker="*", color="white", mec="k", ms=14)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("y [mm]")
+        ax.set_title(f"max {abs(vals[k]):.3g} {'MPa' if is_stress else 'mm'} (★)", fontsize=9)
+        fig.colorbar(cs, ax=ax, label=label, shrink=0.8)
+    fig.suptitle(f"{c.name}, load case '{case}'", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def _draw_support(ax: Any, plate: pl.Plate, s: Any) -> None:
+    style = {"color": "magenta", "lw": 2.5 if s.condition == "clamped" else 1.5,
+             "ls": "-" if s.condition == "clamped" else "--"}
+    if isinstance(s, pl.EdgeSupport):
+        edges = plate.edges()
+        for i in s.edge_indices(plate):
+            (ax_, ay), (bx, by) = edges[i]
+            ax.plot([ax_ * 1e3, bx * 1e3], [ay * 1e3, by * 1e3], **style)
+    elif isinstance(s, pl.PointSupport):
+        ax.plot(s.point[0] * 1e3, s.point[1] * 1e3, marker="^", color="magenta", mec="k", ms=8)
+    else:
+        for h in s.resolve(plate):
+            r = (s.washer_diameter or h.diameter) / 2
+            th = np.linspace(0, 2 * np.pi, 49)
+            ax.plot((h.center[0] + r * np.cos(th)) * 1e3, (h.center[1] + r * np.sin(th)) * 1e3, **style)
+
+
+def _figures(c: PlateFEA, results: list[CheckResult]) -> list[tuple[str, Any]]:
+    gov = next((r for r in results if r.check == "plate_stress"), None) or next(iter(results), None)
+    if gov is None or gov.load_case not in c.solved:
+        return []
+    model, res = c.solved[gov.load_case]
+    vm, k = res.max_von_mises, int(res.max_von_mises.node)
+    caption = (f"{c.name}, load case '{gov.load_case}': von Mises stress at the plate surfaces (largest "
+               f"{fmt(vm.value, 'MPa')} at {_mm(res.points[k, :2])}, ★) and deflection (largest "
+               f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
+    return [(caption, plate_figure(c, res, gov.load_case))]
+
+
+PLATE_FEA = REGISTRY.register(ComponentType(
+    name="plate_fea",
+    doc="A flat plate of any outline (rectangle or polygon) with bolt holes and cut-outs, solved by plate-bending "
+        "FEA (Kirchhoff, Morley triangles): supports on edges, points or hole rims (fixed or pinned); point "
+        "forces and moments, patch loads, pressure and self-weight per load case.",
+    fields=(
+        Field("width", "length", "side along x of a rectangular plate (lower-left corner at the origin)"),
+        Field("height", "length", "side along y of a rectangular plate"),
+        Field("outline", "list", "outline polygon instead of width/height: points \"x, y\" (edge i runs from point i "
+                                 "to point i+1)", item="str"),
+        Field("unit", "str", "unit of bare numbers in points \"x, y\"", default="mm"),
+        Field("thickness", "length", "plate thickness", required=True),
+        Field("material", "material", "plate material (E, nu, yield strength; density for self-weight)",
+              required=True),
+        Field("holes", "list", "hole groups: {name, diameter, centers = [\"x, y\", ...]}; the holes of a group of "
+                               "several are named <name>_1, <name>_2, ...", item="table"),
+        Field("cutouts", "list", "cut-outs: {center = \"x, y\", size = \"dx, dy\", corner_radius} (a rectangle) or "
+                                 "{polygon = [\"x, y\", ...]}", item="table"),
+        Field("supports", "list", "supports: {edges = \"all\" | [indices or bottom/right/top/left] | point = \"x, y\" "
+                                  "| holes = \"all\" | [group or hole names], type = fixed | pinned, "
+                                  "washer_diameter}", required=True, item="table"),
+        Field("mesh_size", "length", "element size (default: shorter side / 16)"),
+        Field("hole_mesh_size", "length", "element size at holes and cut-outs (default: mesh_size / 3)"),
+        Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span "
+                                         "(default: requirements.deflection_limit)"),
+        Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
+        Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
+    ),
+    build=lambda p, ctx: _build(p, ctx),
+    loads=(
+        Field("point_loads", "list", "concentrated loads: {at = \"x, y\", force (along +z), moment_x, moment_y}",
+              item="table"),
+        Field("patch_loads", "list", "loads spread over a patch: {center = \"x, y\", size = \"dx, dy\" | polygon = "
+                                     "[points], force (total) | pressure} (along +z)", item="table"),
+        Field("pressure", "pressure", "uniform pressure over the whole plate (along +z)"),
+        Field("self_weight", "bool", "add the plate's weight rho g t (requirements.g) along -z"),
+    ),
+    checks=(
+        CheckSpec("stress", lambda c, loads, ctx: _stress(c, loads, ctx), "Plate bending stress (FEA)",
+                  needs=("point_loads|patch_loads|pressure|self_weight",), sf_kind="static",
+                  explain="Largest von Mises stress of the bending stresses sigma = 6 M / t^2 at the plate surfaces "
+                          "(Kirchhoff plate FEA, Morley triangles) against the yield strength; Timoshenko & "
+                          "Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."),
+        CheckSpec("deflection", lambda c, loads, ctx: _deflection(c, loads, ctx), "Plate deflection (FEA)",
+                  needs=("point_loads|patch_loads|pressure|self_weight",), sf_kind="deflection",
+                  explain="Largest deflection of the plate (Kirchhoff plate FEA) against the limit: a length, "
+                          "'L/250' or a fraction of the span (requirements.deflection_limit by default)."),
+    ),
+    figures=_figures,
+))
