@@ -8,10 +8,12 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import fea_vs_calculix
+import report_generation
 
 
 def main() -> None:
     fea_vs_calculix.main([])
+    report_generation.main([])
 
 
 if __name__ == "__main__":

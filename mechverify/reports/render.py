@@ -89,8 +89,10 @@ def _material_view(m: Material) -> dict[str, Any]:
 def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
     from mechverify.design.outputs import file_hashes
 
+    ordered = rs.sorted()
+    views = {id(r): _check_view(r) for r in ordered}  # each figure and formula rendered once
     by_comp: dict[str, list[CheckResult]] = {}
-    for r in rs.sorted():
+    for r in ordered:
         by_comp.setdefault(r.component, []).append(r)
     comps, mats = [], {}
     entries = getattr(design, "data", None)
@@ -106,11 +108,11 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
             for caption, fig in entry.type.figures(entry.obj, [r for r in rs if r.component == name]):
                 figures.append({"caption": caption, "uri": svg_data_uri(fig)})
         comps.append({"name": name, "anchor": _anchor(name), "type": entry.type.name, "doc": entry.type.doc,
-                      "params": params, "figures": figures, "checks": [_check_view(r) for r in by_comp.get(name, [])]})
+                      "params": params, "figures": figures, "checks": [views[id(r)] for r in by_comp.get(name, [])]})
     for name in by_comp:  # results for components not declared in a design file (Python API)
         if not any(c["name"] == name for c in comps):
             comps.append({"name": name, "anchor": _anchor(name), "type": "", "doc": "", "params": [], "figures": [],
-                          "checks": [_check_view(r) for r in by_comp[name]]})
+                          "checks": [views[id(r)] for r in by_comp[name]]})
     files = list(getattr(design, "files", []) or [])
     inputs = []
     for f in files:
@@ -124,7 +126,7 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
         "description": getattr(getattr(design, "data", None), "description", ""),
         "verdict": rs.verdict.value, "counts": counts, "hashes": file_hashes(files),
         "commit": _git_commit(getattr(design, "path", None)),
-        "results": [_check_view(r) for r in rs.sorted()],
+        "results": [views[id(r)] for r in ordered],
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
         "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
     }

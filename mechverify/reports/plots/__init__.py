@@ -57,7 +57,7 @@ def svg_data_uri(fig: Any) -> str:
     import matplotlib.pyplot as plt
 
     buf = io.BytesIO()
-    with matplotlib.rc_context({"svg.fonttype": "path", "svg.hashsalt": "mechverify"}):
+    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "mechverify", "font.family": "DejaVu Sans"}):
         fig.savefig(buf, format="svg", metadata={"Date": None})
     plt.close(fig)
     return "data:image/svg+xml;base64," + base64.b64encode(buf.getvalue()).decode()
