@@ -282,10 +282,15 @@ def motors(name: Annotated[str | None, typer.Argument(help="a catalogue name")] 
     from mechverify.components.motors import motor, motor_names
 
     if name:
+        from mechverify.errors import UnknownNameError
+
         try:
             item: Any = motor(name)
-        except MechverifyError:
-            item = gearhead(name)
+        except UnknownNameError:
+            try:
+                item = gearhead(name)
+            except UnknownNameError:
+                raise UnknownNameError("motor or gearhead", name, motor_names() + gearhead_names()) from None
         out.print(repr(item))
         out.print(f"source: {getattr(item, 'source', '')}")
         return

@@ -16,9 +16,7 @@ References
 
 from __future__ import annotations
 
-import functools
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from fractions import Fraction
@@ -28,8 +26,9 @@ from typing import Any
 import numpy as np
 import pint
 
+from mechverify.components.catalogue import Catalogue
 from mechverify.components.transmissions import _eta, _Reduction, effort_to_input
-from mechverify.errors import InputError, UnknownNameError
+from mechverify.errors import InputError
 from mechverify.units import fmt, from_si, to_si
 
 _DATA = Path(__file__).parent / "data" / "gearheads.toml"
@@ -168,41 +167,18 @@ def gearhead_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | Non
     return Gearhead(**d)
 
 
-def _norm(name: str) -> str:
-    return " ".join(name.lower().replace("_", " ").replace("-", " ").split())
-
-
-@functools.cache
-def _catalogue() -> tuple[dict[str, Gearhead], tuple[str, ...]]:
-    with open(_DATA, "rb") as fh:
-        data = tomllib.load(fh)
-    refs = data.get("references", {})
-    by_key: dict[str, Gearhead] = {}
-    names: list[str] = []
-    for entry in data.get("gearhead", []):
-        g = gearhead_from_dict(entry, refs)
-        for key in [g.name, *entry.get("aliases", [])]:
-            if _norm(key) in by_key:
-                raise InputError(f"gearheads.toml: name {key!r} used twice")
-            by_key[_norm(key)] = g
-            names.append(key)
-    return by_key, tuple(names)
+_CATALOGUE: Catalogue[Gearhead] = Catalogue("gearhead", _DATA, "gearhead", gearhead_from_dict)
 
 
 def gearhead(name: str | Gearhead) -> Gearhead:
     """A catalogue gearhead by name or alias (``components/data/gearheads.toml``)."""
     if not isinstance(name, str):
         return name
-    by_key, names = _catalogue()
-    hit = by_key.get(_norm(name))
-    if hit is None:
-        raise UnknownNameError("gearhead", name, names)
-    return hit
+    return _CATALOGUE.get(name)
 
 
 def gearhead_names() -> list[str]:
-    by_key, _ = _catalogue()
-    return sorted({g.name for g in by_key.values()})
+    return _CATALOGUE.names()
 
 
 __all__ = ["Gearhead", "gearhead", "gearhead_names", "gearhead_from_dict", "parse_ratio"]

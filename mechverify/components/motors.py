@@ -25,9 +25,7 @@ References
 
 from __future__ import annotations
 
-import functools
 import math
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field, fields
 from pathlib import Path
@@ -36,7 +34,8 @@ from typing import Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError, UnitError, UnknownNameError
+from mechverify.components.catalogue import Catalogue
+from mechverify.errors import InputError, UnitError
 from mechverify.units import Q, as_quantity, fmt, from_si, to_si
 
 _GRADIENT_UNIT = "rad/s/(N*m)"  # SI unit of the speed-torque gradient
@@ -498,10 +497,6 @@ Motor = DCMotor | StepperMotor | HobbyServo | GearMotor
 _TYPES: dict[str, type] = {"dc": DCMotor, "stepper": StepperMotor, "servo": HobbyServo, "gearmotor": GearMotor}
 
 
-def _norm(name: str) -> str:
-    return " ".join(name.lower().replace("_", " ").replace("-", " ").split())
-
-
 def motor_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None = None) -> Motor:
     """Build a motor from a TOML-style mapping with a ``type`` key (dc, stepper, servo, gearmotor)."""
     d = dict(d)
@@ -526,38 +521,19 @@ def motor_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None =
     return cls(**d)
 
 
-@functools.cache
-def _catalogue() -> tuple[dict[str, Motor], dict[str, str]]:
-    with open(_DATA, "rb") as fh:
-        data = tomllib.load(fh)
-    refs = data.get("references", {})
-    by_key: dict[str, Motor] = {}
-    names: dict[str, str] = {}
-    for entry in data.get("motor", []):
-        m = motor_from_dict(entry, refs)
-        for key in [m.name, *entry.get("aliases", [])]:
-            if _norm(key) in by_key:
-                raise InputError(f"motors.toml: name {key!r} used twice")
-            by_key[_norm(key)] = m
-            names[key] = m.name
-    return by_key, names
+_CATALOGUE: Catalogue[Motor] = Catalogue("motor", _DATA, "motor", motor_from_dict)
 
 
 def motor(name: str | Motor) -> Motor:
     """A catalogue motor by name or alias (``components/data/motors.toml``); unknown names get suggestions."""
     if not isinstance(name, str):
         return name
-    by_key, names = _catalogue()
-    hit = by_key.get(_norm(name))
-    if hit is None:
-        raise UnknownNameError("motor", name, names)
-    return hit
+    return _CATALOGUE.get(name)
 
 
 def motor_names() -> list[str]:
     """Primary names of all catalogue motors."""
-    by_key, _ = _catalogue()
-    return sorted({m.name for m in by_key.values()})
+    return _CATALOGUE.names()
 
 
 __all__ = ["DCMotor", "StepperMotor", "HobbyServo", "GearMotor", "Motor", "motor", "motor_names",
