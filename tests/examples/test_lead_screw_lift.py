@@ -174,3 +174,69 @@ def test_demo_writes_the_report_outside_the_example(tmp_path, capsys):
     assert demo.main(["--no-pdf", "--out", str(tmp_path)]) == 0
     assert (tmp_path / "report.html").stat().st_size > 10_000
     assert "3 fail" in capsys.readouterr().out
+
+
+# ------------------------------------------------------------------ plates: plate-bending FEA (design_plates.toml)
+PLATES = EXAMPLE / "design_plates.toml"
+AL_E, AL_NU, AL_SY = 68.9e9, 0.33, 275e6  # Inventor's default Aluminum 6061
+
+
+@pytest.fixture(scope="module")
+def plates():
+    d = mechverify.design.load(PLATES)
+    return d, d.verify()
+
+
+def test_plates_cli_exits_1_because_the_4_mm_arm_plate_fails(capsys):
+    assert main(["check", str(PLATES)]) == 1
+    assert "2 fail" in capsys.readouterr().out
+
+
+def test_plate_results_scale_as_kirchhoff_theory_and_exceed_the_nominal_bounds(plates):
+    """Kirchhoff plate theory (Timoshenko & Woinowsky-Krieger 2nd ed., ch. 4): with loads independent of t,
+    M does not depend on t, sigma = 6 M / t^2 and w ~ 1/D ~ 1/t^3; so the arm plate at 4 and 6 mm (same mesh,
+    moment couples only) must give sigma ratio (6/4)^2 = 2.25 and deflection ratio (6/4)^3 = 3.375.
+    Nominal lower bounds on the peak: the arm's 48 N m twisting the 160 mm plate strip, tau = T/Wt with
+    Wt = k2 b t^2 (Timoshenko & Goodier Sec. 109; b/t = 26.7: k2 = (1 - 0.630 t/b)/3 to 0.1 %),
+    sigma_vM = sqrt(3) tau; the base plate's mean stress across the mid-section 6 (P a / 4) / (b t^2) with
+    P = 380 N on four corner supports (statics)."""
+    _, rs = plates
+    s4, s6 = (rs.get(f"arm_plate_{t}", "plate_stress").demand.m_as("Pa") for t in (4, 6))
+    w4, w6 = (rs.get(f"arm_plate_{t}", "plate_deflection").demand.m_as("m") for t in (4, 6))
+    assert s4 / s6 == pytest.approx(2.25, rel=1e-3)
+    assert w4 / w6 == pytest.approx(3.375, rel=1e-3)
+    for t, s in ((4e-3, s4), (6e-3, s6)):
+        b = 0.160
+        wt = (1 - 0.630 * t / b) / 3 * b * t**2
+        assert s > math.sqrt(3) * 48.0 / wt
+    for t in (8e-3, 6e-3):
+        sb = rs.get(f"base_plate_{round(t * 1e3)}", "plate_stress").demand.m_as("Pa")
+        assert sb > 6 * (380 * 0.450 / 4) / (0.400 * t**2)
+    # the document's 6 mm arm-plate SF 2.75 and base-plate deflections 0.17 / 0.39 mm (Figs. 28, 31, 33)
+    assert AL_SY / s6 == pytest.approx(2.75, rel=0.05)
+    assert rs.get("base_plate_8", "plate_deflection").demand.m_as("mm") == pytest.approx(0.17, rel=0.05)
+    assert rs.get("base_plate_6", "plate_deflection").demand.m_as("mm") == pytest.approx(0.39, rel=0.06)
+
+
+def test_arm_plate_as_a_cantilever_lies_between_beam_and_plate_strip_theory(tmp_path):
+    """The arm plate (335 x 160 x 4 mm) clamped along its long bottom edge, 50 N along its top edge (a 5 mm
+    strip, lever L = 157.5 mm). Its tip deflection must lie between the beam (E I, free anticlastic bending)
+    and the plate-strip value (cylindrical bending, D = E t^3 / 12 (1 - nu^2)): Shigley 10th ed. Table A-9-1
+    y = F L^3 / (3 E I), I = b t^3 / 12, times (1 - nu^2) for the strip (Timoshenko & Woinowsky-Krieger ch. 1).
+    At the clamped root the edge cannot curve along itself, so sigma_x = nu sigma_y there with the mean
+    sigma_y = 6 F L / (b t^2): von Mises (Shigley Eq. 5-13) sigma_y sqrt(1 - nu + nu^2) is a lower bound on the
+    peak."""
+    body = (PLATES.read_text().split("[components.arm_plate_4]")[0]
+            + '[components.c]\ntype = "plate_fea"\nwidth = "335 mm"\nheight = "160 mm"\nthickness = "4 mm"\n'
+              'material = "Inventor Aluminum 6061"\nsupports = [{ edges = ["bottom"], type = "fixed" }]\n'
+              'mesh_size = "10 mm"\n[load_cases.tip.c]\n'
+              'patch_loads = [{ center = "167.5, 157.5", size = "335, 5", force = "-50 N" }]\n')
+    p = tmp_path / "c.toml"
+    p.write_text(body)
+    rs = mechverify.design.load(p).verify()
+    b, t, lever, force = 0.335, 4e-3, 0.1575, 50.0
+    y_beam = force * lever**3 / (3 * AL_E * b * t**3 / 12)
+    y = rs.get("c", "plate_deflection").demand.m_as("m")
+    assert y_beam * (1 - AL_NU**2) < y < y_beam
+    sigma_root = 6 * force * lever / (b * t**2)
+    assert rs.get("c", "plate_stress").demand.m_as("Pa") > sigma_root * math.sqrt(1 - AL_NU + AL_NU**2)

@@ -414,6 +414,11 @@ def _nearest_feature(c: PlateFEA, model: pl.PlateModel, xy: np.ndarray) -> str:
         if isinstance(ld, pl.PointLoad):
             cands.append((float(np.hypot(*(xy - np.asarray(ld.point)))), f"at point load {i}"))
     for s in model.supports:
+        if isinstance(s, pl.HoleSupport) and s.washer_diameter:
+            for hole in s.resolve(c.plate):
+                cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - s.washer_diameter / 2),
+                              f"at the edge of the washer (d = {s.washer_diameter * 1e3:.4g} mm) of hole "
+                              f"{hole.name!r}"))
         if isinstance(s, pl.PointSupport):
             cands.append((float(np.hypot(*(xy - np.asarray(s.point)))), f"at the point support {_mm(s.point)}"))
     d, what = min(cands, key=lambda x: x[0])
@@ -518,7 +523,7 @@ def plate_figure(c: PlateFEA, res: FieldResults, case: str) -> Any:
     fields = ((res.von_mises.m_as("MPa"), "von Mises stress at the surfaces [MPa]", "turbo", True),
               (res.u[:, 2] * 1e3, "deflection w [mm]", "viridis", False))
     for ax, (vals, label, cmap, is_stress) in zip(axes, fields, strict=True):
-        cs = ax.tripcolor(tri, vals, shading="gouraud", cmap=cmap)
+        cs = ax.tripcolor(tri, vals, shading="gouraud", cmap=cmap, rasterized=True)
         k = int(np.argmax(vals if is_stress else np.abs(vals)))
         for ring in (c.plate.region.exterior, *c.plate.region.interiors):
             rx, ry = np.asarray(ring.coords).T * 1e3
