@@ -35,6 +35,11 @@ def import_gmsh() -> Any:
     return gmsh
 
 
+def contiguous(p: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Points and cells in C order, as scikit-fem wants them (it copies and warns otherwise)."""
+    return np.ascontiguousarray(p, dtype=float), np.ascontiguousarray(t)
+
+
 def orient(p: np.ndarray, t: np.ndarray) -> np.ndarray:
     """Tetrahedra with positive volume (vertices 1 and 2 swapped where negative); degenerate ones rejected."""
     t = np.array(t, dtype=np.int64, copy=True)
@@ -103,7 +108,7 @@ def from_arrays(points: Any, tetrahedra: Any, named: Mapping[str, Any] | None = 
     if t.min() < 0 or t.max() >= p.shape[1]:
         raise InputError("from_arrays: tetrahedra refer to points that do not exist")
     nm = {k: np.sort(np.asarray(v, np.int64).reshape(-1, 3), axis=1) for k, v in (named or {}).items()}
-    return SolidMesh(MeshTet(p, orient(p, t)), nm)
+    return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), nm)
 
 
 def box(size: Any, divisions: tuple[int, int, int], origin: Any = ("0 m", "0 m", "0 m")) -> SolidMesh:
@@ -121,7 +126,7 @@ def box(size: Any, divisions: tuple[int, int, int], origin: Any = ("0 m", "0 m",
     axes = [np.linspace(o[i], o[i] + L[i], int(divisions[i]) + 1) for i in range(3)]
     m = MeshTet.init_tensor(*axes)
     t = orient(m.p, m.t)
-    m = MeshTet(m.p, t)
+    m = MeshTet(*contiguous(m.p, t))
     named = {}
     bf = m.boundary_facets()
     fp = m.p[:, m.facets[:, bf]]  # 3, 3(vertex), k
@@ -158,7 +163,7 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
                 tris.append(remap[index[ent_nodes[0].astype(np.int64)]].reshape(-1, 3))
         if tris:
             named[name] = np.sort(np.vstack(tris), axis=1)
-    return SolidMesh(MeshTet(p, orient(p, t)), named)
+    return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), named)
 
 
 def gmsh_session(gmsh: Any, mesh_size: float) -> None:

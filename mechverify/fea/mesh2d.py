@@ -13,7 +13,7 @@ import numpy as np
 from skfem import MeshTri
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.mesh import gmsh_session, import_gmsh
+from mechverify.fea.mesh import contiguous, gmsh_session, import_gmsh
 
 
 def orient_triangles(p: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -45,7 +45,7 @@ def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float
     t1 = np.where(flip, np.stack([a, b, d]), np.stack([a, b, c]))
     t2 = np.where(flip, np.stack([b, c, d]), np.stack([a, c, d]))
     t = np.hstack([t1.reshape(3, -1), t2.reshape(3, -1)])
-    return MeshTri(p, orient_triangles(p, t))
+    return MeshTri(*contiguous(p, orient_triangles(p, t)))
 
 
 def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri:
@@ -105,4 +105,4 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
     remap[used] = np.arange(used.size)
     p = coords.reshape(-1, 3).T[:2, used]
     t = remap[t]
-    return MeshTri(p, orient_triangles(p, t))
+    return MeshTri(*contiguous(p, orient_triangles(p, t)))

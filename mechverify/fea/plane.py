@@ -70,7 +70,8 @@ class PlaneModel:
         object.__setattr__(self, "material", _as_material(self.material))
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "loads", tuple(self.loads))
-        object.__setattr__(self, "mesh", MeshTri(self.mesh.p, mesh2d.orient_triangles(self.mesh.p, self.mesh.t)))
+        oriented = mesh2d.orient_triangles(self.mesh.p, self.mesh.t)
+        object.__setattr__(self, "mesh", MeshTri(*mesh2d.contiguous(self.mesh.p, oriented)))
 
     @cached_property
     def basis(self) -> Basis:
