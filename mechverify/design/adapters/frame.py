@@ -23,6 +23,7 @@ from mechverify.checks import members as mc
 from mechverify.checks.fatigue import fatigue_field_check
 from mechverify.checks.result import CheckResult
 from mechverify.components.sections import Section
+from mechverify.design.adapters.common import inline_table
 from mechverify.design.adapters.members import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS, build_section
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
@@ -82,24 +83,8 @@ def _vec(v: Any, dim: str, path: str) -> list[Any]:
     return [as_quantity(c, dim, f"{path}[{i}]") for i, c in enumerate(v)]
 
 
-def _table(v: Any, path: str, keys: tuple[str, ...], required: tuple[str, ...] = ()) -> dict[str, Any]:
-    if not isinstance(v, dict):
-        raise InputError(f"{path}: expected a table, got {v!r}")
-    for k in v:
-        if k not in keys:
-            from mechverify.errors import suggest
-
-            hint = suggest(k, keys, 1)
-            raise InputError(f"{path}.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint else
-                                                           f" (allowed: {', '.join(keys)})"))
-    for k in required:
-        if k not in v:
-            raise InputError(f"{path}.{k}: missing")
-    return v
-
-
 def _section_table(t: Any, path: str) -> Section:
-    t = _table(t, path, ("kind", *SECTION_DIMENSIONS), ("kind",))
+    t = inline_table(t, path, ("kind", *SECTION_DIMENSIONS), ("kind",))
     kind = t["kind"]
     if kind not in (*SECTION_KINDS, *SECTION_ALIASES):
         raise InputError(f"{path}.kind: expected one of {', '.join(SECTION_KINDS)}, got {kind!r}")
@@ -120,7 +105,7 @@ def _members(p: dict[str, Any], ctx: dict[str, Any]) -> list[Member]:
     out = []
     for i, t in enumerate(p["members"]):
         path = f"members[{i}]"
-        t = _table(t, path, ("name", "start", "end", "section", "material", "orientation", "theory", "divisions"),
+        t = inline_table(t, path, ("name", "start", "end", "section", "material", "orientation", "theory", "divisions"),
                    ("start", "end"))
         if "section" in t:
             sec = _section_table(t["section"], f"{path}.section")
@@ -158,7 +143,7 @@ def _supports(p: dict[str, Any]) -> list[Support]:
     out = []
     for i, t in enumerate(p.get("supports", [])):
         path = f"supports[{i}]"
-        t = _table(t, path, ("at", "type", "direction", "hold", "springs"), ("at",))
+        t = inline_table(t, path, ("at", "type", "direction", "hold", "springs"), ("at",))
         kind = t.get("type", "fixed")
         springs = t.get("springs", {})
         if not isinstance(springs, dict):
@@ -175,7 +160,7 @@ def _hinges(p: dict[str, Any]) -> list[Hinge]:
     out = []
     for i, t in enumerate(p.get("hinges", [])):
         path = f"hinges[{i}]"
-        t = _table(t, path, ("at", "axis"), ("at",))
+        t = inline_table(t, path, ("at", "axis"), ("at",))
         try:
             out.append(Hinge(_where(t["at"], f"{path}.at"), t.get("axis", "z")))
         except MechverifyError as exc:
@@ -188,7 +173,7 @@ def _loads(loads: Mapping[str, Any], case: str, comp: str, g: Any) -> list[Any]:
     out: list[Any] = []
     for i, t in enumerate(loads.get("point_loads", [])):
         path = f"{base}.point_loads[{i}]"
-        t = _table(t, path, ("at", "force", "moment"), ("at",))
+        t = inline_table(t, path, ("at", "force", "moment"), ("at",))
         if "force" not in t and "moment" not in t:
             raise InputError(f"{path}: give force and/or moment")
         out.append(PointLoad(_where(t["at"], f"{path}.at"),
@@ -196,7 +181,7 @@ def _loads(loads: Mapping[str, Any], case: str, comp: str, g: Any) -> list[Any]:
                              _vec(t["moment"], "torque", f"{path}.moment") if "moment" in t else None))
     for i, t in enumerate(loads.get("distributed_loads", [])):
         path = f"{base}.distributed_loads[{i}]"
-        t = _table(t, path, ("member", "load", "axes"), ("member", "load"))
+        t = inline_table(t, path, ("member", "load", "axes"), ("member", "load"))
         try:
             out.append(DistributedLoad(str(t["member"]), _vec(t["load"], "force_per_length", f"{path}.load"),
                                        t.get("axes", "global")))

@@ -32,6 +32,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
+from mechverify.design.adapters.common import inline_table
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, suggest
 from mechverify.fea.plate import solve_plate
@@ -112,20 +113,6 @@ def _si(pt: tuple[Any, Any]) -> tuple[float, float]:
     return pt[0].m_as("m"), pt[1].m_as("m")
 
 
-def _table(v: Any, path: str, keys: tuple[str, ...], required: tuple[str, ...] = ()) -> dict[str, Any]:
-    if not isinstance(v, dict):
-        raise InputError(f"{path}: expected a table, got {v!r}")
-    for k in v:
-        if k not in keys:
-            hint = suggest(k, keys, 1)
-            raise InputError(f"{path}.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint else
-                                                           f" (allowed: {', '.join(keys)})"))
-    for k in required:
-        if k not in v:
-            raise InputError(f"{path}.{k}: missing")
-    return v
-
-
 def _q(v: Any, dim: str, path: str) -> Any:
     if isinstance(v, bool) or not isinstance(v, str):
         raise InputError(f"{path}: expected a {dim.replace('_', ' ')} as a string with units, got {v!r}")
@@ -147,7 +134,7 @@ def _holes(p: Mapping[str, Any], unit: str, shell: ShapelyPolygon) -> tuple[list
     groups: dict[str, list[str]] = {}
     for g, t in enumerate(p.get("holes", [])):
         path = f"holes[{g}]"
-        t = _table(t, path, ("name", "diameter", "centers"), ("diameter", "centers"))
+        t = inline_table(t, path, ("name", "diameter", "centers"), ("diameter", "centers"))
         d = _positive(t["diameter"], "length", f"{path}.diameter")
         name = str(t.get("name", f"hole{g + 1}"))
         if name in groups:
@@ -173,7 +160,7 @@ def _cutouts(p: Mapping[str, Any], unit: str, shell: ShapelyPolygon) -> list[Any
     out = []
     for i, t in enumerate(p.get("cutouts", [])):
         path = f"cutouts[{i}]"
-        t = _table(t, path, ("center", "size", "corner_radius", "polygon"))
+        t = inline_table(t, path, ("center", "size", "corner_radius", "polygon"))
         if ("polygon" in t) == ("center" in t):
             raise InputError(f"{path}: give either polygon = [points] or center and size (a rectangle)")
         if "polygon" in t:
@@ -208,7 +195,7 @@ def _supports(p: Mapping[str, Any], plate: pl.Plate, groups: dict[str, list[str]
     n_edges = len(plate.outline)
     for i, t in enumerate(p["supports"]):
         path = f"supports[{i}]"
-        t = _table(t, path, ("edges", "point", "holes", "type", "washer_diameter"))
+        t = inline_table(t, path, ("edges", "point", "holes", "type", "washer_diameter"))
         where = [k for k in ("edges", "point", "holes") if k in t]
         if len(where) != 1:
             raise InputError(f"{path}: give exactly one of edges, point or holes")
@@ -286,7 +273,7 @@ def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
     out: list[Any] = []
     for i, t in enumerate(loads.get("point_loads", [])):
         path = f"{base}.point_loads[{i}]"
-        t = _table(t, path, ("at", "force", "moment_x", "moment_y"), ("at",))
+        t = inline_table(t, path, ("at", "force", "moment_x", "moment_y"), ("at",))
         if not any(k in t for k in ("force", "moment_x", "moment_y")):
             raise InputError(f"{path}: give force and/or moment_x, moment_y")
         kw = {"force": _q(t.get("force", "0 N"), "force", f"{path}.force"),
@@ -298,7 +285,7 @@ def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
             raise InputError(f"{path}: {exc}") from None
     for i, t in enumerate(loads.get("patch_loads", [])):
         path = f"{base}.patch_loads[{i}]"
-        t = _table(t, path, ("center", "size", "polygon", "force", "pressure"))
+        t = inline_table(t, path, ("center", "size", "polygon", "force", "pressure"))
         if ("force" in t) == ("pressure" in t):
             raise InputError(f"{path}: give exactly one of force (total) or pressure")
         if ("polygon" in t) == ("center" in t):
