@@ -27,7 +27,7 @@ import numpy as np
 import pint
 
 from mechverify.components.catalogue import Catalogue
-from mechverify.components.transmissions import _eta, _Reduction, effort_to_input
+from mechverify.components.transmissions import _Reduction, effort_to_input
 from mechverify.errors import InputError
 from mechverify.units import fmt, from_si, to_si
 
@@ -109,10 +109,7 @@ class Gearhead(_Reduction):
             raise InputError(f"gearhead {n!r}: give ratio or stage_ratios")
         object.__setattr__(self, "stage_ratios", stage)
         object.__setattr__(self, "ratio", ratio)
-        eta = _eta(self.efficiency, f"{n}.efficiency")
-        object.__setattr__(self, "efficiency", eta)
-        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
-                           _eta(self.backdrive_efficiency, f"{n}.backdrive_efficiency", allow_negative=True))
+        self._set_efficiencies(negative_backdrive=True)
         dims = {"continuous_torque": "torque", "intermittent_torque": "torque", "max_input_speed": "angular_velocity",
                 "max_input_speed_intermittent": "angular_velocity", "inertia": "inertia", "backlash": "angle"}
         for f, d in dims.items():
@@ -132,7 +129,6 @@ class Gearhead(_Reduction):
 
     ratio_si = property(lambda self: self.ratio)
     efficiency_forward = property(lambda self: self.efficiency)
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
         return effort_to_input(effort_out, direction, self.ratio, self.efficiency, self.backdrive_efficiency)

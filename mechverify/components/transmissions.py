@@ -88,6 +88,22 @@ class Stage(Protocol):
 class _Reduction:
     """Shared behaviour: a fixed ratio with forward and back-drive efficiencies."""
 
+    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.m_as("kg*m**2")))
+
+    def _set_inertia(self) -> None:
+        """``inertia`` (None or any inertia unit) as a quantity in SI, checked."""
+        if self.inertia is not None:
+            object.__setattr__(self, "inertia", from_si(to_si(self.inertia, "inertia", f"{self.name}.inertia"),
+                                                        "inertia"))
+
+    def _set_efficiencies(self, *, negative_backdrive: bool = False) -> None:
+        """``efficiency`` in (0, 1]; ``backdrive_efficiency`` defaults to it (may be negative: self-locking)."""
+        eta = _eta(self.efficiency, f"{self.name}.efficiency")
+        object.__setattr__(self, "efficiency", eta)
+        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
+                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency",
+                                allow_negative=negative_backdrive))
+
     def input_speed(self, output_speed: Any) -> pint.Quantity:
         """ω_in = r·v_out."""
         v = to_si(output_speed, "velocity" if self.output_kind == "length" else "angular_velocity", "output_speed")
@@ -128,12 +144,10 @@ class DirectDrive(_Reduction):
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "efficiency", _eta(self.efficiency, f"{self.name}.efficiency"))
-        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
-            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+        self._set_inertia()
 
     ratio_si = property(lambda self: 1.0)
     efficiency_forward = property(lambda self: self.efficiency)
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
         return effort_to_input(effort_out, direction, 1.0, self.efficiency, self.efficiency)
@@ -171,16 +185,11 @@ class BeltDrive(_Reduction):
         if isinstance(self.driver, int | float) != isinstance(self.driven, int | float):
             raise InputError(f"{self.name}: give both pulleys as diameters or both as tooth counts")
         object.__setattr__(self, "_ratio", b / a)
-        eta = _eta(self.efficiency, f"{self.name}.efficiency")
-        object.__setattr__(self, "efficiency", eta)
-        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
-                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency"))
-        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
-            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+        self._set_efficiencies()
+        self._set_inertia()
 
     ratio_si = property(lambda self: self._ratio)
     efficiency_forward = property(lambda self: self.efficiency)
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
         return effort_to_input(effort_out, direction, self._ratio, self.efficiency, self.backdrive_efficiency)
@@ -207,16 +216,11 @@ class Drum(_Reduction):
         if d <= 0:
             raise InputError(f"{self.name}.diameter: must be positive")
         object.__setattr__(self, "diameter", from_si(d, "length"))
-        eta = _eta(self.efficiency, f"{self.name}.efficiency")
-        object.__setattr__(self, "efficiency", eta)
-        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
-                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency"))
-        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
-            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+        self._set_efficiencies()
+        self._set_inertia()
 
     ratio_si = property(lambda self: 2.0 / float(self.diameter.magnitude))
     efficiency_forward = property(lambda self: self.efficiency)
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
         return effort_to_input(effort_out, direction, self.ratio_si, self.efficiency, self.backdrive_efficiency)
@@ -256,13 +260,11 @@ class ScrewDrive(_Reduction):
         object.__setattr__(self, "_lead", lead)
         object.__setattr__(self, "_eta_f", lead / (2 * math.pi * k_raise))
         object.__setattr__(self, "_eta_b", -2 * math.pi * k_lower / lead)
-        object.__setattr__(self, "inertia", None if self.inertia is None else from_si(
-            to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
+        self._set_inertia()
 
     ratio_si = property(lambda self: 2 * math.pi / self._lead)
     efficiency_forward = property(lambda self: self._eta_f)
     backdrive_efficiency = property(lambda self: self._eta_b)
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.magnitude))
 
     @property
     def self_locking(self) -> bool:
