@@ -166,6 +166,26 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
     return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), named)
 
 
+def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size_max: float, reach: float,
+                sampling: int | None = None) -> None:
+    """Grade the mesh from ``size_min`` on the given curves or surfaces to ``size_max`` at distance ``reach``.
+
+    ``entities`` is ``"CurvesList"`` or ``"SurfacesList"`` (gmsh Distance + Threshold background field).
+    """
+    f = gmsh.model.mesh.field
+    dist = f.add("Distance")
+    f.setNumbers(dist, entities, tags)
+    if sampling is not None:
+        f.setNumber(dist, "Sampling", sampling)
+    thr = f.add("Threshold")
+    f.setNumber(thr, "InField", dist)
+    f.setNumber(thr, "SizeMin", size_min)
+    f.setNumber(thr, "SizeMax", size_max)
+    f.setNumber(thr, "DistMin", 0.0)
+    f.setNumber(thr, "DistMax", reach)
+    f.setAsBackgroundMesh(thr)
+
+
 def gmsh_session(gmsh: Any, mesh_size: float) -> None:
     gmsh.initialize(interruptible=False)
     gmsh.option.setNumber("General.Terminal", 0)
@@ -257,16 +277,7 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_m
         gmsh.model.addPhysicalGroup(3, [vol])
         hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
         if hole_faces and hh < h:
-            f = gmsh.model.mesh.field
-            dist = f.add("Distance")
-            f.setNumbers(dist, "SurfacesList", hole_faces)
-            thr = f.add("Threshold")
-            f.setNumber(thr, "InField", dist)
-            f.setNumber(thr, "SizeMin", hh)
-            f.setNumber(thr, "SizeMax", h)
-            f.setNumber(thr, "DistMin", 0.0)
-            f.setNumber(thr, "DistMax", 3 * h)
-            f.setAsBackgroundMesh(thr)
+            refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
             gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
         gmsh.model.mesh.generate(3)
         return from_gmsh_model(gmsh)

@@ -13,7 +13,7 @@ import numpy as np
 from skfem import MeshTri
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.mesh import contiguous, gmsh_session, import_gmsh
+from mechverify.fea.mesh import contiguous, gmsh_session, import_gmsh, refine_near
 
 
 def orient_triangles(p: np.ndarray, t: np.ndarray) -> np.ndarray:
@@ -80,17 +80,7 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
         geo.addPlaneSurface([outer, *inner])
         geo.synchronize()
         if hole_lines and hole_size < size:
-            f = gmsh.model.mesh.field
-            dist = f.add("Distance")
-            f.setNumbers(dist, "CurvesList", hole_lines)
-            f.setNumber(dist, "Sampling", 20)
-            thr = f.add("Threshold")
-            f.setNumber(thr, "InField", dist)
-            f.setNumber(thr, "SizeMin", hole_size)
-            f.setNumber(thr, "SizeMax", size)
-            f.setNumber(thr, "DistMin", 0.0)
-            f.setNumber(thr, "DistMax", 4 * size)
-            f.setAsBackgroundMesh(thr)
+            refine_near(gmsh, "CurvesList", hole_lines, hole_size, size, 4 * size, sampling=20)
             gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
         gmsh.model.mesh.generate(2)
         tags, coords, _ = gmsh.model.mesh.getNodes()
