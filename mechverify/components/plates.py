@@ -601,6 +601,14 @@ def equivalent_contact_radius(r0: float, t: float) -> float:
     return math.sqrt(1.6 * r0 * r0 + t * t) - 0.675 * t if r0 < 0.5 * t else r0
 
 
+def _central_load(load: Any, load_radius: Any, t: float) -> tuple[float, float]:
+    """Magnitude of a central force [N] and Roark's equivalent radius of its contact patch [m]."""
+    r0 = to_si(load_radius, "length", "load_radius")
+    if r0 < 0:
+        raise InputError("load_radius: must be zero or positive")
+    return abs(to_si(load, "force", "load")), equivalent_contact_radius(r0, t)
+
+
 def _normalise(value: str, known: Sequence[str], aliases: dict[str, str], kind: str) -> str:
     key = str(value).strip().lower().replace("-", "_").replace(" ", "_")
     key = aliases.get(key, key)
@@ -665,11 +673,7 @@ def roark_rectangular_plate(a: Any, b: Any, thickness: Any, E: Any, load: Any, e
         if "beta_edge" in coefs:
             stresses["centre of long edge"] = coefs["beta_edge"] * abs(q) * B**2 / t**2
     else:
-        W = abs(to_si(load, "force", "load"))
-        r0 = to_si(load_radius, "length", "load_radius")
-        if r0 < 0:
-            raise InputError("load_radius: must be zero or positive")
-        r0e = equivalent_contact_radius(r0, t)
+        W, r0e = _central_load(load, load_radius, t)
         y = coefs["alpha"] * W * B**2 / (e * t**3)
         stresses["centre"] = abs(3 * W / (2 * math.pi * t**2) * ((1 + nu) * math.log(2 * B / (math.pi * r0e))
                                                                   + coefs["beta"]))
@@ -723,11 +727,7 @@ def roark_circular_plate(radius: Any, thickness: Any, E: Any, nu: Any, load: Any
             stresses["edge"] = 3 * q * a**2 / (4 * t**2)
             stresses["centre"] = 3 * (1 + v) * q * a**2 / (8 * t**2)
     else:
-        W = abs(to_si(load, "force", "load"))
-        r0 = to_si(load_radius, "length", "load_radius")
-        if r0 < 0:
-            raise InputError("load_radius: must be zero or positive")
-        r0e = equivalent_contact_radius(r0, t)
+        W, r0e = _central_load(load, load_radius, t)
         coefs["r0_equivalent"] = r0e
         if r0e >= a:
             raise ValidityError(f"load radius {r0e * 1e3:.3g} mm is not small against the plate radius")
