@@ -13,7 +13,7 @@ $(BIN)/python:
 
 $(STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[dev,mesh]'
+	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster]'
 	touch $@
 
 sysdeps:
