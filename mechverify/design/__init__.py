@@ -2,6 +2,7 @@
 
 from mechverify.design.design import CheckContext, Design, load
 from mechverify.design.loader import DesignFileError
-from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 
-__all__ = ["load", "Design", "DesignFileError", "CheckContext", "ComponentType", "CheckSpec", "Field", "REGISTRY"]
+__all__ = ["load", "Design", "DesignFileError", "CheckContext", "ComponentType", "CheckSpec", "Field", "Output",
+           "REGISTRY"]

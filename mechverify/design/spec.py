@@ -65,6 +65,33 @@ class CheckSpec:
 
 
 @dataclass(frozen=True)
+class Output:
+    """A value a component type offers to other components of the design (a connection point).
+
+    ``fn(component, loads) -> Quantity``: ``component`` is the built providing component, ``loads``
+    its resolved loads in the current load case (``None`` when the value is asked outside a load
+    case, e.g. by another component's field). ``kind`` is a dimension name of
+    :data:`mechverify.units.DIMENSIONS`; the result is checked against it. A design file refers to
+    it as ``"<component>.<name>"`` in any load value, component field or parameter expression; the
+    loader resolves the references per load case in dependency order (cycles are errors).
+    ``needs`` lists the providing component's loads the value reads (``"a|b"`` accepts either): an
+    output with ``needs`` only exists in load cases that give them.
+    """
+
+    name: str
+    kind: str
+    doc: str = ""
+    fn: Callable[[Any, Mapping[str, Any] | None], Any] | None = None
+    needs: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        if self.kind not in DIMENSIONS:
+            raise ValueError(f"Output {self.name}: kind must be a dimension name, got {self.kind!r}")
+        if self.fn is None:
+            raise ValueError(f"Output {self.name}: fn(component, loads) is required")
+
+
+@dataclass(frozen=True)
 class ComponentType:
     """A kind of component a design file can declare with ``type = "<name>"``."""
 
@@ -77,9 +104,14 @@ class ComponentType:
     section: str = "components"
     #: ``figures(component, results) -> [(caption, matplotlib Figure), ...]`` for the report.
     figures: Callable[[Any, Any], list[tuple[str, Any]]] | None = None
+    #: values other components may reference as ``"<component>.<output>"`` (see :class:`Output`).
+    outputs: tuple[Output, ...] = ()
 
     def field(self, name: str) -> Field:
         return {f.name: f for f in self.fields}[name]
+
+    def output(self, name: str) -> Output | None:
+        return next((o for o in self.outputs if o.name == name), None)
 
 
 @dataclass
