@@ -12,18 +12,54 @@ from __future__ import annotations
 
 import functools
 import inspect
+import os
 from collections.abc import Callable
-from typing import Any
+from pathlib import Path
+from typing import Any, TypeAlias
 
 import numpy as np
 import pint
 
 from mechverify.errors import InputError, UnitError
 
-ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+
+def _cache_folder() -> Path | None:
+    """Where pint keeps its parsed definitions: ``$MECHVERIFY_CACHE_DIR/pint`` or the user cache dir.
+
+    Building the registry from pint's text definitions takes ~0.2 s; from the cache ~0.04 s
+    (docs/performance.md). ``MECHVERIFY_CACHE_DIR=off`` disables it; an unwritable folder is skipped.
+    """
+    root = os.environ.get("MECHVERIFY_CACHE_DIR", "")
+    if root.lower() in ("off", "none", "0"):
+        return None
+    try:
+        if not root:
+            import platformdirs  # a dependency of pint
+
+            root = str(platformdirs.user_cache_path("mechverify", appauthor=False))
+        folder = Path(root) / f"pint-{pint.__version__}"
+        folder.mkdir(parents=True, exist_ok=True)
+        return folder if os.access(folder, os.W_OK) else None
+    except (OSError, ImportError):
+        return None
+
+
+def _make_registry() -> pint.UnitRegistry:
+    folder = _cache_folder()
+    if folder is not None:
+        try:
+            return pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=folder)
+        except Exception:  # a damaged cache file: build from the text definitions instead
+            pass
+    return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+
+
+ureg = _make_registry()
 ureg.formatter.default_format = "~P"
 ureg.formatter.default_sort_func = None  # keep units as written: N·m, not m·N
 Quantity = ureg.Quantity
+#: What public functions accept where a physical quantity is expected: a quantity or a string ("350 N").
+QuantityLike: TypeAlias = pint.Quantity | str
 
 # Units met in datasheets that pint lacks or names differently.
 # pint already has kgf, gf, ozf (force_ounce), lbf, ksi, rpm; Mpsi (spring-wire tables) it lacks.
@@ -83,12 +119,19 @@ def Q(value: Any, unit: str | None = None) -> pint.Quantity:
 
 def _parse(text: str, name: str) -> pint.Quantity:
     try:
-        q = ureg.Quantity(text.strip())
+        magnitude, units = _parse_cached(text.strip())
     except Exception as exc:  # pint raises several unrelated types for bad strings
         raise UnitError(f"{name}: cannot read {text!r} as a quantity ({exc})") from None
+    return Quantity(magnitude, units)  # a new object each time: callers may modify it
+
+
+@functools.lru_cache(maxsize=4096)
+def _parse_cached(text: str) -> tuple[Any, Any]:
+    """``"350 N"`` -> (350, <Unit N>), parsed once per distinct string (design files repeat them)."""
+    q = ureg.Quantity(text)
     if not isinstance(q, Quantity):  # a bare number in a string: "12"
-        q = Quantity(q, "dimensionless")
-    return q
+        return q, ureg.dimensionless
+    return q.magnitude, q.units
 
 
 def _describe(value: Any) -> str:
@@ -219,5 +262,5 @@ def _is_scalar(m: Any) -> bool:
     return np.ndim(m) == 0
 
 
-__all__ = ["ureg", "Quantity", "Q", "DIMENSIONS", "as_quantity", "to_si", "from_si", "si_function",
+__all__ = ["ureg", "Quantity", "QuantityLike", "Q", "DIMENSIONS", "as_quantity", "to_si", "from_si", "si_function",
            "require_positive", "fmt"]
