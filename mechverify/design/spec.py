@@ -10,7 +10,7 @@ them, and ``Design.verify()`` runs the checks. Adapters for the built-in compone
 from __future__ import annotations
 
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from mechverify.units import DIMENSIONS
@@ -62,6 +62,27 @@ class CheckSpec:
     sf_kind: str = "static"
     default: bool = True
     explain: str = ""
+    #: former design-file keys of this check under its component type (accepted with a deprecation note)
+    aliases: tuple[str, ...] = ()
+
+    @classmethod
+    def of(cls, fn: Callable[..., Any], run: Callable[..., Any], needs: tuple[str, ...] = (),
+           default: bool = True) -> CheckSpec:
+        """The spec of the registered check function ``fn`` (see :mod:`mechverify.checks.registry`).
+
+        Name, title, safety-factor class and explanation come from the registry, never restated;
+        ``run(component, loads, context)`` adapts the design file's component and loads to ``fn``.
+        The component type fills :attr:`aliases` from the registry's ``"<type>.<key>"`` aliases.
+
+        Raises:
+            ValueError: ``fn`` is not decorated with :func:`mechverify.checks.registry.check`.
+        """
+        d = getattr(fn, "check_def", None)
+        if d is None:
+            raise ValueError(f"{getattr(fn, '__qualname__', fn)!r} is not a registered check "
+                             "(decorate it with @check from mechverify.checks.registry)")
+        return cls(name=d.name, run=run, title=d.title, needs=tuple(needs), sf_kind=d.sf_kind,
+                   default=default, explain=d.explain)
 
 
 @dataclass(frozen=True)
@@ -106,6 +127,20 @@ class ComponentType:
     figures: Callable[[Any, Any], list[tuple[str, Any]]] | None = None
     #: values other components may reference as ``"<component>.<output>"`` (see :class:`Output`).
     outputs: tuple[Output, ...] = ()
+
+    def __post_init__(self) -> None:
+        from mechverify.checks.registry import CHECKS
+
+        specs = []
+        for c in self.checks:
+            d = CHECKS.get(c.name)
+            local = d.local_aliases(self.name) if d is not None else ()
+            specs.append(c if not local or c.aliases else replace(c, aliases=local))
+        object.__setattr__(self, "checks", tuple(specs))
+
+    def check(self, key: str) -> CheckSpec | None:
+        """The check named ``key`` in a design file: its name, or a former key (alias) of it."""
+        return next((c for c in self.checks if key == c.name or key in c.aliases), None)
 
     def field(self, name: str) -> Field:
         return {f.name: f for f in self.fields}[name]
