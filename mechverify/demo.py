@@ -50,7 +50,7 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     os.environ.setdefault("MPLBACKEND", "Agg")
 
-    from mechverify.cli import COLOURS, err, out, results_table
+    from mechverify.cli._console import COLOURS, err, out, results_table
     from mechverify.errors import MechverifyError
 
     try:

@@ -1,0 +1,129 @@
+"""The ``mechverify`` command: check designs, diff revisions for CI, browse data, explain checks.
+
+Exit codes: 0 all checks pass, 1 a check fails (or a margin was lost, for ``diff``), 2 invalid input
+(a usage error, an invalid design file, a refused output path), 3 an internal error (a bug).
+
+Structure (standard-library ``argparse``; start-up imports nothing but the standard library, so
+``mechverify --help`` needs neither numpy nor pint nor rich):
+
+- every public module of this package (name not starting with ``_``) is a *command module*, found by
+  listing the package; it provides ``add_parser(subparsers) -> None``, which adds one or more
+  sub-commands, each ending with ``parser.set_defaults(run=run)`` where ``run(args) -> int`` returns
+  the exit code; an optional module constant ``ORDER`` (int, default 100) sorts the commands in ``--help``;
+- a command module imports only the standard library at module level; everything else (mechverify's
+  models, rich, numpy) is imported inside ``run``;
+- ``run`` raises :class:`Invalid` or any :class:`mechverify.errors.MechverifyError` for exit 2: the
+  message is printed without a traceback;
+- helpers: :mod:`mechverify.cli._console` (rich consoles and the results table, imported lazily),
+  :mod:`mechverify.cli._common` (argument helpers, output-path validation before any check runs).
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import pkgutil
+import signal
+import sys
+from types import ModuleType
+
+EXIT_PASS, EXIT_FAIL, EXIT_INVALID, EXIT_BUG = 0, 1, 2, 3
+
+
+class Invalid(Exception):
+    """Raised inside commands for exit status 2 with a message."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with usage errors as exit status 2 (argparse's own convention) and full option names."""
+
+    def __init__(self, *args, **kwargs):
+        kwargs.setdefault("formatter_class", _Formatter)
+        super().__init__(*args, **kwargs)
+
+
+class _Formatter(argparse.HelpFormatter):
+    """Help wrapped to the terminal's width (``COLUMNS`` or the terminal; argparse's default) with the
+    column of option names wide enough for the longest name, so that no name is cut."""
+
+    def __init__(self, prog: str, **kwargs):
+        kwargs.setdefault("max_help_position", 32)
+        super().__init__(prog, **kwargs)
+
+
+def command_modules() -> list[ModuleType]:
+    """The command modules of this package, in ``--help`` order."""
+    mods = [importlib.import_module(f"{__name__}.{m.name}") for m in pkgutil.iter_modules(__path__)
+            if not m.name.startswith("_")]
+    return sorted(mods, key=lambda m: (getattr(m, "ORDER", 100), m.__name__))
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="mechverify", description="Verify the mechanical design of small machines and robots.",
+                     epilog="Exit status: 0 all checks pass, 1 a check fails, 2 invalid input. "
+                            "'mechverify COMMAND --help' describes a command.")
+    parser.add_argument("--version", action="version", version=f"mechverify {_version()}")
+    sub = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=_Parser)
+    for mod in command_modules():
+        mod.add_parser(sub)
+    return parser
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("mechverify")
+    except PackageNotFoundError:
+        return "0.0.0+source"
+
+
+def _on_sigterm(signum, frame):
+    # turn SIGTERM into an exception so that temporary files and folders are removed on the way out
+    raise SystemExit(128 + signum)
+
+
+def error(message: str) -> None:
+    """Print ``error: message`` on stderr (no rich: also used before anything heavy is imported)."""
+    sys.stderr.write(f"error: {message}\n")
+    sys.stderr.flush()
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point: parse, run the command, turn every error into a message and an exit status."""
+    parser = build_parser()
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv:
+        parser.print_help(sys.stderr)
+        return EXIT_INVALID
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as exc:  # --help, --version (0) and usage errors (2)
+        return exc.code if isinstance(exc.code, int) else EXIT_INVALID
+    if getattr(args, "run", None) is None:
+        parser.print_help(sys.stderr)
+        return EXIT_INVALID
+    previous = None
+    try:
+        previous = signal.signal(signal.SIGTERM, _on_sigterm)
+    except ValueError:  # not the main thread
+        pass
+    from mechverify.errors import MechverifyError
+
+    try:
+        return int(args.run(args) or 0)
+    except (Invalid, MechverifyError) as exc:
+        error(str(exc))
+        return EXIT_INVALID
+    except KeyboardInterrupt:
+        error("interrupted")
+        return 130
+    except BrokenPipeError:  # `mechverify materials | head`
+        return EXIT_PASS
+    except Exception as exc:  # anything unforeseen is a bug: say so, without a traceback
+        error(f"internal error: {type(exc).__name__}: {exc}\n"
+              "This is a bug in mechverify; please report it with the design file.")
+        return EXIT_BUG
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)

@@ -1,0 +1,109 @@
+"""Console output of the commands: rich consoles sized to the terminal, the results table.
+
+Imported by a command's ``run`` only (rich is not needed for ``--help``). Width: ``COLUMNS`` when
+set, else the terminal's width, else (output to a file or a CI log) 160 columns, wide enough for the
+results table.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import sys
+from typing import Any
+
+from rich.console import Console
+from rich.table import Table
+
+COLOURS = {"pass": "green", "warn": "yellow", "fail": "red"}
+
+
+def width(stream: Any = None) -> int | None:
+    """Columns for a console on ``stream``: ``COLUMNS``, the terminal's width, or 160 when not a terminal."""
+    columns = os.environ.get("COLUMNS", "")
+    if columns.isdigit() and int(columns) > 0:
+        return int(columns)
+    stream = stream or sys.stdout
+    try:
+        if stream.isatty():
+            return shutil.get_terminal_size().columns
+    except (AttributeError, ValueError, OSError):
+        pass
+    return 160
+
+
+def console(stderr: bool = False) -> Console:
+    """A console on the *current* sys.stdout/sys.stderr (so that tests capturing output see it)."""
+    stream = sys.stderr if stderr else sys.stdout
+    return Console(file=stream, highlight=False, width=width(stream), soft_wrap=False)
+
+
+class _Lazy:
+    """``out.print(...)``: a console on whatever sys.stdout is at the time of the call."""
+
+    def __init__(self, stderr: bool):
+        self.stderr = stderr
+
+    def print(self, *objects: Any, **kwargs: Any) -> None:
+        console(self.stderr).print(*objects, **kwargs)
+
+
+out = _Lazy(False)
+err = _Lazy(True)
+
+
+def _bar(u: float, width: int = 10) -> str:
+    filled = min(width, max(0, round(min(u, 1.0) * width)))
+    return "█" * filled + "·" * (width - filled) + ("▶" if u > 1 else " ")
+
+
+def results_table(rs: Any) -> Table:
+    """The table of one :class:`~mechverify.checks.ResultSet`, worst first."""
+    from mechverify.units import fmt
+
+    t = Table(title=rs.name, title_justify="left", show_lines=False)
+    for col, just in (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
+                      ("capacity", "right"), ("u·SF", "right"), ("", "left"), ("SF req", "right"),
+                      ("governing case", "left")):
+        t.add_column(col, justify=just)
+    for r in rs.sorted():
+        c = COLOURS[r.verdict.value]
+        fu = r.factored_utilisation
+        t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, fmt(r.demand),
+                  fmt(r.capacity), f"{fu:.3g}", f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
+    return t
+
+
+def verdict_line(rs: Any) -> str:
+    """``PASS name: 3 pass, 0 warn, 0 fail`` (rich markup)."""
+    counts = {v: sum(r.verdict.value == v for r in rs) for v in ("pass", "warn", "fail")}
+    c = COLOURS[rs.verdict.value]
+    return (f"[{c}]{rs.verdict.value.upper()}[/{c}] {rs.name}: {counts['pass']} pass, {counts['warn']} warn, "
+            f"{counts['fail']} fail")
+
+
+def combined_line(result_sets: list[Any]) -> str:
+    """One verdict over several designs: ``FAIL overall: 2 designs, 30 pass, 1 warn, 3 fail``."""
+    order = {"pass": 0, "warn": 1, "fail": 2}
+    worst = max((rs.verdict.value for rs in result_sets), key=order.__getitem__, default="pass")
+    n = {v: sum(r.verdict.value == v for rs in result_sets for r in rs) for v in order}
+    c = COLOURS[worst]
+    return (f"[{c}]{worst.upper()}[/{c}] overall: {len(result_sets)} design{'s' * (len(result_sets) != 1)}, "
+            f"{n['pass']} pass, {n['warn']} warn, {n['fail']} fail")
+
+
+def table(title: str, columns: list[str], rows: list[list[str]]) -> None:
+    """Print a simple table: first column left-aligned, the others right-aligned."""
+    t = Table(title=title, title_justify="left")
+    for c in columns:
+        t.add_column(c, justify="left" if c in columns[:1] else "right")
+    for r in rows:
+        t.add_row(*r)
+    out.print(t)
+
+
+def opt(q: Any, unit: str, digits: int = 4) -> str:
+    """A quantity in ``unit``, or ``-`` when absent."""
+    from mechverify.units import fmt
+
+    return fmt(q, unit, digits) if q is not None else "-"

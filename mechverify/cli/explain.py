@@ -1,0 +1,43 @@
+"""``mechverify explain``: formula, source and assumptions of a check."""
+
+from __future__ import annotations
+
+import argparse
+
+ORDER = 40
+
+
+def add_parser(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("explain", help="formula, source and assumptions of a check",
+                       description="Formula, source and assumptions of a check (without CHECK: list all checks).")
+    p.add_argument("check_name", nargs="?", metavar="CHECK", help="a check name, e.g. self_locking")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.table import Table
+
+    from mechverify.cli._console import out
+    from mechverify.design import REGISTRY, adapters  # noqa: F401
+    from mechverify.errors import UnknownNameError
+
+    specs = {f"{ct.name}.{c.name}": (ct, c) for ct in REGISTRY.types.values() for c in ct.checks}
+    if args.check_name is None:
+        t = Table(title="checks", title_justify="left")
+        t.add_column("check")
+        t.add_column("title")
+        for k, (_, c) in sorted(specs.items()):
+            t.add_row(k, c.title)
+        out.print(t)
+        return 0
+    name = args.check_name
+    hits = [v for k, v in specs.items() if k == name or k.split(".", 1)[1] == name]
+    if not hits:
+        raise UnknownNameError("check", name, list(specs) + [k.split(".", 1)[1] for k in specs])
+    for ct, c in hits:
+        out.print(f"[bold]{ct.name}.{c.name}[/bold] — {c.title}")
+        out.print(c.explain or "(no explanation)")
+        if c.needs:
+            out.print(f"needs from a load case: {', '.join(c.needs)}")
+        out.print(f"default safety-factor class: {c.sf_kind}\n")
+    return 0
