@@ -25,6 +25,7 @@ import importlib
 import pkgutil
 import signal
 import sys
+import warnings
 from types import ModuleType
 
 EXIT_PASS, EXIT_FAIL, EXIT_INVALID, EXIT_BUG = 0, 1, 2, 3
@@ -83,6 +84,17 @@ def _on_sigterm(signum, frame):
     raise SystemExit(128 + signum)
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None) -> None:
+    """A warning as one line, ``warning: message``, without the source line of the code that raised it."""
+    sys.stderr.write(f"warning: {message}\n")
+
+
+def _own_warning_classes() -> type[Warning]:
+    from mechverify.units import PlausibilityWarning
+
+    return PlausibilityWarning
+
+
 def error(message: str) -> None:
     """Print ``error: message`` on stderr (no rich: also used before anything heavy is imported)."""
     sys.stderr.write(f"error: {message}\n")
@@ -111,7 +123,13 @@ def main(argv: list[str] | None = None) -> int:
     from mechverify.errors import MechverifyError
 
     try:
-        return int(args.run(args) or 0)
+        with warnings.catch_warnings():
+            warnings.showwarning = _show_warning
+            if getattr(args, "quiet", False):  # -q: only mechverify's own warnings (a plausibility warning...)
+                warnings.filterwarnings("ignore")
+                warnings.filterwarnings("default", module=r"mechverify(\..*)?$")
+                warnings.filterwarnings("default", category=_own_warning_classes())
+            return int(args.run(args) or 0)
     except (Invalid, MechverifyError) as exc:
         error(str(exc))
         return EXIT_INVALID
