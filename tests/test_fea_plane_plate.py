@@ -106,3 +106,21 @@ def test_pin_load_bears_on_the_near_half_only():
     assert res.reactions.m_as("N")[:2] == pytest.approx([-1000, 0], abs=1e-6)
     with pytest.raises(InputError):
         PinLoad(Cylinder(("85 mm", "15 mm"), "4 mm"), ("0 N", "0 N"))
+
+
+def _clockwise(m):
+    a, b, c = (m.p[:, m.t[k]] for k in range(3))
+    return int(np.sum((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0))
+
+
+def test_2d_meshes_stay_counter_clockwise():
+    """Issue 26: scikit-fem's MeshTri sorts each triangle's vertices by default, which left 4 of the 8
+    triangles of rectangle(1, 1, 2, 2) clockwise (CalculiX rejects them: "nonpositive jacobian")."""
+    from skfem import MeshTri
+
+    assert _clockwise(mesh2d.rectangle(1, 1, 2, 2)) == 0
+    sorted_mesh = MeshTri(mesh2d.rectangle(1, 1, 2, 2).p, mesh2d.rectangle(1, 1, 2, 2).t)
+    assert _clockwise(sorted_mesh) == 4  # what scikit-fem does by default: the defect this guards
+    model = PlaneModel(sorted_mesh.with_boundaries({"left": lambda x: x[0] == 0}), "1 mm", "Structural Steel")
+    assert _clockwise(model.mesh) == 0
+    assert model.mesh.boundaries["left"].size == 2

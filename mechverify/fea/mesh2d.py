@@ -29,6 +29,32 @@ def orient_triangles(p: np.ndarray, t: np.ndarray) -> np.ndarray:
     return t
 
 
+def tri_mesh(p: np.ndarray, t: np.ndarray, like: MeshTri | None = None) -> MeshTri:
+    """A scikit-fem ``MeshTri`` that keeps the vertex order of ``t`` (counter-clockwise after
+    :func:`orient_triangles`).
+
+    scikit-fem sorts each triangle's vertex indices by default (``sort_t=True``), which turns about half
+    of the triangles clockwise: harmless for scikit-fem's own assembly (it uses ``|det J|``), fatal for an
+    exported mesh (CalculiX stops on a "nonpositive jacobian"). ``sort_t=False`` keeps the order. The named
+    boundaries of ``like`` (``MeshTri.boundaries``: facet index sets) are carried over by their vertices.
+    """
+    p, t = contiguous(p, t)
+    m = MeshTri(p, t, sort_t=False)
+    if like is not None and like.boundaries:
+        m = m.with_boundaries({k: _facets_of(m, like.facets[:, v]) for k, v in like.boundaries.items()})
+    return m
+
+
+def _facets_of(m: MeshTri, pairs: np.ndarray) -> np.ndarray:
+    """Facet indices of ``m`` whose vertex pairs are the columns of ``pairs``."""
+    n = m.nvertices
+    f = np.sort(m.facets, axis=0)
+    key = f[0].astype(np.int64) * n + f[1]
+    want = np.sort(pairs, axis=0)
+    k = want[0].astype(np.int64) * n + want[1]
+    return np.flatnonzero(np.isin(key, k))
+
+
 def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float, float] = (0.0, 0.0)) -> MeshTri:
     """Structured triangles on ``[x0, x0 + width] x [y0, y0 + height]`` (SI floats), ``nx x ny`` cells,
     each cut along alternating diagonals (a criss-cross-free "union jack" pattern avoids a preferred
@@ -45,7 +71,7 @@ def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float
     t1 = np.where(flip, np.stack([a, b, d]), np.stack([a, b, c]))
     t2 = np.where(flip, np.stack([b, c, d]), np.stack([a, c, d]))
     t = np.hstack([t1.reshape(3, -1), t2.reshape(3, -1)])
-    return MeshTri(*contiguous(p, orient_triangles(p, t)))
+    return tri_mesh(p, orient_triangles(p, t))
 
 
 def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri:
@@ -95,4 +121,4 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
     remap[used] = np.arange(used.size)
     p = coords.reshape(-1, 3).T[:2, used]
     t = remap[t]
-    return MeshTri(*contiguous(p, orient_triangles(p, t)))
+    return tri_mesh(p, orient_triangles(p, t))

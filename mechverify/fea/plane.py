@@ -71,7 +71,7 @@ class PlaneModel:
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "loads", tuple(self.loads))
         oriented = mesh2d.orient_triangles(self.mesh.p, self.mesh.t)
-        object.__setattr__(self, "mesh", MeshTri(*mesh2d.contiguous(self.mesh.p, oriented)))
+        object.__setattr__(self, "mesh", mesh2d.tri_mesh(self.mesh.p, oriented, self.mesh))
 
     @cached_property
     def basis(self) -> Basis:
@@ -104,8 +104,11 @@ class PlaneModel:
             raise InputError(f"{region.describe()} contains no boundary edge of the mesh")
         return nodes[sel], length[sel], normal[sel]
 
-    def load_vector(self, area: np.ndarray) -> np.ndarray:
+    def load_vector(self, area: np.ndarray | None = None) -> np.ndarray:
+        """The consistent nodal load vector ``[2n]`` [N] (node-interleaved DOFs)."""
         b = self.basis
+        if area is None:
+            area = asm.barycentric_gradients(self.mesh.p, self.mesh.t)[1]
         f = np.zeros(2 * b.N)
         fv = f.reshape(-1, 2)
         t = self.thickness

@@ -67,6 +67,9 @@ class _PlateSystem:
     """Mesh, Morley basis and the DOF bookkeeping of one plate model."""
 
     def __init__(self, model: Any, mesh: MeshTri):
+        # Morley's normal-derivative DOFs take their sign from scikit-fem's sorted vertex order, so
+        # the plate works on a sorted copy (mesh2d keeps triangles counter-clockwise, unsorted)
+        mesh = MeshTri(np.ascontiguousarray(mesh.p), np.ascontiguousarray(mesh.t))
         self.model = model
         self.plate = model.plate
         self.mesh = mesh
