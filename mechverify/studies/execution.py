@@ -1,0 +1,160 @@
+"""Running samples: one design evaluation, batches of them, and the executors that run the batches.
+
+A task is ``run_batch(doc, path, overrides_list)``: the design file's data (a plain dict) and one
+dict of key-path overrides per sample; it returns one plain record per sample (JSON-ready). No live
+objects cross a process boundary, so any :class:`concurrent.futures.Executor` works: the default
+local process pool, a thread pool, or a Dask cluster through ``distributed.Client(...).get_executor()``.
+A sample whose design is invalid or whose checks raise is recorded with its message; a batch whose
+worker dies is retried once, then its samples are reported failed.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import math
+import os
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+from mechverify.errors import MechverifyError
+from mechverify.studies.params import apply_overrides
+
+_LIMITED = False
+
+
+def one_blas_thread() -> None:
+    """Limit BLAS/OpenMP to one thread in this process (several workers share the cores)."""
+    global _LIMITED
+    if _LIMITED:
+        return
+    _LIMITED = True
+    for var in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(var, "1")
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:  # the env vars still reach BLAS libraries loaded later
+        return
+    threadpool_limits(1)
+
+
+def _finite(x: float) -> float | None:
+    return x if math.isfinite(x) else None
+
+
+def evaluate(doc: Mapping[str, Any], path: str | None, overrides: Mapping[str, Any]) -> dict[str, Any]:
+    """Verify the design with ``overrides`` applied; a plain record (never raises for a bad sample)."""
+    from mechverify.design import adapters  # noqa: F401  (registers the component types)
+    from mechverify.design.design import Design
+    from mechverify.design.loader import parse
+
+    try:
+        data = apply_overrides(doc, overrides)
+        rs = Design(parse(data, Path(path) if path else None)).verify()
+    except MechverifyError as exc:
+        return {"status": "error", "message": str(exc), "checks": {}}
+    except Exception as exc:  # (a study never stops for one sample)
+        return {"status": "error", "message": f"{type(exc).__name__}: {exc}", "checks": {}}
+    checks: dict[str, dict[str, Any]] = {}
+    for r in rs:
+        u = r.utilisation
+        checks[f"{r.component}.{r.check}"] = {"u": _finite(u), "required_sf": r.required_sf,
+                                              "fu": _finite(u * r.required_sf), "verdict": r.verdict.value}
+    return {"status": "ok", "message": "", "checks": checks}
+
+
+def run_batch(doc: Mapping[str, Any], path: str | None, overrides: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """The task sent to a worker: evaluate each sample of the batch."""
+    one_blas_thread()
+    return [evaluate(doc, path, ov) for ov in overrides]
+
+
+def default_workers() -> int:
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:  # not on Linux
+        return max(1, os.cpu_count() or 1)
+
+
+def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:
+    """A local process pool (the platform's default start method), one BLAS thread per worker."""
+    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread)
+
+
+class SerialExecutor(cf.Executor):
+    """Runs each task at once in this process (debugging, sizing, tiny studies)."""
+
+    def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> cf.Future:
+        f: cf.Future = cf.Future()
+        try:
+            f.set_result(fn(*args, **kwargs))
+        except BaseException as exc:  # (handed to the caller through the future)
+            f.set_exception(exc)
+        return f
+
+
+class SchedulerError(MechverifyError):
+    """The Dask scheduler cannot be reached (or ``distributed`` is not installed)."""
+
+
+@contextmanager
+def dask_executor(address: str, timeout: float = 10.0) -> Iterator[cf.Executor]:
+    """An executor on the Dask cluster at ``address`` (``tcp://host:8786``), closed on exit."""
+    try:
+        from distributed import Client
+    except ImportError:
+        raise SchedulerError("running on a Dask cluster needs the 'cluster' extra: "
+                             "pip install 'mechverify[cluster]'") from None
+    try:
+        client = Client(address, timeout=timeout, set_as_default=False)
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise SchedulerError(f"cannot reach the Dask scheduler at {address} within {timeout:g} s "
+                             f"({type(exc).__name__}: {exc})") from None
+    try:
+        yield client.get_executor(pure=False)
+    finally:
+        client.close()
+
+
+def run_batches(batch_fn: Callable[..., list[dict[str, Any]]], doc: Mapping[str, Any], path: str | None,
+                batches: Sequence[Sequence[Mapping[str, Any]]], executor: cf.Executor | None = None, *,
+                workers: int | None = None, retries: int = 1,
+                on_done: Callable[[int], None] | None = None) -> list[list[dict[str, Any]]]:
+    """Run every batch; results in batch order. A batch whose future fails (worker died, pool broken) is
+    resubmitted ``retries`` times, then each of its samples is recorded as failed with the reason."""
+    own = executor is None
+    ex = process_pool(workers) if own else executor
+    results: list[list[dict[str, Any]] | None] = [None] * len(batches)
+    attempts = [0] * len(batches)
+    try:
+        pending = {ex.submit(batch_fn, doc, path, list(b)): i for i, b in enumerate(batches)}
+        while pending:
+            done, _ = cf.wait(list(pending), return_when=cf.FIRST_COMPLETED)
+            retry: list[int] = []
+            for f in done:
+                i = pending.pop(f)
+                try:
+                    results[i] = f.result()
+                except Exception as exc:  # (a lost worker must not stop the study)
+                    attempts[i] += 1
+                    if attempts[i] <= retries:
+                        retry.append(i)
+                        continue
+                    msg = f"worker failed {attempts[i]} times on this batch: {type(exc).__name__}: {exc}"
+                    results[i] = [{"status": "error", "message": msg, "checks": {}} for _ in batches[i]]
+                if on_done is not None:
+                    on_done(len(batches[i]))
+            if retry:
+                if own and getattr(ex, "_broken", False):  # a dead process breaks the whole local pool
+                    ex.shutdown(wait=False, cancel_futures=True)
+                    ex = process_pool(workers)
+                    for f, i in list(pending.items()):  # futures of the broken pool will fail: resubmit them too
+                        pending.pop(f)
+                        retry.append(i)
+                for i in sorted(set(retry)):
+                    pending[ex.submit(batch_fn, doc, path, list(batches[i]))] = i
+    finally:
+        if own:
+            ex.shutdown(wait=True, cancel_futures=True)
+    return [r if r is not None else [] for r in results]

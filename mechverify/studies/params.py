@@ -1,0 +1,295 @@
+"""What a study varies: key paths into a design file's data, and the values they take.
+
+A *parameter* is a key path of the design file (``components.lift.mass``,
+``components.lift.transmission[0].mu``, ``load_cases.raise.lift_screw.axial_force``,
+``parameters.payload``) whose value in the file is a quantity string (``"35.68 kg"``) or a number.
+Values are held as plain floats in the unit the file writes (kg above) and written back as
+``"<value> <unit>"`` strings. Axes: a sweep ``START:STOP:N`` (``N`` evenly spaced values, both ends
+included) or a distribution ``normal:MEAN:SD``, ``uniform:LO:HI``, ``triangular:LO:MODE:HI``.
+A bare number in a spec takes the unit of the file's value; a number with a unit must have the
+same dimension (``UnitError`` otherwise).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from mechverify.errors import InputError, MechverifyError, UnitError, UnknownNameError
+from mechverify.units import Q, Quantity
+
+_STEP = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
+
+
+def split_path(path: str) -> list[str | int]:
+    """``"a.b[0].c"`` -> ``["a", "b", 0, "c"]``."""
+    if not isinstance(path, str) or not path.strip():
+        raise InputError(f"parameter: expected a key path such as 'components.lift.mass', got {path!r}")
+    out: list[str | int] = []
+    pos = 0
+    text = path.strip()
+    while pos < len(text):
+        if text[pos] == "." and out:
+            pos += 1
+        m = _STEP.match(text, pos)
+        if not m:
+            raise InputError(f"parameter {path!r}: not a key path (names joined by '.', list items as [i])")
+        out.append(m.group(1) if m.group(1) is not None else int(m.group(2)))
+        pos = m.end()
+    return out
+
+
+def _paths_under(node: Any, prefix: str) -> Iterable[str]:
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield from _paths_under(v, f"{prefix}.{k}" if prefix else str(k))
+    elif isinstance(node, list) and any(isinstance(x, dict) for x in node):
+        for i, v in enumerate(node):
+            yield from _paths_under(v, f"{prefix}[{i}]")
+    else:
+        yield prefix
+
+
+def _unknown(path: str, doc: Mapping[str, Any]) -> UnknownNameError:
+    return UnknownNameError("parameter (no such key in the design file)", path, list(_paths_under(doc, "")))
+
+
+def _template_of(doc: Mapping[str, Any], steps: list[str | int]) -> dict[str, Any] | None:
+    """A component's template table (``extends``) when ``steps`` is components.<name>.<key>."""
+    if len(steps) == 3 and steps[0] == "components":
+        comp = doc.get("components", {}).get(steps[1])
+        if isinstance(comp, dict) and isinstance(comp.get("extends"), str):
+            t = doc.get("templates", {}).get(comp["extends"])
+            return t if isinstance(t, dict) else None
+    return None
+
+
+def get_path(doc: Mapping[str, Any], path: str) -> Any:
+    """The value at ``path`` (a component's template value when the component does not set it)."""
+    steps = split_path(path)
+    node: Any = doc
+    for i, s in enumerate(steps):
+        if isinstance(s, int):
+            if not isinstance(node, list) or not 0 <= s < len(node):
+                raise _unknown(path, doc)
+            node = node[s]
+        else:
+            if not isinstance(node, dict):
+                raise _unknown(path, doc)
+            if s not in node:
+                tpl = _template_of(doc, steps) if i == len(steps) - 1 else None
+                if tpl is not None and s in tpl:
+                    return tpl[s]
+                raise _unknown(path, doc)
+            node = node[s]
+    return node
+
+
+def set_path(doc: dict[str, Any], path: str, value: Any) -> None:
+    """Set ``path`` in ``doc`` in place (the key must exist, or come from the component's template)."""
+    steps = split_path(path)
+    get_path(doc, path)  # raises for an unknown path
+    node: Any = doc
+    for s in steps[:-1]:
+        node = node[s]
+    node[steps[-1]] = value
+
+
+def apply_overrides(doc: Mapping[str, Any], overrides: Mapping[str, Any]) -> dict[str, Any]:
+    """A deep copy of ``doc`` with each key path set to its value."""
+    out = copy.deepcopy(dict(doc))
+    for path, value in overrides.items():
+        set_path(out, path, value)
+    return out
+
+
+# ============================================================================ parameters
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A numeric value of the design file: its key path, the file's value and unit ('' for a bare number)."""
+
+    path: str
+    base: float
+    unit: str
+    integer: bool = False
+
+    @classmethod
+    def of(cls, doc: Mapping[str, Any], path: str) -> Parameter:
+        raw = get_path(doc, path)
+        if isinstance(raw, bool) or not isinstance(raw, int | float | str):
+            raise InputError(f"parameter {path!r}: its value {raw!r} is not numeric; only numbers and quantities "
+                             "(a number with a unit, e.g. \"35 kg\") can be varied")
+        if isinstance(raw, int | float):
+            return cls(path, float(raw), "", isinstance(raw, int))
+        try:
+            q = Q(raw)
+        except MechverifyError:
+            raise InputError(f"parameter {path!r}: its value {raw!r} is not numeric; only numbers and quantities "
+                             "(a number with a unit, e.g. \"35 kg\") can be varied") from None
+        if not isinstance(q.magnitude, int | float) or isinstance(q.magnitude, bool):
+            raise InputError(f"parameter {path!r}: its value {raw!r} is not a single number")
+        unit = _unit_text(q)
+        return cls(path, float(q.magnitude), unit)
+
+    def value(self, token: str | float | int) -> float:
+        """A spec value (``"20 kg"``, ``20``) as a float in this parameter's unit."""
+        if isinstance(token, bool):
+            raise InputError(f"{self.path}: expected a number, got {token!r}")
+        if isinstance(token, int | float):
+            return float(token)
+        if isinstance(token, Quantity):
+            q = token
+        else:
+            text = str(token).strip()
+            try:
+                return float(text)
+            except ValueError:
+                pass
+            try:
+                q = Q(text)
+            except MechverifyError:
+                raise InputError(f"{self.path}: cannot read {text!r} as a number or a quantity") from None
+        target = Q(1.0, self.unit) if self.unit else Q(1.0)
+        if q.dimensionality != target.dimensionality:
+            have = "dimensionless" if q.dimensionless else str(q.dimensionality)
+            want = "dimensionless" if target.dimensionless else str(target.dimensionality)
+            raise UnitError(f"{self.path}: {token!s} is {have} but the design file's value "
+                            f"({self.text(self.base)}) is {want}; a range cannot change a quantity's dimension")
+        return float(q.to(target.units).magnitude)
+
+    def text(self, x: float) -> str | float | int:
+        """The design-file value for ``x``: ``"21.5 kg"``, a number, or an integer."""
+        if self.integer:
+            return int(round(x))
+        if not self.unit:
+            return float(x)
+        return f"{float(x)!r} {self.unit}"
+
+
+def _unit_text(q: Any) -> str:
+    """A unit string that reads back to the same unit ("kg", "N*m", "mN*m")."""
+    for spec in ("~C", "C"):
+        s = format(q.units, spec)
+        try:
+            if Q(1.0, s).units == q.units:
+                return s
+        except Exception:  # (pint raises several types)
+            continue
+    return str(q.units)
+
+
+# ============================================================================ axes
+
+
+@dataclass(frozen=True)
+class Axis:
+    """One varied parameter: ``kind`` "sweep" (values) or a distribution ("normal", "uniform", "triangular")."""
+
+    param: Parameter
+    kind: str
+    args: tuple[float, ...]
+    spec: str
+
+    @property
+    def name(self) -> str:
+        return self.param.path
+
+    @property
+    def is_sweep(self) -> bool:
+        return self.kind == "sweep"
+
+    def sweep_values(self) -> np.ndarray:
+        start, stop, n = self.args
+        return np.linspace(start, stop, int(n))
+
+    def ppf(self, u: np.ndarray) -> np.ndarray:
+        """Values at the cumulative probabilities ``u`` (inverse transform of uniform samples)."""
+        from scipy import stats
+
+        u = np.clip(np.asarray(u, float), 1e-12, 1 - 1e-12)
+        if self.kind == "normal":
+            mean, sd = self.args
+            return stats.norm.ppf(u, loc=mean, scale=sd)
+        if self.kind == "uniform":
+            lo, hi = self.args
+            return lo + (hi - lo) * u
+        lo, mode, hi = self.args
+        return stats.triang.ppf(u, (mode - lo) / (hi - lo), loc=lo, scale=hi - lo)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "kind": self.kind, "args": list(self.args), "unit": self.param.unit,
+                "spec": self.spec, "base": self.param.base}
+
+
+_ARITY = {"normal": 2, "uniform": 2, "triangular": 3}
+
+
+def parse_axis(doc: Mapping[str, Any], name: str, spec: Any) -> Axis:
+    """``spec``: ``"START:STOP:N"``, ``"normal:MEAN:SD"``, ``"uniform:LO:HI"``, ``"triangular:LO:MODE:HI"``."""
+    p = Parameter.of(doc, name)
+    if not isinstance(spec, str):
+        raise InputError(f"{name}: expected a spec string such as '20 kg:60 kg:5' or 'normal:35 kg:1 kg', "
+                         f"got {spec!r}")
+    parts = [s.strip() for s in spec.split(":")]
+    head = parts[0].lower()
+    if head in _ARITY:
+        if len(parts) != _ARITY[head] + 1:
+            form = {"normal": "normal:MEAN:SD", "uniform": "uniform:LO:HI", "triangular": "triangular:LO:MODE:HI"}
+            raise InputError(f"{name}: {spec!r}: expected {form[head]}")
+        vals = tuple(p.value(x) for x in parts[1:])
+        if not all(math.isfinite(v) for v in vals):
+            raise InputError(f"{name}: {spec!r}: values must be finite")
+        if head == "normal" and not vals[1] > 0:
+            raise InputError(f"{name}: {spec!r}: the standard deviation must be > 0")
+        if head == "uniform" and not vals[0] < vals[1]:
+            raise InputError(f"{name}: {spec!r}: LO must be below HI")
+        if head == "triangular" and not (vals[0] < vals[2] and vals[0] <= vals[1] <= vals[2]):
+            raise InputError(f"{name}: {spec!r}: expected LO <= MODE <= HI with LO < HI")
+        return Axis(p, head, vals, spec)
+    if len(parts) != 3:
+        raise InputError(f"{name}: {spec!r}: expected START:STOP:N (a sweep) or normal:MEAN:SD, uniform:LO:HI, "
+                         "triangular:LO:MODE:HI (a distribution)")
+    try:
+        n = int(parts[2])
+    except ValueError:
+        raise InputError(f"{name}: {spec!r}: N (the number of values) must be an integer, got {parts[2]!r}") from None
+    if n < 1:
+        raise InputError(f"{name}: {spec!r}: zero samples; N must be at least 1")
+    start, stop = p.value(parts[0]), p.value(parts[1])
+    if not (math.isfinite(start) and math.isfinite(stop)):
+        raise InputError(f"{name}: {spec!r}: values must be finite")
+    if n == 1 and start != stop:
+        raise InputError(f"{name}: {spec!r}: one value cannot span {parts[0]}..{parts[1]}; use N >= 2")
+    return Axis(p, "sweep", (start, stop, float(n)), spec)
+
+
+def parse_vary(doc: Mapping[str, Any], vary: Any) -> list[Axis]:
+    """Axes from ``{"path": "spec"}``, ``["path=spec", ...]`` or one ``"path=spec"`` string."""
+    if isinstance(vary, str):
+        vary = [vary]
+    items: list[tuple[str, Any]] = []
+    if isinstance(vary, Mapping):
+        items = list(vary.items())
+    elif isinstance(vary, Iterable):
+        for v in vary:
+            if not isinstance(v, str) or "=" not in v:
+                raise InputError(f"vary: expected NAME=SPEC, e.g. 'components.lift.mass=20 kg:60 kg:5', got {v!r}")
+            k, s = v.split("=", 1)
+            items.append((k.strip(), s.strip()))
+    else:
+        raise InputError(f"vary: expected a mapping or NAME=SPEC strings, got {vary!r}")
+    if not items:
+        raise InputError("vary: nothing to vary; give at least one NAME=SPEC")
+    names = [k for k, _ in items]
+    dup = {n for n in names if names.count(n) > 1}
+    if dup:
+        raise InputError(f"vary: {', '.join(sorted(dup))} given more than once")
+    return [parse_axis(doc, k, s) for k, s in items]

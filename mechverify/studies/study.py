@@ -1,0 +1,378 @@
+"""Sweeps and Monte Carlo studies of a design: ``Study(design, vary=..., samples=..., method=...).run()``.
+
+*Sweep*: every axis given as ``START:STOP:N``; the samples are the full factorial grid (first axis
+slowest). *Monte Carlo*: every axis a distribution; ``samples`` points from a Latin hypercube
+(``method="lhs"``, default), a scrambled Sobol sequence (``"sobol"``, balanced for powers of two)
+or plain pseudo-random numbers (``"random"``), all from :mod:`scipy.stats.qmc`/numpy with ``seed``,
+mapped through each distribution's inverse CDF. The samples are built here, in the calling process,
+so a study's result is the same whatever executor runs it.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from mechverify.errors import InputError
+from mechverify.studies import execution
+from mechverify.studies.params import Axis, apply_overrides, parse_vary
+from mechverify.studies.stats import Z95, spearman, wilson_interval
+
+METHODS = ("lhs", "sobol", "random")
+
+
+def design_source(design: Any) -> tuple[dict[str, Any], str | None]:
+    """(TOML data, path) of a design given as a :class:`~mechverify.design.Design`, a path or a dict.
+
+    The data are the design's as loaded, with its includes merged in (``design.include`` removed),
+    so a task needs no file but the design's own folder for messages.
+    """
+    from mechverify.design.design import Design, load
+
+    if isinstance(design, str | Path):
+        design = load(design)
+    if isinstance(design, Design):
+        doc = json.loads(json.dumps(design.data.raw))  # a plain, independent copy
+        path = str(design.path) if design.path else None
+    elif isinstance(design, Mapping):
+        doc, path = json.loads(json.dumps(dict(design))), None
+    else:
+        raise InputError(f"study: expected a Design, a design-file path or its TOML data, got {type(design).__name__}")
+    if isinstance(doc.get("design"), dict) and "include" in doc["design"]:
+        del doc["design"]["include"]
+    return doc, path
+
+
+@dataclass
+class StudyResult:
+    """Every sample's inputs and per-check ``u``, ``u·SF`` and verdict, in sample order.
+
+    ``samples[i]``: ``{"index", "inputs": {path: value}, "status": "ok"|"error", "message",
+    "checks": {"component.check": {"u", "required_sf", "fu", "verdict"}}, "verdict", "governing",
+    "max_fu"}``. Values are in the unit of each parameter in the design file (``axes``).
+    """
+
+    kind: str  # "sweep" or "monte_carlo"
+    method: str
+    seed: int | None
+    axes: list[dict[str, Any]]
+    samples: list[dict[str, Any]]
+    design_name: str = ""
+    doc: dict[str, Any] = field(default_factory=dict, repr=False)
+    path: str | None = None
+
+    # ------------------------------------------------------------------ access
+    @property
+    def names(self) -> list[str]:
+        return [a["name"] for a in self.axes]
+
+    @property
+    def checks(self) -> list[str]:
+        out: dict[str, None] = {}
+        for s in self.samples:
+            for k in s["checks"]:
+                out.setdefault(k, None)
+        return list(out)
+
+    @property
+    def ok(self) -> list[dict[str, Any]]:
+        return [s for s in self.samples if s["status"] == "ok"]
+
+    @property
+    def errors(self) -> list[dict[str, Any]]:
+        return [s for s in self.samples if s["status"] != "ok"]
+
+    def values(self, name: str, ok_only: bool = True) -> np.ndarray:
+        return np.array([s["inputs"][name] for s in (self.ok if ok_only else self.samples)], float)
+
+    def fu(self, check: str | None = None) -> np.ndarray:
+        """u·SF of ``check`` (None: the governing one) over the valid samples (nan where it did not run)."""
+        def one(s: dict[str, Any]) -> float:
+            v = s["max_fu"] if check is None else s["checks"].get(check, {}).get("fu", math.nan)
+            return math.inf if v is None else v
+        return np.array([one(s) for s in self.ok], float)
+
+    # ------------------------------------------------------------------ statistics
+    def failure_probability(self, z: float = Z95) -> dict[str, dict[str, Any]]:
+        """Per check and ``"overall"`` (any check fails): failures k of n valid samples, p = k/n and its
+        Wilson score interval (95 % by default). Invalid samples (errors) are left out of n."""
+        ok = self.ok
+        n = len(ok)
+        out: dict[str, dict[str, Any]] = {}
+        if n == 0:
+            return out
+        for c in [*self.checks, "overall"]:
+            if c == "overall":
+                k = sum(1 for s in ok if s["verdict"] == "fail")
+            else:
+                k = sum(1 for s in ok if s["checks"].get(c, {}).get("verdict") == "fail")
+            lo, hi = wilson_interval(k, n, z)
+            out[c] = {"failures": k, "n": n, "p": k / n, "lo": lo, "hi": hi}
+        return out
+
+    def worst(self) -> dict[str, Any] | None:
+        """The valid sample with the highest governing u·SF."""
+        ok = self.ok
+        if not ok:
+            return None
+        return max(ok, key=lambda s: math.inf if s["max_fu"] is None else s["max_fu"])
+
+    def sensitivity(self) -> dict[str, list[tuple[str, float]]]:
+        """Per check (and ``"governing"``), the inputs by |Spearman rank correlation| with its u·SF, strongest
+        first; inputs without a defined correlation (constant input or output) are left out."""
+        out: dict[str, list[tuple[str, float]]] = {}
+        for c in [*self.checks, "governing"]:
+            y = self.fu(None if c == "governing" else c)
+            ranks = []
+            for name in self.names:
+                rho = spearman(self.values(name), y)
+                if rho is not None:
+                    ranks.append((name, rho))
+            out[c] = sorted(ranks, key=lambda t: -abs(t[1]))
+        return out
+
+    def most_influential(self) -> str | None:
+        r = self.sensitivity().get("governing") or []
+        return r[0][0] if r else (self.names[0] if self.names else None)
+
+    # ------------------------------------------------------------------ output
+    def to_dict(self) -> dict[str, Any]:
+        d: dict[str, Any] = {"design": self.design_name, "kind": self.kind, "method": self.method, "seed": self.seed,
+                             "axes": self.axes, "checks": self.checks, "samples": self.samples}
+        if self.kind == "monte_carlo":
+            d["failure_probability"] = self.failure_probability()
+            d["sensitivity"] = {k: [[n, r] for n, r in v] for k, v in self.sensitivity().items()}
+            w = self.worst()
+            d["worst"] = None if w is None else w["index"]
+        return d
+
+    def to_json(self, indent: int | None = 1) -> str:
+        return json.dumps(self.to_dict(), indent=indent, allow_nan=False, ensure_ascii=False)
+
+    def to_csv(self) -> str:
+        checks = self.checks
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(["index", *self.names, "status", "verdict", "governing", "max_fu",
+                    *[f"{c} fu" for c in checks], *[f"{c} verdict" for c in checks], "message"])
+        for s in self.samples:
+            row = [s["index"], *[repr(s["inputs"][n]) for n in self.names], s["status"], s["verdict"], s["governing"],
+                   _num(s["max_fu"])]
+            row += [_num(s["checks"].get(c, {}).get("fu")) for c in checks]
+            row += [s["checks"].get(c, {}).get("verdict", "") for c in checks]
+            w.writerow([*row, s["message"]])
+        return buf.getvalue()
+
+    def write(self, path: str | Path) -> Path:
+        """Write ``.json`` or ``.csv`` by the file's extension."""
+        from mechverify.fileio import atomic_write
+
+        p = Path(path)
+        if p.suffix.lower() == ".json":
+            return atomic_write(p, self.to_json() + "\n")
+        if p.suffix.lower() == ".csv":
+            return atomic_write(p, self.to_csv())
+        raise InputError(f"{path}: write a study as .json or .csv")
+
+    def overrides(self, i: int) -> dict[str, Any]:
+        """The design-file values of sample ``i`` (key path -> value as written in the file)."""
+        if not 0 <= i < len(self.samples):
+            raise InputError(f"sample {i} does not exist (0..{len(self.samples) - 1})")
+        s = self.samples[i]
+        return {a["name"]: _text(a, s["inputs"][a["name"]]) for a in self.axes}
+
+    def reproduce(self, i: int, path: str | Path) -> Path:
+        """Write sample ``i`` as a design file that ``mechverify check`` reads."""
+        from mechverify.fileio import atomic_write
+        from mechverify.studies.tomlout import dumps
+
+        doc = apply_overrides(self.doc, self.overrides(i))
+        head = (f"# Sample {i} of a {self.kind.replace('_', ' ')} study of {self.design_name!r}"
+                + (f" ({self.path})" if self.path else "") + ":\n"
+                + "".join(f"#   {k} = {v!r}\n" for k, v in self.overrides(i).items()))
+        return atomic_write(Path(path), head + dumps(doc))
+
+    def summary(self) -> str:
+        """A plain-text summary: counts, the failure probabilities or the sweep table."""
+        lines = [f"{self.kind.replace('_', ' ')} of {self.design_name!r}: {len(self.samples)} samples"
+                 + (f" ({self.method}, seed {self.seed})" if self.kind == "monte_carlo" else "")
+                 + (f", {len(self.errors)} invalid" if self.errors else "")]
+        if self.kind == "monte_carlo":
+            fp = self.failure_probability()
+            if fp:
+                lines.append(f"{'check':44s} {'fail':>6s} {'P_fail':>8s}  95 % interval (Wilson)")
+                for c, v in fp.items():
+                    lines.append(f"{c:44s} {v['failures']:6d} {v['p']:8.4f}  [{v['lo']:.4f}, {v['hi']:.4f}]")
+            w = self.worst()
+            if w is not None:
+                lines.append(f"worst sample {w['index']}: {w['governing']} u·SF = {_num(w['max_fu'])}  "
+                             + ", ".join(f"{k} = {v:.6g}" for k, v in w["inputs"].items()))
+            sens = self.sensitivity().get("governing", [])
+            if sens:
+                lines.append("sensitivity of the governing u·SF (Spearman): "
+                             + ", ".join(f"{n} {r:+.3f}" for n, r in sens))
+        else:
+            lines.append("  ".join(f"{n:>22s}" for n in self.names) + f"  {'governing':40s} {'u·SF':>8s} verdict")
+            for s in self.samples:
+                ins = "  ".join(f"{s['inputs'][n]:22.6g}" for n in self.names)
+                if s["status"] == "ok":
+                    lines.append(f"{ins}  {s['governing']:40s} {_num(s['max_fu']):>8s} {s['verdict']}")
+                else:
+                    lines.append(f"{ins}  invalid: {s['message'].splitlines()[-1].strip()[:80]}")
+        for s in self.errors[:5]:
+            lines.append(f"sample {s['index']} invalid: {s['message'].splitlines()[-1].strip()[:100]}")
+        return "\n".join(lines)
+
+
+def _num(v: float | None) -> str:
+    return "inf" if v is None else f"{v:.4g}"
+
+
+def _text(axis: Mapping[str, Any], x: float) -> Any:
+    if axis.get("integer"):
+        return int(round(x))
+    return f"{x!r} {axis['unit']}" if axis["unit"] else float(x)
+
+
+def _finish(record: dict[str, Any], index: int, inputs: dict[str, float]) -> dict[str, Any]:
+    checks = record["checks"]
+    gov, max_fu = "", 0.0
+    for k, c in checks.items():
+        f = math.inf if c["fu"] is None else c["fu"]
+        if not gov or f > max_fu:
+            gov, max_fu = k, f
+    if record["status"] != "ok":
+        verdict = "error"
+    elif any(c["verdict"] == "fail" for c in checks.values()):
+        verdict = "fail"
+    elif any(c["verdict"] == "warn" for c in checks.values()):
+        verdict = "warn"
+    else:
+        verdict = "pass"
+    return {"index": index, "inputs": inputs, "status": record["status"], "message": record["message"],
+            "verdict": verdict, "governing": gov, "max_fu": None if not math.isfinite(max_fu) else max_fu,
+            "checks": checks}
+
+
+class Study:
+    """A sweep or a Monte Carlo study of a design.
+
+    ``vary``: ``{"components.lift.mass": "20 kg:60 kg:9"}`` (sweep) or
+    ``{"components.lift.mass": "normal:35.7 kg:1 kg", ...}`` (Monte Carlo), or ``NAME=SPEC`` strings.
+    ``samples``: the number of Monte Carlo samples (a sweep has the grid's). ``method``: ``lhs``,
+    ``sobol`` or ``random``; ``seed`` makes the samples reproducible.
+    """
+
+    #: the task function (module level, so workers import it by name); tests may replace it
+    batch_fn: Callable[..., list[dict[str, Any]]] = staticmethod(execution.run_batch)
+
+    def __init__(self, design: Any, vary: Any, samples: int | None = None, method: str = "lhs",
+                 seed: int | None = 0, batch_size: int | None = None):
+        self.doc, self.path = design_source(design)
+        self.design_name = str(self.doc.get("design", {}).get("name", ""))
+        self.axes: list[Axis] = parse_vary(self.doc, vary)
+        sweeps = [a for a in self.axes if a.is_sweep]
+        if sweeps and len(sweeps) != len(self.axes):
+            raise InputError("vary: give either sweep axes (START:STOP:N) or distributions, not both in one study")
+        self.kind = "sweep" if sweeps else "monte_carlo"
+        if method not in METHODS:
+            raise InputError(f"method: expected one of {', '.join(METHODS)}, got {method!r}")
+        self.method = method if self.kind == "monte_carlo" else "grid"
+        self.seed = seed
+        if self.kind == "monte_carlo":
+            if samples is None or isinstance(samples, bool) or not isinstance(samples, int | np.integer):
+                raise InputError(f"samples: a Monte Carlo study needs the number of samples, got {samples!r}")
+            if samples < 1:
+                raise InputError(f"samples: zero samples; give at least 1 (got {samples})")
+        self.n_samples = int(samples) if self.kind == "monte_carlo" else int(np.prod([a.args[2] for a in sweeps]))
+        if batch_size is not None and not (isinstance(batch_size, int) and batch_size >= 1):
+            raise InputError(f"batch_size: expected a positive integer, got {batch_size!r}")
+        self.batch_size = batch_size
+
+    # ------------------------------------------------------------------ samples
+    def inputs(self) -> list[dict[str, float]]:
+        """The input values of every sample, in sample order (unit of each parameter in the file)."""
+        names = [a.name for a in self.axes]
+        if self.kind == "sweep":
+            grids = np.meshgrid(*[a.sweep_values() for a in self.axes], indexing="ij")
+            cols = [g.ravel() for g in grids]
+        else:
+            u = self._unit_samples()
+            cols = [a.ppf(u[:, j]) for j, a in enumerate(self.axes)]
+        return [{n: float(c[i]) for n, c in zip(names, cols)} for i in range(self.n_samples)]
+
+    def _unit_samples(self) -> np.ndarray:
+        from scipy.stats import qmc
+
+        d, n = len(self.axes), self.n_samples
+        if self.method == "lhs":
+            return qmc.LatinHypercube(d, seed=self.seed).random(n)
+        if self.method == "sobol":
+            with warnings.catch_warnings():  # balance properties need 2^m points; any n still works
+                warnings.simplefilter("ignore", UserWarning)
+                return qmc.Sobol(d, scramble=True, seed=self.seed).random(n)
+        return np.random.default_rng(self.seed).random((n, d))
+
+    def overrides(self, inputs: Mapping[str, float]) -> dict[str, Any]:
+        return {a.name: a.param.text(inputs[a.name]) for a in self.axes}
+
+    # ------------------------------------------------------------------ running
+    def run(self, executor: Any = None, *, workers: int | None = None, progress: bool | Any = False,
+            retries: int = 1) -> StudyResult:
+        """Evaluate every sample. ``executor``: any :class:`concurrent.futures.Executor` (default: a local
+        process pool with one worker per core; ``"serial"``: in this process). ``progress``: True for a
+        rich progress bar on the console, or a callable taking the number of samples just finished."""
+        inputs = self.inputs()
+        ovs = [self.overrides(x) for x in inputs]
+        if executor == "serial":
+            executor = execution.SerialExecutor()
+        n_workers = workers or execution.default_workers()
+        size = self.batch_size or max(1, min(50, math.ceil(len(ovs) / (4 * n_workers))))
+        batches = [ovs[i:i + size] for i in range(0, len(ovs), size)]
+        bar, on_done = _progress(progress, len(ovs))
+        try:
+            out = execution.run_batches(type(self).batch_fn, self.doc, self.path, batches, executor,
+                                        workers=n_workers, retries=retries, on_done=on_done)
+        finally:
+            if bar is not None:
+                bar.stop()
+        records = [r for batch in out for r in batch]
+        samples = [_finish(r, i, x) for i, (r, x) in enumerate(zip(records, inputs))]
+        axes = [{**a.to_dict(), "integer": a.param.integer} for a in self.axes]
+        return StudyResult(self.kind, self.method, self.seed if self.kind == "monte_carlo" else None, axes, samples,
+                           self.design_name, self.doc, self.path)
+
+
+def _progress(progress: Any, total: int) -> tuple[Any, Callable[[int], None] | None]:
+    if callable(progress):
+        return None, progress
+    if not progress:
+        return None, None
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+    bar = Progress(TextColumn("samples"), BarColumn(), MofNCompleteColumn(), TimeRemainingColumn(),
+                   console=Console(stderr=True), transient=False)
+    task = bar.add_task("study", total=total)
+
+    def advance(n: int) -> None:  # started at the first result: the pool's processes exist by then
+        if not bar.live.is_started:
+            bar.start()
+        bar.advance(task, n)
+
+    return bar, advance
+
+
+def run_serial(design: Any, overrides: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """Evaluate a few override sets in this process (plain records, as a worker returns them)."""
+    doc, path = design_source(design)
+    return execution.run_batch(doc, path, overrides)

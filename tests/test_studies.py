@@ -1,0 +1,203 @@
+"""Studies: key-path parameters, sizing against a hand calculation, sweeps, Monte Carlo statistics.
+
+Sources: the lead-screw lift of reference project 004 (examples/lead_screw_lift/design.toml);
+raise torque of a trapezoidal thread, Hamrock, Fundamentals of Machine Elements 3rd ed., Eq. 16.10
+(Shigley 10th ed. Eq. 8-5 form with the flank angle); Wilson (1927) score interval; Spearman (1904).
+Every expected number below is a HAND CALCULATION from those formulas with the design file's data,
+not a printed value.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from mechverify.design import load
+from mechverify.errors import InputError, UnitError, UnknownNameError
+from mechverify.studies import SizingError, Study, get_path, parse_vary, size, wilson_interval
+from mechverify.studies.params import apply_overrides, split_path
+from mechverify.studies.tomlout import dumps
+
+LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+
+
+def _doc() -> dict:
+    with LIFT.open("rb") as fh:
+        return tomllib.load(fh)
+
+
+# ----------------------------------------------------------------------------- hand calculation
+G = 9.80665
+D2, LEAD, HALF_ANGLE = 9.0e-3, 2.0e-3, math.radians(15.0)  # Tr10x2 (ISO 2904): d2 = d - P/2 = 9 mm, 30° thread
+MU = 0.25  # iglidur R, upper end of the nut's friction range (004 Tabla 3): the motoring case
+ACC = 0.1  # m/s², profile 'raise'
+J_SCREW = 7850 * math.pi * D2**4 * 0.45 / 32  # steel screw as a cylinder of d2, 450 mm (rho 7850 kg/m³)
+J_ROTOR = 82e-7  # 82 g·cm² (004 Tabla 8)
+ALPHA = ACC * 2 * math.pi / LEAD  # motor angular acceleration [rad/s²]
+T_PULLOUT = 0.35 + (0.25 - 0.35) * (540 - 500) / (850 - 500)  # pull-out torque at 540 rpm, linear between points
+SF = 1.5  # [requirements.safety_factors] motor
+
+
+def _k_raise() -> float:
+    """Raise torque per newton, Hamrock Eq. 16.10: d2/2 (cos an tan l + mu)/(cos an - mu tan l)."""
+    tan_l = LEAD / (math.pi * D2)
+    an = math.atan(math.tan(HALF_ANGLE) * math.cos(math.atan(tan_l)))
+    return D2 / 2 * (math.cos(an) * tan_l + MU) / (math.cos(an) - MU * tan_l)
+
+
+def _motor_fu(mass: float) -> float:
+    """u·SF of the motor peak torque at the end of the acceleration (540 rpm, the lowest pull-out torque
+    while accelerating): T = m (g + a) k_raise + (J_screw + J_rotor) alpha."""
+    torque = mass * (G + ACC) * _k_raise() + (J_SCREW + J_ROTOR) * ALPHA
+    return SF * torque / T_PULLOUT
+
+
+def test_hand_calculation_reproduces_the_design_file_result():
+    """At 35.68 kg the hand formula gives the u·SF the design verifies (guards the hand model itself)."""
+    r = next(r for r in load(LIFT).verify() if r.check == "motor_peak_torque")
+    assert _motor_fu(35.68) == pytest.approx(r.factored_utilisation, rel=2e-3)
+
+
+def test_size_largest_lift_mass_for_the_stepper_pullout_torque():
+    """Largest lift mass before the stepper's pull-out torque (with SF 1.5) is exceeded.
+
+    Hand calculation: m = (T_po/SF - J alpha) / (k_raise (g + a)) = 14.86 kg (not a printed value).
+    """
+    m_hand = (T_PULLOUT / SF - (J_SCREW + J_ROTOR) * ALPHA) / (_k_raise() * (G + ACC))
+    assert m_hand == pytest.approx(14.86, abs=0.01)
+    r = size(LIFT, "components.lift.mass", until="motor_peak_torque", bounds=("1 kg", "100 kg"))
+    assert r.limit == pytest.approx(m_hand, rel=2e-3)
+    assert r.unit == "kg" and r.today == 35.68 and r.until == "lift.motor_peak_torque"
+    assert r.today_fu == pytest.approx(_motor_fu(35.68), rel=2e-3)
+    assert r.margin == pytest.approx((m_hand - 35.68) / 35.68, rel=5e-3)
+    assert r.governing  # the check with the largest u·SF at the limit is named
+    assert "limit 14.8" in r.text()
+
+
+def test_size_no_bracket_names_both_ends():
+    with pytest.raises(SizingError, match=r"does not cross 1 .*at 1 kg.*at 5 kg.*below 1"):
+        size(LIFT, "components.lift.mass", until="lift.motor_peak_torque", bounds=("1 kg", "5 kg"))
+
+
+def test_size_unknown_check():
+    with pytest.raises(UnknownNameError, match="motor_peek_torque"):
+        size(LIFT, "components.lift.mass", until="motor_peek_torque", bounds=("1 kg", "5 kg"))
+
+
+# ----------------------------------------------------------------------------- parameters
+def test_key_paths_and_overrides_leave_the_source_alone():
+    doc = _doc()
+    assert split_path("components.lift.transmission[0].screw") == ["components", "lift", "transmission", 0, "screw"]
+    assert get_path(doc, "components.lift.transmission[0].screw") == "lift_screw"
+    new = apply_overrides(doc, {"components.lift.mass": "20.0 kg", "load_cases.raise.lift_screw.axial_force": "1 kN"})
+    assert new["components"]["lift"]["mass"] == "20.0 kg" and doc["components"]["lift"]["mass"] == "35.68 kg"
+    assert new["load_cases"]["raise"]["lift_screw"]["axial_force"] == "1 kN"
+
+
+@pytest.mark.parametrize("vary, error, match", [
+    ({"components.lift.mas": "1 kg:2 kg:2"}, UnknownNameError, "did you mean"),
+    ({"components.lift_screw.thread": "1:2:2"}, InputError, "not numeric"),
+    ({"components.lift.mass": "normal:30 kg:0 kg"}, InputError, "standard deviation must be > 0"),
+    ({"components.lift.mass": "uniform:30 kg:20 kg"}, InputError, "LO must be below HI"),
+    ({"components.lift.mass": "triangular:30 kg:10 kg:40 kg"}, InputError, "LO <= MODE <= HI"),
+    ({"components.lift.mass": "10 mm:20 mm:3"}, UnitError, "cannot change a quantity's dimension"),
+    ({"components.lift.mass": "10 kg:20 kg:0"}, InputError, "zero samples"),
+    ({"components.lift.mass": "10 kg:20 kg:x"}, InputError, "must be an integer"),
+    ({}, InputError, "nothing to vary"),
+])
+def test_bad_axes_are_named_errors(vary, error, match):
+    with pytest.raises(error, match=match):
+        parse_vary(_doc(), vary)
+
+
+def test_zero_monte_carlo_samples():
+    with pytest.raises(InputError, match="zero samples"):
+        Study(LIFT, vary={"components.lift.mass": "normal:30 kg:1 kg"}, samples=0)
+
+
+def test_bare_numbers_take_the_files_unit():
+    (ax,) = parse_vary(_doc(), ["components.lift.mass=20:30000 g:3"])
+    assert ax.args == (20.0, 30.0, 3.0) and ax.param.unit == "kg"
+
+
+def test_toml_writer_round_trips_the_design():
+    doc = _doc()
+    assert tomllib.loads(dumps(doc)) == doc
+
+
+# ----------------------------------------------------------------------------- sweeps
+def test_sweep_full_factorial_and_motor_utilisation_matches_hand_calculation():
+    s = Study(LIFT, vary={"components.lift.mass": "10 kg:30 kg:3", "profiles.raise.max_velocity": "12 mm/s:18 mm/s:2"})
+    res = s.run("serial")
+    assert res.kind == "sweep" and len(res.samples) == 6
+    assert [(x["inputs"]["components.lift.mass"], x["inputs"]["profiles.raise.max_velocity"]) for x in res.samples] \
+        == [(10.0, 12.0), (10.0, 18.0), (20.0, 12.0), (20.0, 18.0), (30.0, 12.0), (30.0, 18.0)]
+    for x in res.samples:
+        if x["inputs"]["profiles.raise.max_velocity"] == 18.0:  # 540 rpm: the hand model's operating point
+            assert x["checks"]["lift.motor_peak_torque"]["fu"] == pytest.approx(
+                _motor_fu(x["inputs"]["components.lift.mass"]), rel=2e-3)
+    csv = res.to_csv().splitlines()
+    assert len(csv) == 7 and "lift.motor_peak_torque fu" in csv[0]
+
+
+def test_invalid_sample_is_recorded_and_the_study_goes_on():
+    res = Study(LIFT, vary={"components.lift.mass": "-10 kg:10 kg:2"}).run("serial")
+    bad, good = res.samples
+    assert bad["status"] == "error" and "mass" in bad["message"] and bad["verdict"] == "error"
+    assert good["status"] == "ok" and good["checks"]
+
+
+# ----------------------------------------------------------------------------- Monte Carlo
+def test_wilson_interval_hand_calculations():
+    """Wilson (1927): the bounds are the proportions pi with (p - pi)^2 = z^2 pi (1 - pi)/n (score test)."""
+    z = 1.959963984540054
+    for k, n in ((81, 263), (15, 148), (1, 29), (7, 10)):
+        lo, hi = wilson_interval(k, n)
+        for pi in (lo, hi):
+            assert (k / n - pi) ** 2 == pytest.approx(z * z * pi * (1 - pi) / n, rel=1e-9)
+    # k = 0: the upper bound is z^2/(n + z^2) in closed form (hand calculation: 0.16113 for n = 20)
+    assert wilson_interval(0, 20) == (0.0, pytest.approx(z * z / (20 + z * z), rel=1e-12))
+    assert wilson_interval(0, 20)[1] == pytest.approx(0.16113, abs=1e-5)
+    with pytest.raises(InputError):
+        wilson_interval(3, 0)
+
+
+def test_monte_carlo_statistics_sensitivity_and_reproduce(tmp_path):
+    vary = {"components.lift.mass": "normal:14.5 kg:0.5 kg",
+            "load_cases.raise.lift_screw.axial_force": "uniform:300 N:400 N"}
+    s = Study(LIFT, vary=vary, samples=40, method="lhs", seed=3)
+    res = s.run("serial")
+    again = Study(LIFT, vary=vary, samples=40, method="lhs", seed=3).run("serial")
+    assert res.to_json() == again.to_json()  # same seed, same study
+    masses = res.values("components.lift.mass")
+    # failure of the motor check: exactly the samples above the hand-calculated limit mass
+    m_lim = (T_PULLOUT / SF - (J_SCREW + J_ROTOR) * ALPHA) / (_k_raise() * (G + ACC))
+    k = int(np.sum(masses > m_lim * (1 + 2e-3)))
+    fp = res.failure_probability()["lift.motor_peak_torque"]
+    assert k <= fp["failures"] <= int(np.sum(masses > m_lim * (1 - 2e-3)))
+    assert (fp["lo"], fp["hi"]) == pytest.approx(wilson_interval(fp["failures"], 40))
+    assert res.failure_probability()["overall"]["p"] == 1.0  # the screw in bending fails whatever the mass
+    sens = res.sensitivity()
+    # the motor torque is monotonic in the mass only; the nut pressure in the axial force only
+    assert sens["lift.motor_peak_torque"][0] == ("components.lift.mass", pytest.approx(1.0))
+    assert sens["lift_screw.nut_pv"][0] == ("load_cases.raise.lift_screw.axial_force", pytest.approx(1.0))
+    worst = res.worst()
+    assert worst["max_fu"] == max(x["max_fu"] for x in res.samples)
+    # sample i as a design file, checked again: the same utilisations
+    i = int(np.argmax(masses))
+    out = res.reproduce(i, tmp_path / "sample.toml")
+    rs = load(out).verify()
+    got = {f"{r.component}.{r.check}": r.factored_utilisation for r in rs}
+    for key, c in res.samples[i]["checks"].items():
+        assert got[key] == pytest.approx(c["fu"], rel=1e-12)
+
+
+@pytest.mark.parametrize("method", ["sobol", "random"])
+def test_other_sampling_methods_follow_the_distribution_bounds(method):
+    s = Study(LIFT, vary={"components.lift.mass": "triangular:10 kg:12 kg:20 kg"}, samples=16, method=method, seed=1)
+    xs = [x["components.lift.mass"] for x in s.inputs()]
+    assert len(xs) == 16 and all(10 < x < 20 for x in xs) and len(set(xs)) == 16
