@@ -5,12 +5,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechverify.checks.bearings import (
-    bearing_life,
-    bearing_speed,
-    bearing_static_safety,
-    bushing_pressure_check,
-    bushing_pv_check,
-    bushing_velocity_check,
+    check_bearing_life,
+    check_bearing_speed,
+    check_bearing_static_safety,
+    check_bushing_pressure,
+    check_bushing_pv,
+    check_bushing_velocity,
 )
 from mechverify.components.bearings import PlainBushing, basic_rating_life, bearing, bearing_names, sliding_speed
 from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityError
@@ -49,21 +49,21 @@ def test_suffixes_give_variants():
 
 def test_life_check_and_axial_warning():
     b = bearing("608")
-    r = bearing_life(b, "0 N", "300 N", "540 rpm", "10000 h")
+    r = check_bearing_life(b, "0 N", "300 N", "540 rpm", "10000 h")
     assert r.capacity.m_as("hour") == pytest.approx((3450 / r.details["P"].m_as("N")) ** 3 * 1e6 / (60 * 540))
     assert r.verdict == "pass"
     # project 004's 350 N screw load on one 608 exceeds SKF's 0.25 C0 = 342.5 N for small bearings
-    r2 = bearing_life(b, "0 N", "350 N", "540 rpm", "100 h")
+    r2 = check_bearing_life(b, "0 N", "350 N", "540 rpm", "100 h")
     assert r2.warnings and r2.verdict == "warn"
 
 
 def test_static_and_speed_checks():
     b = bearing("6200")
-    s = bearing_static_safety(b, "3000 N", required_s0=1.0)
+    s = check_bearing_static_safety(b, "3000 N", required_s0=1.0)
     assert s.safety_factor == pytest.approx(2360 / 3000) and s.verdict == "fail"
-    assert bearing_speed(b, "20000 rpm").verdict == "pass"
-    assert bearing_speed(b, "40000 rpm").verdict == "fail"
-    assert bearing_speed(bearing("6200-2RS1"), "1000 rpm").warnings
+    assert check_bearing_speed(b, "20000 rpm").verdict == "pass"
+    assert check_bearing_speed(b, "40000 rpm").verdict == "fail"
+    assert check_bearing_speed(bearing("6200-2RS1"), "1000 rpm").warnings
 
 
 def test_bearing_errors():
@@ -84,13 +84,13 @@ def test_bushing_pressure_velocity_pv():
     v = sliding_speed("10 mm", "600 rpm")
     assert v.m_as("m/s") == pytest.approx(3.14159265 * 0.01 * 10)
     assert bush.pressure("100 N").m_as("MPa") == pytest.approx(1.0)
-    assert bushing_pv_check(bush, "100 N", v).demand.m_as("MPa*m/s") == pytest.approx(0.1 * 3.14159265)
-    assert bushing_pv_check(bush, "100 N", v).capacity.m_as("MPa*m/s") == pytest.approx(0.34)
-    assert bushing_pv_check(bush, "100 N", v).verdict == "warn"  # 0.314 / 0.34 = 0.92 > 0.9
-    assert bushing_pressure_check(bush, "100 N").capacity.m_as("MPa") == pytest.approx(60.0)
-    assert bushing_pressure_check(bush, "100 N").verdict == "pass"
-    assert bushing_velocity_check(bush, "2 m/s").verdict == "fail"
+    assert check_bushing_pv(bush, "100 N", v).demand.m_as("MPa*m/s") == pytest.approx(0.1 * 3.14159265)
+    assert check_bushing_pv(bush, "100 N", v).capacity.m_as("MPa*m/s") == pytest.approx(0.34)
+    assert check_bushing_pv(bush, "100 N", v).verdict == "warn"  # 0.314 / 0.34 = 0.92 > 0.9
+    assert check_bushing_pressure(bush, "100 N").capacity.m_as("MPa") == pytest.approx(60.0)
+    assert check_bushing_pressure(bush, "100 N").verdict == "pass"
+    assert check_bushing_velocity(bush, "2 m/s").verdict == "fail"
     with pytest.raises(InputError, match="pv_max"):
-        bushing_pv_check(PlainBushing(d="10 mm", length="10 mm"), "1 N", "1 m/s")
+        check_bushing_pv(PlainBushing(d="10 mm", length="10 mm"), "1 N", "1 m/s")
     with pytest.raises(InputError):
         PlainBushing(d="0 mm", length="10 mm")

@@ -178,7 +178,7 @@ def test_bearing_errors_name_their_key(tmp_path):
     """
     with pytest.raises(DesignFileError) as exc:  # iglidur J has no v_max in the library
         load(write(tmp_path, text)).verify()
-    assert any(p == "components.g.checks.velocity [run]" and "v_max" in m for p, m in exc.value.errors)
+    assert any(p == "components.g.checks.bushing_velocity [run]" and "v_max" in m for p, m in exc.value.errors)
 
 
 def test_catalogue_listing_has_each_bearing_once():

@@ -11,7 +11,7 @@ import pytest
 
 from mechverify.checks.result import Verdict
 from mechverify.checks.screws import (
-    check_critical_speed,
+    check_screw_critical_speed,
     check_holding_torque,
     check_nut_flank_pressure,
     check_nut_pv,
@@ -78,7 +78,7 @@ def test_buckling_and_critical_speed_report_end_case(shigley):
     b = check_screw_buckling(shigley, "6.4 kN")
     assert "fixed-pinned" in b.notes[0] and "C = 1.2" in b.notes[0]
     assert b.required_sf == 2.0
-    c = check_critical_speed(shigley, "1000 rpm")
+    c = check_screw_critical_speed(shigley, "1000 rpm")
     assert "lambda_1 = 3.9266" in c.notes[0]
     assert c.required_sf == 1.25
 

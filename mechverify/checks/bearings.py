@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.components.bearings import (
     BallBearing,
@@ -15,10 +16,12 @@ from mechverify.components.bearings import (
     life_hours,
     reliability_factor,
 )
+from mechverify.references import ref
 from mechverify.units import Q, fmt, to_si
 
-ISO281 = "ISO 281:2007, Eq. (1), Table 3 (X, Y, e), Table 12 (a1)"
-ISO76 = "ISO 76:2006, Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0"
+ISO281 = ref("iso281", "Eq. (1), Table 3 (X, Y, e), Table 12 (a1)")
+ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
+BUSHING = f"{ref('shigley10', 'Sec. 12-15')}; bushing maker's limits"
 
 
 def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
@@ -29,7 +32,12 @@ def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
     return ()
 
 
-def bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_life: Any, *, reliability: float = 0.9,
+@check("bearing_life", title="Bearing rating life", sf_kind="bearing",
+       aliases=('ball_bearing.life',),
+       source=ISO281,
+       explain=('L10h = a1 (C/P)^3 10^6/(60 n), P = X Fr + Y Fa (ISO 281 Eq. (1), Table 3), against the required '
+                'life.'))
+def check_bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_life: Any, *, reliability: float = 0.9,
                  load_case: str = "") -> CheckResult:
     """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours."""
     eq = b.equivalent_load(Fr, Fa)
@@ -52,7 +60,12 @@ def bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_life: An
         details={"P": eq.P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L})
 
 
-def bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, required_s0: float = 1.0,
+@check("bearing_static_safety", title="Bearing static safety (s0)", sf_kind="bearing",
+       aliases=('ball_bearing.static_safety',),
+       source=ISO76,
+       explain=('s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) (ISO 76); the required s0 is the bearing class factor '
+                '(SKF: 1 normal, 1.5 shock loads, 2 quiet running).'))
+def check_bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, required_s0: float = 1.0,
                           load_case: str = "") -> CheckResult:
     """Static safety s0 = C0/P0 against the required s0 (SKF guideline for rotating ball bearings: 1,
     1.5 with shock loads, 2 where low noise matters; ISO 76)."""
@@ -66,7 +79,11 @@ def bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, required_
         warnings=_axial_warning(b, Fa), load_case=load_case)
 
 
-def bearing_speed(b: BallBearing, speed: Any, *, load_case: str = "") -> CheckResult:
+@check("bearing_speed", title="Bearing speed", sf_kind="speed",
+       aliases=('ball_bearing.speed',),
+       source=ref("skf17000", "product tables: limiting and reference speeds"),
+       explain=('Speed against the catalogue limiting speed (the reference speed is noted).'))
+def check_bearing_speed(b: BallBearing, speed: Any, *, load_case: str = "") -> CheckResult:
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
     n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
     warnings: tuple[str, ...] = ()
@@ -94,34 +111,46 @@ def _bushing_notes(bush: PlainBushing) -> tuple[str, ...]:
             "p = F/(d L) is the mean projected pressure",)
 
 
-def bushing_pressure_check(bush: PlainBushing, F: Any, *, load_case: str = "") -> CheckResult:
+@check("bushing_pressure", title="Bushing pressure", sf_kind="pressure",
+       aliases=('plain_bushing.pressure',),
+       source=BUSHING,
+       explain=('p = F/(dL) against p_max.'))
+def check_bushing_pressure(bush: PlainBushing, F: Any, *, load_case: str = "") -> CheckResult:
     """Projected pressure p = F/(dL) against p_max."""
     return CheckResult(
         check="bushing_pressure", component=bush.name, demand=bush.pressure(F), capacity=bush.limit("p_max"),
         title="Bushing pressure", formula=r"p = \frac{F}{d L} \le p_{max}",
-        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        source=BUSHING,
         inputs={"F": Q(to_si(F, "force", "F"), "N"), "d": bush.d, "L": bush.length},
         notes=_bushing_notes(bush), load_case=load_case)
 
 
-def bushing_velocity_check(bush: PlainBushing, v: Any, *, load_case: str = "") -> CheckResult:
+@check("bushing_velocity", title="Bushing sliding speed", sf_kind="speed",
+       aliases=('plain_bushing.velocity',),
+       source=BUSHING,
+       explain=('Sliding speed against v_max.'))
+def check_bushing_velocity(bush: PlainBushing, v: Any, *, load_case: str = "") -> CheckResult:
     """Sliding speed against v_max."""
     vv = Q(abs(to_si(v, "velocity", "v")), "m/s")
     return CheckResult(
         check="bushing_velocity", component=bush.name, demand=vv, capacity=bush.limit("v_max"),
         title="Bushing sliding speed", formula=r"v \le v_{max}",
-        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        source=BUSHING,
         inputs={"v": vv}, notes=_bushing_notes(bush), load_case=load_case)
 
 
-def bushing_pv_check(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "") -> CheckResult:
+@check("bushing_pv", title="Bushing pv", sf_kind="pressure",
+       aliases=('plain_bushing.pv',),
+       source=BUSHING,
+       explain=("p v against the material's pv limit (wear and heating of dry-running bushings)."))
+def check_bushing_pv(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "") -> CheckResult:
     """p·v against pv_max (the wear/heating limit of dry-running bushings)."""
     return CheckResult(
         check="bushing_pv", component=bush.name, demand=bush.pv(F, v), capacity=bush.limit("pv_max"),
         title="Bushing pv", formula=r"p\,v = \frac{F}{d L} v \le (pv)_{max}",
-        source="Shigley's Mechanical Engineering Design, 10th ed., Sec. 12-15; bushing maker's limits",
+        source=BUSHING,
         inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case)
 
 
-__all__ = ["bearing_life", "bearing_static_safety", "bearing_speed", "bushing_pressure_check",
-           "bushing_velocity_check", "bushing_pv_check"]
+__all__ = ["check_bearing_life", "check_bearing_static_safety", "check_bearing_speed", "check_bushing_pressure",
+           "check_bushing_velocity", "check_bushing_pv"]

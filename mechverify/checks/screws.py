@@ -7,17 +7,17 @@ torsional stress in the screw). Every result says in its notes which value it us
 
 References
 ----------
-1. Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., 2011, Sec. 8-2 (power screws).
-2. Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., 2014, Sec. 16.3.
-3. Shigley's Mechanical Engineering Design, 10th ed., 2015, Sec. 4-11 to 4-13 (columns, Table 4-2).
-4. Blevins, Formulas for Natural Frequency and Mode Shape, 1979, Table 8-1; THK General Catalog, Ball
-   Screw (permissible speed 0.8 n_c, permissible compressive load 0.5 P_cr).
+Citations come from :mod:`mechverify.references`: ``shigley10`` Sec. 8-2 (power screws; equation numbers
+8-1..8-6 as printed in the 9th ed. text, the same section of the 10th) and Secs. 4-11 to 4-13 (columns),
+``hamrock3`` Sec. 16.3, ``blevins`` Table 8-1, ``thk`` (permissible speed 0.8 n_c, compressive load 0.5 P_cr),
+``din103`` and ``roloff_matek`` (flank pressure).
 """
 
 from __future__ import annotations
 
 from typing import Any
 
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.components.power_screw import (
     LeadScrew,
@@ -28,10 +28,11 @@ from mechverify.components.power_screw import (
     whirl_factor,
 )
 from mechverify.errors import InputError
+from mechverify.references import ref
 from mechverify.units import Q, as_quantity, fmt
 
-SHIGLEY_SCREWS = "Shigley's Mechanical Engineering Design, 9th ed., Sec. 8-2"
-HAMROCK = "Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., Sec. 16.3"
+SHIGLEY_SCREWS = ref("shigley10", "Sec. 8-2")
+HAMROCK = ref("hamrock3", "Sec. 16.3")
 
 
 def _force(F: Any, name: str = "F") -> Any:
@@ -48,6 +49,10 @@ def _mu_note(nut: Nut, which: str, why: str) -> str:
     return f"mu = {used:g} used ({'lowest' if which == 'min' else 'highest'} of the nut's range {rng}): {why}"
 
 
+@check("self_locking", title="Self-locking", sf_kind="self_locking",
+       source=f"{HAMROCK}, Sec. 16.3.3; {SHIGLEY_SCREWS}, Eq. (8-3)",
+       explain=("Lead angle against the friction angle at the lowest mu of the nut's range: the load must not back-"
+                'drive the screw (Shigley 10th ed. Sec. 8-2, Hamrock 3rd ed. Sec. 16.3).'))
 def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """The load must not back-drive the screw: lead angle ``lambda`` <= effective friction angle ``rho'`` at ``mu_min``.
 
@@ -75,7 +80,7 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
         title=f"Self-locking of {th.designation} ({nut.name})",
         formula=r"\lambda = \arctan\frac{l}{\pi d_2} \;\le\; \rho' = \arctan\frac{\mu_{min}}{\cos\alpha_n},"
                 r"\quad \tan\alpha_n = \tan\alpha\cos\lambda",
-        source=f"{HAMROCK} (self-locking condition mu > cos(alpha_n) tan(lambda)); {SHIGLEY_SCREWS}, Eq. 8-3",
+        source=f"{HAMROCK} (self-locking condition mu > cos(alpha_n) tan(lambda)); {SHIGLEY_SCREWS}, Eq. (8-3)",
         inputs={"lead": th.lead, "d2": th.d2, "flank_angle": th.flank_angle, "mu_min": Q(mu_lo, "")},
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
         details={"lead_angle": lam, "friction_angle": rho, "normal_flank_angle": th.normal_flank_angle.to("deg"),
@@ -84,6 +89,10 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
     )
 
 
+@check("holding_torque", title="Back-drive holding torque", sf_kind="static",
+       source=f"{HAMROCK}, Eq. (16.12); {SHIGLEY_SCREWS}, Eq. (8-2)",
+       explain=('Torque the load puts back on the screw at mu_min against the torque available at rest (motor holding'
+                ' torque or brake); zero demand when the thread self-locks.'))
 def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Any, *, required_sf: float = 1.0,
                          load_case: str = "") -> CheckResult:
     """The torque available at the screw when stopped (motor holding torque, brake) must hold the load.
@@ -104,7 +113,7 @@ def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Any
         title=f"Back-drive holding torque, {screw.thread.designation}",
         formula=r"T_{hold} = \max\left(0,\; F\frac{d_2}{2}\,\frac{\cos\alpha_n\tan\lambda - \mu_{min}}"
                 r"{\cos\alpha_n + \mu_{min}\tan\lambda}\right) \le T_{available}",
-        source=f"{HAMROCK}, Eq. 16.12 (lowering torque); {SHIGLEY_SCREWS}, Eq. 8-2",
+        source=f"{HAMROCK}, Eq. (16.12) (lowering torque); {SHIGLEY_SCREWS}, Eq. (8-2)",
         inputs={"F": f, "mu_min": Q(mu_lo, ""), "holding_torque": cap, "lead": screw.lead, "d2": screw.thread.d2},
         notes=tuple(notes), load_case=load_case,
         details={"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
@@ -119,6 +128,9 @@ def _nut_geometry(screw: LeadScrew, nut: Nut) -> tuple[float, Any]:
     return nut.engaged(th), th.H1
 
 
+@check("nut_flank_pressure", title="Nut flank pressure", sf_kind="pressure",
+       source=f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure)",
+       explain=("Mean flank pressure p = F/(pi d2 H1 n) against the nut's allowable pressure (DIN 103)."))
 def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf: float = 1.0,
                              load_case: str = "") -> CheckResult:
     """Mean flank pressure ``p = F / (pi d2 H1 n)`` against the nut's allowable pressure."""
@@ -134,7 +146,7 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
         check="nut_flank_pressure", component=nut.name, demand=p, capacity=nut.p_allow.to("MPa"),
         required_sf=required_sf, title=f"Nut flank pressure on {th.designation}",
         formula=r"p = \frac{F}{\pi d_2 H_1 n},\quad n = \frac{m}{P}",
-        source="DIN 103 / Roloff-Matek (mean flank pressure); Shigley 9th ed., Sec. 8-2 (bearing stress)",
+        source=f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure); {SHIGLEY_SCREWS} (bearing stress)",
         inputs={"F": f, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
         notes=(f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
                "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"),
@@ -142,6 +154,9 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
     )
 
 
+@check("nut_pv", title="Nut pv", sf_kind="pressure",
+       source=f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); nut maker's pv rating",
+       explain=("Flank pressure times sliding speed at d2 against the nut material's pv limit."))
 def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = None, speed: Any = None,
                  required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """``pv`` (mean flank pressure x sliding speed at d2) against the nut material's pv limit.
@@ -164,7 +179,8 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = 
         check="nut_pv", component=nut.name, demand=pv, capacity=nut.pv_allow.to("MPa*m/s"), required_sf=required_sf,
         title=f"Nut pv on {th.designation} at {fmt(n_rot, 'rpm')}",
         formula=r"pv = \frac{F}{\pi d_2 H_1 n}\cdot\frac{\pi d_2 n_{rot}}{\cos\lambda}",
-        source="DIN 103 / Roloff-Matek (flank pressure); polymer-bearing pv rating (nut maker's datasheet)",
+        source=(f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); polymer-bearing pv rating "
+                "(nut maker's datasheet)"),
         inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
         notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
                f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}"),
@@ -172,6 +188,10 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = 
     )
 
 
+@check("screw_strength", title="Screw body stress", sf_kind="static",
+       source=f"{SHIGLEY_SCREWS} (body stresses), Eq. (5-15) (von Mises)",
+       explain=('Von Mises stress at the minor diameter from the axial force and the raising torque at mu_max against'
+                ' the yield strength.'))
 def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, torque: Any = None,
                          required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """Von Mises stress at the minor diameter from the axial force and the drive torque, against yield.
@@ -205,6 +225,11 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
     )
 
 
+@check("screw_buckling", title="Screw buckling", sf_kind="buckling",
+       aliases=('lead_screw.buckling',),
+       source=ref("shigley10", "Secs. 4-11 to 4-13, Eqs. (4-43), (4-46), Table 4-2"),
+       explain=('Axial force against the Euler/Johnson critical load of the root section with the end-fixity constant'
+                ' of Shigley 10th ed. Table 4-2 (recommended values).'))
 def check_screw_buckling(screw: LeadScrew, F: Any, *, length: Any = None, basis: str = "recommended",
                          required_sf: float = 2.0, load_case: str = "") -> CheckResult:
     """Compressive axial force against the column critical load of the root section (Euler or Johnson).
@@ -232,8 +257,13 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: Any = None, basis:
     )
 
 
-def check_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any = None, required_sf: float = 1.25,
-                         load_case: str = "") -> CheckResult:
+@check("screw_critical_speed", title="Critical (whirling) speed", sf_kind="speed",
+       aliases=('lead_screw.critical_speed',),
+       source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
+       explain=('Operating speed against the first bending (whirling) speed of the screw between its supports '
+                '(Blevins Table 8-1; THK runs below 0.8 of it).'))
+def check_screw_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any = None,
+                               required_sf: float = 1.25, load_case: str = "") -> CheckResult:
     """Operating speed against the first whirling speed of the screw between its supports.
 
     Default required factor 1.25 = the THK rule of running below 0.8 of the critical speed.
@@ -244,11 +274,10 @@ def check_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any
     lam = whirl_factor(screw.end_supports)
     L = screw.length if length is None else as_quantity(length, "length", "length")
     return CheckResult(
-        check="critical_speed", component=screw.name, demand=n, capacity=nc, required_sf=required_sf,
+        check="screw_critical_speed", component=screw.name, demand=n, capacity=nc, required_sf=required_sf,
         title=f"Critical (whirling) speed of {screw.thread.designation}",
         formula=r"n_c = \frac{\lambda_1^2}{2\pi L^2}\sqrt{\frac{E I}{\rho A}},\quad \frac{I}{A} = \frac{d_3^2}{16}",
-        source="Blevins, Formulas for Natural Frequency and Mode Shape, 1979, Table 8-1; THK General Catalog, Ball "
-               "Screw (permissible rotational speed)",
+        source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
         inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw._mat("E"),
                 "density": screw._mat("density")},
         notes=(f"end case {screw.end_supports}: lambda_1 = {lam:.5g} (first bending mode of a uniform shaft)",
@@ -258,4 +287,4 @@ def check_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any
 
 
 __all__ = ["check_self_locking", "check_holding_torque", "check_nut_flank_pressure", "check_nut_pv",
-           "check_screw_strength", "check_screw_buckling", "check_critical_speed"]
+           "check_screw_strength", "check_screw_buckling", "check_screw_critical_speed"]

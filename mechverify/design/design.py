@@ -9,6 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from mechverify.checks import CheckResult, ResultSet
+from mechverify.checks.registry import deprecation_note
 from mechverify.design.loader import DesignData, DesignFileError, Entry, load_file
 from mechverify.design.spec import CheckSpec
 from mechverify.errors import MechverifyError
@@ -120,8 +121,11 @@ class Design:
                         found.setdefault(r.check, []).append(r)
                     if progress is not None:
                         progress()
+                alias = entry.checks.get(spec.name, {}).get("alias")
                 for rs in found.values():
                     gov = max(rs, key=lambda r: r.factored_utilisation)
+                    if alias:
+                        gov = dataclasses.replace(gov, notes=(*gov.notes, deprecation_note(alias, spec.name)))
                     if len(rs) > 1:
                         others = ", ".join(f"{r.load_case}: u={r.utilisation:.3g}" for r in rs if r is not gov)
                         gov = dataclasses.replace(gov, notes=(*gov.notes, f"Governing of {len(rs)} load cases "

@@ -306,20 +306,22 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
         if not isinstance(overrides, dict):
             col.add(f"{path}.checks", "expected a table of check settings")
             overrides = {}
-        known = {c.name: c for c in ct.checks}
+        known = {c.name: c for c in ct.checks} | {a: c for c in ct.checks for a in c.aliases}
         col.unknown_keys(overrides, known, f"{path}.checks")
-        for cname, setting in overrides.items():
-            if cname not in known:
+        for key, setting in overrides.items():
+            if key not in known:
                 continue
-            cpath = f"{path}.checks.{cname}"
+            cname = known[key].name  # a former key (alias) sets the renamed check, with a deprecation note
+            alias = {"alias": key} if key != cname else {}
+            cpath = f"{path}.checks.{key}"
             if isinstance(setting, bool):
-                checks[cname] = {"enabled": setting}
+                checks[cname] = {"enabled": setting, **alias}
             elif isinstance(setting, dict):
                 col.unknown_keys(setting, ("enabled", "required_sf"), cpath)
                 sf = setting.get("required_sf")
                 if sf is not None and (isinstance(sf, bool) or not isinstance(sf, int | float) or sf <= 0):
                     col.add(f"{cpath}.required_sf", f"expected a positive number, got {_describe(sf)}")
-                checks[cname] = {k: v for k, v in setting.items() if k in ("enabled", "required_sf")}
+                checks[cname] = {k: v for k, v in setting.items() if k in ("enabled", "required_sf")} | alias
             else:
                 col.add(cpath, "expected true, false or a table such as { required_sf = 2.0 }, "
                                f"got {_describe(setting)}")

@@ -113,7 +113,7 @@ def test_buckling_and_critical_speed(results):
     pcr = math.pi**2 * E * i / L**2
     nc = math.pi / (2 * L**2) * math.sqrt(E * i / (RHO * a)) * 60
     assert _one(results, "lift_screw", "screw_buckling").capacity.m_as("N") == pytest.approx(pcr, rel=1e-6)
-    assert _one(results, "lift_screw", "critical_speed").capacity.m_as("rpm") == pytest.approx(nc, rel=1e-5)  # lambda_1 tabulated
+    assert _one(results, "lift_screw", "screw_critical_speed").capacity.m_as("rpm") == pytest.approx(nc, rel=1e-5)  # lambda_1 tabulated
     assert pcr == pytest.approx(1590, rel=1e-3) and nc == pytest.approx(4514, rel=1e-3)
 
 

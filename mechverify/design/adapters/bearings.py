@@ -49,7 +49,7 @@ def _forces(loads: dict[str, Any]) -> tuple[pint.Quantity, pint.Quantity]:
 def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     Fr, Fa = _forces(loads)
     required = inst.required_life if inst.required_life is not None else ctx.requirements["bearing_life"]
-    r = bc.bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability)
+    r = bc.check_bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability)
     source = "component's required_life" if inst.required_life is not None else "requirements.bearing_life"
     return dataclasses.replace(r, notes=(*r.notes, f"required life from the {source}"),
                                details={**r.details, "a1": reliability_factor(inst.reliability)})
@@ -76,18 +76,11 @@ BALL = REGISTRY.register(ComponentType(
         Field("speed", "angular_velocity", "rotational speed of the inner ring relative to the outer"),
     ),
     checks=(
-        CheckSpec("life", _life, "Bearing rating life", needs=("radial_force|axial_force", "speed"),
-                  sf_kind="bearing",
-                  explain="L10h = a1 (C/P)^3 10^6/(60 n), P = X Fr + Y Fa (ISO 281 Eq. (1), Table 3), against the "
-                          "required life."),
-        CheckSpec("static_safety", lambda c, loads, ctx: bc.bearing_static_safety(
-            c.bearing, *_forces(loads), required_s0=ctx.required_sf),
-            "Bearing static safety (s0)", needs=("radial_force|axial_force",), sf_kind="bearing",
-            explain="s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) (ISO 76); the required s0 is the bearing class "
-                    "factor (SKF: 1 normal, 1.5 shock loads, 2 quiet running)."),
-        CheckSpec("speed", lambda c, loads, ctx: bc.bearing_speed(c.bearing, loads["speed"]),
-                  "Bearing speed", needs=("speed",), sf_kind="speed",
-                  explain="Speed against the catalogue limiting speed (the reference speed is noted)."),
+        CheckSpec.of(bc.check_bearing_life, _life, needs=("radial_force|axial_force", "speed")),
+        CheckSpec.of(bc.check_bearing_static_safety, lambda c, loads, ctx: bc.check_bearing_static_safety(
+            c.bearing, *_forces(loads), required_s0=ctx.required_sf), needs=("radial_force|axial_force",)),
+        CheckSpec.of(bc.check_bearing_speed, lambda c, loads, ctx: bc.check_bearing_speed(c.bearing, loads["speed"]),
+                     needs=("speed",)),
     ),
 ))
 
@@ -132,14 +125,12 @@ BUSHING = REGISTRY.register(ComponentType(
         Field("speed", "angular_velocity", "shaft speed (instead of sliding_speed): v = omega d/2"),
     ),
     checks=(
-        CheckSpec("pressure", lambda c, loads, ctx: bc.bushing_pressure_check(c, _radial(loads)),
-                  "Bushing pressure", needs=("radial_force",), sf_kind="pressure",
-                  explain="p = F/(dL) against p_max."),
-        CheckSpec("velocity", lambda c, loads, ctx: bc.bushing_velocity_check(c, _sliding(c, loads)),
-                  "Bushing sliding speed", needs=("sliding_speed|speed",), sf_kind="speed",
-                  explain="Sliding speed against v_max."),
-        CheckSpec("pv", lambda c, loads, ctx: bc.bushing_pv_check(c, _radial(loads), _sliding(c, loads)),
-                  "Bushing pv", needs=("radial_force", "sliding_speed|speed"), sf_kind="pressure",
-                  explain="p v against the material's pv limit (wear and heating of dry-running bushings)."),
+        CheckSpec.of(bc.check_bushing_pressure, lambda c, loads, ctx: bc.check_bushing_pressure(c, _radial(loads)),
+                     needs=("radial_force",)),
+        CheckSpec.of(bc.check_bushing_velocity, lambda c, loads, ctx: bc.check_bushing_velocity(c, _sliding(c, loads)),
+                     needs=("sliding_speed|speed",)),
+        CheckSpec.of(bc.check_bushing_pv,
+                     lambda c, loads, ctx: bc.check_bushing_pv(c, _radial(loads), _sliding(c, loads)),
+                     needs=("radial_force", "sliding_speed|speed")),
     ),
 ))

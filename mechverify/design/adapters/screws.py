@@ -88,33 +88,21 @@ TYPE = REGISTRY.register(ComponentType(
         Field("compressive", "bool", "the axial force compresses the screw between its supports", default=True),
     ),
     checks=(
-        CheckSpec("self_locking", lambda c, loads, ctx: sc.check_self_locking(c.screw, c.nut),
-                  "Self-locking", sf_kind="self_locking",
-                  explain="Lead angle against the friction angle at the lowest mu of the nut's range "
-                          "(Shigley 9th ed. Sec. 8-2, Hamrock 3rd ed. Sec. 16.3)."),
-        CheckSpec("holding_torque", lambda c, loads, ctx: sc.check_holding_torque(
+        CheckSpec.of(sc.check_self_locking, lambda c, loads, ctx: sc.check_self_locking(c.screw, c.nut)),
+        CheckSpec.of(sc.check_holding_torque, lambda c, loads, ctx: sc.check_holding_torque(
             c.screw, c.nut, loads["axial_force"], loads["holding_torque"]),
-            "Back-drive holding torque", needs=("axial_force", "holding_torque"), default=False,
-            explain="Torque the load puts back on the screw at mu_min against the torque available at rest."),
-        CheckSpec("nut_flank_pressure", lambda c, loads, ctx: sc.check_nut_flank_pressure(
-            c.screw, c.nut, loads["axial_force"]), "Nut flank pressure", needs=("axial_force",), sf_kind="pressure",
-            explain="Mean flank pressure p = F/(pi d2 H1 n) against the nut's allowable pressure (DIN 103)."),
-        CheckSpec("nut_pv", lambda c, loads, ctx: sc.check_nut_pv(c.screw, c.nut, loads["axial_force"],
-                                                                 **_speed(loads)),
-                  "Nut pv", needs=("axial_force", "speed|rotational_speed"), sf_kind="pressure",
-                  explain="Flank pressure times sliding speed at d2 against the nut material's pv limit."),
-        CheckSpec("screw_strength", lambda c, loads, ctx: sc.check_screw_strength(c.screw, loads["axial_force"],
-                                                                                  nut=c.nut),
-                  "Screw body stress", needs=("axial_force",), sf_kind="static",
-                  explain="Von Mises stress at the minor diameter from axial force and the raising torque at mu_max."),
-        CheckSpec("buckling", lambda c, loads, ctx: sc.check_screw_buckling(c.screw, loads["axial_force"])
-                  if loads.get("compressive", True) else [],
-                  "Screw buckling", needs=("axial_force",), sf_kind="buckling",
-                  explain="Axial force against the Euler/Johnson critical load of the root section with the "
-                          "end-fixity constant of Shigley 10th ed. Table 4-2 (recommended values)."),
-        CheckSpec("critical_speed", lambda c, loads, ctx: sc.check_critical_speed(
+            needs=("axial_force", "holding_torque"), default=False),
+        CheckSpec.of(sc.check_nut_flank_pressure, lambda c, loads, ctx: sc.check_nut_flank_pressure(
+            c.screw, c.nut, loads["axial_force"]), needs=("axial_force",)),
+        CheckSpec.of(sc.check_nut_pv, lambda c, loads, ctx: sc.check_nut_pv(c.screw, c.nut, loads["axial_force"],
+                                                                            **_speed(loads)),
+                     needs=("axial_force", "speed|rotational_speed")),
+        CheckSpec.of(sc.check_screw_strength, lambda c, loads, ctx: sc.check_screw_strength(
+            c.screw, loads["axial_force"], nut=c.nut), needs=("axial_force",)),
+        CheckSpec.of(sc.check_screw_buckling, lambda c, loads, ctx: sc.check_screw_buckling(
+            c.screw, loads["axial_force"]) if loads.get("compressive", True) else [], needs=("axial_force",)),
+        CheckSpec.of(sc.check_screw_critical_speed, lambda c, loads, ctx: sc.check_screw_critical_speed(
             c.screw, c.screw.rotational_speed(loads["speed"]) if "speed" in loads else loads["rotational_speed"]),
-            "Critical (whirling) speed", needs=("speed|rotational_speed",), sf_kind="speed",
-            explain="Operating speed against the first bending (whirling) speed of the screw between its supports."),
+            needs=("speed|rotational_speed",)),
     ),
 ))
