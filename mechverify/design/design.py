@@ -12,7 +12,8 @@ from mechverify.checks import CheckResult, ResultSet
 from mechverify.checks.registry import deprecation_note
 from mechverify.design.loader import DesignData, DesignFileError, Entry, load_file
 from mechverify.design.spec import CheckSpec
-from mechverify.errors import MechverifyError
+from mechverify.errors import MechverifyError, ValidityError
+from mechverify.units import Q
 
 
 @dataclass(frozen=True)
@@ -112,6 +113,8 @@ class Design:
                     ctx = CheckContext(entry.name, case, sf, self.data.requirements, self)
                     try:
                         out = spec.run(entry.obj, loads, ctx)
+                    except ValidityError as exc:  # an engineering limit of the method: a FAIL with the reason
+                        out = _beyond_validity(spec, entry.name, case, exc)
                     except MechverifyError as exc:
                         errors.append((path + (f" [{case}]" if case else ""), str(exc)))
                         continue
@@ -135,6 +138,15 @@ class Design:
             raise DesignFileError(errors, str(self.path or ""))
         label = f"{self.name} rev {self.revision}" if self.revision else self.name
         return ResultSet(results, label)
+
+
+def _beyond_validity(spec: CheckSpec, component: str, case: str, exc: ValidityError) -> CheckResult:
+    """A check whose inputs lie beyond the validity range of its method fails: the design cannot be shown
+    to meet it. Utilisation infinite (capacity zero); the reason is the error's message."""
+    return CheckResult(check=spec.name, component=component, demand=Q(1.0), capacity=Q(0.0),
+                       title=spec.title, load_case=case,
+                       notes=(f"Not verifiable: {exc}. The inputs lie beyond the validity range of the method, "
+                              "so the check fails; change the design or verify it another way.",))
 
 
 def load(path: str | Path, allow_outside: bool = False) -> Design:
