@@ -64,6 +64,7 @@ QuantityLike: TypeAlias = pint.Quantity | str
 # Units met in datasheets that pint lacks or names differently.
 # pint already has kgf, gf, ozf (force_ounce), lbf, ksi, rpm; Mpsi (spring-wire tables) it lacks.
 ureg.define("mega_psi = 1e6 * psi = Mpsi")
+ureg.define("@alias turn = rev")  # "5000 rev": revolutions (a count of turns, i.e. an angle)
 pint.set_application_registry(ureg)
 
 #: Dimension name -> (pint dimensionality, SI unit used inside the package).
@@ -211,7 +212,12 @@ def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
         else:
             raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {type(original).__name__} {original!r}")
     if not _dimension_matches(value, dim):
-        raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {_describe(value)}")
+        hint = ""
+        if dim == "time" and value.dimensionless and not value.unitless:
+            hint = ("; a number of revolutions is not a time: give the life in hours, the speed of each "
+                    "load case converts it")
+        got = original if isinstance(original, str) else _describe(value)
+        raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {got}{hint}")
     if dim == "angle" and value.unitless:
         raise UnitError(f"{name}: expected an angle, got {_describe(original)}; give a unit (say 'deg' or 'rad')")
     if not np.all(np.isfinite(np.asarray(value.magnitude, dtype=float))):

@@ -24,6 +24,10 @@ def load_designs(paths: list[Path], allow_outside: bool) -> list[Any]:
             designs.append(load(p, allow_outside=allow_outside))
         except MechverifyError as exc:
             errors.append(str(exc))
+    for p, d in zip(paths, designs):
+        if not d.data.components:  # loadable from Python (a library of profiles), but nothing to check
+            errors.append(f"{p}: the design has no components, so there is nothing to verify; add a "
+                          "[components.NAME] table (docs/design-files.md)")
     if errors:
         raise Invalid("\n".join(errors))
     return designs

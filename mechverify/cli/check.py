@@ -38,6 +38,8 @@ def run(args: argparse.Namespace) -> int:
     designs = load_designs(args.designs, args.allow_outside_includes)
     check_output_paths(outputs, input_files(designs, args.designs))  # the includes too
 
+    from rich.markup import escape
+
     from mechverify.checks import Verdict
     from mechverify.cli._console import combined_line, out, results_table, verdict_line
     from mechverify.design.outputs import junit_xml, run_document, to_json
@@ -63,6 +65,10 @@ def run(args: argparse.Namespace) -> int:
     for _, rs in runs:
         if not args.quiet:
             out.print(results_table(rs))
+            for r in rs:  # a check that could not be evaluated fails: say why
+                for n in r.notes:
+                    if n.startswith("Not verifiable"):
+                        out.print(f"[red]{r.component} / {r.check}:[/red] {escape(n)}")
         out.print(verdict_line(rs))
     if len(runs) > 1:
         out.print(combined_line([rs for _, rs in runs]))
