@@ -241,13 +241,13 @@ def test_bad_loads_name_their_key(tmp_path):
     text = EX10_4.format(extra="", loads="").replace('force = "35 lbf"\nforce_min = "5 lbf"', 'deflection = "3 in"')
     with pytest.raises(DesignFileError) as exc:
         load(write(tmp_path, text.replace("fatigue = true", "fatigue = false"))).verify()
-    assert any(p == "components.s.checks.static_stress [run]" and "travel to solid" in m
+    assert any(p == "components.s.checks.spring_static_stress [run]" and "travel to solid" in m
                for p, m in exc.value.errors), exc.value.errors
     # fatigue enabled, and no load case gives the bottom of the cycle
     text = EX10_4.format(extra="", loads="").replace('force_min = "5 lbf"', "")
     with pytest.raises(DesignFileError) as exc:
         load(write(tmp_path, text))
-    assert any(p == "components.s.checks.fatigue" and "force_min or deflection_min" in m
+    assert any(p == "components.s.checks.spring_fatigue" and "force_min or deflection_min" in m
                for p, m in exc.value.errors)
 
 

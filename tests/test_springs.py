@@ -7,11 +7,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechverify.checks.springs import (
-    spring_buckling,
-    spring_clash,
-    spring_fatigue,
-    spring_solid_stress,
-    spring_static_stress,
+    check_spring_buckling,
+    check_spring_clash,
+    check_spring_fatigue,
+    check_spring_solid_stress,
+    check_spring_static_stress,
 )
 from mechverify.components.springs import (
     CompressionSpring,
@@ -104,9 +104,9 @@ def test_buckling_matches_en13906_form():
     sK = L0 * 0.5 / (1 - G / E) * (1 - math.sqrt(arg))
     assert s.critical_deflection("fixed-free").m_as("m") == pytest.approx(sK)
     y_cr = s.critical_deflection("fixed-free")
-    assert spring_buckling(s, s.force(y_cr * 0.5), end="fixed-free").verdict == "pass"
-    assert spring_buckling(s, s.force(y_cr * 1.01), end="fixed-free").verdict == "fail"
-    assert spring_buckling(s, s.force(y_cr * 1.01), end="fixed-fixed").verdict == "pass"
+    assert check_spring_buckling(s, s.force(y_cr * 0.5), end="fixed-free").verdict == "pass"
+    assert check_spring_buckling(s, s.force(y_cr * 1.01), end="fixed-free").verdict == "fail"
+    assert check_spring_buckling(s, s.force(y_cr * 1.01), end="fixed-fixed").verdict == "pass"
 
 
 def test_timoshenko_rigidities_closed_forms():
@@ -147,18 +147,18 @@ def test_zimmerli_validity_and_fatigue_errors():
 def test_checks_are_oriented_and_sourced():
     s = spring()
     F = s.force("20 mm")
-    r = spring_static_stress(s, F)
+    r = check_spring_static_stress(s, F)
     assert r.demand.m_as("MPa") == pytest.approx(s.shear_stress(F).m_as("MPa"))
     assert r.capacity.m_as("MPa") == pytest.approx(0.45 * s.tensile_strength.m_as("MPa"))
     assert "Table 10-6" in r.source
-    assert spring_solid_stress(s).demand > r.demand
-    assert spring_fatigue(s, "0 N", F).details["n_f"] > 0
-    clash = spring_clash(s, F)
+    assert check_spring_solid_stress(s).demand > r.demand
+    assert check_spring_fatigue(s, "0 N", F).details["n_f"] > 0
+    clash = check_spring_clash(s, F)
     assert clash.demand.m_as("mm") == pytest.approx(1.15 * 20)
-    en = spring_clash(s, F, method="en13906")
+    en = check_spring_clash(s, F, method="en13906")
     assert en.demand.m_as("mm") == pytest.approx(20 + en13906_min_gap_sum("3 mm", "30 mm", 10).m_as("mm"))
     assert en13906_min_gap_sum("3 mm", "30 mm", 10).m_as("mm") == pytest.approx((0.0015 * 900 / 3 + 0.3) * 10)
-    assert spring_clash(s, s.solid_force * 1.1).verdict == "fail"  # beyond solid fails, does not raise
+    assert check_spring_clash(s, s.solid_force * 1.1).verdict == "fail"  # beyond solid fails, does not raise
 
 
 def test_set_removed_uses_ks_and_higher_allowable():

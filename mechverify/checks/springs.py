@@ -10,12 +10,17 @@ from __future__ import annotations
 
 from typing import Any
 
+import pint
+
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
-from mechverify.components.springs_compression import CompressionSpring, en13906_min_gap_sum
+from mechverify.components.spring_formulas import torsion_spring_factors
+from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring, en13906_min_gap_sum
 from mechverify.errors import UnknownNameError
+from mechverify.references import ref
 from mechverify.units import Q, fmt, to_si
 
-SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed. (2015)"
+SHIGLEY = ref("shigley10")
 
 
 def _inputs(spring: CompressionSpring) -> dict[str, Any]:
@@ -36,7 +41,12 @@ def _factor_note(spring: CompressionSpring) -> str:
             f"{spring.wire_class} allowable of Table 10-6")
 
 
-def spring_static_stress(spring: CompressionSpring, F_max: Any, *, required_sf: float = 1.2,
+@check("spring_static_stress", title='Spring shear stress at maximum working force', sf_kind="spring",
+       aliases=('compression_spring.static_stress',),
+       source=ref("shigley10", "Eqs. (10-5), (10-7), Table 10-6"),
+       explain=('tau = K_B 8FD/(pi d^3) (K_s with set removed) against S_sy of Shigley Table 10-6; Shigley Sec. 10-7 '
+                'designs springs for n_s >= 1.2.'))
+def check_spring_static_stress(spring: CompressionSpring, F_max: Any, *, required_sf: float = 1.2,
                          load_case: str = "") -> CheckResult:
     """Working shear stress at the largest operating force against S_sy (Shigley Table 10-6)."""
     tau = spring.shear_stress(F_max)
@@ -51,7 +61,12 @@ def spring_static_stress(spring: CompressionSpring, F_max: Any, *, required_sf: 
         load_case=load_case)
 
 
-def spring_solid_stress(spring: CompressionSpring, *, required_sf: float = 1.2) -> CheckResult:
+@check("spring_solid_stress", title='Spring shear stress at solid length', sf_kind="spring",
+       aliases=('compression_spring.solid_stress',),
+       source=ref("shigley10", "Sec. 10-7, Table 10-1, Eq. (10-7), Table 10-6"),
+       explain=('Stress when closed solid, F = k(L0 - Ls), against S_sy: a solid-safe spring takes no set if it is '
+                'closed by accident (Shigley Sec. 10-7).'))
+def check_spring_solid_stress(spring: CompressionSpring, *, required_sf: float = 1.2) -> CheckResult:
     """Shear stress when the spring is closed solid against S_sy ("solid-safe", Shigley Sec. 10-7)."""
     return CheckResult(
         check="spring_solid_stress", component=spring.name, demand=spring.solid_stress,
@@ -65,7 +80,12 @@ def spring_solid_stress(spring: CompressionSpring, *, required_sf: float = 1.2) 
         load_case="closed solid")
 
 
-def spring_buckling(spring: CompressionSpring, F_max: Any, *, end: str = "fixed-fixed",
+@check("spring_buckling", title='Spring buckling (critical deflection)', sf_kind="deflection",
+       aliases=('compression_spring.buckling',),
+       source=f"{ref('shigley10', 'Eqs. (10-10) to (10-13), Table 10-2')}; {ref('en13906_1', 'Sec. 9')}",
+       explain=('Working deflection against the critical deflection of Shigley Eq. (10-10) with alpha of Table 10-2 '
+                '(= EN 13906-1); an absolutely stable spring is held to its travel.'))
+def check_spring_buckling(spring: CompressionSpring, F_max: Any, *, end: str = "fixed-fixed",
                     required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """Working deflection against the critical (buckling) deflection for the given end condition.
 
@@ -91,7 +111,12 @@ def spring_buckling(spring: CompressionSpring, F_max: Any, *, end: str = "fixed-
         notes=tuple(notes), load_case=load_case)
 
 
-def spring_fatigue(spring: CompressionSpring, F_min: Any, F_max: Any, *, criterion: str = "gerber",
+@check("spring_fatigue", title='Spring fatigue (infinite life)', sf_kind="fatigue",
+       aliases=('compression_spring.fatigue',),
+       source=ref("shigley10", "Secs. 10-9, 10-10, Eq. (10-30)"),
+       explain=('Zimmerli endurance data with a mean-stress criterion (Gerber by default) along the proportional load'
+                ' line (Shigley Secs. 10-9, 10-10).'))
+def check_spring_fatigue(spring: CompressionSpring, F_min: Any, F_max: Any, *, criterion: str = "gerber",
                    required_sf: float = 1.5, load_case: str = "") -> CheckResult:
     """Infinite-life fatigue with Zimmerli data and a mean-stress criterion (Shigley Secs. 10-9, 10-10).
 
@@ -119,7 +144,12 @@ def spring_fatigue(spring: CompressionSpring, F_min: Any, F_max: Any, *, criteri
         details={"tau_m": f.tau_m, "Ssu": f.Ssu, "Sse": f.Sse, "Ssy": f.Ssy, "n_f": f.n_f, "n_y": f.n_y})
 
 
-def spring_clash(spring: CompressionSpring, F_max: Any, *, method: str = "shigley", xi: float = 0.15,
+@check("spring_clash", title='Spring clash allowance', sf_kind="deflection",
+       aliases=('compression_spring.clash',),
+       source=f"{ref('shigley10', 'Sec. 10-7')}; {ref('en13906_1', 'Sec. 10')}",
+       explain=("(1 + 0.15) y_max <= L0 - Ls (Shigley Sec. 10-7), or EN 13906-1's minimum sum of gaps between coils "
+                '(doubled when the case gives a fatigue cycle).'))
+def check_spring_clash(spring: CompressionSpring, F_max: Any, *, method: str = "shigley", xi: float = 0.15,
                  dynamic: bool = False, load_case: str = "") -> CheckResult:
     """Clash allowance: the spring must not approach solid at the largest working force.
 
@@ -149,4 +179,115 @@ def spring_clash(spring: CompressionSpring, F_max: Any, *, method: str = "shigle
         notes=(note,), load_case=load_case)
 
 
-__all__ = ["spring_static_stress", "spring_solid_stress", "spring_buckling", "spring_fatigue", "spring_clash"]
+
+# --------------------------------------------------------------------------------------- extension springs
+def _ext_inputs(s: ExtensionSpring, F: pint.Quantity) -> dict[str, Any]:
+    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index, "Nb": s._si["Nb"],
+            "Fi": s.initial_tension, "Sut": s.tensile_strength, "F": F}
+
+
+def _initial_tension_note(s: ExtensionSpring) -> str:
+    lo, hi = s.initial_stress_range()
+    return (f"initial stress tau_i = {fmt(s.initial_stress, 'MPa')}; preferred range for C = {s.index:.3g}: "
+            f"{fmt(lo, 'MPa')} .. {fmt(hi, 'MPa')} (Shigley Sec. 10-11, Fig. 10-7)")
+
+
+@check("extension_body_stress", title='Extension spring body stress', sf_kind="static",
+       aliases=('extension_spring.body_stress',),
+       source=ref("shigley10", "Sec. 10-11, Eq. (10-7), Table 10-7"),
+       explain=('tau = K_B 8FD/(pi d^3) against the body allowable of Shigley Table 10-7.'))
+def check_extension_body_stress(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
+    """Body shear stress τ = K_B·8FD/(πd³) against the Table 10-7 body allowable (Shigley 10th ed. Sec. 10-11)."""
+    Fq = Q(to_si(F, "force", "F"), "N")
+    return CheckResult(
+        check="extension_body_stress", component=s.name, demand=s.body_stress(Fq), capacity=s.allowable("body"),
+        required_sf=required_sf, title="Extension spring body stress",
+        formula=r"\tau = K_B \frac{8 F D}{\pi d^3} \le S_{sy}", source=f"{SHIGLEY}, Eq. (10-7), Table 10-7",
+        inputs=_ext_inputs(s, Fq), notes=(_initial_tension_note(s),))
+
+
+@check("extension_hook_bending", title='Extension spring hook bending (A)', sf_kind="static",
+       aliases=('extension_spring.hook_bending',),
+       source=ref("shigley10", "Sec. 10-11, Table 10-7"),
+       explain=("Bending plus tension at the hook's section A against the end-bending allowable (Shigley Sec. 10-11, "
+                'Table 10-7).'))
+def check_extension_hook_bending(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
+    """Bending and tension at hook section A against the Table 10-7 end-bending allowable."""
+    Fq = Q(to_si(F, "force", "F"), "N")
+    notes = ["hook bend radius r1 = " + fmt(Q(s._si["r1"], "m").to("mm")) + " (default D/2: full loop)"]
+    if s.r2 is None:
+        notes.append("hook torsion at B not checked: give hook_side_radius (r2)")
+    return CheckResult(
+        check="extension_hook_bending", component=s.name, demand=s.hook_bending_stress(Fq),
+        capacity=s.allowable("end_bending"), required_sf=required_sf, title="Extension spring hook bending (A)",
+        formula=r"\sigma_A = F \left[(K)_A \frac{16 D}{\pi d^3} + \frac{4}{\pi d^2}\right],\ "
+                r"(K)_A = \frac{4 C_1^2 - C_1 - 1}{4 C_1 (C_1 - 1)},\ C_1 = 2 r_1/d",
+        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
+        inputs={**_ext_inputs(s, Fq), "r1": Q(s._si["r1"], "m").to("mm")}, notes=tuple(notes))
+
+
+@check("extension_hook_torsion", title='Extension spring hook torsion (B)', sf_kind="static",
+       aliases=('extension_spring.hook_torsion',),
+       source=ref("shigley10", "Sec. 10-11, Table 10-7"),
+       explain=("Torsion at the hook's side bend B against the end-torsion allowable; runs when hook_side_radius is "
+                'given.'))
+def check_extension_hook_torsion(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> list[CheckResult]:
+    """Torsion at hook section B against the Table 10-7 end-torsion allowable (only when r2 is known)."""
+    if s.r2 is None:
+        return []
+    Fq = Q(to_si(F, "force", "F"), "N")
+    return [CheckResult(
+        check="extension_hook_torsion", component=s.name, demand=s.hook_torsion_stress(Fq),
+        capacity=s.allowable("end_torsion"), required_sf=required_sf, title="Extension spring hook torsion (B)",
+        formula=r"\tau_B = (K)_B \frac{8 F D}{\pi d^3},\ (K)_B = \frac{4 C_2 - 1}{4 C_2 - 4},\ C_2 = 2 r_2/d",
+        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
+        inputs={**_ext_inputs(s, Fq), "r2": Q(s._si["r2"], "m").to("mm")})]
+
+
+# ----------------------------------------------------------------------------------------- torsion springs
+def _tor_inputs(s: TorsionSpring, M: pint.Quantity) -> dict[str, Any]:
+    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index,
+            "Na": s.active_turns, "Sut": s.tensile_strength, "M": M.to("N*mm")}
+
+
+@check("torsion_spring_stress", title='Torsion spring bending stress', sf_kind="static",
+       aliases=('torsion_spring.bending_stress',),
+       source=ref("shigley10", "Sec. 10-12, Eqs. (10-43), (10-57)"),
+       explain=('sigma = K_i 32M/(pi d^3) against S_y = 0.78 S_ut (music wire; Shigley Eq. (10-57)).'))
+def check_torsion_spring_stress(s: TorsionSpring, M: Any, *, required_sf: float = 1.0) -> CheckResult:
+    """Inner-fibre bending stress σ = K_i·32M/(πd³) against S_y of Shigley 10th ed. Eq. (10-57)."""
+    Mq = Q(to_si(M, "torque", "M"), "N*m")
+    Ki, _ = torsion_spring_factors(s.index)
+    return CheckResult(
+        check="torsion_spring_stress", component=s.name, demand=s.bending_stress(Mq), capacity=s.yield_strength,
+        required_sf=required_sf, title="Torsion spring bending stress",
+        formula=r"\sigma = K_i \frac{32 M}{\pi d^3} \le S_y,\ K_i = \frac{4 C^2 - C - 1}{4 C (C - 1)}",
+        source=f"{SHIGLEY}, Sec. 10-12, Eq. (10-43) (K_i), Eq. (10-57) (S_y)", inputs=_tor_inputs(s, Mq),
+        notes=(f"K_i = {Ki:.4g} (inner fibre, where the stress is highest when the spring winds up)",
+               "the load must close (wind up) the coils; unwinding loads need the residual-stress-free allowable"))
+
+
+@check("torsion_spring_arbor", title='Torsion spring clearance on its arbor', sf_kind="deflection",
+       aliases=('torsion_spring.arbor_clearance',),
+       source=ref("shigley10", "Sec. 10-12"),
+       explain=('Arbor diameter against the inside diameter of the wound-up coil (Shigley Sec. 10-12); runs when '
+                'arbor_diameter is given.'))
+def check_torsion_spring_arbor(s: TorsionSpring, arbor_diameter: Any, M: Any, *, required_sf: float = 1.0,
+                            load_case: str = "") -> CheckResult:
+    """The coil must not close onto its arbor: arbor diameter against the loaded inside diameter."""
+    arbor = Q(to_si(arbor_diameter, "length", "arbor_diameter"), "m")
+    Mq = Q(to_si(M, "torque", "M"), "N*m")
+    Di = s.loaded_inside_diameter(Mq)
+    return CheckResult(
+        check="torsion_spring_arbor", component=s.name, demand=arbor.to("mm"), capacity=Di,
+        required_sf=required_sf, load_case=load_case,
+        title="Torsion spring clearance on its arbor",
+        formula=r"D_{arbor} \le D_i' = \frac{D N_b}{N_b + \theta_c'} - d",
+        source=f"{SHIGLEY}, Sec. 10-12 (coil diameter under load)",
+        inputs={**_tor_inputs(s, Mq), "angle": s.angle(Mq)},
+        notes=("theta_c' = body turns of wind-up (legs excluded), friction-corrected rate (Eq. (10-51))",
+               "to keep a diametral clearance margin, set a required_sf (1.1 = 10 %)"))
+
+__all__ = ["check_spring_static_stress", "check_spring_solid_stress", "check_spring_buckling", "check_spring_fatigue",
+           "check_spring_clash", "check_extension_body_stress", "check_extension_hook_bending",
+           "check_extension_hook_torsion", "check_torsion_spring_stress", "check_torsion_spring_arbor"]

@@ -14,7 +14,7 @@ import math
 
 import pytest
 
-from mechverify.checks.springs import spring_fatigue
+from mechverify.checks.springs import check_spring_fatigue
 from mechverify.components.springs import (
     CompressionSpring,
     bergstrasser_factor,
@@ -111,7 +111,7 @@ def test_example_10_4_surge_frequency(ex10_4):
 
 def test_example_10_4_fatigue_check_reports_gerber_factor(ex10_4):
     """The fatigue check's safety factor is Shigley's nf = 1.21; the design factor 1.5 is not met."""
-    r = spring_fatigue(ex10_4, "5 lbf", "35 lbf")
+    r = check_spring_fatigue(ex10_4, "5 lbf", "35 lbf")
     assert r.safety_factor == pytest.approx(1.21, abs=0.006)
     assert r.verdict == "fail"
 

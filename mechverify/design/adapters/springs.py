@@ -1,9 +1,9 @@
 """``compression_spring``, ``extension_spring``, ``torsion_spring``: helical springs of round wire.
 
-Compression springs get the checks of :mod:`mechverify.checks.springs` (static and solid stress,
-buckling, fatigue, clash). Extension and torsion springs get their static checks (Shigley 10th ed.
-Table 10-7 and Eq. (10-57)), written here because :mod:`mechverify.checks.springs` covers
-compression springs only.
+The checks are those of :mod:`mechverify.checks.springs`: compression springs (static and solid
+stress, buckling, fatigue, clash), extension springs (body, hook bending and torsion against Shigley
+10th ed. Table 10-7) and torsion springs (bending stress, Eq. (10-57); clearance on the arbor). This
+module maps design-file values onto them and adds the force-deflection figure data.
 """
 
 from __future__ import annotations
@@ -15,14 +15,13 @@ import pint
 
 from mechverify.checks import springs as sc
 from mechverify.checks.result import CheckResult
-from mechverify.components.spring_formulas import SPRING_CLASSES, torsion_spring_factors
+from mechverify.components.spring_formulas import SPRING_CLASSES
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, fmt
 
-SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed. (2015)"
 END_TYPES = ("squared-ground", "squared", "plain-ground", "plain")
 END_CONDITIONS = ("fixed-fixed", "fixed-pinned", "pinned-pinned", "fixed-guided", "fixed-free")
 CRITERIA = ("gerber", "goodman", "sines", "asme_elliptic", "soderberg")
@@ -126,19 +125,19 @@ def _figure_data(inst: SpringInstallation, ctx: Any, end: str) -> dict[str, Any]
 
 
 def _static(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
-    return sc.spring_static_stress(inst.spring, _max_force(inst.spring, loads), required_sf=ctx.required_sf)
+    return sc.check_spring_static_stress(inst.spring, _max_force(inst.spring, loads), required_sf=ctx.required_sf)
 
 
 def _buckling(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     end = loads.get("end_condition", inst.end_condition)
-    r = sc.spring_buckling(inst.spring, _max_force(inst.spring, loads), end=end, required_sf=ctx.required_sf)
+    r = sc.check_spring_buckling(inst.spring, _max_force(inst.spring, loads), end=end, required_sf=ctx.required_sf)
     inputs = {k: (v.to("GPa") if k in ("E", "G") else v) for k, v in r.inputs.items()}
     return dataclasses.replace(r, inputs=inputs, details={**r.details, **_figure_data(inst, ctx, end)})
 
 
 def _fatigue(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     s = inst.spring
-    r = sc.spring_fatigue(s, _min_force(s, loads), _max_force(s, loads), criterion=inst.fatigue_criterion,
+    r = sc.check_spring_fatigue(s, _min_force(s, loads), _max_force(s, loads), criterion=inst.fatigue_criterion,
                           required_sf=ctx.required_sf)
     f = s.fatigue(_min_force(s, loads), _max_force(s, loads), inst.fatigue_criterion)
     # the check's formula has \text{...} with spaces, which the report's mathtext rewrite runs together
@@ -152,7 +151,7 @@ def _fatigue(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> Check
 
 def _clash(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     dynamic = "force_min" in loads or "deflection_min" in loads
-    return sc.spring_clash(inst.spring, _max_force(inst.spring, loads), method=inst.clash_method, dynamic=dynamic)
+    return sc.check_spring_clash(inst.spring, _max_force(inst.spring, loads), method=inst.clash_method, dynamic=dynamic)
 
 
 COMPRESSION = REGISTRY.register(ComponentType(
@@ -187,25 +186,13 @@ COMPRESSION = REGISTRY.register(ComponentType(
               choices=END_CONDITIONS),
     ),
     checks=(
-        CheckSpec("static_stress", _static, "Spring shear stress at maximum working force",
-                  needs=("force|deflection",), sf_kind="spring",
-                  explain="tau = K_B 8FD/(pi d^3) (K_s with set removed) against S_sy of Shigley Table 10-6; "
-                          "Shigley Sec. 10-7 designs springs for n_s >= 1.2."),
-        CheckSpec("solid_stress", lambda c, loads, ctx: sc.spring_solid_stress(c.spring, required_sf=ctx.required_sf),
-                  "Spring shear stress at solid length", sf_kind="spring",
-                  explain="Stress when closed solid, F = k(L0 - Ls), against S_sy: a solid-safe spring takes no "
-                          "set if it is closed by accident (Shigley Sec. 10-7)."),
-        CheckSpec("buckling", _buckling, "Spring buckling (critical deflection)", needs=("force|deflection",),
-                  sf_kind="deflection",
-                  explain="Working deflection against the critical deflection of Shigley Eq. (10-10) with alpha "
-                          "of Table 10-2 (= EN 13906-1); an absolutely stable spring is held to its travel."),
-        CheckSpec("fatigue", _fatigue, "Spring fatigue (infinite life)",
-                  needs=("force|deflection", "force_min|deflection_min"), sf_kind="fatigue", default=False,
-                  explain="Zimmerli endurance data with a mean-stress criterion (Gerber by default) along the "
-                          "proportional load line (Shigley Secs. 10-9, 10-10)."),
-        CheckSpec("clash", _clash, "Spring clash allowance", needs=("force|deflection",), sf_kind="deflection",
-                  explain="(1 + 0.15) y_max <= L0 - Ls (Shigley Sec. 10-7), or EN 13906-1's minimum sum of "
-                          "gaps between coils (doubled when the case gives a fatigue cycle)."),
+        CheckSpec.of(sc.check_spring_static_stress, _static, needs=("force|deflection",)),
+        CheckSpec.of(sc.check_spring_solid_stress,
+                     lambda c, loads, ctx: sc.check_spring_solid_stress(c.spring, required_sf=ctx.required_sf)),
+        CheckSpec.of(sc.check_spring_buckling, _buckling, needs=("force|deflection",)),
+        CheckSpec.of(sc.check_spring_fatigue, _fatigue, needs=("force|deflection", "force_min|deflection_min"),
+                     default=False),
+        CheckSpec.of(sc.check_spring_clash, _clash, needs=("force|deflection",)),
     ),
 ))
 
@@ -220,55 +207,6 @@ def _extension_force(s: ExtensionSpring, loads: dict[str, Any]) -> pint.Quantity
     if "force" in loads:
         return _nonnegative(loads["force"].to("N"), "force (tension)")
     return s.force(_nonnegative(loads["extension"], "extension")).to("N")
-
-
-def _ext_inputs(s: ExtensionSpring, F: pint.Quantity) -> dict[str, Any]:
-    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index, "Nb": s._si["Nb"],
-            "Fi": s.initial_tension, "Sut": s.tensile_strength, "F": F}
-
-
-def _initial_tension_note(s: ExtensionSpring) -> str:
-    lo, hi = s.initial_stress_range()
-    return (f"initial stress tau_i = {fmt(s.initial_stress, 'MPa')}; preferred range for C = {s.index:.3g}: "
-            f"{fmt(lo, 'MPa')} .. {fmt(hi, 'MPa')} (Shigley Sec. 10-11, Fig. 10-7)")
-
-
-def extension_body_stress(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
-    """Body shear stress τ = K_B·8FD/(πd³) against the Table 10-7 body allowable (Shigley 10th ed. Sec. 10-11)."""
-    Fq = Q(to_si(F, "force", "F"), "N")
-    return CheckResult(
-        check="extension_body_stress", component=s.name, demand=s.body_stress(Fq), capacity=s.allowable("body"),
-        required_sf=required_sf, title="Extension spring body stress",
-        formula=r"\tau = K_B \frac{8 F D}{\pi d^3} \le S_{sy}", source=f"{SHIGLEY}, Eq. (10-7), Table 10-7",
-        inputs=_ext_inputs(s, Fq), notes=(_initial_tension_note(s),))
-
-
-def extension_hook_bending(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
-    """Bending and tension at hook section A against the Table 10-7 end-bending allowable."""
-    Fq = Q(to_si(F, "force", "F"), "N")
-    notes = ["hook bend radius r1 = " + fmt(Q(s._si["r1"], "m").to("mm")) + " (default D/2: full loop)"]
-    if s.r2 is None:
-        notes.append("hook torsion at B not checked: give hook_side_radius (r2)")
-    return CheckResult(
-        check="extension_hook_bending", component=s.name, demand=s.hook_bending_stress(Fq),
-        capacity=s.allowable("end_bending"), required_sf=required_sf, title="Extension spring hook bending (A)",
-        formula=r"\sigma_A = F \left[(K)_A \frac{16 D}{\pi d^3} + \frac{4}{\pi d^2}\right],\ "
-                r"(K)_A = \frac{4 C_1^2 - C_1 - 1}{4 C_1 (C_1 - 1)},\ C_1 = 2 r_1/d",
-        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r1": Q(s._si["r1"], "m").to("mm")}, notes=tuple(notes))
-
-
-def extension_hook_torsion(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> list[CheckResult]:
-    """Torsion at hook section B against the Table 10-7 end-torsion allowable (only when r2 is known)."""
-    if s.r2 is None:
-        return []
-    Fq = Q(to_si(F, "force", "F"), "N")
-    return [CheckResult(
-        check="extension_hook_torsion", component=s.name, demand=s.hook_torsion_stress(Fq),
-        capacity=s.allowable("end_torsion"), required_sf=required_sf, title="Extension spring hook torsion (B)",
-        formula=r"\tau_B = (K)_B \frac{8 F D}{\pi d^3},\ (K)_B = \frac{4 C_2 - 1}{4 C_2 - 4},\ C_2 = 2 r_2/d",
-        source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r2": Q(s._si["r2"], "m").to("mm")})]
 
 
 EXTENSION = REGISTRY.register(ComponentType(
@@ -287,20 +225,12 @@ EXTENSION = REGISTRY.register(ComponentType(
         Field("extension", "length", "largest extension from free length (instead of force): F = Fi + k y"),
     ),
     checks=(
-        CheckSpec("body_stress", lambda c, loads, ctx: extension_body_stress(
-            c, _extension_force(c, loads), required_sf=ctx.required_sf),
-            "Extension spring body stress", needs=("force|extension",), sf_kind="static",
-            explain="tau = K_B 8FD/(pi d^3) against the body allowable of Shigley Table 10-7."),
-        CheckSpec("hook_bending", lambda c, loads, ctx: extension_hook_bending(
-            c, _extension_force(c, loads), required_sf=ctx.required_sf),
-            "Extension spring hook bending (A)", needs=("force|extension",), sf_kind="static",
-            explain="Bending plus tension at the hook's section A against the end-bending allowable "
-                    "(Shigley Sec. 10-11, Table 10-7)."),
-        CheckSpec("hook_torsion", lambda c, loads, ctx: extension_hook_torsion(
-            c, _extension_force(c, loads), required_sf=ctx.required_sf),
-            "Extension spring hook torsion (B)", needs=("force|extension",), sf_kind="static",
-            explain="Torsion at the hook's side bend B against the end-torsion allowable; runs when "
-                    "hook_side_radius is given."),
+        CheckSpec.of(sc.check_extension_body_stress, lambda c, loads, ctx: sc.check_extension_body_stress(
+            c, _extension_force(c, loads), required_sf=ctx.required_sf), needs=("force|extension",)),
+        CheckSpec.of(sc.check_extension_hook_bending, lambda c, loads, ctx: sc.check_extension_hook_bending(
+            c, _extension_force(c, loads), required_sf=ctx.required_sf), needs=("force|extension",)),
+        CheckSpec.of(sc.check_extension_hook_torsion, lambda c, loads, ctx: sc.check_extension_hook_torsion(
+            c, _extension_force(c, loads), required_sf=ctx.required_sf), needs=("force|extension",)),
     ),
 ))
 
@@ -330,38 +260,6 @@ def _moment(s: TorsionSpring, loads: dict[str, Any]) -> pint.Quantity:
     return Q(s.rate().m_as("N*m/rad") * theta.m_as("rad"), "N*m")
 
 
-def _tor_inputs(s: TorsionSpring, M: pint.Quantity) -> dict[str, Any]:
-    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index,
-            "Na": s.active_turns, "Sut": s.tensile_strength, "M": M.to("N*mm")}
-
-
-def torsion_bending_stress(s: TorsionSpring, M: Any, *, required_sf: float = 1.0) -> CheckResult:
-    """Inner-fibre bending stress σ = K_i·32M/(πd³) against S_y of Shigley 10th ed. Eq. (10-57)."""
-    Mq = Q(to_si(M, "torque", "M"), "N*m")
-    Ki, _ = torsion_spring_factors(s.index)
-    return CheckResult(
-        check="torsion_spring_stress", component=s.name, demand=s.bending_stress(Mq), capacity=s.yield_strength,
-        required_sf=required_sf, title="Torsion spring bending stress",
-        formula=r"\sigma = K_i \frac{32 M}{\pi d^3} \le S_y,\ K_i = \frac{4 C^2 - C - 1}{4 C (C - 1)}",
-        source=f"{SHIGLEY}, Sec. 10-12, Eq. (10-43) (K_i), Eq. (10-57) (S_y)", inputs=_tor_inputs(s, Mq),
-        notes=(f"K_i = {Ki:.4g} (inner fibre, where the stress is highest when the spring winds up)",
-               "the load must close (wind up) the coils; unwinding loads need the residual-stress-free allowable"))
-
-
-def torsion_arbor_clearance(inst: TorsionInstallation, M: Any) -> CheckResult:
-    """The coil must not close onto its arbor: arbor diameter against the loaded inside diameter."""
-    s = inst.spring
-    Mq = Q(to_si(M, "torque", "M"), "N*m")
-    Di = s.loaded_inside_diameter(Mq)
-    return CheckResult(
-        check="torsion_spring_arbor", component=s.name, demand=inst.arbor_diameter.to("mm"), capacity=Di,
-        title="Torsion spring clearance on its arbor",
-        formula=r"D_{arbor} \le D_i' = \frac{D N_b}{N_b + \theta_c'} - d",
-        source=f"{SHIGLEY}, Sec. 10-12 (coil diameter under load)", inputs={**_tor_inputs(s, Mq), "angle": s.angle(Mq)},
-        notes=("theta_c' = body turns of wind-up (legs excluded), friction-corrected rate (Eq. (10-51))",
-               "to keep a diametral clearance margin, set a required_sf (1.1 = 10 %)"))
-
-
 TORSION = REGISTRY.register(ComponentType(
     name="torsion_spring",
     doc="A helical torsion spring (Shigley 10th ed. Sec. 10-12): static bending stress against S_y (Eq. 10-57) "
@@ -379,14 +277,10 @@ TORSION = REGISTRY.register(ComponentType(
         Field("angle", "angle", "largest wind-up angle (instead of moment): M = k' theta"),
     ),
     checks=(
-        CheckSpec("bending_stress", lambda c, loads, ctx: torsion_bending_stress(
-            c.spring, _moment(c.spring, loads), required_sf=ctx.required_sf),
-            "Torsion spring bending stress", needs=("moment|angle",), sf_kind="static",
-            explain="sigma = K_i 32M/(pi d^3) against S_y = 0.78 S_ut (music wire; Shigley Eq. (10-57))."),
-        CheckSpec("arbor_clearance", lambda c, loads, ctx: torsion_arbor_clearance(c, _moment(c.spring, loads))
-                  if c.arbor_diameter is not None else [],
-                  "Torsion spring clearance on its arbor", needs=("moment|angle",), sf_kind="deflection",
-                  explain="Arbor diameter against the inside diameter of the wound-up coil (Shigley Sec. 10-12); "
-                          "runs when arbor_diameter is given."),
+        CheckSpec.of(sc.check_torsion_spring_stress, lambda c, loads, ctx: sc.check_torsion_spring_stress(
+            c.spring, _moment(c.spring, loads), required_sf=ctx.required_sf), needs=("moment|angle",)),
+        CheckSpec.of(sc.check_torsion_spring_arbor, lambda c, loads, ctx: sc.check_torsion_spring_arbor(
+            c.spring, c.arbor_diameter, _moment(c.spring, loads), required_sf=ctx.required_sf)
+            if c.arbor_diameter is not None else [], needs=("moment|angle",)),
     ),
 ))
