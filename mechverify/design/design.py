@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
+import copy
 import dataclasses
-from collections.abc import Iterator
+import re
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from mechverify.checks import CheckResult, ResultSet
 from mechverify.checks.registry import deprecation_note
-from mechverify.design.loader import DesignData, DesignFileError, Entry, load_file
+from mechverify.design.loader import DesignData, DesignFileError, Entry, load_file, parse
 from mechverify.design.spec import CheckSpec
-from mechverify.errors import MechverifyError, ValidityError
+from mechverify.errors import MechverifyError, ValidityError, suggest
 from mechverify.units import Q
 
 
@@ -28,11 +30,63 @@ class CheckContext:
 
 
 class Design:
-    """A validated design file. ``verify()`` returns a :class:`~mechverify.checks.ResultSet`."""
+    """A validated design file. ``verify()`` returns a :class:`~mechverify.checks.ResultSet`.
 
-    def __init__(self, data: DesignData):
+    Variants without re-reading the file: :meth:`with_parameters` and :meth:`with_overrides`. A design pickles
+    as its validated TOML data, base path and files, and is rebuilt on unpickling (worker processes).
+    """
+
+    def __init__(self, data: DesignData, overrides: Mapping[str, Any] | None = None):
         self.data = data
+        #: key path -> value of every override applied since the file was read (see :meth:`with_overrides`)
+        self.overrides: dict[str, Any] = dict(overrides or {})
         self._check_plan()
+
+    # ----------------------------------------------------------------- variants
+    def with_overrides(self, overrides: Mapping[str, Any]) -> Design:
+        """A new design with values replaced by key path, validated and built again (this one is unchanged).
+
+        ``overrides`` maps key paths of the design file to values as the file would hold them (strings with
+        units, numbers, tables) or quantities: ``{"components.lift.mass": "210 kg", "parameters.payload":
+        "5 kg", "load_cases.raise.lift_screw.axial_force": Q(400, "N"), "components.d.transmission[0].diameter":
+        "25 mm"}``. Every key on the way must exist except the last one; a bad path or value is a
+        :class:`DesignFileError` with the key path.
+        """
+        doc = copy.deepcopy(self.data.raw)
+        errors = []
+        for key, value in overrides.items():
+            try:
+                _set_path(doc, key, _toml_value(value))
+            except _PathError as exc:
+                errors.append((key, str(exc)))
+        if errors:
+            raise DesignFileError(errors, str(self.path or ""))
+        return _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides})
+
+    def with_parameters(self, **values: Any) -> Design:
+        """A new design with ``[parameters]`` values replaced: ``design.with_parameters(payload="5 kg")``.
+
+        Values are strings with units, numbers, expressions or quantities; every name must be a parameter of the
+        file (an unknown one is a :class:`DesignFileError` with a suggestion).
+        """
+        known = self.data.raw.get("parameters", {}) if isinstance(self.data.raw.get("parameters"), dict) else {}
+        errors = []
+        for k in values:
+            if k not in known:
+                hint = suggest(k, known, 1)
+                more = f"; did you mean {hint[0]!r}?" if hint else f" (parameters: {', '.join(known) or 'none'})"
+                errors.append((f"parameters.{k}", "no such parameter" + more))
+        if errors:
+            raise DesignFileError(errors, str(self.path or ""))
+        return self.with_overrides({f"parameters.{k}": v for k, v in values.items()})
+
+    @property
+    def parameters(self) -> dict[str, Any]:
+        """Parameter name -> resolved value (a quantity or a number)."""
+        return dict(self.data.parameters)
+
+    def __reduce__(self) -> tuple[Any, tuple[Any, ...]]:
+        return _rebuild, (self.data.raw, self.data.path, list(self.data.files), self.overrides)
 
     # ----------------------------------------------------------------- access
     @property
@@ -95,6 +149,25 @@ class Design:
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
 
+    def derived_notes(self, component: str, load_case: str = "") -> tuple[str, ...]:
+        """Notes naming where the component's derived inputs came from (``axial_force = 350 N ← lifted_load``):
+        its fields, and its loads in ``load_case`` (a drive's ``"raise (mu_max = 0.25)"`` matches ``raise``)."""
+        trace = self.data.trace
+        if not trace.entries:
+            return ()
+        out = []
+        prefix = f"components.{component}."
+        for p in trace.entries:
+            if p.startswith(prefix) and "." not in p[len(prefix):].split("[")[0]:
+                out.append("derived input: " + trace.line(p, p[len(prefix):]))
+        for case in self.data.load_cases:
+            if load_case == case or load_case.startswith(case + " ("):
+                prefix = f"load_cases.{case}.{component}."
+                for p in trace.entries:
+                    if p.startswith(prefix) and p.count(".") == prefix.count("."):
+                        out.append(f"derived input ({case}): " + trace.line(p, p[len(prefix):]))
+        return tuple(out)
+
     def verify(self, progress: Any = None) -> ResultSet:
         """Run every enabled check of every component over its load cases.
 
@@ -121,6 +194,9 @@ class Design:
                     for r in out if isinstance(out, list | tuple) else [out]:
                         r = dataclasses.replace(r, component=entry.name, required_sf=sf,
                                                 load_case=case or r.load_case)
+                        derived = self.derived_notes(entry.name, r.load_case)
+                        if derived:
+                            r = dataclasses.replace(r, notes=(*r.notes, *derived))
                         found.setdefault(r.check, []).append(r)
                     if progress is not None:
                         progress()
@@ -147,6 +223,83 @@ def _beyond_validity(spec: CheckSpec, component: str, case: str, exc: ValidityEr
                        title=spec.title, load_case=case,
                        notes=(f"Not verifiable: {exc}. The inputs lie beyond the validity range of the method, "
                               "so the check fails; change the design or verify it another way.",))
+
+
+class _PathError(Exception):
+    pass
+
+
+_KEY = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
+
+
+def _split_path(key: str) -> list[str | int]:
+    parts: list[str | int] = []
+    pos = 0
+    for m in _KEY.finditer(key):
+        if m.start() != pos and key[pos:m.start()] != ".":
+            raise _PathError("not a key path such as 'components.lift.mass' or 'components.d.transmission[0].diameter'")
+        parts.append(m.group(1) if m.group(1) is not None else int(m.group(2)))
+        pos = m.end()
+    if not parts or pos != len(key):
+        raise _PathError("not a key path such as 'components.lift.mass'")
+    return parts
+
+
+def _set_path(doc: dict[str, Any], key: str, value: Any) -> None:
+    parts = _split_path(key)
+    node: Any = doc
+    for i, part in enumerate(parts[:-1]):
+        where = ".".join(str(p) for p in parts[:i + 1])
+        if isinstance(part, int):
+            if not isinstance(node, list) or not -len(node) <= part < len(node):
+                raise _PathError(f"{where}: no item [{part}]")
+            node = node[part]
+        else:
+            if not isinstance(node, dict):
+                raise _PathError(f"{where}: not a table")
+            if part not in node:
+                if i == 0 and part in ("parameters", "load_cases", "requirements", "materials"):
+                    node[part] = {}
+                else:
+                    hint = suggest(part, [k for k in node if isinstance(k, str)], 1)
+                    raise _PathError(f"no key {part!r} in {'.'.join(str(p) for p in parts[:i]) or 'the design'}"
+                                     + (f"; did you mean {hint[0]!r}?" if hint else ""))
+            node = node[part]
+    last = parts[-1]
+    if isinstance(last, int):
+        if not isinstance(node, list) or not -len(node) <= last < len(node):
+            raise _PathError(f"no item [{last}]")
+        node[last] = value
+    elif not isinstance(node, dict):
+        raise _PathError(f"{'.'.join(str(p) for p in parts[:-1])}: not a table")
+    else:
+        node[last] = value
+
+
+def _toml_value(v: Any) -> Any:
+    """A value as the TOML data would hold it (quantities as exact strings)."""
+    from mechverify.design.expressions import format_value
+    from mechverify.units import Quantity
+
+    if isinstance(v, Quantity):
+        return format_value(v)
+    if isinstance(v, Mapping):
+        return {k: _toml_value(x) for k, x in v.items()}
+    if isinstance(v, list | tuple):
+        return [_toml_value(x) for x in v]
+    return v
+
+
+def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], overrides: Mapping[str, Any]) -> Design:
+    """A design from its (merged) TOML data: the includes are already in ``doc``, so nothing is read."""
+    from mechverify.design import adapters  # noqa: F401  (registers the built-in component types)
+
+    design = doc.get("design")
+    if isinstance(design, dict) and "include" in design:
+        doc = {**doc, "design": {k: v for k, v in design.items() if k != "include"}}
+    data = parse(doc, path)
+    data.files = files
+    return Design(data, overrides)
 
 
 def load(path: str | Path, allow_outside: bool = False) -> Design:

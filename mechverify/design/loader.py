@@ -14,13 +14,23 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from mechverify.design.expressions import ExpressionError, format_value
+from mechverify.design.expressions import parse as parse_expression
+from mechverify.design.parameters import (
+    Trace,
+    resolve_fields,
+    resolve_load_cases,
+    resolve_parameters,
+    substitute,
+    value_or_deferred,
+)
 from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY, ComponentType, Field
 from mechverify.errors import MechverifyError, suggest
 from mechverify.materials import MaterialLibrary, default_library, material_from_dict
 from mechverify.materials.material import PROPERTY_DIMENSIONS
 from mechverify.units import DIMENSIONS, as_quantity
 
-TOP_KEYS = ("design", "requirements", "materials", "templates", "profiles", "components", "load_cases")
+TOP_KEYS = ("design", "parameters", "requirements", "materials", "templates", "profiles", "components", "load_cases")
 DESIGN_KEYS = ("name", "revision", "description", "include", "author")
 REQUIREMENT_FIELDS = (
     Field("g", "acceleration", "standard gravity used for self-weight", default="9.80665 m/s^2"),
@@ -71,6 +81,8 @@ class DesignData:
     load_cases: dict[str, dict[str, dict[str, Any]]]  # case -> component -> load name -> value
     load_case_docs: dict[str, str]
     raw: dict[str, Any]
+    parameters: dict[str, Any] = field(default_factory=dict)  # name -> value ([parameters], resolved)
+    trace: Trace = field(default_factory=Trace)  # derived values: key path -> (expression, value)
 
 
 class _Collector:
@@ -102,6 +114,10 @@ def _a(kind: str) -> str:
 def validate_value(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
     """Check one value against its field; record an error and return ``None`` when it is bad."""
     kind = f.kind
+    if isinstance(v, str) and (ctx.get("parameters") or ctx.get("component_names")):
+        done, out = _expression_value(f, v, path, col, ctx)
+        if done:
+            return out
     if kind in DIMENSIONS:
         if isinstance(v, bool) or not isinstance(v, str | int | float):
             col.add(path, f"expected {_a(kind)} as a string with units, got {_describe(v)}")
@@ -168,8 +184,48 @@ def validate_value(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, 
         if not isinstance(v, dict):
             col.add(path, f"expected a table, got {_describe(v)}")
             return None
-        return v
+        try:
+            return substitute(v, path, ctx, skip=_NAME_KEYS)
+        except ExpressionError as exc:
+            col.add(path, str(exc))
+            return None
     raise AssertionError(kind)
+
+
+#: Keys of inline tables that hold names, never expressions.
+_NAME_KEYS = ("type", "name", "at", "start", "end", "screw", "axis", "drive", "base")
+
+
+def _expression_value(f: Field, v: str, path: str, col: _Collector, ctx: dict[str, Any]) -> tuple[bool, Any]:
+    """``(True, value)`` when ``v`` is an expression reading parameters or component values (``value`` is
+    ``None`` after an error, a :class:`~mechverify.design.parameters.Deferred` for component values);
+    ``(False, None)`` when the value is to be read as before (a plain quantity, a name, free text)."""
+    if f.kind not in DIMENSIONS and f.kind not in ("int", "float", "str"):
+        return False, None
+    try:
+        e = parse_expression(v)
+    except ExpressionError:
+        return False, None  # not an expression: the plain reading reports what is wrong
+    if not e.names:
+        return False, None
+    if f.kind == "str":  # free text or a quantity read by the adapter: only expressions over parameters
+        params = ctx.get("parameters") or {}
+        if not params or not e.names <= set(params):
+            return False, None
+        try:
+            val = e.evaluate(params)
+        except ExpressionError as exc:
+            col.add(path, str(exc))
+            return True, None
+        ctx["trace"].add(path, e.source, val, tuple(sorted(e.names)))
+        return True, format_value(val)
+    try:
+        return True, value_or_deferred(v, f.kind, path, f.name, ctx)
+    except ExpressionError as exc:
+        col.add(path, str(exc))
+        return True, None
+
+
 
 
 def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: str, col: _Collector,
@@ -240,7 +296,7 @@ def _merge_includes(doc: dict[str, Any], base: Path | None, col: _Collector, all
     return merged
 
 
-def _materials(doc: dict[str, Any], col: _Collector) -> MaterialLibrary:
+def _materials(doc: dict[str, Any], col: _Collector, pctx: dict[str, Any]) -> MaterialLibrary:
     lib = MaterialLibrary(parent=default_library())
     table = doc.get("materials", {})
     if not isinstance(table, dict):
@@ -259,7 +315,7 @@ def _materials(doc: dict[str, Any], col: _Collector) -> MaterialLibrary:
                 ok = {}
                 for k, v in changes.items():
                     if k in PROPERTY_DIMENSIONS:
-                        q = validate_value(Field(k, PROPERTY_DIMENSIONS[k]), v, f"{path}.{k}", col, {})
+                        q = validate_value(Field(k, PROPERTY_DIMENSIONS[k]), v, f"{path}.{k}", col, pctx)
                         if q is not None:
                             ok[k] = q
                 lib.add(base.with_(name=name, **ok))
@@ -330,15 +386,34 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
 
 
 def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[str, Any]) -> None:
-    n_before = len(col.errors)
-    for e in entries.values():
-        path = f"{section}.{e.name}"
-        if any(p == path or p.startswith(path + ".") for p, _ in col.errors[:n_before]):
-            continue  # its fields already failed validation
+    """Build every entry; one whose fields read other components' outputs after those (dependency order)."""
+    bad = {e.name for e in entries.values()
+           if any(p == f"{section}.{e.name}" or p.startswith(f"{section}.{e.name}.") for p, _ in col.errors)}
+    building: set[str] = set()  # being built (a second visit is a cycle)
+    done: set[str] = set()
+
+    def build(e: Entry) -> bool:
+        if e.name in done:
+            return True
+        if e.name in bad or e.name in building:
+            return False
+        building.add(e.name)
         try:
+            if not resolve_fields(e, entries, ctx.get("parameters", {}), build, col.add, ctx["trace"]):
+                bad.add(e.name)
+                return False
             e.obj = e.type.build({**e.params, "_name": e.name}, ctx)
+            done.add(e.name)
+            return True
         except MechverifyError as exc:
-            col.add(path, str(exc))
+            col.add(f"{section}.{e.name}", str(exc))
+            bad.add(e.name)
+            return False
+        finally:
+            building.discard(e.name)
+
+    for e in entries.values():
+        build(e)
 
 
 def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False) -> DesignData:
@@ -352,6 +427,9 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
         col.add("design", "expected a table")
         design = {}
     col.unknown_keys(design, DESIGN_KEYS, "design")
+    trace = Trace()
+    params = resolve_parameters(doc.get("parameters"), col.add, trace)
+    pctx: dict[str, Any] = {"parameters": params, "trace": trace}
     name = design.get("name")
     if not isinstance(name, str) or not name.strip():
         col.add("design.name", "missing: the design's name (a string)")
@@ -362,7 +440,7 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     if not isinstance(req_raw, dict):
         col.add("requirements", "expected a table")
         req_raw = {}
-    requirements = _validate_fields(REQUIREMENT_FIELDS, req_raw, "requirements", col, {})
+    requirements = _validate_fields(REQUIREMENT_FIELDS, req_raw, "requirements", col, pctx)
     sfs = dict(DEFAULT_SAFETY_FACTORS)
     for k, v in (requirements.pop("safety_factors", None) or {}).items():
         p = f"requirements.safety_factors.{k}"
@@ -373,22 +451,25 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
             col.add(p, f"expected a positive number, got {_describe(v)}")
         else:
             sfs[k] = float(v)
-    materials = _materials(doc, col)
+    materials = _materials(doc, col, pctx)
     templates = doc.get("templates", {}) if isinstance(doc.get("templates", {}), dict) else {}
-    ctx: dict[str, Any] = {"materials": materials, "requirements": requirements,
+    ctx: dict[str, Any] = {"materials": materials, "requirements": requirements, **pctx,
                            "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {}}
     profiles = _typed_section(doc, "profiles", col, ctx, templates)
     ctx["profiles"] = profiles
     _build(profiles, "profiles", col, ctx)
     ctx["profile_objects"] = {k: e.obj for k, e in profiles.items()}
+    comp_table = doc.get("components", {})
+    ctx["component_names"] = set(comp_table) if isinstance(comp_table, dict) else set()
     components = _typed_section(doc, "components", col, ctx, templates)
     ctx["components"] = components
     load_cases, docs = _load_cases(doc, components, col, ctx)
     _build(components, "components", col, ctx)
+    resolve_load_cases(load_cases, components, params, col.add, trace)
     if col.errors:
         raise DesignFileError(col.errors, str(path) if path else "")
     return DesignData(path, files, name, str(revision), str(design.get("description", "")), requirements, sfs,
-                      materials, profiles, components, load_cases, docs, doc)
+                      materials, profiles, components, load_cases, docs, doc, params, trace)
 
 
 def _load_cases(doc: dict[str, Any], components: dict[str, Entry], col: _Collector,
