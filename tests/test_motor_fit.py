@@ -18,9 +18,9 @@ from mechverify.checks.motors import (
     check_gearhead_input_speed,
     check_gearhead_intermittent_torque,
     check_inertia_ratio,
-    check_max_speed,
-    check_peak_torque,
-    check_rms_torque,
+    check_motor_max_speed,
+    check_motor_peak_torque,
+    check_motor_rms_torque,
     motor_fit_checks,
 )
 from mechverify.components.gearheads import Gearhead, gearhead
@@ -74,12 +74,12 @@ def test_004_stepper_lift_fails_the_pullout_margin():
     prof = trapezoidal("400 mm", max_velocity="18 mm/s", acceleration="0.1 m/s**2")
     dem = tr.demand(prof)
     assert dem.peak_speed.m_as("rpm") == pytest.approx(540, rel=1e-9)
-    r = check_peak_torque(dem)
+    r = check_motor_peak_torque(dem)
     assert r.required_sf == 1.5
     assert r.verdict.value == "fail"
     assert r.capacity.m_as("N*m") == pytest.approx(0.35 - 0.1 * 40 / 350, rel=1e-6)
     assert "rpm" in r.load_case and "limit_torque" in r.details
-    assert check_peak_torque(dem, margin=1.0).verdict.value != "fail"
+    assert check_motor_peak_torque(dem, margin=1.0).verdict.value != "fail"
 
 
 def test_001_neck_motor_continuous_torque_fails():
@@ -107,7 +107,7 @@ def test_002_gearhead_claim_and_003_gearmotor_stall_only():
     assert r.demand.m_as("N*m") == pytest.approx(40, rel=1e-9) and r.verdict.value == "fail"
     # a gear-motor rated only by stall torque: the RMS check warns that no continuous rating exists
     tr2 = DriveTrain(motor("Pololu 150:1"), (), RotaryLoad("1e-5 kg*m**2", external_torque="0.1 N*m"))
-    r2 = check_rms_torque(tr2.demand(triangular("90 deg", duration="1 s")))
+    r2 = check_motor_rms_torque(tr2.demand(triangular("90 deg", duration="1 s")))
     assert r2.warnings and r2.verdict.value in ("warn", "fail")
 
 
@@ -147,14 +147,14 @@ def test_speed_checks():
     dem = tr.demand(trapezoidal("90 deg", max_velocity="10 rpm", acceleration="5 rad/s**2"))
     assert check_gearhead_input_speed(dem).demand.m_as("rpm") == pytest.approx(10 * 531441 / 625, rel=1e-9)
     assert check_gearhead_input_speed(dem).verdict.value == "fail"  # 8503 > 6000 rpm
-    assert check_max_speed(dem).verdict.value == "fail"  # > 7500 rpm limit speed
+    assert check_motor_max_speed(dem).verdict.value == "fail"  # > 7500 rpm limit speed
     assert check_gearhead_continuous_torque(dem).capacity.m_as("N*m") == 0.5
 
 
 def test_errors():
     with pytest.raises(InputError, match="stepper runs at rated current"):
         tr = DriveTrain(motor("stepper 004"), (), RotaryLoad("1e-5 kg*m**2"))
-        check_rms_torque(tr.demand(trapezoidal("1 rad", max_velocity="1 rad/s", acceleration="1 rad/s**2")))
+        check_motor_rms_torque(tr.demand(trapezoidal("1 rad", max_velocity="1 rad/s", acceleration="1 rad/s**2")))
     with pytest.raises(InputError, match="add a screw or drum"):
         DriveTrain(None, (gearhead("GP 22 850:1"),), LinearLoad("1 kg"))
     with pytest.raises(InputError, match="shorter than the profile"):
@@ -168,7 +168,7 @@ def test_errors():
         motor("RE 35 27376")
     with pytest.raises(InputError, match="no pull-out curve"):
         tr = DriveTrain(motor("STP-42D3018"), (), RotaryLoad("1e-5 kg*m**2"))
-        check_peak_torque(tr.demand(triangular_1s()))
+        check_motor_peak_torque(tr.demand(triangular_1s()))
 
 
 def test_gearhead_ratio_from_stages():

@@ -1,16 +1,16 @@
 """Motor-fit checks: a :class:`~mechverify.loads.drive_train.TorqueDemand` against the motor,
 gearhead and driver ratings, one check per limit, each naming the profile point that governs.
 
-* :func:`check_peak_torque` — |T| at every point against the motor's intermittent limit at that
+* :func:`check_motor_peak_torque` — |T| at every point against the motor's intermittent limit at that
   speed (DC: the speed-torque line at the supply voltage; stepper: the pull-out curve, with a
   margin, default 1.5; servo / gear-motor: their straight line);
-* :func:`check_rms_torque` — RMS torque over the cycle against the continuous (nominal) torque;
-* :func:`check_max_speed` — peak motor speed against the limit speed;
+* :func:`check_motor_rms_torque` — RMS torque over the cycle against the continuous (nominal) torque;
+* :func:`check_motor_max_speed` — peak motor speed against the limit speed;
 * :func:`check_gearhead_continuous_torque` / :func:`check_gearhead_intermittent_torque` — RMS and
   peak output torque of each gearhead against its ratings;
 * :func:`check_gearhead_input_speed` — peak input speed against the gearhead's limit;
 * :func:`check_inertia_ratio` — load inertia at the motor / rotor inertia against a limit;
-* :func:`check_supply_voltage`, :func:`check_driver_current` — DC motors: voltage and current
+* :func:`check_motor_supply_voltage`, :func:`check_driver_current` — DC motors: voltage and current
   needed at the worst point against the supply and the driver;
 * :func:`motor_fit_checks` — all of those that apply, as a :class:`ResultSet`.
 
@@ -33,14 +33,16 @@ from typing import Any
 
 import numpy as np
 
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, ResultSet
 from mechverify.components.gearheads import Gearhead
 from mechverify.errors import InputError
 from mechverify.loads.drive_train import TorqueDemand, rms
+from mechverify.references import ref
 from mechverify.units import Q, fmt, from_si, to_si
 
-_SRC_MAXON = "maxon motor, 'maxon DC motor: Key information' and 'maxon gear: Key information' (catalogue)"
-_SRC_ORIENTAL = "Oriental Motor, Technical Reference: Motor Sizing Calculations"
+_SRC_MAXON = ref("maxon", "'maxon DC motor: Key information' and 'maxon gear: Key information'")
+_SRC_ORIENTAL = ref("oriental_motor")
 
 #: Default margin on a stepper's pull-out torque (Oriental Motor recommends 1.5 to 2).
 STEPPER_MARGIN = 1.5
@@ -70,7 +72,14 @@ def _case(demand: TorqueDemand, i: int) -> str:
     return demand.describe(i)
 
 
-def check_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: float | None = None,
+@check("motor_peak_torque", title="Motor peak torque", sf_kind="motor",
+       source=f"{_SRC_ORIENTAL}; {_SRC_MAXON}",
+       explain=("|T(t)| at every profile point against the motor's intermittent limit at that speed (DC: speed-torque"
+                ' line at the supply voltage; stepper: pull-out curve), T = F/(r·eta) + J·alpha (Oriental Motor, '
+                'Motor Sizing Calculations; maxon Key information). Margin (motor class, default 1.5): the torque '
+                'comes from estimated friction, efficiency and load, so it carries their uncertainty (Oriental Motor:'
+                " 1.5-2 on a stepper's pull-out torque)."))
+def check_motor_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: float | None = None,
                       supply_voltage: Any = None, component: str | None = None) -> CheckResult:
     """|T(t)| against the motor's intermittent limit at the speed of the same point [1, 2].
 
@@ -117,7 +126,13 @@ def check_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: float 
         notes=tuple(notes), warnings=tuple(warnings), load_case=_case(demand, i), details=_plot(demand, m, U))
 
 
-def check_rms_torque(demand: TorqueDemand, motor: Any = None, *, component: str | None = None) -> CheckResult:
+@check("motor_rms_torque", title="Motor RMS torque", sf_kind="motor",
+       source=f"{_SRC_MAXON}; {ref('thk')}",
+       explain=('T_rms = sqrt(1/t_c ∫T² dt) over the duty cycle against the continuous (nominal) torque (maxon Key '
+                'information; THK). Not for steppers (they run at rated current). Margin (motor class, default 1.5): '
+                'the torque comes from estimated friction, efficiency and load, so it carries their uncertainty '
+                "(Oriental Motor: 1.5-2 on a stepper's pull-out torque)."))
+def check_motor_rms_torque(demand: TorqueDemand, motor: Any = None, *, component: str | None = None) -> CheckResult:
     """RMS torque over the duty cycle against the motor's continuous (nominal) torque [1, 3].
 
     For a servo or gear-motor rated only by stall torque, the stall torque is the capacity and a
@@ -144,7 +159,11 @@ def check_rms_torque(demand: TorqueDemand, motor: Any = None, *, component: str 
         warnings=tuple(warnings), load_case=f"whole cycle (peak at {_case(demand, i)})", details=_plot(demand, m))
 
 
-def check_max_speed(demand: TorqueDemand, motor: Any = None, *, component: str | None = None) -> CheckResult:
+@check("motor_max_speed", title="Motor speed", sf_kind="limit",
+       source=_SRC_MAXON,
+       explain=('Peak motor speed against its limit speed (maxon Key information). A rating that already carries the '
+                "maker's margin: class limit (default 1.0; raise [requirements.safety_factors] limit for more)."))
+def check_motor_max_speed(demand: TorqueDemand, motor: Any = None, *, component: str | None = None) -> CheckResult:
     """Peak motor speed against the limit speed (DC: limit speed, else no-load speed) [1]."""
     m = _motor(demand, motor)
     cap = m.speed_limit
@@ -170,6 +189,11 @@ def _gearheads(demand: TorqueDemand, gearhead: Any) -> list[Any]:
     return found
 
 
+@check("gearhead_continuous_torque", title="Gearhead continuous torque", sf_kind="motor",
+       source=_SRC_MAXON,
+       explain=('RMS output torque of the gearhead against its max. continuous torque (maxon gear Key information). '
+                'Margin (motor class, default 1.5): the torque comes from estimated friction, efficiency and load, so'
+                " it carries their uncertainty (Oriental Motor: 1.5-2 on a stepper's pull-out torque)."))
 def check_gearhead_continuous_torque(demand: TorqueDemand, gearhead: Any = None, *,
                                      component: str | None = None) -> CheckResult:
     """RMS output torque of the gearhead against its max. continuous torque [1]."""
@@ -189,6 +213,11 @@ def check_gearhead_continuous_torque(demand: TorqueDemand, gearhead: Any = None,
         details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")})
 
 
+@check("gearhead_intermittent_torque", title="Gearhead intermittent torque", sf_kind="motor",
+       source=_SRC_MAXON,
+       explain=('Peak output torque of the gearhead against its max. intermittent torque. Margin (motor class, '
+                'default 1.5): the torque comes from estimated friction, efficiency and load, so it carries their '
+                "uncertainty (Oriental Motor: 1.5-2 on a stepper's pull-out torque)."))
 def check_gearhead_intermittent_torque(demand: TorqueDemand, gearhead: Any = None, *,
                                        component: str | None = None) -> CheckResult:
     """Peak output torque of the gearhead against its max. intermittent torque [1]."""
@@ -205,6 +234,10 @@ def check_gearhead_intermittent_torque(demand: TorqueDemand, gearhead: Any = Non
         details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")})
 
 
+@check("gearhead_input_speed", title="Gearhead input speed", sf_kind="limit",
+       source=_SRC_MAXON,
+       explain=("Peak input speed against the gearhead's max. input speed. A rating that already carries the maker's "
+                'margin: class limit (default 1.0; raise [requirements.safety_factors] limit for more).'))
 def check_gearhead_input_speed(demand: TorqueDemand, gearhead: Any = None, *,
                                component: str | None = None) -> CheckResult:
     """Peak input speed against the gearhead's max. (intermittent if given) input speed [1]."""
@@ -224,6 +257,11 @@ def check_gearhead_input_speed(demand: TorqueDemand, gearhead: Any = None, *,
         source=_SRC_MAXON, notes=tuple(notes), load_case=_case(demand, i))
 
 
+@check("inertia_ratio", title="Inertia ratio", sf_kind="limit",
+       source=f"{_SRC_ORIENTAL}; {ref('thk')}",
+       explain=('Load inertia reflected to the motor, sum J_i/r_i², over the rotor inertia against the limit (default'
+                ' 10; Oriental Motor, THK). A serviceability guideline like a deflection limit (class limit, default '
+                '1.0): the limit already is the margin. Not for hobby servos.'))
 def check_inertia_ratio(demand: TorqueDemand, motor: Any = None, *, max_ratio: float | None = None,
                         component: str | None = None) -> CheckResult:
     """Load inertia reflected to the motor (stages included) over the rotor inertia [2, 3].
@@ -249,7 +287,11 @@ def check_inertia_ratio(demand: TorqueDemand, motor: Any = None, *, max_ratio: f
         load_case="whole cycle")
 
 
-def check_supply_voltage(demand: TorqueDemand, supply_voltage: Any, motor: Any = None, *,
+@check("motor_supply_voltage", title="Supply voltage", sf_kind="limit",
+       source=_SRC_MAXON,
+       explain=('DC motors with supply_voltage: U = R(|T|/k_t + I_0) + |omega|/k_n at the worst point against the '
+                'supply (maxon): a hard limit (class limit, default 1.0).'))
+def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: Any, motor: Any = None, *,
                          component: str | None = None) -> CheckResult:
     """DC motor: terminal voltage U = R·(|T|/k_t + I_0) + |ω|/k_n needed at the worst point
     against the supply (less the driver's drop, if any, given by the caller) [1]."""
@@ -266,6 +308,12 @@ def check_supply_voltage(demand: TorqueDemand, supply_voltage: Any, motor: Any =
         load_case=_case(demand, i), details=_plot(demand, m, to_si(supply_voltage, "voltage", "supply_voltage")))
 
 
+@check("driver_current", title="Driver current", sf_kind="motor",
+       source=_SRC_MAXON,
+       explain=("With driver_current: I = |T|/k_t + I_0 at the worst point against the driver's current (maxon). "
+                'Scales with the torque, so the torque margin applies. Margin (motor class, default 1.5): the torque '
+                'comes from estimated friction, efficiency and load, so it carries their uncertainty (Oriental Motor:'
+                " 1.5-2 on a stepper's pull-out torque)."))
 def check_driver_current(demand: TorqueDemand, max_current: Any, motor: Any = None, *,
                          component: str | None = None) -> CheckResult:
     """Motor current I = |T|/k_t + I_0 at the worst point against the driver's max. current [1]."""
@@ -290,7 +338,7 @@ def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver
     the peak-torque check is always run.
     """
     m = _motor(demand, None)
-    results = [check_peak_torque(demand, margin=margin, supply_voltage=supply_voltage)]
+    results = [check_motor_peak_torque(demand, margin=margin, supply_voltage=supply_voltage)]
 
     def maybe(fn: Any, *args: Any, **kw: Any) -> None:
         try:
@@ -299,8 +347,8 @@ def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver
             pass
 
     if m.kind != "stepper":
-        maybe(check_rms_torque)
-    maybe(check_max_speed)
+        maybe(check_motor_rms_torque)
+    maybe(check_motor_max_speed)
     maybe(check_inertia_ratio, max_ratio=max_inertia_ratio)
     for sd in demand.stages:
         if isinstance(sd.stage, Gearhead):
@@ -308,13 +356,14 @@ def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver
             maybe(check_gearhead_intermittent_torque, sd.stage)
             maybe(check_gearhead_input_speed, sd.stage)
     if supply_voltage is not None and m.kind == "dc":
-        results.append(check_supply_voltage(demand, supply_voltage))
+        results.append(check_motor_supply_voltage(demand, supply_voltage))
     if driver_current is not None:
         maybe(check_driver_current, driver_current)
     return ResultSet(results, name=demand.train.name)
 
 
-__all__ = ["check_peak_torque", "check_rms_torque", "check_max_speed", "check_gearhead_continuous_torque",
-           "check_gearhead_intermittent_torque", "check_gearhead_input_speed", "check_inertia_ratio",
-           "check_supply_voltage", "check_driver_current", "motor_fit_checks", "STEPPER_MARGIN",
+__all__ = ["check_motor_peak_torque", "check_motor_rms_torque", "check_motor_max_speed",
+           "check_gearhead_continuous_torque", "check_gearhead_intermittent_torque", "check_gearhead_input_speed",
+           "check_inertia_ratio",
+           "check_motor_supply_voltage", "check_driver_current", "motor_fit_checks", "STEPPER_MARGIN",
            "INERTIA_RATIO_LIMIT"]

@@ -477,7 +477,7 @@ def _sf(ctx: Any) -> float:
 
 
 def _peak(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult:
-    r = mc.check_peak_torque(dem, margin=_sf(ctx), supply_voltage=d.supply_voltage)
+    r = mc.check_motor_peak_torque(dem, margin=_sf(ctx), supply_voltage=d.supply_voltage)
     missing = _not_checked(d)
     if missing:
         r = dataclasses.replace(r, notes=(*r.notes, "not checked, rating missing: " + "; ".join(missing)))
@@ -487,7 +487,7 @@ def _peak(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult:
 def _rms(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
     if d.motor.kind == "stepper":
         return None
-    return _with_rms(mc.check_rms_torque(dem), dem, d, prof, _sf(ctx))
+    return _with_rms(mc.check_motor_rms_torque(dem), dem, d, prof, _sf(ctx))
 
 
 def _not_checked(d: Drive) -> list[str]:
@@ -520,7 +520,7 @@ def _or_none(fn: Callable[[], CheckResult]) -> CheckResult | None:
 
 
 def _speed(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
-    r = _or_none(lambda: mc.check_max_speed(dem))
+    r = _or_none(lambda: mc.check_motor_max_speed(dem))
     return None if r is None else _with_rms(r, dem, d, prof, _sf(ctx))
 
 
@@ -540,7 +540,7 @@ def _inertia(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | 
 def _voltage(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
     if d.supply_voltage is None or d.motor.kind != "dc":
         return None
-    return _with_rms(mc.check_supply_voltage(dem, d.supply_voltage), dem, d, prof, _sf(ctx))
+    return _with_rms(mc.check_motor_supply_voltage(dem, d.supply_voltage), dem, d, prof, _sf(ctx))
 
 
 def _current(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
@@ -548,11 +548,6 @@ def _current(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | 
         return None
     return _or_none(lambda: mc.check_driver_current(dem, d.driver_current))
 
-
-_MARGIN = ("Margin (motor class, default 1.5): the torque comes from estimated friction, efficiency and load, so it "
-           "carries their uncertainty (Oriental Motor: 1.5-2 on a stepper's pull-out torque).")
-_LIMIT = ("A rating that already carries the maker's margin: class limit (default 1.0; raise "
-          "[requirements.safety_factors] limit for more).")
 
 DRIVE = REGISTRY.register(ComponentType(
     name="drive",
@@ -594,34 +589,15 @@ DRIVE = REGISTRY.register(ComponentType(
         Field("load_factor", "float", "multiplies mass or inertia, external force or torque and gravity torque"),
     ),
     checks=(
-        CheckSpec("motor_peak_torque", _drive_check(_peak), "Motor peak torque", sf_kind="motor",
-                  explain="|T(t)| at every profile point against the motor's intermittent limit at that speed (DC: "
-                          "speed-torque line at the supply voltage; stepper: pull-out curve), T = F/(r·eta) + J·alpha "
-                          "(Oriental Motor, Motor Sizing Calculations; maxon Key information). " + _MARGIN),
-        CheckSpec("motor_rms_torque", _drive_check(_rms), "Motor RMS torque", sf_kind="motor",
-                  explain="T_rms = sqrt(1/t_c ∫T² dt) over the duty cycle against the continuous (nominal) torque "
-                          "(maxon Key information; THK). Not for steppers (they run at rated current). " + _MARGIN),
-        CheckSpec("motor_max_speed", _drive_check(_speed), "Motor speed", sf_kind="limit",
-                  explain="Peak motor speed against its limit speed (maxon Key information). " + _LIMIT),
-        CheckSpec("gearhead_continuous_torque", _drive_check(_gear(mc.check_gearhead_continuous_torque)),
-                  "Gearhead continuous torque", sf_kind="motor",
-                  explain="RMS output torque of the gearhead against its max. continuous torque (maxon gear Key "
-                          "information). " + _MARGIN),
-        CheckSpec("gearhead_intermittent_torque", _drive_check(_gear(mc.check_gearhead_intermittent_torque)),
-                  "Gearhead intermittent torque", sf_kind="motor",
-                  explain="Peak output torque of the gearhead against its max. intermittent torque. " + _MARGIN),
-        CheckSpec("gearhead_input_speed", _drive_check(_gear(mc.check_gearhead_input_speed)),
-                  "Gearhead input speed", sf_kind="limit",
-                  explain="Peak input speed against the gearhead's max. input speed. " + _LIMIT),
-        CheckSpec("inertia_ratio", _drive_check(_inertia), "Inertia ratio", sf_kind="limit",
-                  explain="Load inertia reflected to the motor, sum J_i/r_i², over the rotor inertia against the "
-                          "limit (default 10; Oriental Motor, THK). A serviceability guideline like a deflection limit "
-                          "(class limit, default 1.0): the limit already is the margin. Not for hobby servos."),
-        CheckSpec("motor_supply_voltage", _drive_check(_voltage), "Supply voltage", sf_kind="limit",
-                  explain="DC motors with supply_voltage: U = R(|T|/k_t + I_0) + |omega|/k_n at the worst point "
-                          "against the supply (maxon): a hard limit (class limit, default 1.0)."),
-        CheckSpec("driver_current", _drive_check(_current), "Driver current", sf_kind="motor",
-                  explain="With driver_current: I = |T|/k_t + I_0 at the worst point against the driver's current "
-                          "(maxon). Scales with the torque, so the torque margin applies. " + _MARGIN),
+        CheckSpec.of(mc.check_motor_peak_torque, _drive_check(_peak)),
+        CheckSpec.of(mc.check_motor_rms_torque, _drive_check(_rms)),
+        CheckSpec.of(mc.check_motor_max_speed, _drive_check(_speed)),
+        CheckSpec.of(mc.check_gearhead_continuous_torque, _drive_check(_gear(mc.check_gearhead_continuous_torque))),
+        CheckSpec.of(mc.check_gearhead_intermittent_torque,
+                     _drive_check(_gear(mc.check_gearhead_intermittent_torque))),
+        CheckSpec.of(mc.check_gearhead_input_speed, _drive_check(_gear(mc.check_gearhead_input_speed))),
+        CheckSpec.of(mc.check_inertia_ratio, _drive_check(_inertia)),
+        CheckSpec.of(mc.check_motor_supply_voltage, _drive_check(_voltage)),
+        CheckSpec.of(mc.check_driver_current, _drive_check(_current)),
     ),
 ))
