@@ -261,8 +261,18 @@ class Material:
                 new.setdefault(p, None)
                 derived.discard(p)
         sources = {**self.sources, **{k: "user" for k in changes}}
-        return dataclasses.replace(self, name=name or f"{self.name} (modified)", aliases=(),
-                                   sources=sources, derived=frozenset(derived), **new)
+        try:
+            return dataclasses.replace(self, name=name or f"{self.name} (modified)", aliases=(),
+                                       sources=sources, derived=frozenset(derived), **new)
+        except InputError as exc:
+            # yield <= ultimate holds for every material; a new yield above the base's ultimate needs both
+            pair = {"yield_strength", "ultimate_strength"}
+            if "exceeds ultimate" in str(exc) and len(pair & set(changes)) == 1:
+                given = (pair & set(changes)).pop()
+                other = (pair - {given}).pop()
+                raise InputError(f"{exc}; {self.name} has {other} {fmt(getattr(self, other), 'MPa')}: give "
+                                 f"{other} as well, e.g. with_({given}=..., {other}=...)") from None
+            raise
 
     def __repr__(self) -> str:
         parts = [f"{p}={fmt(getattr(self, p))}" for p in ("E", "yield_strength", "ultimate_strength", "density")

@@ -1,0 +1,122 @@
+"""Every documented snippet runs: the ```python and ```sh blocks of README.md and docs/*.md.
+
+A block that cannot run in a test (it runs ``make``, needs network access, ...) is preceded by an
+explicit ``<!-- skip-test: reason -->`` comment; every other block runs:
+
+- a ``python`` block in a fresh interpreter of this virtual environment, in a temporary folder holding
+  a copy of ``examples/`` (blocks of one file run separately: each must stand on its own);
+- a ``sh`` block line by line (comments stripped, ``\\`` continuations joined) with bash in a temporary
+  copy of ``examples/`` made a git repository (``origin/main`` points at its only commit, for
+  ``diff --base-ref``), ``mechverify`` resolved to this virtual environment's. A ``mechverify`` line may
+  exit 0 or 1 (the documented verdicts: a check failing is a finding, not an error of the snippet);
+  anything else, or a traceback, fails the test.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+FENCE = re.compile(r"^```(\w+)[^\n]*\n(.*?)^```\s*$", re.S | re.M)
+SKIP = re.compile(r"<!--\s*skip-test:\s*(.+?)\s*-->\s*$")
+
+
+def blocks(path: Path) -> list[tuple[str, int, str, str | None]]:
+    """(language, line number, code, skip reason) of every fenced block of ``path``."""
+    text = path.read_text(encoding="utf-8")
+    out = []
+    for m in FENCE.finditer(text):
+        before = text[:m.start()].rstrip("\n").splitlines()
+        skip = SKIP.search(before[-1]) if before else None
+        out.append((m.group(1), text.count("\n", 0, m.start()) + 1, m.group(2), skip.group(1) if skip else None))
+    return out
+
+
+def cases(lang: str) -> list:
+    params = []
+    for doc in DOCS:
+        for kind, line, code, skip in blocks(doc):
+            if kind != lang:
+                continue
+            marks = [pytest.mark.skip(reason=f"skip-test: {skip}")] if skip else []
+            params.append(pytest.param(code, id=f"{doc.relative_to(ROOT)}:{line}", marks=marks))
+    return params
+
+
+@pytest.fixture()
+def workdir(tmp_path: Path) -> Path:
+    """A copy of examples/ (without generated reports) in a git repository with origin/main (the tests
+    commit after each command line and move origin/main along: a user's design is committed)."""
+    work = tmp_path / "work"
+    shutil.copytree(ROOT / "examples", work / "examples",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.pdf", "*.html", "out"))
+    git = ["git", "-C", str(work), "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
+    subprocess.run([*git, "init", "-q"], check=True)
+    commit(work)
+    return work
+
+
+def commit(work: Path) -> None:
+    git = ["git", "-C", str(work), "-c", "user.name=t", "-c", "user.email=t@t", "-c", "commit.gpgsign=false"]
+    subprocess.run([*git, "add", "-A"], check=True)
+    subprocess.run([*git, "commit", "-q", "--allow-empty", "-m", "state"], check=True)
+    subprocess.run([*git, "update-ref", "refs/remotes/origin/main", "HEAD"], check=True)
+
+
+def _env() -> dict[str, str]:
+    env = dict(os.environ)
+    env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env.get('PATH', '')}"
+    env.setdefault("MPLBACKEND", "Agg")
+    env["COLUMNS"] = "160"
+    return env
+
+
+def sh_commands(code: str) -> list[str]:
+    """The command lines of a sh block: comments dropped, continuation lines joined."""
+    out, pending = [], ""
+    for raw in code.splitlines():
+        line = re.sub(r"(^|\s)#.*$", "", raw).strip()
+        if line.endswith("\\"):
+            pending += line[:-1].strip() + " "
+            continue
+        line = (pending + line).strip()
+        pending = ""
+        if line:
+            out.append(line)
+    return out
+
+
+def test_every_doc_has_been_scanned():
+    """The extraction itself: README has python and sh blocks; a skip comment is found."""
+    kinds = [b[0] for b in blocks(ROOT / "README.md")]
+    assert "python" in kinds and "sh" in kinds
+    assert any(b[3] for b in blocks(ROOT / "README.md"))  # `make demo` is marked skip-test
+    assert sh_commands("a  # x\nb \\\n  c\n# only a comment\n") == ["a", "b c"]
+
+
+@pytest.mark.parametrize("code", cases("python"))
+def test_python_block_runs(code: str, workdir: Path):
+    script = workdir / "snippet.py"
+    script.write_text(code, encoding="utf-8")
+    r = subprocess.run([sys.executable, str(script)], cwd=workdir, env=_env(), capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 0, f"the block failed:\n{code}\n--- stderr ---\n{r.stderr[-3000:]}"
+
+
+@pytest.mark.parametrize("code", cases("sh"))
+def test_sh_block_runs(code: str, workdir: Path):
+    for cmd in sh_commands(code):
+        r = subprocess.run(["bash", "-c", cmd], cwd=workdir, env=_env(), capture_output=True, text=True,
+                           timeout=300)
+        allowed = (0, 1) if cmd.startswith("mechverify ") else (0,)
+        assert r.returncode in allowed, f"{cmd!r} exited {r.returncode}:\n{r.stderr[-3000:]}"
+        assert "Traceback" not in r.stderr and "internal error" not in r.stderr, f"{cmd!r}:\n{r.stderr[-3000:]}"
+        commit(workdir)
