@@ -8,6 +8,11 @@
 - :class:`PinLoad` - a pin bearing on a hole: a total force spread over the half of the hole's wall
   the pin presses on, as a pressure ``p0 cos θ`` normal to the wall (θ from the force direction).
 - :class:`Gravity` - self-weight, ρ·g over the volume.
+
+Every load and support may state what its region should catch, ``expect_area=`` (solids: the loaded
+or held surface) or ``expect_length=`` (plane models: the boundary length); the model reports what
+each caught as a :class:`RegionReport` (count, length or area, resultant) and warns when it differs
+by more than :data:`mechverify.fea.regions.MEASURE_RTOL` from that or from the region's own measure.
 """
 
 from __future__ import annotations
@@ -17,8 +22,53 @@ from dataclasses import dataclass
 from typing import Any
 
 from mechverify.errors import InputError
-from mechverify.fea.regions import Region
+from mechverify.fea.regions import MEASURE_RTOL, Region
 from mechverify.units import to_si
+
+
+@dataclass(frozen=True)
+class RegionReport:
+    """What one load or support caught: ``count`` facets (solids: boundary triangles, plane models:
+    boundary edges; supports: held nodes), their total ``measure`` (m² or m, ``unit``), the
+    ``resultant`` force [N] (a load's total, a support's reaction once solved), the ``expected`` measure
+    (stated or the region's own) and a ``warning`` when they differ by more than ``MEASURE_RTOL``."""
+
+    item: str
+    count: int
+    measure: float
+    unit: str
+    resultant: tuple[float, ...] | None
+    expected: float | None
+    warning: str | None
+
+    def __str__(self) -> str:
+        scale, u = (1e6, "mm²") if self.unit == "m**2" else (1e3, "mm")
+        what = "nodes" if self.item.startswith(("Fixed", "Support")) else "facets"
+        text = f"{self.item}: {self.count} {what}, {self.measure * scale:.6g} {u}"
+        if self.resultant is not None:
+            text += ", resultant (" + ", ".join(f"{v:.4g}" for v in self.resultant) + ") N"
+        return text + (f" - {self.warning}" if self.warning else "")
+
+
+def compare_measure(item: str, caught: float, expected: float | None, unit: str) -> str | None:
+    """A warning when ``caught`` differs from ``expected`` by more than :data:`MEASURE_RTOL`, else None."""
+    if expected is None or expected <= 0:
+        return None
+    ratio = caught / expected
+    if abs(ratio - 1.0) <= MEASURE_RTOL:
+        return None
+    scale, u = (1e6, "mm²") if unit == "m**2" else (1e3, "mm")
+    return (f"WARNING: {item} caught {caught * scale:.6g} {u}, {100 * ratio:.1f} % of the expected "
+            f"{expected * scale:.6g} {u}; the region misses (or over-reaches) part of the intended boundary")
+
+
+def _expect(area: Any, length: Any) -> tuple[float | None, float | None]:
+    a = None if area is None else to_si(area, "area", "expect_area")
+    ln = None if length is None else to_si(length, "length", "expect_length")
+    for name, v in (("expect_area", a), ("expect_length", ln)):
+        if v is not None and v <= 0:
+            raise InputError(f"{name} must be positive")
+    return a, ln
 
 
 def pin_tractions(vector: Any, area: Any, normal: Any) -> Any:
@@ -61,9 +111,14 @@ class Fixed:
     """All displacement components of ``region`` are zero."""
 
     region: Region
+    expect_area: Any = None
+    expect_length: Any = None
 
     def __post_init__(self) -> None:
         _region(self.region, "Fixed")
+        a, ln = _expect(self.expect_area, self.expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
 
     @property
     def components(self) -> tuple[bool, bool, bool]:
@@ -78,9 +133,14 @@ class Support:
     x: bool = False
     y: bool = False
     z: bool = False
+    expect_area: Any = None
+    expect_length: Any = None
 
     def __post_init__(self) -> None:
         _region(self.region, "Support")
+        a, ln = _expect(self.expect_area, self.expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
         if not (self.x or self.y or self.z):
             raise InputError("Support: hold at least one of x, y, z")
 
@@ -95,10 +155,15 @@ class Force:
 
     region: Region
     vector: tuple[float, ...]
+    expect_area: float | None
+    expect_length: float | None
 
-    def __init__(self, region: Region, vector: Any):
+    def __init__(self, region: Region, vector: Any, *, expect_area: Any = None, expect_length: Any = None):
         object.__setattr__(self, "region", _region(region, "Force"))
         object.__setattr__(self, "vector", _vector(vector, "force", "Force.vector"))
+        a, ln = _expect(expect_area, expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
 
 
 @dataclass(frozen=True, init=False)
@@ -110,13 +175,18 @@ class PinLoad:
 
     region: Region
     vector: tuple[float, ...]
+    expect_area: float | None
+    expect_length: float | None
 
-    def __init__(self, region: Region, vector: Any):
+    def __init__(self, region: Region, vector: Any, *, expect_area: Any = None, expect_length: Any = None):
         object.__setattr__(self, "region", _region(region, "PinLoad"))
         vec = _vector(vector, "force", "PinLoad.vector")
         if not any(vec):
             raise InputError("PinLoad.vector: the force must not be zero")
         object.__setattr__(self, "vector", vec)
+        a, ln = _expect(expect_area, expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
 
 
 @dataclass(frozen=True, init=False)
@@ -125,10 +195,15 @@ class Pressure:
 
     region: Region
     value: float
+    expect_area: float | None
+    expect_length: float | None
 
-    def __init__(self, region: Region, value: Any):
+    def __init__(self, region: Region, value: Any, *, expect_area: Any = None, expect_length: Any = None):
         object.__setattr__(self, "region", _region(region, "Pressure"))
         object.__setattr__(self, "value", to_si(value, "pressure", "Pressure.value"))
+        a, ln = _expect(expect_area, expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
 
 
 @dataclass(frozen=True, init=False)

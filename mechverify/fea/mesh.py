@@ -4,8 +4,10 @@ Builders: :func:`box` (structured, no mesher needed), :func:`cylinder` and :func
 an optional GPL extra imported only when called), :func:`from_arrays`. STL files are read and
 checked with trimesh (:func:`stl_properties`: watertightness, volume, mass properties).
 
-Named regions (gmsh physical surfaces, or the faces a builder names) are stored as facet vertex
-triples so that :class:`mechverify.fea.regions.Named` can select them.
+Named regions (gmsh physical groups of any dimension, or the faces a builder names) are stored as
+vertex tuples - facet triples for surfaces, vertex pairs for curves, single vertices for points - so
+that :class:`mechverify.fea.regions.Named` can select them; the CAD area or length of each group gmsh
+knows is kept in ``SolidMesh.measures`` for the region reports.
 """
 
 from __future__ import annotations
@@ -62,7 +64,8 @@ class SolidMesh:
     """
 
     mesh: MeshTet
-    named: Mapping[str, np.ndarray] = field(default_factory=dict)  # name -> sorted facet vertex triples [k, 3]
+    named: Mapping[str, np.ndarray] = field(default_factory=dict)  # name -> sorted vertex tuples [k, 3|2|1]
+    measures: Mapping[str, float] = field(default_factory=dict)  # name -> CAD area [m²] / length [m]
 
     @cached_property
     def basis(self) -> Basis:
@@ -86,11 +89,33 @@ class SolidMesh:
         """Bounding-box diagonal [m]."""
         return float(np.linalg.norm(np.ptp(self.mesh.p, axis=1)))
 
-    def named_facets(self, name: str) -> np.ndarray:
-        """Boundary facet indices of the named region."""
+    def named_dimension(self, name: str) -> int:
+        """2 for a named surface, 1 for a curve, 0 for points."""
         from mechverify.errors import UnknownNameError
         if name not in self.named:
             raise UnknownNameError("mesh region", name, list(self.named))
+        return int(self.named[name].shape[1]) - 1
+
+    def named_nodes(self, name: str) -> np.ndarray:
+        """P2 node indices of a named region: its vertices and the mid-edge nodes of the mesh edges
+        whose both ends it holds along its facets or curve segments."""
+        dim = self.named_dimension(name)
+        want = self.named[name].astype(np.int64)
+        verts = np.unique(want)
+        if dim == 0:
+            return verts
+        pairs = want[:, [0, 1]] if dim == 1 else np.vstack([want[:, [0, 1]], want[:, [1, 2]], want[:, [0, 2]]])
+        n = self.mesh.nvertices
+        e = np.sort(self.mesh.edges.T, axis=1).astype(np.int64)
+        pairs = np.sort(pairs, axis=1)
+        hit = np.flatnonzero(np.isin(e[:, 0] * n + e[:, 1], pairs[:, 0] * n + pairs[:, 1]))
+        return np.concatenate([verts, n + hit])
+
+    def named_facets(self, name: str) -> np.ndarray:
+        """Boundary facet indices of the named region (a surface)."""
+        if self.named_dimension(name) != 2:
+            raise InputError(f"region {name!r} is a {('point set', 'curve')[self.named_dimension(name)]} of the "
+                             "mesh; a surface load needs a named surface")
         fac = np.sort(self.mesh.facets.T, axis=1).astype(np.int64)
         want = self.named[name].astype(np.int64)
         n = self.mesh.nvertices
@@ -107,7 +132,9 @@ def from_arrays(points: Any, tetrahedra: Any, named: Mapping[str, Any] | None = 
         raise InputError("from_arrays: expected points [n, 3] and tetrahedra [e, 4]")
     if t.min() < 0 or t.max() >= p.shape[1]:
         raise InputError("from_arrays: tetrahedra refer to points that do not exist")
-    nm = {k: np.sort(np.asarray(v, np.int64).reshape(-1, 3), axis=1) for k, v in (named or {}).items()}
+    nm = {k: np.sort(np.asarray(v, np.int64).reshape(len(v), -1), axis=1) for k, v in (named or {}).items()}
+    if any(v.shape[1] not in (1, 2, 3) for v in nm.values()):
+        raise InputError("from_arrays: named regions are vertex triples (facets), pairs (edges) or single vertices")
     return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), nm)
 
 
@@ -153,17 +180,43 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
     remap[used] = np.arange(used.size)
     p = coords[:, used]
     t = remap[t]
+    named, measures = physical_groups(gmsh, lambda k: remap[index[k]], (2, 1, 0))
+    return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), named, measures)
+
+
+#: Vertices of the linear element of each dimension (point, line, triangle).
+_GMSH_LINEAR = {0: 1, 1: 2, 2: 3}
+
+
+def physical_groups(gmsh: Any, to_vertex: Any, dims: tuple[int, ...]) -> tuple[dict[str, np.ndarray],
+                                                                                 dict[str, float]]:
+    """Named physical groups of the given dimensions of the current gmsh model: sorted vertex tuples per
+    group (``to_vertex`` maps gmsh node tags to mesh vertex indices; high-order nodes are dropped) and the
+    CAD measure of each group (OpenCASCADE mass: length or area) where gmsh knows it."""
     named: dict[str, np.ndarray] = {}
-    for dim, ptag in gmsh.model.getPhysicalGroups(2):
-        name = gmsh.model.getPhysicalName(dim, ptag) or f"surface{ptag}"
-        tris = []
+    measures: dict[str, float] = {}
+    for dim, ptag in gmsh.model.getPhysicalGroups():
+        if dim not in dims:
+            continue
+        name = gmsh.model.getPhysicalName(dim, ptag) or f"{('point', 'curve', 'surface')[dim]}{ptag}"
+        nv = _GMSH_LINEAR[dim]
+        chunks, total = [], 0.0
         for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, ptag):
-            _, _, ent_nodes = gmsh.model.mesh.getElements(dim, ent)
-            if len(ent_nodes):
-                tris.append(remap[index[ent_nodes[0].astype(np.int64)]].reshape(-1, 3))
-        if tris:
-            named[name] = np.sort(np.vstack(tris), axis=1)
-    return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), named)
+            types, _, ent_nodes = gmsh.model.mesh.getElements(dim, ent)
+            for ty, nodes in zip(types, ent_nodes):
+                npe = gmsh.model.mesh.getElementProperties(int(ty))[3]
+                if nodes.size:
+                    chunks.append(to_vertex(nodes.astype(np.int64).reshape(-1, npe)[:, :nv]))
+            if dim and total == total:  # not NaN yet: a CAD measure for every entity, or none
+                try:
+                    total += float(gmsh.model.occ.getMass(dim, ent))
+                except Exception:  # built-in geo kernel: no CAD measure
+                    total = float("nan")
+        if chunks:
+            named[name] = np.sort(np.vstack(chunks), axis=1)
+            if dim and total == total and total > 0:
+                measures[name] = total
+    return named, measures
 
 
 def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size_max: float, reach: float,

@@ -3,14 +3,21 @@
 - :func:`rectangle` - structured, no mesher needed.
 - :func:`polygon` - any shapely polygon with holes (outline, bolt holes, cut-outs), meshed by gmsh
   (an optional GPL extra, imported only here) with the element size graded down towards the holes.
+- :func:`from_gmsh_model` - the triangles of a 2D gmsh model with its physical curves (scikit-fem named
+  boundaries) and physical points (:attr:`NamedMeshTri.named_points`) for
+  :class:`mechverify.fea.regions.Named`.
+
+Triangles are kept counter-clockwise (:func:`tri_mesh`).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 from skfem import MeshTri
+from skfem.mesh import MeshTri1
 
 from mechverify.errors import InputError, ModelError
 from mechverify.fea.mesh import contiguous, gmsh_session, import_gmsh, refine_near
@@ -29,6 +36,15 @@ def orient_triangles(p: np.ndarray, t: np.ndarray) -> np.ndarray:
     return t
 
 
+@dataclass(repr=False)
+class NamedMeshTri(MeshTri1):
+    """A scikit-fem ``MeshTri`` that also knows named vertex sets (gmsh physical points) and the CAD
+    length of its named boundaries (``measures``, m); everything else is scikit-fem's."""
+
+    named_points: dict[str, np.ndarray] = field(default_factory=dict)
+    measures: dict[str, float] = field(default_factory=dict)
+
+
 def tri_mesh(p: np.ndarray, t: np.ndarray, like: MeshTri | None = None) -> MeshTri:
     """A scikit-fem ``MeshTri`` that keeps the vertex order of ``t`` (counter-clockwise after
     :func:`orient_triangles`).
@@ -39,7 +55,11 @@ def tri_mesh(p: np.ndarray, t: np.ndarray, like: MeshTri | None = None) -> MeshT
     boundaries of ``like`` (``MeshTri.boundaries``: facet index sets) are carried over by their vertices.
     """
     p, t = contiguous(p, t)
-    m = MeshTri(p, t, sort_t=False)
+    if isinstance(like, NamedMeshTri):
+        m: MeshTri = NamedMeshTri(p, t, sort_t=False, named_points=dict(like.named_points),
+                                  measures=dict(like.measures))
+    else:
+        m = MeshTri(p, t, sort_t=False)
     if like is not None and like.boundaries:
         m = m.with_boundaries({k: _facets_of(m, like.facets[:, v]) for k, v in like.boundaries.items()})
     return m
@@ -122,3 +142,32 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
     p = coords.reshape(-1, 3).T[:2, used]
     t = remap[t]
     return tri_mesh(p, orient_triangles(p, t))
+
+
+def from_gmsh_model(gmsh: Any) -> NamedMeshTri:
+    """The triangles of the current (2D, meshed) gmsh model in its x-y plane, counter-clockwise, with
+    its physical curves as named boundaries and its physical points as named vertex sets."""
+    from mechverify.fea.mesh import physical_groups
+
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
+    index[tags.astype(np.int64)] = np.arange(tags.size)
+    tris = []
+    for ty, npe in ((2, 3), (9, 6)):  # linear or quadratic triangles: the corners
+        _, ntags = gmsh.model.mesh.getElementsByType(ty)
+        if ntags.size:
+            tris.append(index[ntags.astype(np.int64)].reshape(-1, npe)[:, :3])
+    if not tris:
+        raise ModelError("gmsh produced no triangles (is the geometry a closed surface, meshed in 2D?)")
+    t = np.vstack(tris).T
+    used = np.unique(t)
+    remap = np.full(tags.size, -1, dtype=np.int64)
+    remap[used] = np.arange(used.size)
+    p = coords.reshape(-1, 3).T[:2, used]
+    t = remap[t]
+    named, measures = physical_groups(gmsh, lambda k: remap[index[k]], (1, 0))
+    base = tri_mesh(p, orient_triangles(p, t))
+    points = {k: np.unique(v) for k, v in named.items() if v.shape[1] == 1}
+    m = NamedMeshTri(base.p, base.t, sort_t=False, named_points=points, measures=measures)
+    curves = {k: _facets_of(m, v.T) for k, v in named.items() if v.shape[1] == 2}
+    return m.with_boundaries(curves) if curves else m

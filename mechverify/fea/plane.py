@@ -29,12 +29,23 @@ from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import mesh2d
 from mechverify.fea.linsolve import solve
-from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, PinLoad, Pressure, Support, pin_tractions
+from mechverify.fea.loads import (
+    STANDARD_GRAVITY,
+    Fixed,
+    Force,
+    Gravity,
+    PinLoad,
+    Pressure,
+    RegionReport,
+    Support,
+    compare_measure,
+    pin_tractions,
+)
 from mechverify.fea.progress import Steps
 from mechverify.fea.recovery import project
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
-from mechverify.fea.solid import _as_material, _equilibrium
+from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
 from mechverify.materials.material import Material
 from mechverify.units import to_si
 
@@ -94,25 +105,61 @@ class PlaneModel:
     def size(self) -> float:
         return float(np.linalg.norm(np.ptp(self.mesh.p, axis=1)))
 
+    def _named_edges(self, name: str) -> np.ndarray:
+        """Mask over the boundary edges of a named curve (scikit-fem boundary / gmsh physical curve)."""
+        from mechverify.errors import UnknownNameError
+
+        facets = (self.mesh.boundaries or {}).get(name)
+        if facets is None:
+            points = getattr(self.mesh, "named_points", {})
+            if name in points:
+                raise InputError(f"region {name!r} is a set of points; a load needs a named curve")
+            raise UnknownNameError("mesh region", name, [*(self.mesh.boundaries or {}), *points])
+        return np.isin(self.mesh.boundary_facets(), facets)
+
     def _edges(self, region: Region) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        if isinstance(region, Named):
-            raise InputError("named regions are not available on 2D meshes; use Plane, Box or Cylinder")
         nodes, length, normal = self._boundary
-        inside = region.contains(self.basis.doflocs, 1e-6 * self.size)
-        sel = np.all(inside[nodes[:, :2]], axis=1)  # by the end vertices (a chord's middle is off an arc)
+        if isinstance(region, Named):
+            sel = self._named_edges(region.name)
+        else:
+            inside = region.contains(self.basis.doflocs, 1e-6 * self.size)
+            sel = np.all(inside[nodes[:, :2]], axis=1)  # by the end vertices (a chord's middle is off an arc)
         if not np.any(sel):
             raise InputError(f"{region.describe()} contains no boundary edge of the mesh")
         return nodes[sel], length[sel], normal[sel]
 
+    def _support_nodes(self, region: Region) -> np.ndarray:
+        """Held nodes: boundary vertices in the region and the middles of boundary edges with both ends in it
+        (a named curve: its edges' three nodes; named points: those vertices)."""
+        nodes_all, _, _ = self._boundary
+        if isinstance(region, Named):
+            points = getattr(self.mesh, "named_points", {})
+            if region.name in points:
+                return np.asarray(points[region.name], np.int64)
+            return np.unique(nodes_all[self._named_edges(region.name)])
+        bverts = np.unique(nodes_all[:, :2])
+        inside = np.zeros(self.basis.N, dtype=bool)
+        inside[bverts] = region.contains(self.basis.doflocs[:, bverts], 1e-6 * self.size)
+        if not np.any(inside):
+            raise InputError(f"{region.describe()} contains no boundary node of the mesh")
+        edge_in = inside[nodes_all[:, 0]] & inside[nodes_all[:, 1]]
+        return np.unique(np.r_[np.flatnonzero(inside), nodes_all[edge_in, 2]])
+
     def load_vector(self, area: np.ndarray | None = None) -> np.ndarray:
         """The consistent nodal load vector ``[2n]`` [N] (node-interleaved DOFs)."""
+        parts = self._load_parts(area)
+        return np.sum([f for _, f in parts], axis=0) if parts else np.zeros(2 * self.basis.N)
+
+    def _load_parts(self, area: np.ndarray | None = None) -> list[tuple[np.ndarray | None, np.ndarray]]:
+        """Each load's nodal force vector ``[2n]`` and the lengths of the edges it acts on (None: gravity)."""
         b = self.basis
         if area is None:
             area = asm.barycentric_gradients(self.mesh.p, self.mesh.t)[1]
-        f = np.zeros(2 * b.N)
-        fv = f.reshape(-1, 2)
         t = self.thickness
+        out: list[tuple[np.ndarray | None, np.ndarray]] = []
         for ld in self.loads:
+            f = np.zeros(2 * b.N)
+            fv = f.reshape(-1, 2)
             if isinstance(ld, Gravity):
                 rho = self.material.require("density").m_as("kg/m**3")
                 g = np.array(ld.acceleration[:2] if ld.acceleration is not None else (0.0, -STANDARD_GRAVITY))
@@ -120,6 +167,7 @@ class PlaneModel:
                 for i in range(2):
                     fv[:, i] += np.bincount(mids.ravel(), weights=np.repeat(area[None, :] / 3 * rho * g[i] * t, 3,
                                                                              axis=0).ravel(), minlength=b.N)
+                out.append((None, f))
                 continue
             nodes, length, normal = self._edges(ld.region)
             if isinstance(ld, Force):
@@ -132,26 +180,58 @@ class PlaneModel:
             for i in range(2):
                 fv[:, i] += np.bincount(nodes.ravel(), weights=(length[:, None] * t * w[None, :]
                                                                 * traction[:, i:i + 1]).ravel(), minlength=b.N)
-        return f
+            out.append((length, f))
+        return out
+
+    def region_reports(self, reaction: np.ndarray | None = None) -> tuple[RegionReport, ...]:
+        """What each load and support caught (edge count, boundary length, resultant) and a warning where the
+        length differs from ``expect_length`` or the region's known length (an :class:`Arc`, a
+        :class:`Polyline`, a named gmsh curve) by more than :data:`~mechverify.fea.regions.MEASURE_RTOL`.
+        ``reaction[2n]`` (nodal reactions of a solution) gives each support's resultant."""
+        out = []
+        for k, (ld, (length, f)) in enumerate(zip(self.loads, self._load_parts())):
+            total = tuple(f.reshape(-1, 2).sum(axis=0))
+            if length is None:
+                out.append(RegionReport(f"{type(ld).__name__} {k + 1}", 0, 0.0, "m", total, None, None))
+                continue
+            name = f"{type(ld).__name__} {k + 1} on {ld.region.describe()}"
+            got = float(length.sum())
+            expected = ld.expect_length if ld.expect_length is not None else self._known_length(ld.region)
+            out.append(RegionReport(name, int(length.size), got, "m", total, expected,
+                                    compare_measure(name, got, expected, "m")))
+        nodes_all, blen, _ = self._boundary
+        for k, s in enumerate(self.supports):
+            name = f"{type(s).__name__} {k + 1} on {s.region.describe()}"
+            nodes = self._support_nodes(s.region)
+            held = np.zeros(self.basis.N, bool)
+            held[nodes] = True
+            got = float(blen[np.all(held[nodes_all], axis=1)].sum())
+            res = None
+            if reaction is not None:
+                comp = np.array(s.components[:2], bool)
+                res = tuple(np.where(comp, reaction.reshape(-1, 2)[nodes].sum(axis=0), 0.0))
+            expected = s.expect_length if s.expect_length is not None else self._known_length(s.region)
+            out.append(RegionReport(name, int(nodes.size), got, "m", res, expected,
+                                    compare_measure(name, got, expected, "m")))
+        return tuple(out)
+
+    def _known_length(self, region: Region) -> float | None:
+        if isinstance(region, Named):
+            return getattr(self.mesh, "measures", {}).get(region.name)
+        return region.measure(2)
 
     def held_dofs(self) -> np.ndarray:
+        """Indices of the DOFs the supports hold at zero."""
         if not self.supports:
             raise ModelError("the model has no supports; add Fixed(...) or Support(...) on a region")
-        nodes_all, _, _ = self._boundary
-        bverts = np.unique(nodes_all[:, :2])
         held = []
         for s in self.supports:
-            inside = np.zeros(self.basis.N, dtype=bool)
-            inside[bverts] = s.region.contains(self.basis.doflocs[:, bverts], 1e-6 * self.size)
-            if not np.any(inside):
-                raise InputError(f"{s.region.describe()} contains no boundary node of the mesh")
-            edge_in = inside[nodes_all[:, 0]] & inside[nodes_all[:, 1]]
-            nodes = np.unique(np.r_[np.flatnonzero(inside), nodes_all[edge_in, 2]])
+            if isinstance(s, Support) and s.z and not (s.x or s.y):
+                raise InputError("Support(z=True) has no meaning in a 2D model; hold x and/or y")
+            nodes = self._support_nodes(s.region)
             for i, on in enumerate(s.components[:2]):
                 if on:
                     held.append(2 * nodes + i)
-            if isinstance(s, Support) and s.z and not (s.x or s.y):
-                raise InputError("Support(z=True) has no meaning in a 2D model; hold x and/or y")
         return np.unique(np.concatenate(held))
 
     def solve(self, progress: bool | None = None) -> FieldResults:
@@ -180,6 +260,7 @@ class PlaneModel:
             s = project(comps, area, b.element_dofs, pattern)
             timings["recovery"] = time.perf_counter() - t1
             reaction, applied = _equilibrium(K, u, f, held, b.doflocs, 2)
+            reports = self.region_reports(nodal_reactions(K, u, f, held))
         n = b.N
         sigma = np.zeros((n, 3, 3))
         sigma[:, 0, 0], sigma[:, 1, 1] = s[:, 0], s[:, 1]
@@ -192,4 +273,5 @@ class PlaneModel:
         return FieldResults(
             kind=f"plane {self.plane}", points=pts, u=uu, sigma=sigma, material=mat,
             reaction=np.r_[reaction, 0.0], applied=np.r_[applied, 0.0],
-            cells=[("triangle6", b.element_dofs.T.copy())], surface=m.t.T.copy(), info=info, timings=timings)
+            cells=[("triangle6", b.element_dofs.T.copy())], surface=m.t.T.copy(), info=info, timings=timings,
+            regions=reports, warnings=tuple(r.warning for r in reports if r.warning))

@@ -78,6 +78,8 @@ class FieldResults:
     timings: Mapping[str, float] = field(default_factory=dict)
     extra: Mapping[str, np.ndarray] = field(default_factory=dict)
     notes: tuple[str, ...] = ()
+    regions: tuple[Any, ...] = ()  # RegionReport per load and support (mechverify.fea.loads)
+    warnings: tuple[str, ...] = ()  # e.g. a load region that caught less than the named geometry
 
     # -- fields -------------------------------------------------------------------------------
     @property
@@ -243,6 +245,10 @@ class FieldResults:
             "applied": self.applied_load,
             "solver": self.info,
         }
+        if self.regions:
+            out["regions"] = [str(r) for r in self.regions]
+        if self.warnings:
+            out["warnings"] = list(self.warnings)
         if self.material.yield_strength is not None:
             out["min_safety_factor"] = self.min_safety_factor()
         return out

@@ -32,7 +32,18 @@ import numpy as np
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea.linsolve import p1_prolongation, solve
-from mechverify.fea.loads import STANDARD_GRAVITY, Fixed, Force, Gravity, PinLoad, Pressure, Support, pin_tractions
+from mechverify.fea.loads import (
+    STANDARD_GRAVITY,
+    Fixed,
+    Force,
+    Gravity,
+    PinLoad,
+    Pressure,
+    RegionReport,
+    Support,
+    compare_measure,
+    pin_tractions,
+)
 from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
 from mechverify.fea.recovery import project
@@ -120,9 +131,14 @@ class SolidModel:
 
     # -- load vector and held DOFs ------------------------------------------------------------
     def _load_vector(self, measure: np.ndarray) -> np.ndarray:
-        f = np.zeros(self.mesh.n_dofs)
-        fv = f.reshape(-1, 3)
+        return np.sum([f for _, f in self._load_parts(measure)], axis=0) if self.loads else np.zeros(self.mesh.n_dofs)
+
+    def _load_parts(self, measure: np.ndarray) -> list[tuple[Facets | None, np.ndarray]]:
+        """Each load's nodal force vector ``[3n]`` and the facets it acts on (None for gravity)."""
+        out: list[tuple[Facets | None, np.ndarray]] = []
         for ld in self.loads:
+            f = np.zeros(self.mesh.n_dofs)
+            fv = f.reshape(-1, 3)
             if isinstance(ld, Gravity):
                 rho = self.material.require("density").m_as("kg/m**3")
                 g = np.array(ld.acceleration if ld.acceleration is not None else (0.0, 0.0, -STANDARD_GRAVITY))
@@ -131,6 +147,7 @@ class SolidModel:
                 for i in range(3):
                     fv[:, i] += np.bincount(ed.ravel(), weights=(w[:, None] * measure[None, :] * rho * g[i]).ravel(),
                                             minlength=fv.shape[0])
+                out.append((None, f))
                 continue
             fc = self.facets(ld.region)
             if isinstance(ld, Force):
@@ -143,13 +160,52 @@ class SolidModel:
             for i in range(3):
                 fv[:, i] += np.bincount(mids.ravel(), weights=np.repeat(fc.area / 3 * traction[:, i], 3),
                                         minlength=fv.shape[0])
-        return f
+            out.append((fc, f))
+        return out
+
+    def region_reports(self, reaction: np.ndarray | None = None) -> tuple[RegionReport, ...]:
+        """What each load and support caught (count, area, resultant) and a warning where the area differs
+        from ``expect_area`` or the region's known area (a named CAD surface) by more than
+        :data:`~mechverify.fea.regions.MEASURE_RTOL`. ``reaction[3n]`` (nodal reactions of a solution)
+        gives each support's resultant."""
+        _, measure = asm.barycentric_gradients(self.mesh.mesh.p, self.mesh.mesh.t)
+        out = []
+        for k, (ld, (fc, f)) in enumerate(zip(self.loads, self._load_parts(measure))):
+            name = f"{type(ld).__name__} {k + 1} on {getattr(ld, 'region', None) and ld.region.describe()}"
+            if fc is None:
+                out.append(RegionReport(f"{type(ld).__name__} {k + 1}", 0, 0.0, "m**2",
+                                        tuple(f.reshape(-1, 3).sum(axis=0)), None, None))
+                continue
+            area = float(fc.area.sum())
+            expected = ld.expect_area if ld.expect_area is not None else self._known_area(ld.region)
+            out.append(RegionReport(name, len(fc.area), area, "m**2", tuple(f.reshape(-1, 3).sum(axis=0)), expected,
+                                    compare_measure(name, area, expected, "m**2")))
+        bf, bnodes, barea, _ = self._boundary
+        for k, s in enumerate(self.supports):
+            name = f"{type(s).__name__} {k + 1} on {s.region.describe()}"
+            nodes = self._support_nodes(s.region, np.empty(0))
+            held = np.zeros(self.mesh.n_nodes, bool)
+            held[nodes] = True
+            area = float(barea[np.all(held[bnodes], axis=1)].sum())
+            res = None
+            if reaction is not None:
+                comp = np.array(s.components, bool)
+                res = tuple(np.where(comp, reaction.reshape(-1, 3)[nodes].sum(axis=0), 0.0))
+            expected = s.expect_area if s.expect_area is not None else self._known_area(s.region)
+            out.append(RegionReport(name, int(nodes.size), area, "m**2", res, expected,
+                                    compare_measure(name, area, expected, "m**2")))
+        return tuple(out)
+
+    def _known_area(self, region: Region) -> float | None:
+        if isinstance(region, Named):
+            return self.mesh.measures.get(region.name) if self.mesh.named_dimension(region.name) == 2 else None
+        return region.measure(3)
 
     def _support_nodes(self, region: Region, bnodes: np.ndarray) -> np.ndarray:
         """Nodes held by a support on ``region``: the boundary vertices in it and the mid-edge nodes of
         boundary edges with both ends in it (a face, an edge - a degenerate box - or a point)."""
         if isinstance(region, Named):
-            return np.unique(self.facets(region).nodes)
+            return self.mesh.named_nodes(region.name)
         m = self.mesh.mesh
         bf = self._boundary[0]
         bverts = np.unique(m.facets[:, bf])
@@ -212,11 +268,13 @@ class SolidModel:
             sigma = self._stresses(u, lam, mu, measure, pattern)
             timings["recovery"] = time.perf_counter() - t1
             reaction, applied = _equilibrium(K, u, f, held, self.mesh.points, 3)
+            reports = self.region_reports(nodal_reactions(K, u, f, held))
         bf, nodes, _, _ = self._boundary
         return FieldResults(
             kind="solid", points=self.mesh.points.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
-            surface=nodes[:, :3].copy(), info=info, timings=timings)
+            surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
+            warnings=tuple(r.warning for r in reports if r.warning))
 
     def _stresses(self, u: np.ndarray, lam: float, mu: float, measure: np.ndarray,
                   pattern: asm.BlockPattern) -> np.ndarray:
@@ -244,6 +302,13 @@ class SolidModel:
         m, b = self.mesh.mesh, self.mesh.basis
         s = asm.hooke(asm.strain_at_points(m.p, m.t, b.element_dofs, np.asarray(u).ravel()), lam, mu)
         return s[:, asm.natural_point_order(3)]
+
+
+def nodal_reactions(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray) -> np.ndarray:
+    """Nodal reaction forces ``K u - f`` at the held DOFs, zero elsewhere ``[dofs]`` [N]."""
+    r = np.zeros_like(f)
+    r[held] = (K @ u)[held] - f[held]
+    return r
 
 
 def _equilibrium(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray, points: np.ndarray,
