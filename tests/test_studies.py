@@ -19,7 +19,7 @@ import pytest
 from mechverify.design import load
 from mechverify.errors import InputError, UnitError, UnknownNameError
 from mechverify.studies import SizingError, Study, get_path, parse_vary, size, wilson_interval
-from mechverify.studies.params import apply_overrides, split_path
+from mechverify.studies.params import apply_overrides, resolver, split_path
 from mechverify.studies.tomlout import dumps
 
 LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
@@ -56,10 +56,16 @@ def _motor_fu(mass: float) -> float:
     return SF * torque / T_PULLOUT
 
 
+def _today_mass() -> float:
+    """The lift's mass in the file: 350 N / g (35.68 kg), written as a value or as an expression."""
+    return float(load(LIFT).data.components["lift"].params["mass"].to("kg").magnitude)
+
+
 def test_hand_calculation_reproduces_the_design_file_result():
     """At 35.68 kg the hand formula gives the u·SF the design verifies (guards the hand model itself)."""
     r = next(r for r in load(LIFT).verify() if r.check == "motor_peak_torque")
-    assert _motor_fu(35.68) == pytest.approx(r.factored_utilisation, rel=2e-3)
+    assert _today_mass() == pytest.approx(35.68, abs=0.01)
+    assert _motor_fu(_today_mass()) == pytest.approx(r.factored_utilisation, rel=2e-3)
 
 
 def test_size_largest_lift_mass_for_the_stepper_pullout_torque():
@@ -71,9 +77,10 @@ def test_size_largest_lift_mass_for_the_stepper_pullout_torque():
     assert m_hand == pytest.approx(14.86, abs=0.01)
     r = size(LIFT, "components.lift.mass", until="motor_peak_torque", bounds=("1 kg", "100 kg"))
     assert r.limit == pytest.approx(m_hand, rel=2e-3)
-    assert r.unit == "kg" and r.today == 35.68 and r.until == "lift.motor_peak_torque"
-    assert r.today_fu == pytest.approx(_motor_fu(35.68), rel=2e-3)
-    assert r.margin == pytest.approx((m_hand - 35.68) / 35.68, rel=5e-3)
+    m0 = _today_mass()
+    assert r.unit == "kg" and r.today == pytest.approx(m0, rel=1e-12) and r.until == "lift.motor_peak_torque"
+    assert r.today_fu == pytest.approx(_motor_fu(m0), rel=2e-3)
+    assert r.margin == pytest.approx((m_hand - m0) / m0, rel=5e-3)
     assert r.governing  # the check with the largest u·SF at the limit is named
     assert "limit 14.8" in r.text()
 
@@ -93,8 +100,9 @@ def test_key_paths_and_overrides_leave_the_source_alone():
     doc = _doc()
     assert split_path("components.lift.transmission[0].screw") == ["components", "lift", "transmission", 0, "screw"]
     assert get_path(doc, "components.lift.transmission[0].screw") == "lift_screw"
+    before = doc["components"]["lift"]["mass"]
     new = apply_overrides(doc, {"components.lift.mass": "20.0 kg", "load_cases.raise.lift_screw.axial_force": "1 kN"})
-    assert new["components"]["lift"]["mass"] == "20.0 kg" and doc["components"]["lift"]["mass"] == "35.68 kg"
+    assert new["components"]["lift"]["mass"] == "20.0 kg" and doc["components"]["lift"]["mass"] == before
     assert new["load_cases"]["raise"]["lift_screw"]["axial_force"] == "1 kN"
 
 
@@ -111,7 +119,7 @@ def test_key_paths_and_overrides_leave_the_source_alone():
 ])
 def test_bad_axes_are_named_errors(vary, error, match):
     with pytest.raises(error, match=match):
-        parse_vary(_doc(), vary)
+        parse_vary(_doc(), vary, resolver(load(LIFT)))
 
 
 def test_zero_monte_carlo_samples():
@@ -120,8 +128,32 @@ def test_zero_monte_carlo_samples():
 
 
 def test_bare_numbers_take_the_files_unit():
-    (ax,) = parse_vary(_doc(), ["components.lift.mass=20:30000 g:3"])
+    (ax,) = parse_vary({"components": {"c": {"mass": "35 kg"}}}, ["components.c.mass=20:30000 g:3"])
     assert ax.args == (20.0, 30.0, 3.0) and ax.param.unit == "kg"
+
+
+def test_a_value_written_as_an_expression_is_varied_from_its_resolved_value():
+    """[parameters] (issue 18): 'mass = "load / g"' resolves to 350 N / 9.81 m/s² = 35.678 kg; a sweep
+    replaces the expression by values in kg, a parameter sweep changes every value that uses it."""
+    doc = {"design": {"name": "p"}, "parameters": {"load": "350 N", "g": "9.81 m/s^2"},
+           "profiles": {"up": {"type": "trapezoidal", "distance": "450 mm", "max_velocity": "18 mm/s",
+                               "acceleration": "0.1 m/s^2"}},
+           "components": {"s": {"type": "lead_screw", "thread": "Tr10x2", "length": "450 mm",
+                                "material": "Inventor Steel", "nut_material": "iglidur R", "nut_length": "10 mm"},
+                          "lift": {"type": "drive", "motor": "NEMA 17 stepper 0.56 N·m (004 Table 8)",
+                                   "transmission": [{"type": "screw", "screw": "s"}], "mass": "load / g",
+                                   "incline": "90 deg", "profile": "up"}},
+           "load_cases": {"up": {"s": {"axial_force": "load", "rotational_speed": "540 rpm"}}}}
+    s = Study(doc, vary={"components.lift.mass": "30 kg:40 kg:2"})
+    assert s.axes[0].param.base == pytest.approx(35.678, abs=1e-3) and s.axes[0].param.unit == "kg"
+    res = s.run("serial")
+    assert [x["status"] for x in res.samples] == ["ok", "ok"], res.samples[0]["message"]
+    fu = [x["checks"]["lift.motor_peak_torque"]["fu"] for x in res.samples]
+    assert fu == [pytest.approx(_motor_fu(30.0), rel=3e-3), pytest.approx(_motor_fu(40.0), rel=3e-3)]
+    p = Study(doc, vary={"parameters.load": "300 N:400 N:2"}).run("serial")
+    pv = [x["checks"]["s.nut_pv"]["fu"] for x in p.samples]
+    assert pv[1] / pv[0] == pytest.approx(400 / 300, rel=1e-9)  # pv is proportional to the axial force
+    assert p.samples[1]["checks"]["lift.motor_peak_torque"]["fu"] > fu[1]  # 400 N / g = 40.8 kg > 40 kg
 
 
 def test_toml_writer_round_trips_the_design():

@@ -11,6 +11,8 @@ worker dies is retried once, then its samples are reported failed.
 from __future__ import annotations
 
 import concurrent.futures as cf
+import copy
+import json
 import math
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -19,7 +21,6 @@ from pathlib import Path
 from typing import Any
 
 from mechverify.errors import MechverifyError
-from mechverify.studies.params import apply_overrides
 
 _LIMITED = False
 
@@ -43,15 +44,29 @@ def _finite(x: float) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def evaluate(doc: Mapping[str, Any], path: str | None, overrides: Mapping[str, Any]) -> dict[str, Any]:
-    """Verify the design with ``overrides`` applied; a plain record (never raises for a bad sample)."""
+_BASE: dict[str, Any] = {}  # per process: the last base design built, by its TOML data
+
+
+def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
+    """The design of ``doc`` (no overrides), built once per process and reused by every batch of a study."""
     from mechverify.design import adapters  # noqa: F401  (registers the component types)
     from mechverify.design.design import Design
     from mechverify.design.loader import parse
 
+    key = json.dumps([doc, path], sort_keys=True)
+    if _BASE.get("key") != key:
+        _BASE.clear()
+        _BASE["design"] = Design(parse(copy.deepcopy(dict(doc)), Path(path) if path else None))
+        _BASE["key"] = key
+    return _BASE["design"]
+
+
+def evaluate(doc: Mapping[str, Any], path: str | None, overrides: Mapping[str, Any]) -> dict[str, Any]:
+    """Verify the design with ``overrides`` applied (:meth:`Design.with_overrides`); a plain record that
+    never raises for a bad sample. ``doc`` is the design's merged TOML data (no ``design.include``)."""
     try:
-        data = apply_overrides(doc, overrides)
-        rs = Design(parse(data, Path(path) if path else None)).verify()
+        design = _base_design(doc, path)
+        rs = (design.with_overrides(dict(overrides)) if overrides else design).verify()
     except MechverifyError as exc:
         return {"status": "error", "message": str(exc), "checks": {}}
     except Exception as exc:  # (a study never stops for one sample)

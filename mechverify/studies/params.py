@@ -122,8 +122,18 @@ class Parameter:
     integer: bool = False
 
     @classmethod
-    def of(cls, doc: Mapping[str, Any], path: str) -> Parameter:
+    def of(cls, doc: Mapping[str, Any], path: str, resolved: Any = None) -> Parameter:
+        """The parameter at ``path``. A value written as an expression (``"lifted_load / g"``) takes its
+        resolved value from ``resolved(path)`` (a quantity or None); varying it replaces the expression."""
         raw = get_path(doc, path)
+        if isinstance(raw, str) and resolved is not None:
+            try:
+                Q(raw)
+            except MechverifyError:
+                q = resolved(path)
+                if isinstance(q, Quantity) and isinstance(q.magnitude, int | float):
+                    unit = _si_unit(q)
+                    return cls(path, float(q.to(unit).magnitude), unit)
         if isinstance(raw, bool) or not isinstance(raw, int | float | str):
             raise InputError(f"parameter {path!r}: its value {raw!r} is not numeric; only numbers and quantities "
                              "(a number with a unit, e.g. \"35 kg\") can be varied")
@@ -172,6 +182,34 @@ class Parameter:
         if not self.unit:
             return float(x)
         return f"{float(x)!r} {self.unit}"
+
+
+def _si_unit(q: Any) -> str:
+    """The unit mechverify uses for q's dimension ("kg" for N·s²/m), else its SI base units."""
+    from mechverify.units import DIMENSIONS, ureg
+
+    for dim, unit in DIMENSIONS.values():
+        if dim and unit and ureg.get_dimensionality(dim) == q.dimensionality:
+            return unit
+    return _unit_text(q.to_base_units())
+
+
+def resolver(design: Any) -> Any:
+    """``path -> resolved value`` of a loaded design (parameters, component fields, load-case values)."""
+    def get(path: str) -> Any:
+        steps = split_path(path)
+        data = design.data
+        try:
+            if steps[0] == "parameters" and len(steps) == 2:
+                return design.parameters.get(steps[1])
+            if steps[0] in ("components", "profiles") and len(steps) == 3:
+                return getattr(data, steps[0])[steps[1]].params.get(steps[2])
+            if steps[0] == "load_cases" and len(steps) == 4:
+                return data.load_cases[steps[1]][steps[2]].get(steps[3])
+        except (KeyError, AttributeError, TypeError):
+            return None
+        return None
+    return get
 
 
 def _unit_text(q: Any) -> str:
@@ -232,9 +270,9 @@ class Axis:
 _ARITY = {"normal": 2, "uniform": 2, "triangular": 3}
 
 
-def parse_axis(doc: Mapping[str, Any], name: str, spec: Any) -> Axis:
+def parse_axis(doc: Mapping[str, Any], name: str, spec: Any, resolved: Any = None) -> Axis:
     """``spec``: ``"START:STOP:N"``, ``"normal:MEAN:SD"``, ``"uniform:LO:HI"``, ``"triangular:LO:MODE:HI"``."""
-    p = Parameter.of(doc, name)
+    p = Parameter.of(doc, name, resolved)
     if not isinstance(spec, str):
         raise InputError(f"{name}: expected a spec string such as '20 kg:60 kg:5' or 'normal:35 kg:1 kg', "
                          f"got {spec!r}")
@@ -271,7 +309,7 @@ def parse_axis(doc: Mapping[str, Any], name: str, spec: Any) -> Axis:
     return Axis(p, "sweep", (start, stop, float(n)), spec)
 
 
-def parse_vary(doc: Mapping[str, Any], vary: Any) -> list[Axis]:
+def parse_vary(doc: Mapping[str, Any], vary: Any, resolved: Any = None) -> list[Axis]:
     """Axes from ``{"path": "spec"}``, ``["path=spec", ...]`` or one ``"path=spec"`` string."""
     if isinstance(vary, str):
         vary = [vary]
@@ -292,4 +330,4 @@ def parse_vary(doc: Mapping[str, Any], vary: Any) -> list[Axis]:
     dup = {n for n in names if names.count(n) > 1}
     if dup:
         raise InputError(f"vary: {', '.join(sorted(dup))} given more than once")
-    return [parse_axis(doc, k, s) for k, s in items]
+    return [parse_axis(doc, k, s, resolved) for k, s in items]

@@ -20,8 +20,8 @@ import numpy as np
 
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.studies.execution import evaluate
-from mechverify.studies.params import Parameter
-from mechverify.studies.study import design_source
+from mechverify.studies.params import Parameter, resolver
+from mechverify.studies.study import design_and_source
 
 
 class SizingError(InputError):
@@ -81,8 +81,8 @@ def _resolve_check(until: str, checks: Sequence[str]) -> str:
 def size(design: Any, vary: str, until: str = "governing", bounds: Sequence[Any] | None = None, *,
          scan: int = 8, xtol: float | None = None) -> SizingResult:
     """Solve u·SF(x) = 1 for the parameter ``vary`` within ``bounds`` (default: today's value / 10 .. × 10)."""
-    doc, path = design_source(design)
-    p = Parameter.of(doc, vary)
+    doc, path, loaded = design_and_source(design)
+    p = Parameter.of(doc, vary, None if loaded is None else resolver(loaded))
     if bounds is None:
         if not p.base > 0:
             raise InputError(f"bounds: give the range to search for {vary} (today's value is {p.base:g})")

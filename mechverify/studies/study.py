@@ -24,14 +24,19 @@ import numpy as np
 
 from mechverify.errors import InputError
 from mechverify.studies import execution
-from mechverify.studies.params import Axis, apply_overrides, parse_vary
+from mechverify.studies.params import Axis, apply_overrides, parse_vary, resolver
 from mechverify.studies.stats import Z95, spearman, wilson_interval
 
 METHODS = ("lhs", "sobol", "random")
 
 
 def design_source(design: Any) -> tuple[dict[str, Any], str | None]:
-    """(TOML data, path) of a design given as a :class:`~mechverify.design.Design`, a path or a dict.
+    doc, path, _ = design_and_source(design)
+    return doc, path
+
+
+def design_and_source(design: Any) -> tuple[dict[str, Any], str | None, Any]:
+    """(TOML data, path, the loaded design or None) of a :class:`~mechverify.design.Design`, a path or a dict.
 
     The data are the design's as loaded, with its includes merged in (``design.include`` removed),
     so a task needs no file but the design's own folder for messages.
@@ -44,12 +49,14 @@ def design_source(design: Any) -> tuple[dict[str, Any], str | None]:
         doc = json.loads(json.dumps(design.data.raw))  # a plain, independent copy
         path = str(design.path) if design.path else None
     elif isinstance(design, Mapping):
-        doc, path = json.loads(json.dumps(dict(design))), None
+        doc, path, design = json.loads(json.dumps(dict(design))), None, None
     else:
         raise InputError(f"study: expected a Design, a design-file path or its TOML data, got {type(design).__name__}")
     if isinstance(doc.get("design"), dict) and "include" in doc["design"]:
         del doc["design"]["include"]
-    return doc, path
+    if design is None:  # TOML data given: validate and build it now (a bad design is an error before any task)
+        design = execution._base_design(doc, None)
+    return doc, path, design
 
 
 @dataclass
@@ -277,9 +284,9 @@ class Study:
 
     def __init__(self, design: Any, vary: Any, samples: int | None = None, method: str = "lhs",
                  seed: int | None = 0, batch_size: int | None = None):
-        self.doc, self.path = design_source(design)
+        self.doc, self.path, loaded = design_and_source(design)
         self.design_name = str(self.doc.get("design", {}).get("name", ""))
-        self.axes: list[Axis] = parse_vary(self.doc, vary)
+        self.axes: list[Axis] = parse_vary(self.doc, vary, None if loaded is None else resolver(loaded))
         sweeps = [a for a in self.axes if a.is_sweep]
         if sweeps and len(sweeps) != len(self.axes):
             raise InputError("vary: give either sweep axes (START:STOP:N) or distributions, not both in one study")
