@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields
+from dataclasses import MISSING, dataclass, field, fields
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -154,6 +154,10 @@ def gearhead_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | Non
         hint = suggest(bad, allowed)
         raise InputError(f"gearhead {d.get('name')!r}.{bad}: unknown key"
                          + (f"; did you mean {hint[0]!r}?" if hint else ""))
+    missing = sorted(f.name for f in fields(Gearhead) if f.init and f.name not in d
+                     and f.default is MISSING and f.default_factory is MISSING)
+    if missing:
+        raise InputError(f"gearhead {d.get('name')!r}.{missing[0]}: missing (a gearhead needs {', '.join(missing)})")
     refs = dict(references or {})
     if "source" in d:
         d["source"] = refs.get(d["source"], d["source"])

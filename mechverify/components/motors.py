@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields
+from dataclasses import MISSING, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
@@ -513,6 +513,11 @@ def motor_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None =
         hint = suggest(bad, allowed)
         raise InputError(f"motor {d.get('name')!r}.{bad}: unknown key"
                          + (f"; did you mean {hint[0]!r}?" if hint else ""))
+    missing = sorted(f.name for f in fields(cls) if f.init and f.name not in d
+                     and f.default is MISSING and f.default_factory is MISSING)
+    if missing:
+        raise InputError(f"motor {d.get('name')!r}.{missing[0]}: missing (a {typ} motor needs "
+                         f"{', '.join(missing)})")
     refs = dict(references or {})
     if "source" in d:
         d["source"] = refs.get(d["source"], d["source"])
