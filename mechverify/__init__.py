@@ -2,9 +2,21 @@
 
 Quantities come from one pint registry (:data:`mechverify.ureg`, :func:`mechverify.Q`); every check
 returns a :class:`mechverify.checks.CheckResult`.
+
+The documented entry points are attributes of this package, imported when first used (so that
+``import mechverify`` and the command line start without numpy, pint or scipy):
+
+- ``mechverify.load(path)`` - a design file (:func:`mechverify.design.load`);
+- ``Q``, ``Quantity``, ``QuantityLike``, ``ureg`` - units (:mod:`mechverify.units`);
+- ``materials``, ``components``, ``checks``, ``fea`` - the sub-packages;
+- ``SolidModel``, ``PlaneModel``, ``Frame``, ``PlateModel`` - the FEA models;
+- the errors (:mod:`mechverify.errors`, standard library only, imported at once).
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
 
 from mechverify.errors import (
     InputError,
@@ -14,12 +26,58 @@ from mechverify.errors import (
     UnknownNameError,
     ValidityError,
 )
-from mechverify.units import Q, Quantity, ureg
 
-try:
-    __version__ = version("mechverify")
-except PackageNotFoundError:  # running from a source tree that is not installed
-    __version__ = "0.0.0+source"
+if TYPE_CHECKING:  # for editors and type checkers; at run time these come from __getattr__
+    from mechverify import checks, components, design, fea, materials, units
+    from mechverify.components.plates import PlateModel
+    from mechverify.design import load
+    from mechverify.fea.frame import Frame
+    from mechverify.fea.plane import PlaneModel
+    from mechverify.fea.solid import SolidModel
+    from mechverify.units import Q, Quantity, QuantityLike, ureg
 
-__all__ = ["Q", "Quantity", "ureg", "MechverifyError", "UnitError", "InputError", "UnknownNameError",
-           "ValidityError", "ModelError", "__version__"]
+#: attribute -> (module, name in it, or None for the module itself)
+_LAZY: dict[str, tuple[str, str | None]] = {
+    "Q": ("mechverify.units", "Q"),
+    "Quantity": ("mechverify.units", "Quantity"),
+    "QuantityLike": ("mechverify.units", "QuantityLike"),
+    "ureg": ("mechverify.units", "ureg"),
+    "load": ("mechverify.design", "load"),
+    "SolidModel": ("mechverify.fea.solid", "SolidModel"),
+    "PlaneModel": ("mechverify.fea.plane", "PlaneModel"),
+    "Frame": ("mechverify.fea.frame", "Frame"),
+    "PlateModel": ("mechverify.components.plates", "PlateModel"),
+    **{m: (f"mechverify.{m}", None) for m in ("units", "materials", "components", "checks", "design", "fea",
+                                               "mechanisms", "loads", "fatigue", "reports", "studies")},
+}
+
+
+def __getattr__(name: str) -> Any:
+    if name == "__version__":
+        value: Any = _version()
+    elif name in _LAZY:
+        module, attr = _LAZY[name]
+        mod = importlib.import_module(module)
+        value = mod if attr is None else getattr(mod, attr)
+    else:
+        raise AttributeError(f"module 'mechverify' has no attribute {name!r}")
+    globals()[name] = value  # once imported, a plain attribute
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_LAZY, "__version__"})
+
+
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("mechverify")
+    except PackageNotFoundError:  # running from a source tree that is not installed
+        return "0.0.0+source"
+
+
+__all__ = ["Q", "Quantity", "QuantityLike", "ureg", "load", "materials", "components", "checks", "fea",
+           "SolidModel", "PlaneModel", "Frame", "PlateModel", "MechverifyError", "UnitError", "InputError",
+           "UnknownNameError", "ValidityError", "ModelError", "__version__"]
