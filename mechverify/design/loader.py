@@ -204,7 +204,10 @@ def _expression_value(f: Field, v: str, path: str, col: _Collector, ctx: dict[st
         return False, None
     try:
         e = parse_expression(v)
-    except ExpressionError:
+    except ExpressionError as exc:
+        if f.kind != "str" and (any(c in v for c in "()[]<>=;'\"") or "lambda" in v):
+            col.add(path, str(exc))  # meant as an expression: say what is wrong with it
+            return True, None
         return False, None  # not an expression: the plain reading reports what is wrong
     if not e.names:
         return False, None

@@ -12,6 +12,7 @@ load case, or an :class:`~mechverify.design.spec.Output` its type declares. Thos
 
 from __future__ import annotations
 
+import functools
 import keyword
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
@@ -53,8 +54,21 @@ class Trace:
 
 def show(v: Any) -> str:
     if isinstance(v, Quantity):
+        if len(v.units._units) > 1:  # kg·m/s² -> N: the SI unit of its kind, when the kind is unambiguous
+            kinds = [k for k, (dim, _) in DIMENSIONS.items()
+                     if dim and k not in ("torque", "energy", "frequency", "angular_velocity", "torsional_stiffness")
+                     and v.dimensionality == _dimensionality(dim)]
+            if len(kinds) == 1:
+                v = v.to(DIMENSIONS[kinds[0]][1])
         return fmt(v)
     return f"{v:.6g}" if isinstance(v, float) else str(v)
+
+
+@functools.lru_cache(maxsize=64)
+def _dimensionality(dim: str) -> Any:
+    from mechverify.units import ureg
+
+    return ureg.get_dimensionality(dim)
 
 
 # --------------------------------------------------------------------------------------------- parameters
@@ -128,7 +142,7 @@ def resolve_parameters(table: Any, add: AddError, trace: Trace) -> dict[str, Any
 
     for name in exprs:
         visit(name, [])
-    return values
+    return {k: values[k] for k in table if k in values}
 
 
 # ------------------------------------------------------------------------------------------- one value
@@ -168,7 +182,10 @@ def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Map
 
 def _as_kind(v: Any, kind: str, source: str) -> Any:
     if kind in DIMENSIONS:
-        return check_kind(v, kind, source)
+        q = check_kind(v, kind, source)
+        if len(q.units._units) > 1 and kind not in ("angle", "angular_velocity", "dimensionless"):
+            q = q.to(DIMENSIONS[kind][1])  # N·s²/m -> kg: a derived value in the SI unit of its kind
+        return q
     q = v if isinstance(v, Quantity) else None
     if q is not None:
         if not q.dimensionless:
@@ -283,7 +300,8 @@ class _Resolver:
         except MechverifyError as exc:
             raise ExpressionError(f"{by.expr.source!r}: {ref}: {exc}") from None
         self.outputs[ref] = val
-        self.trace.add(f"load_cases.{self.case}.{ref}", f"output {out.name} of {comp} ({entry.type.name})", val)
+        self.trace.add(f"outputs.{self.case}.{ref}", f"output {out.name} of {comp} ({entry.type.name})", val,
+                       tuple(f"{comp}.{a}" for n in out.needs for a in n.split("|") if a in (loads or {})))
         return val
 
 

@@ -83,7 +83,7 @@ def test_self_locking_angles(results):
 def test_motor_torque_at_540_rpm_with_the_highest_friction(results):
     """Peak at the end of the 0.1 m/s² ramp: T = m (g + a) T/F(mu_max) + (J_rotor + J_screw) a 2 pi/l, with
     J_screw = pi rho L d2^4/32 (solid cylinder); limit by linear interpolation of the two curve points."""
-    m, g, a = 35.68, 9.80665, 0.1
+    m, g, a = F / 9.81, 9.80665, 0.1  # the design's mass = lifted_load / g with the document's g = 9.81 m/s²
     j = 82e-7 + math.pi * RHO * L * D2**4 / 32
     t = m * (g + a) * _torque_per_newton(MU_MAX) + j * a * 2 * math.pi / LEAD
     limit = 0.35 + (N_RPM - 500) / (850 - 500) * (0.25 - 0.35)

@@ -9,7 +9,7 @@ from mechverify.checks import screws as sc
 from mechverify.components.power_screw import LeadScrew, Nut
 from mechverify.components.threads import generic
 from mechverify.design.adapters.common import pick
-from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
 
 END_CASES = ("fixed-free", "pinned-pinned", "supported-supported", "fixed-pinned", "fixed-supported", "fixed-fixed")
@@ -47,6 +47,25 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> ScrewDrive:
                                                   engaged_threads="nut_engaged_threads", p_allow="nut_p_allow",
                                                   pv_allow="nut_pv_allow"))
     return ScrewDrive(screw, nut)
+
+
+def _rotational_speed(c: ScrewDrive, loads: Any) -> Any:
+    return loads["rotational_speed"] if "rotational_speed" in loads else c.screw.rotational_speed(loads["speed"])
+
+
+def _drive_torque(c: ScrewDrive, loads: Any) -> Any:
+    return c.screw.raise_torque(loads["axial_force"], c.nut.require_mu()[1])
+
+
+OUTPUTS = (  # values other components read as "<screw>.<name>" (design/parameters.py)
+    Output("rotational_speed", "angular_velocity", "screw speed (from the nut's linear speed when not given): "
+           "the speed of the bearings that carry the screw", _rotational_speed, needs=("speed|rotational_speed",)),
+    Output("support_axial_force", "force", "axial force the screw passes to its thrust bearing (= axial_force)",
+           lambda c, loads: abs(loads["axial_force"]), needs=("axial_force",)),
+    Output("drive_torque", "torque", "torque to raise the axial force at mu_max (Hamrock 3rd ed. Eq. 16.10): "
+           "the external torque of a drive that turns the screw without a screw stage", _drive_torque,
+           needs=("axial_force",)),
+)
 
 
 def _speed(loads: dict[str, Any]) -> dict[str, Any]:
@@ -105,4 +124,5 @@ TYPE = REGISTRY.register(ComponentType(
             c.screw, c.screw.rotational_speed(loads["speed"]) if "speed" in loads else loads["rotational_speed"]),
             needs=("speed|rotational_speed",)),
     ),
+    outputs=OUTPUTS,
 ))

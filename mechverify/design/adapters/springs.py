@@ -18,7 +18,7 @@ from mechverify.checks.result import CheckResult
 from mechverify.components.spring_formulas import SPRING_CLASSES
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring
 from mechverify.design.adapters.common import pick
-from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
 from mechverify.units import Q, fmt
 
@@ -193,6 +193,13 @@ COMPRESSION = REGISTRY.register(ComponentType(
         CheckSpec.of(sc.check_spring_fatigue, _fatigue, needs=("force|deflection", "force_min|deflection_min"),
                      default=False),
         CheckSpec.of(sc.check_spring_clash, _clash, needs=("force|deflection",)),
+    ),
+    outputs=(  # values other components read as "<spring>.<name>" (design/parameters.py)
+        Output("rate", "force_per_length", "spring rate k = d^4 G/(8 D^3 Na) (Shigley 10th ed. Eq. 10-9)",
+               lambda c, loads: c.spring.rate.to("N/mm")),
+        Output("force", "force", "working force of the case: force, or k times deflection", lambda c, loads: (
+            loads["force"] if "force" in loads else (c.spring.rate * loads["deflection"]).to("N")),
+            needs=("force|deflection",)),
     ),
 ))
 
