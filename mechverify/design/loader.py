@@ -8,6 +8,7 @@ No code is executed: values are strings with units, numbers, booleans and names.
 
 from __future__ import annotations
 
+import math
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -229,8 +230,6 @@ def _expression_value(f: Field, v: str, path: str, col: _Collector, ctx: dict[st
         return True, None
 
 
-
-
 def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: str, col: _Collector,
                      ctx: dict[str, Any], extra_keys: tuple[str, ...] = ()) -> dict[str, Any]:
     col.unknown_keys(table, [f.name for f in fields] + list(extra_keys), path)
@@ -250,6 +249,9 @@ def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: 
 
 def _read_toml(path: Path, col: _Collector, where: str) -> dict[str, Any]:
     try:
+        if path.exists() and not path.is_file() and not path.is_dir():  # a FIFO would block, a device never end
+            col.add(where, f"not a regular file: {path}")
+            return {}
         with path.open("rb") as fh:
             return tomllib.load(fh)
     except FileNotFoundError:
@@ -330,6 +332,29 @@ def _materials(doc: dict[str, Any], col: _Collector, pctx: dict[str, Any]) -> Ma
     return lib
 
 
+def _extend(raw: dict[str, Any], templates: dict[str, Any], path: str, col: _Collector) -> dict[str, Any] | None:
+    """``raw`` with its template (and the template's templates) filled in; ``None`` after an error
+    (an unknown template, a cycle of ``extends``)."""
+    chain: list[str] = []
+    out = {k: v for k, v in raw.items() if k != "extends"}
+    name = raw["extends"]
+    while True:
+        if not isinstance(name, str) or not isinstance(templates.get(name), dict):
+            hint = suggest(str(name), templates, 1)
+            where = f"{path}.extends" if not chain else f"templates.{chain[-1]}.extends"
+            col.add(where, f"no template {name!r}" + (f"; did you mean {hint[0]!r}?" if hint else ""))
+            return None
+        if name in chain:
+            col.add(f"{path}.extends", "templates extend each other in a cycle: " + " -> ".join([*chain, name]))
+            return None
+        chain.append(name)
+        base = templates[name]
+        out = {**{k: v for k, v in base.items() if k != "extends"}, **out}
+        if "extends" not in base:
+            return out
+        name = base["extends"]
+
+
 def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict[str, Any],
                    templates: dict[str, Any]) -> dict[str, Entry]:
     types = REGISTRY.in_section(section)
@@ -344,13 +369,9 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
             col.add(path, "expected a table")
             continue
         if "extends" in raw:
-            base = templates.get(raw["extends"])
-            if not isinstance(base, dict):
-                hint = suggest(str(raw["extends"]), templates, 1)
-                col.add(f"{path}.extends", f"no template {raw['extends']!r}" +
-                        (f"; did you mean {hint[0]!r}?" if hint else ""))
+            raw = _extend(raw, templates, path, col)
+            if raw is None:
                 continue
-            raw = {**base, **{k: v for k, v in raw.items() if k != "extends"}}
         tname = raw.get("type")
         if tname not in types:
             hint = suggest(str(tname), types, 1)
@@ -378,9 +399,14 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
             elif isinstance(setting, dict):
                 col.unknown_keys(setting, ("enabled", "required_sf"), cpath)
                 sf = setting.get("required_sf")
-                if sf is not None and (isinstance(sf, bool) or not isinstance(sf, int | float) or sf <= 0):
-                    col.add(f"{cpath}.required_sf", f"expected a positive number, got {_describe(sf)}")
-                checks[cname] = {k: v for k, v in setting.items() if k in ("enabled", "required_sf")} | alias
+                if sf is not None and (isinstance(sf, bool) or not isinstance(sf, int | float)
+                                       or not 0 < sf < math.inf):
+                    col.add(f"{cpath}.required_sf", f"expected a positive finite number, got {_describe(sf)}")
+                enabled = setting.get("enabled", True)  # settings without `enabled` turn the check on
+                if not isinstance(enabled, bool):
+                    col.add(f"{cpath}.enabled", f"expected true or false, got {_describe(enabled)}")
+                checks[cname] = {"enabled": enabled is not False,
+                                 **{k: v for k, v in setting.items() if k == "required_sf"}} | alias
             else:
                 col.add(cpath, "expected true, false or a table such as { required_sf = 2.0 }, "
                                f"got {_describe(setting)}")
@@ -434,8 +460,10 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     params = resolve_parameters(doc.get("parameters"), col.add, trace)
     pctx: dict[str, Any] = {"parameters": params, "trace": trace}
     name = design.get("name")
-    if not isinstance(name, str) or not name.strip():
+    if name is None or (isinstance(name, str) and not name.strip()):
         col.add("design.name", "missing: the design's name (a string)")
+    elif not isinstance(name, str):
+        col.add("design.name", f"expected a string, got {_describe(name)}; write it in quotes")
     revision = design.get("revision", "")
     if not isinstance(revision, str | int):
         col.add("design.revision", f"expected a string, got {_describe(revision)}")
@@ -444,14 +472,19 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
         col.add("requirements", "expected a table")
         req_raw = {}
     requirements = _validate_fields(REQUIREMENT_FIELDS, req_raw, "requirements", col, pctx)
+    for k in ("g", "bearing_life", "deflection_limit"):
+        m = getattr(requirements.get(k), "magnitude", requirements.get(k))
+        if isinstance(m, int | float) and not m > 0:
+            col.add(f"requirements.{k}", f"must be positive, got {_describe(req_raw.get(k, m))}")
+            requirements.pop(k)
     sfs = dict(DEFAULT_SAFETY_FACTORS)
     for k, v in (requirements.pop("safety_factors", None) or {}).items():
         p = f"requirements.safety_factors.{k}"
         if k not in DEFAULT_SAFETY_FACTORS:
             hint = suggest(k, DEFAULT_SAFETY_FACTORS, 1)
             col.add(p, "unknown check class" + (f"; did you mean {hint[0]!r}?" if hint else ""))
-        elif isinstance(v, bool) or not isinstance(v, int | float) or v <= 0:
-            col.add(p, f"expected a positive number, got {_describe(v)}")
+        elif isinstance(v, bool) or not isinstance(v, int | float) or not 0 < v < math.inf:
+            col.add(p, f"expected a positive finite number, got {_describe(v)}")
         else:
             sfs[k] = float(v)
     materials = _materials(doc, col, pctx)
