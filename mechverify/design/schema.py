@@ -14,13 +14,20 @@ from mechverify.materials.material import PROPERTY_DIMENSIONS
 from mechverify.units import DIMENSIONS
 
 QUANTITY_PATTERN = r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*[^\d\s].*$"
+#: An expression over parameters and component values (design/expressions.py): at least one name, no quotes,
+#: line breaks, ';' or '#'; at most 1,000 characters. The loader checks the grammar itself.
+EXPRESSION_PATTERN = r"^[^'\"\n\r;#\\]*[A-Za-z_][^'\"\n\r;#\\]*$"
+EXPRESSION = {"type": "string", "pattern": EXPRESSION_PATTERN, "maxLength": 1000,
+              "description": "an expression: numbers with units, parameters, <component>.<value>, + - * / ** ( ), "
+                             "sqrt sin cos tan atan2 min max abs pi"}
 
 
 def field_schema(f: Field) -> dict[str, Any]:
     doc = f.doc
     if f.kind in DIMENSIONS and f.kind != "dimensionless":
-        s: dict[str, Any] = {"type": "string", "pattern": QUANTITY_PATTERN,
-                             "description": f"{doc} [{f.kind.replace('_', ' ')}, e.g. '{DIMENSIONS[f.kind][1]}']"}
+        s: dict[str, Any] = {"type": "string", "anyOf": [{"pattern": QUANTITY_PATTERN}, EXPRESSION],
+                             "description": f"{doc} [{f.kind.replace('_', ' ')}, e.g. '{DIMENSIONS[f.kind][1]}'; or an "
+                                           "expression over parameters and component values]"}
     elif f.kind == "dimensionless":
         s = {"type": ["number", "string"], "description": doc}
     elif f.kind in ("str", "material", "ref"):
@@ -28,9 +35,9 @@ def field_schema(f: Field) -> dict[str, Any]:
     elif f.kind == "choice":
         s = {"enum": list(f.choices), "description": doc}
     elif f.kind == "int":
-        s = {"type": "integer", "description": doc}
+        s = {"anyOf": [{"type": "integer"}, EXPRESSION], "description": doc}
     elif f.kind == "float":
-        s = {"type": "number", "description": doc}
+        s = {"anyOf": [{"type": "number"}, EXPRESSION], "description": doc}
     elif f.kind == "bool":
         s = {"type": "boolean", "description": doc}
     elif f.kind == "list":
@@ -83,6 +90,11 @@ def design_schema() -> dict[str, Any]:
             "design": {"type": "object", "additionalProperties": False, "required": ["name"],
                        "properties": {k: ({"type": "array", "items": {"type": "string"}} if k == "include"
                                           else {"type": ["string", "integer"]}) for k in DESIGN_KEYS}},
+            "parameters": {"type": "object", "description": "named values usable in any expression: quantities "
+                           "('3 kg'), numbers, or expressions over other parameters",
+                           "propertyNames": {"pattern": "^[A-Za-z][A-Za-z0-9_]*$"},
+                           "additionalProperties": {"oneOf": [{"type": "number"}, {"type": "string",
+                                                                                  "maxLength": 1000}]}},
             "requirements": _object(REQUIREMENT_FIELDS[:-1], {"safety_factors": {
                 "type": "object", "additionalProperties": False,
                 "properties": {k: {"type": "number", "exclusiveMinimum": 0, "default": v}
