@@ -291,3 +291,17 @@ def test_design_pickles_by_its_data():
 
 def test_library_function_is_the_same_as_load():
     assert mechverify.design.load(LIFT).parameters["lifted_load"].m_as("N") == 350
+
+
+def test_report_appendix_and_json_show_the_load_path():
+    from mechverify.design.outputs import run_document
+    from mechverify.reports.render import render_html
+
+    d = load(LIFT)
+    rs = d.verify()
+    html = render_html([(d, rs)])
+    assert "<h3>Parameters</h3>" in html and "Derived values and connections" in html
+    assert "<code>lifted_load / g</code>" in html and "load_cases.raise.screw_bearing.axial_force" in html
+    doc = run_document([(d, rs)])
+    notes = [n for r in doc["designs"][0]["results"] for n in r["notes"]]
+    assert "derived input (raise): axial_force = 350 N ← lift_screw.support_axial_force" in notes

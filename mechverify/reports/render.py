@@ -100,6 +100,9 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
         params = []
         for k, v in entry.params.items():
             src = v.source if isinstance(v, Material) and v.source else "design file"
+            derived = entries.trace.entries.get(f"components.{name}.{k}") if hasattr(entries, "trace") else None
+            if derived:
+                src = f"design file: ← {derived[0]}"
             if isinstance(v, Material):
                 mats[v.name] = v
             params.append({"name": k, "value": _value(v), "source": src})
@@ -129,6 +132,23 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
         "results": [views[id(r)] for r in ordered],
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
         "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
+        **_parameters_view(entries),
+    }
+
+
+def _parameters_view(data: Any) -> dict[str, Any]:
+    """The design's [parameters] and every derived value with its expression and what it reads (the load path)."""
+    from mechverify.design.parameters import show
+
+    trace = getattr(data, "trace", None)
+    params = getattr(data, "parameters", None) or {}
+    entries = trace.entries if trace is not None else {}
+    edges = trace.edges if trace is not None else {}
+    return {
+        "parameters": [{"name": k, "value": show(v), "expression": entries.get(f"parameters.{k}", ("",))[0]}
+                       for k, v in params.items()],
+        "derived": [{"path": p, "value": show(v), "expression": src, "reads": ", ".join(edges.get(p, ()))}
+                    for p, (src, v) in entries.items() if not p.startswith("parameters.")],
     }
 
 
