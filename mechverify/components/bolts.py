@@ -244,6 +244,20 @@ def embedding_amount(roughness: QuantityLike, *, interfaces: int, nut: bool, tra
     return f * 1e-6
 
 
+def limiting_surface_pressure(material: str) -> float | None:
+    """VDI 2230 Table A9 limiting surface pressure p_G [Pa] for a clamped-part material named in the data file
+    (case and punctuation ignored; the name or its bracketed alias must match), else None."""
+    def norm(t: str) -> str:
+        return "".join(ch for ch in t.lower() if ch.isalnum())
+
+    key = norm(material)
+    for r in _load("bolts_vdi2230.toml")["surface_pressure"]:
+        names = [r["material"], *[x.strip(" )") for x in r["material"].split("(")[1:]]]
+        if key in (norm(n) for n in names) or key == norm(r["material"].split("(")[0]):
+            return float(r["p_G"]) * 1e6
+    return None
+
+
 def tightening_factor(technique: str) -> tuple[float, float]:
     """VDI 2230 Table A8 range of the tightening factor alpha_A for a tightening technique."""
     for r in _load("bolts_vdi2230.toml")["tightening"]:
@@ -656,9 +670,9 @@ class ClampedPart:
             raise InputError(f"clamped part material {mat.name} has no Young's modulus")
         alpha = thermal_expansion if thermal_expansion is not None else THERMAL_EXPANSION.get(mat.category, ALPHA_STEEL)
         cy = mat.compressive_yield_strength or mat.yield_strength
+        pg = to_si(p_G, "pressure", "p_G") if p_G is not None else limiting_surface_pressure(mat.name)
         return cls(t, to_si(mat.E, "pressure"), float(alpha), mat.name,
-                   None if mat.ultimate_strength is None else to_si(mat.ultimate_strength, "pressure"),
-                   None if p_G is None else to_si(p_G, "pressure", "p_G"),
+                   None if mat.ultimate_strength is None else to_si(mat.ultimate_strength, "pressure"), pg,
                    None if cy is None else to_si(cy, "pressure"))
 
     @property
@@ -1077,7 +1091,7 @@ class BoltPattern:
 
 __all__ = [
     "MetricThread", "metric_thread", "thread_sizes", "PropertyClass", "property_class", "head_bearing_diameter",
-    "nut_dimensions", "clearance_hole", "friction_class", "embedding_amount", "tightening_factor",
+    "nut_dimensions", "clearance_hole", "friction_class", "limiting_surface_pressure", "embedding_amount", "tightening_factor",
     "pitch_diameter", "minor_diameter", "stress_area", "shigley_bolt_stiffness", "frustum_stiffness",
     "member_stiffness_equal", "WILEMAN", "wileman_member_stiffness", "joint_constant", "shigley_preload",
     "shigley_yielding_factor", "shigley_load_factor", "shigley_separation_factor", "bolt_goodman_strength",

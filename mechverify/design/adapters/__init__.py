@@ -5,4 +5,4 @@ cases, how to build the component, and the checks it runs (functions of :mod:`me
 Importing this package registers them all in :data:`mechverify.design.spec.REGISTRY`.
 """
 
-from mechverify.design.adapters import bearings, drives, frame, members, plate_fea, screws, springs  # noqa: F401
+from mechverify.design.adapters import bearings, bolts, drives, frame, members, plate_fea, screws, springs  # noqa: F401

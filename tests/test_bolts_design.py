@@ -1,0 +1,78 @@
+"""Design-file types bolted_joint and bolt_group: parsing, checks per load case, named errors with key paths."""
+
+from __future__ import annotations
+
+import pytest
+
+from mechverify import design
+from mechverify.design.loader import DesignFileError
+
+BASE = """
+[design]
+name = "bolt test"
+
+[components.flange]
+type = "bolted_joint"
+thread = "{thread}"
+property_class = "8.8"
+length = "45 mm"
+parts = [{{ thickness = "10 mm", material = "S235JR" }}, {{ thickness = "10 mm", material = "S235JR" }}]
+{extra}
+
+[components.group]
+type = "bolt_group"
+thread = "M8"
+length = "35 mm"
+head = "socket"
+parts = [{{ thickness = "8 mm", material = "S235JR" }}, {{ thickness = "8 mm", material = "S235JR" }}]
+positions = ["0, 0", "80, 0", "80, 120", "0, 120"]
+mu_interface = 0.15
+
+[load_cases.run.flange]
+axial_force = "5 kN"
+transverse_force = "1 kN"
+temperature_change = "20 K"
+[load_cases.run.group]
+axial_force = "2 kN"
+moment_x = "300 N*m"
+force_x = "800 N"
+"""
+
+
+def _load(tmp_path, thread="M10", extra="mu_interface = 0.15"):
+    p = tmp_path / "d.toml"
+    p.write_text(BASE.format(thread=thread, extra=extra))
+    return design.load(p)
+
+
+def test_joint_and_group_run_every_check(tmp_path):
+    rs = list(_load(tmp_path).verify())
+    names = {(r.component, r.check) for r in rs}
+    for comp in ("flange", "group"):
+        for chk in ("bolt_assembly_stress", "bolt_working_stress", "bolt_fatigue", "bolt_surface_pressure_head",
+                    "bolt_surface_pressure_nut", "bolt_thread_stripping", "bolt_separation", "bolt_slip",
+                    "bolt_tightening_torque"):
+            assert (comp, chk) in names
+    group = {r.check: r for r in rs if r.component == "group"}
+    # moment_x = 300 N m over rows 120 mm apart: the top bolts (3, 4) carry 500 + 1250 N, they govern
+    assert group["bolt_working_stress"].details["governing_bolt"] in ("3", "4")
+    per = dict(group["bolt_separation"].details["per_bolt"])
+    assert per["3"] == pytest.approx(per["4"]) and per["3"] > per["1"]
+    assert "every bolt alike" in group["bolt_assembly_stress"].title
+
+
+def test_unknown_size_is_a_design_file_error(tmp_path):
+    with pytest.raises(DesignFileError, match="M11.*(M10|M12)"):
+        _load(tmp_path, thread="M11")
+
+
+def test_transverse_load_without_friction_is_named(tmp_path):
+    """A transverse load on a joint declared without mu_interface: a design-file error naming the check and case."""
+    d = _load(tmp_path, extra="")
+    with pytest.raises(DesignFileError, match=r"components.flange.checks.bolt_slip \[run\].*mu_T"):
+        d.verify()
+
+
+def test_negative_friction_is_rejected(tmp_path):
+    with pytest.raises(DesignFileError, match="negative"):
+        _load(tmp_path, extra="mu_thread = [-0.1, 0.12]\nmu_interface = 0.15")
