@@ -2,9 +2,10 @@
 
 ``python -m mechverify.demo`` (what ``make demo`` runs) verifies ``examples/lead_screw_lift/design.toml``
 (reference project 004: a Tr10x2 lead-screw lift for two wearable robotic arms: screw, nut, bearings, stepper
-drive, the screw bent in the horizontal posture) with the example's ``run.py``, prints the results table, and
-writes ``out/lead_screw_lift/report.html`` and ``report.pdf`` in the repository (``--out DIR`` elsewhere,
-``--no-pdf`` for the HTML only).
+drive, the screw bent in the horizontal posture) and ``design_plates.toml`` (its arm and base plates, plate
+FEA) with the example's ``run.py``, prints the results table of each and one combined verdict, and writes
+``out/lead_screw_lift/report.html`` and ``report.pdf`` (both designs) in the repository (``--out DIR``
+elsewhere, ``--no-pdf`` for the HTML only).
 
 The demo writes into ``out/`` (ignored by git) and never over the committed ``examples/lead_screw_lift/report.*``:
 a report records the date and the git commit it was made from, so regenerating the committed copy on every
@@ -50,23 +51,22 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     os.environ.setdefault("MPLBACKEND", "Agg")
 
-    from mechverify.cli._console import COLOURS, err, out, results_table
+    from mechverify.cli._console import combined_line, err, out, results_table, verdict_line
     from mechverify.errors import MechverifyError
 
     try:
         example = load_example()
-        design, rs = example.verify()
+        runs = [example.verify(), example.verify(example.PLATES)]
     except (FileNotFoundError, MechverifyError) as exc:
         err.print(f"[red]demo:[/red] {exc}")
         return 2
-    out.print(f"Verifying {design.path.relative_to(REPO) if design.path else 'the example'} "
-              f"(reference project 004, lead-screw lift)\n")
-    out.print(results_table(rs))
-    c = COLOURS[rs.verdict.value]
-    counts = {v: sum(r.verdict.value == v for r in rs) for v in ("pass", "warn", "fail")}
-    out.print(f"[{c}]{rs.verdict.value.upper()}[/{c}] {rs.name}: {counts['pass']} pass, {counts['warn']} warn, "
-              f"{counts['fail']} fail")
-    paths = example.write_reports(args.out, pdf=not args.no_pdf, run=(design, rs))
+    for design, rs in runs:
+        shown = design.path.relative_to(REPO) if design.path and design.path.is_relative_to(REPO) else design.path
+        out.print(f"Verifying {shown or 'the example'} (reference project 004, lead-screw lift)\n")
+        out.print(results_table(rs))
+        out.print(verdict_line(rs) + "\n")
+    out.print(combined_line([rs for _, rs in runs]) + " (the report holds both designs)")
+    paths = example.write_reports(args.out, pdf=not args.no_pdf, run=runs[0], plates_run=runs[1])
     for p in paths:
         shown = p.relative_to(REPO) if p.is_relative_to(REPO) else p
         out.print(f"report: {shown}")
