@@ -76,3 +76,13 @@ def test_transverse_load_without_friction_is_named(tmp_path):
 def test_negative_friction_is_rejected(tmp_path):
     with pytest.raises(DesignFileError, match="negative"):
         _load(tmp_path, extra="mu_thread = [-0.1, 0.12]\nmu_interface = 0.15")
+
+
+def test_report_figures(tmp_path):
+    """The joint diagram (with the per-bolt bars for a group) and the torque-table figure render as SVG."""
+    from mechverify.reports.plots import figure_for
+
+    rs = {(r.component, r.check): r for r in _load(tmp_path).verify()}
+    for key in (("flange", "bolt_working_stress"), ("group", "bolt_separation"), ("flange", "bolt_tightening_torque")):
+        uri = figure_for(rs[key])
+        assert uri is not None and uri.startswith("data:image/svg+xml;base64,")

@@ -17,7 +17,7 @@ from mechverify.checks import CheckResult
 PLOTTERS: dict[str, Callable[[CheckResult], Any]] = {}
 
 #: Domain modules with plotters, imported on first use.
-DOMAINS = ("screws", "springs", "bearings", "drives", "members")
+DOMAINS = ("screws", "springs", "bearings", "drives", "members", "bolts")
 
 
 def _load_domains() -> None:
