@@ -305,3 +305,29 @@ def test_report_appendix_and_json_show_the_load_path():
     doc = run_document([(d, rs)])
     notes = [n for r in doc["designs"][0]["results"] for n in r["notes"]]
     assert "derived input (raise): axial_force = 350 N ← lift_screw.support_axial_force" in notes
+
+
+def test_the_documented_example_runs(tmp_path):
+    """docs/design-files.md, 'Parameters, expressions and connections': the TOML example verifies, and
+    weight = (5 + 2.5) kg x 9.81 m/s² = 73.575 N reaches the screw and, through the connection, the bearing;
+    540 rpm = 18 mm/s / 2 mm lead."""
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "design-files.md").read_text(encoding="utf-8")
+    section = doc.split("## Parameters, expressions and connections", 1)[1]
+    text = re.search(r"```toml\n(.*?)```", section, re.S).group(1)
+    d = load(write(tmp_path, text))
+    rs = d.verify()
+    case = d.data.load_cases["raise"]
+    assert case["screw_bearing"]["axial_force"].m_as("N") == pytest.approx(73.575)
+    assert case["screw_bearing"]["speed"].m_as("rpm") == pytest.approx(540)
+    assert rs.get("screw_bearing", "bearing_static_safety").demand.m_as("N") == pytest.approx(0.5 * 73.575)
+    heavier = d.with_parameters(payload="6 kg")
+    assert heavier.data.load_cases["raise"]["lift_screw"]["axial_force"].m_as("N") == pytest.approx(8.5 * 9.81)
+    v = d.with_overrides({"components.lift.mass": "210 kg", "parameters.payload": "5 kg",
+                          "components.lift.transmission[0].mu": 0.2})
+    assert v["lift"].load["mass"].m_as("kg") == 210
+
+
+def test_bare_component_name_is_the_same_value_of_that_component(tmp_path):
+    text = BASE.replace('force = "a.reaction / 2"', 'force = "a"')
+    d = load(write(tmp_path, text))
+    assert d.data.load_cases["lift"]["b"]["force"].m_as("N") == pytest.approx(2 * 49.05)
