@@ -327,7 +327,8 @@ def solve_plate(model: Any, mesh_size: Any = None, hole_mesh_size: Any = None) -
         reaction=np.array([0.0, 0.0, reaction]), applied=np.array([0.0, 0.0, total]),
         cells=[("triangle", mesh.t.T.copy())], surface=mesh.t.T.copy(), info=info,
         timings={"assembly": t_asm, "solve": t_solve, "recovery": t_rec},
-        extra={"von_mises_bottom_Pa": von_mises(-sigma_top), "moment_xx_N": moments[:, 0],
+        extra={"reaction_z_N": np.where(held_mask[vd], r[vd], 0.0),  # vertical reaction per vertex (0 where free)
+               "von_mises_bottom_Pa": von_mises(-sigma_top), "moment_xx_N": moments[:, 0],
                "moment_yy_N": moments[:, 1], "moment_xy_N": moments[:, 2]},
         notes=tuple(notes))
 
