@@ -12,6 +12,7 @@ References
 
 from __future__ import annotations
 
+import copy
 import math
 from collections import defaultdict
 from collections.abc import Iterable, Mapping, Sequence
@@ -34,6 +35,7 @@ from mechverify.fea.frame.element import (
 from mechverify.fea.frame.model import (
     DOF_NAMES,
     DOF_WORDS,
+    NO_SHEAR_AREAS,
     THEORIES,
     DistributedLoad,
     Hinge,
@@ -95,7 +97,7 @@ def _props(section: Section, mat: Material, theory: str, name: str) -> _Props:
     Iy, Iz, roll = s["Iy"], s["Iz"], 0.0
     if abs(s["Iyz"]) > 1e-9 * (s["Iy"] + s["Iz"]):
         Iy, Iz, roll = s["I1"], s["I2"], s["principal_angle"]
-    tim = theory == "timoshenko"
+    tim = theory == "timoshenko" and NO_SHEAR_AREAS not in section.method
     return _Props(E, G, s["area"], Iy, Iz, s["J"], s["Asy"] if tim else None, s["Asz"] if tim else None, rho, roll)
 
 
@@ -192,7 +194,10 @@ class Frame:
         for i, s in enumerate(springs):
             if not isinstance(s, Spring):
                 raise InputError(f"springs[{i}]: expected a Spring, got {type(s).__name__}")
-            self.springs.append(s if s.name else Spring(s.start, s.end, s.axial, s.stiffness, f"S{i + 1}"))
+            if not s.name:
+                s = copy.copy(s)
+                object.__setattr__(s, "name", f"S{i + 1}")
+            self.springs.append(s)
         self.ends = [(self.point(m.start, f"member {m.name}: start"), self.point(m.end, f"member {m.name}: end"))
                      for m in self.members]
         self.spring_ends = [(self.point(s.start, f"spring {s.name}: start"), self.point(s.end, f"spring {s.name}: end"))
@@ -836,6 +841,7 @@ class _Solve:
         hs = set(self.held.tolist())
         reactions: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         RF, RM = np.zeros(3), np.zeros(3)
+        absF = absM = 0.0
         seen: set[int] = set()
         for s, k in self.at:
             fr6 = np.zeros(6)
@@ -858,8 +864,10 @@ class _Solve:
             reactions[label] = (fr6[:3], fr6[3:])
             RF += fr6[:3]
             RM += fr6[3:] + np.cross(mesh.points[k], fr6[:3])
-        scaleF = max(np.linalg.norm(d.F), np.linalg.norm(RF), 1e-30)
-        scaleM = max(np.linalg.norm(d.Mo), np.linalg.norm(RM), scaleF * fr.size, 1e-30)
+            absF += float(np.linalg.norm(fr6[:3]))
+            absM += float(np.linalg.norm(fr6[3:]))
+        scaleF = max(np.linalg.norm(d.F), absF, (np.linalg.norm(d.Mo) + absM) / fr.size, 1e-30)
+        scaleM = max(np.linalg.norm(d.Mo), absM, scaleF * fr.size, 1e-30)
         if np.linalg.norm(d.F + RF) > 1e-6 * scaleF or np.linalg.norm(d.Mo + RM) > 1e-6 * scaleM:
             raise ModelError(f"frame {fr.name!r}: reactions do not balance the loads (forces {d.F + RF} N, "
                              f"moments {d.Mo + RM} N·m); the model is ill-conditioned")

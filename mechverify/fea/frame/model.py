@@ -33,6 +33,9 @@ _RELEASE_ALIASES = {"fx": "N", "fy": "Vy", "fz": "Vz", "mx": "T", "n": "N", "vy"
 SUPPORT_KINDS = ("fixed", "pinned", "roller", "spring", "custom")
 THEORIES = ("timoshenko", "euler")
 STANDARD_GRAVITY = 9.80665
+#: Flags in ``Section.method`` of a tabulated section without fibre distances / shear areas.
+NO_FIBRES = "no fibre distances"
+NO_SHEAR_AREAS = "no shear areas"
 
 Where = str | Any  # a node name, or a point (three lengths)
 
@@ -185,10 +188,11 @@ def section_from_properties(area: QuantityLike, Iy: QuantityLike, Iz: QuantityLi
     """A :class:`Section` from tabulated properties (a steel table, a manufacturer's sheet).
 
     ``area`` A, ``Iy``/``Iz`` (bending about local y/z), ``J`` (torsion constant); optional shear areas
-    ``Asy``/``Asz`` (without them shear deformation is neglected and the shear stress uses V/A), extreme
-    fibre distances ``c_y``/``c_z`` (symmetric; without them stresses cannot be computed), torsion
-    modulus ``Wt`` (default ``J / sqrt(c_y² + c_z²)``: exact for round sections, conservative for
-    rectangles and open profiles).
+    ``Asy``/``Asz`` (without them shear deformation is neglected — Euler-Bernoulli for that member — and
+    the shear stress uses V/A), extreme fibre distances ``c_y``/``c_z`` (symmetric, the corners of the
+    bounding box are the fibres; without them stresses are not computed and asking for one is an
+    error), torsion modulus ``Wt`` (default ``J / sqrt(c_y² + c_z²)``: exact for round sections,
+    conservative for rectangles and open profiles). Wpl is not known (zero).
     """
     A = to_si(area, "area", "area")
     vals = {"Iy": to_si(Iy, "second_moment", "Iy"), "Iz": to_si(Iz, "second_moment", "Iz"),
@@ -196,22 +200,28 @@ def section_from_properties(area: QuantityLike, Iy: QuantityLike, Iz: QuantityLi
     for k, v in (("area", A), *vals.items()):
         if k != "Iyz" and not v > 0:
             raise InputError(f"section property {k} must be positive, got {v!r}")
-    cy = to_si(c_y, "length", "c_y") if c_y is not None else math.nan
-    cz = to_si(c_z, "length", "c_z") if c_z is not None else math.nan
-    asy = to_si(Asy, "area", "Asy") if Asy is not None else math.inf
-    asz = to_si(Asz, "area", "Asz") if Asz is not None else math.inf
-    wt = to_si(Wt, "volume", "Wt") if Wt is not None else vals["J"] / math.hypot(cy, cz)
-    from mechverify.components.sections import _principal
+    flags = []
+    if c_y is None or c_z is None:
+        flags.append(NO_FIBRES)
+    if Asy is None or Asz is None:
+        flags.append(NO_SHEAR_AREAS)
+    cy = to_si(c_y, "length", "c_y") if c_y is not None else 0.0
+    cz = to_si(c_z, "length", "c_z") if c_z is not None else 0.0
+    asy = to_si(Asy, "area", "Asy") if Asy is not None else A
+    asz = to_si(Asz, "area", "Asz") if Asz is not None else A
+    if Wt is not None:
+        wt = to_si(Wt, "volume", "Wt")
+    else:
+        wt = vals["J"] / math.hypot(cy, cz) if cy or cz else vals["J"] ** 0.75
+    from mechverify.components.sections import _FIELDS, _principal
 
     I1, I2, phi = _principal(vals["Iy"], vals["Iz"], vals["Iyz"])
     si = {"area": A, "centroid_y": 0.0, "centroid_z": 0.0, **vals, "I1": I1, "I2": I2, "principal_angle": phi,
-          "Wt": wt, "Asy": asy, "Asz": asz, "Wel_y": vals["Iy"] / cz, "Wel_z": vals["Iz"] / cy,
-          "Wpl_y": math.nan, "Wpl_z": math.nan, "c_y_pos": cy, "c_y_neg": cy, "c_z_pos": cz, "c_z_neg": cz,
-          "shear_center_y": 0.0, "shear_center_z": 0.0}
-    from mechverify.components.sections import _FIELDS
-
+          "Wt": wt, "Asy": asy, "Asz": asz, "Wel_y": vals["Iy"] / cz if cz else 0.0,
+          "Wel_z": vals["Iz"] / cy if cy else 0.0, "Wpl_y": 0.0, "Wpl_z": 0.0, "c_y_pos": cy, "c_y_neg": cy,
+          "c_z_pos": cz, "c_z_neg": cz, "shear_center_y": 0.0, "shear_center_z": 0.0}
     q = {k: from_si(si[k], dim) for k, dim in _FIELDS.items()}
-    return Section(kind="properties", dimensions={}, method="tabulated properties",
+    return Section(kind="properties", dimensions={}, method="; ".join(["tabulated properties", *flags]),
                    source=source or f"tabulated ({name})", **q)
 
 

@@ -16,7 +16,7 @@ import pint
 from mechverify.components.sections import Section
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fea.frame.element import element_polynomials, poly_extremes, stationary_points
-from mechverify.fea.frame.model import Load, LoadCombination, Where
+from mechverify.fea.frame.model import NO_FIBRES, Load, LoadCombination, Where
 from mechverify.units import Q, to_si
 
 if TYPE_CHECKING:
@@ -280,6 +280,8 @@ class FrameResults:
         asz = sec["Asz"] if math.isfinite(sec["Asz"]) else sec["area"]
         tau = np.abs(c2["T"]) / sec["Wt"] + np.hypot(c2["Vy"] / asy, c2["Vz"] / asz)
         vm = np.sqrt(sigma**2 + 3 * tau[:, None] ** 2)
+        if NO_FIBRES in mem.section.method:  # stresses unknown: NaN, and asking for them is an error
+            sigma, tau, vm = sigma * np.nan, tau * np.nan, vm * np.nan
         d = Diagram(member, Q(c2["s"], "m").to("mm"), Q(c2["N"], "N"), Q(c2["Vy"], "N"), Q(c2["Vz"], "N"),
                     Q(c2["T"], "N*m"), Q(c2["My"], "N*m"), Q(c2["Mz"], "N*m"), Q(c2["disp"], "m").to("mm"),
                     Q(c2["pts"], "m").to("mm"), Q(sigma, "Pa").to("MPa"), Q(tau, "Pa").to("MPa"),
@@ -318,7 +320,14 @@ class FrameResults:
         """The largest resultant bending moment ``sqrt(My² + Mz²)`` (exact: stationary points)."""
         return self._largest("M")
 
+    def _stresses_known(self) -> None:
+        for m in self.frame.members:
+            if NO_FIBRES in m.section.method:
+                raise InputError(f"member {m.name}: its section (tabulated properties) has no extreme-fibre distances "
+                                 "c_y, c_z, so its stresses are unknown; give them in section_from_properties")
+
     def _extreme(self, values: Any, with_fibre: bool = False) -> Extreme:
+        self._stresses_known()
         best: tuple[float, Diagram, int, int] | None = None
         for d in self.diagrams():
             v = np.asarray(values(d))
@@ -338,6 +347,7 @@ class FrameResults:
 
     def min_safety_factor(self) -> tuple[float, Extreme]:
         """Smallest yield safety factor ``Sy / sigma_vm`` over all members (each with its material) and where."""
+        self._stresses_known()
         best: tuple[float, Extreme] | None = None
         for d in self.diagrams():
             m = self.frame.members[self.frame.member_index[d.member]]
