@@ -9,8 +9,8 @@ import textwrap
 
 import pytest
 
+from mechverify.components.links import beam_deflection_curve
 from mechverify.design import DesignFileError, load
-from mechverify.design.adapters.members import beam_deflection_curve
 from mechverify.reports import render_html
 
 # A steel with round numbers so the hand calculations below are easy to follow.
@@ -273,11 +273,11 @@ def test_rectangular_plate_matches_roark_table_11_4_case_1a(tmp_path):
     y = alpha q b^4/(E t^3) = 0.0906 * 1e4 * 0.0016/(70e9 * 64e-9) = 0.3236 mm."""
     rs = design(tmp_path, PLATE.format(geometry='width = "320 mm"\nheight = "200 mm"', extra="",
                                        loads='pressure = "10 kPa"'), materials="").verify()
-    s = rs.get("p", "plate_stress")
+    s = rs.get("p", "plate_stress_roark")
     assert s.demand.m_as("MPa") == pytest.approx(0.5172 * 1e4 * 0.04 / 16e-6 / 1e6, rel=1e-6)
     assert s.capacity.m_as("MPa") == pytest.approx(276)
     assert any("FEA plate model" in n for n in s.notes)
-    y = rs.get("p", "plate_deflection")
+    y = rs.get("p", "plate_deflection_roark")
     assert y.demand.m_as("mm") == pytest.approx(0.0906 * 1e4 * 0.2**4 / (70e9 * 0.004**3) * 1e3, rel=1e-6)
     assert y.capacity.m_as("mm") == pytest.approx(0.002 * 200)  # requirements default of the shorter side
 
@@ -288,8 +288,8 @@ def test_clamped_rectangle_and_self_weight_roark_case_8a(tmp_path):
     rs = design(tmp_path, PLATE.format(geometry='width = "320 mm"\nheight = "200 mm"', extra='edges = "clamped"',
                                        loads='pressure = "10 kPa"\nself_weight = true'), materials="").verify()
     q = 1e4 + 2700 * 9.80665 * 0.004
-    assert rs.get("p", "plate_stress").demand.m_as("Pa") == pytest.approx(0.4680 * q * 0.04 / 16e-6, rel=1e-6)
-    assert rs.get("p", "plate_deflection").demand.m_as("m") == pytest.approx(0.0251 * q * 0.2**4 / (70e9 * 64e-9),
+    assert rs.get("p", "plate_stress_roark").demand.m_as("Pa") == pytest.approx(0.4680 * q * 0.04 / 16e-6, rel=1e-6)
+    assert rs.get("p", "plate_deflection_roark").demand.m_as("m") == pytest.approx(0.0251 * q * 0.2**4 / (70e9 * 64e-9),
                                                                               rel=1e-6)
 
 
@@ -301,12 +301,12 @@ def test_circular_plate_matches_roark_table_11_2(tmp_path):
     geo = 'shape = "circle"\ndiameter = "200 mm"'
     rs = design(tmp_path, PLATE.format(geometry=geo, extra="", loads='pressure = "10 kPa"'), materials="").verify()
     D = 70e9 * 0.004**3 / (12 * (1 - 0.09))
-    assert rs.get("p", "plate_stress").demand.m_as("MPa") == pytest.approx(3 * 3.3 * 1e4 * 0.01 / (8 * 16e-6) / 1e6)
-    assert rs.get("p", "plate_deflection").demand.m_as("m") == pytest.approx(1e4 * 0.1**4 * 5.3 / (64 * D * 1.3))
+    assert rs.get("p", "plate_stress_roark").demand.m_as("MPa") == pytest.approx(3 * 3.3 * 1e4 * 0.01 / (8 * 16e-6) / 1e6)
+    assert rs.get("p", "plate_deflection_roark").demand.m_as("m") == pytest.approx(1e4 * 0.1**4 * 5.3 / (64 * D * 1.3))
     rs = design(tmp_path, PLATE.format(geometry=geo, extra="", loads='central_force = "200 N"'), materials="").verify()
     r0e = 0.325 * 0.004
     sigma = 3 * 200 / (2 * math.pi * 0.004**2) * (1.3 * math.log(0.1 / r0e) + 1)
-    assert rs.get("p", "plate_stress").demand.m_as("Pa") == pytest.approx(sigma, rel=1e-6)
+    assert rs.get("p", "plate_stress_roark").demand.m_as("Pa") == pytest.approx(sigma, rel=1e-6)
 
 
 # ---------------------------------------------------------------------------------------------- errors
@@ -365,7 +365,7 @@ def test_bad_deflection_limit_and_plate_geometry(tmp_path):
 def test_check_needing_a_missing_load_names_the_key_path(tmp_path):
     body = PLATE.format(geometry='width = "320 mm"\nheight = "200 mm"', extra="", loads="self_weight = true")
     msg = errors_of(tmp_path, body, materials="")
-    assert "components.p.checks.stress: needs pressure or central_force" in msg
+    assert "components.p.checks.plate_stress_roark: needs pressure or central_force" in msg
 
 
 # ---------------------------------------------------------------------------------------------- report

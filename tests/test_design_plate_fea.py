@@ -56,12 +56,12 @@ def test_simply_supported_rectangle_matches_roark_table_11_4_case_1a(tmp_path):
     y_max = alpha q b^4 / (E t^3) = 0.1110 * 1e4 * 0.2^4 / (70e9 * 0.004^3) = 0.3964 mm."""
     d = design(tmp_path, RECT.format(a="400 mm", b="200 mm", support="pinned", h="10 mm"))
     rs = d.verify()
-    y = rs.get("p", "plate_deflection")
+    y = rs.get("p", "plate_deflection_fea")
     assert y.demand.m_as("mm") == pytest.approx(0.1110 * 1e4 * 0.2**4 / (70e9 * 0.004**3) * 1e3, rel=0.01)
     model, res = d["p"].solved["q"]
     centre = nearest(res, 0.2, 0.1)
     assert res.sigma[centre, 1, 1] / 1e6 == pytest.approx(0.6102 * 1e4 * 0.2**2 / 0.004**2 / 1e6, rel=0.02)
-    s = rs.get("p", "plate_stress")
+    s = rs.get("p", "plate_stress_fea")
     assert s.capacity.m_as("MPa") == pytest.approx(275)
     # von Mises at the centre is at most the larger normal stress (sigma_x and sigma_y of one sign there)
     assert s.demand.m_as("MPa") <= 15.255 * 1.02
@@ -76,11 +76,11 @@ def test_clamped_rectangle_deflection_matches_roark_table_11_4_case_8a(tmp_path)
     from the flexible side: within 3 % at b/32."""
     d = design(tmp_path, RECT.format(a="400 mm", b="200 mm", support="fixed", h="6.25 mm"))
     rs = d.verify()
-    assert rs.get("p", "plate_deflection").demand.m_as("mm") == pytest.approx(
+    assert rs.get("p", "plate_deflection_fea").demand.m_as("mm") == pytest.approx(
         0.0277 * 1e4 * 0.2**4 / (70e9 * 0.004**3) * 1e3, rel=0.03)
     vm_edge = 0.4974 * 1e4 * 0.2**2 / 0.004**2 * math.sqrt(1 - 0.3 + 0.3**2) / 1e6
-    assert rs.get("p", "plate_stress").demand.m_as("MPa") == pytest.approx(vm_edge, rel=0.03)
-    assert "outline edge" in rs.get("p", "plate_stress").notes[0]
+    assert rs.get("p", "plate_stress_fea").demand.m_as("MPa") == pytest.approx(vm_edge, rel=0.03)
+    assert "outline edge" in rs.get("p", "plate_stress_fea").notes[0]
 
 
 def test_square_plate_corner_twist_matches_timoshenko_table_8(tmp_path):
@@ -90,7 +90,7 @@ def test_square_plate_corner_twist_matches_timoshenko_table_8(tmp_path):
     exceeds the centre stress (beta = 0.2874: 28.74 MPa, equal biaxial, so von Mises 28.74 MPa): the governing
     stress of a simply supported square plate is at its corners."""
     d = design(tmp_path, RECT.format(a="400 mm", b="400 mm", support="pinned", h="12.5 mm"))
-    s = d.verify().get("p", "plate_stress")
+    s = d.verify().get("p", "plate_stress_fea")
     assert s.demand.m_as("MPa") == pytest.approx(math.sqrt(3) * 6 * 0.0325 * 1e4 * 0.16 / 0.004**2 / 1e6, rel=0.02)
     assert "(0, 0) mm" in s.notes[0] or "(400, 400) mm" in s.notes[0] or "(0, 400)" in s.notes[0] \
         or "(400, 0)" in s.notes[0]
@@ -124,7 +124,7 @@ def test_plate_on_bolt_holes_runs_and_exceeds_the_statics_lower_bound(tmp_path):
     and the applied load is 400 N + the weight rho g t A_net."""
     d = design(tmp_path, BOLTED)
     rs = d.verify()
-    s, y = rs.get("base", "plate_stress"), rs.get("base", "plate_deflection")
+    s, y = rs.get("base", "plate_stress_fea"), rs.get("base", "plate_deflection_fea")
     assert s.demand.m_as("MPa") > 6 * 200 * 0.135 / (0.14 * 0.006**2) / 1e6
     model, res = d["base"].solved["lift"]
     net = 0.3 * 0.2 - 4 * math.pi * 0.0033**2 - (0.08 * 0.06 - (4 - math.pi) * 0.01**2)
@@ -149,7 +149,7 @@ def test_polygon_outline_and_point_support_warning(tmp_path):
     point_loads = [{ at = "40, 190", force = "-20 N" }]
     """
     rs = design(tmp_path, body).verify()
-    s = rs.get("l", "plate_stress")
+    s = rs.get("l", "plate_stress_fea")
     assert s.demand.m_as("MPa") > 0
     # a clamped edge 0 (200 mm long) carrying the tip load: the root moment is 20 N * 0.19 m = 3.8 N m
     # over 200 mm, a mean 6 M/(b t^2) = 12.7 MPa; the peak is at least that
@@ -185,7 +185,7 @@ def test_errors_have_key_paths(tmp_path):
     assert "components.p: supports[0].edges[0]: expected an edge index 0..3" in msg
     msg = errors_of(tmp_path, RECT.format(a="400 mm", b="200 mm", support="pinned", h="10 mm").replace(
         'edges = "all"', 'point = "100, 100"'))
-    assert "components.p.checks.stress [q]: the plate is not fully supported" in msg
+    assert "components.p.checks.plate_stress_fea [q]: the plate is not fully supported" in msg
     msg = errors_of(tmp_path, RECT.format(a="400 mm", b="200 mm", support="pinned", h="10 mm").replace(
         'pressure = "10 kPa"', 'point_loads = [{ at = "500, 0", force = "1 N" }]'))
     assert "load_cases.q.p.loads[0]: point load at (500 mm, 0 mm) is not on p" in msg

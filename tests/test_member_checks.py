@@ -9,16 +9,16 @@ import pytest
 
 from mechverify import Q
 from mechverify.checks.members import (
+    check_eye_net_section,
+    check_link_deflection,
+    check_member_body_strength,
+    check_member_buckling,
+    check_pin_shear,
     deflection_check,
     deflection_limit,
-    eye_net_section,
-    link_deflection,
     lug_checks,
-    member_body_strength,
-    member_buckling,
-    pin_shear,
-    plate_stress,
 )
+from mechverify.checks.plates import check_plate_stress_roark
 from mechverify.checks.result import Verdict
 from mechverify.components import sections
 from mechverify.components.links import Link
@@ -33,23 +33,23 @@ def link(material="PLA", **kw):
 
 
 def test_body_strength_verdicts():
-    r = member_body_strength(link(), axial="15 N", moment_y="0.5 N*m", required_sf=4)
+    r = check_member_body_strength(link(), axial="15 N", moment_y="0.5 N*m", required_sf=4)
     assert r.demand.m_as("MPa") == pytest.approx(15 / 198 + 500 / 198)
     assert r.capacity.m_as("MPa") == pytest.approx(26.0)
     assert r.verdict is Verdict.PASS
-    assert member_body_strength(link(), moment_y="2 N*m", required_sf=4).verdict is Verdict.FAIL
+    assert check_member_body_strength(link(), moment_y="2 N*m", required_sf=4).verdict is Verdict.FAIL
 
 
 def test_eye_kt_policy():
-    brittle = eye_net_section(link(), "100 N")
+    brittle = check_eye_net_section(link(), "100 N")
     assert brittle.demand.m_as("MPa") == pytest.approx(100 / 66 * (2.0 + 0.284 / 3 - 0.600 / 9 + 1.32 / 27))
     assert brittle.warnings  # pin-loaded hole in a brittle material
-    ductile = eye_net_section(link("AISI 1045 HR"), "100 N")  # 16 % elongation
+    ductile = check_eye_net_section(link("AISI 1045 HR"), "100 N")  # 16 % elongation
     assert ductile.demand.m_as("MPa") == pytest.approx(100 / 66)
     assert "not applied" in " ".join(ductile.notes)
-    forced = eye_net_section(link("AISI 1045 HR"), "100 N", apply_kt=True)
+    forced = check_eye_net_section(link("AISI 1045 HR"), "100 N", apply_kt=True)
     assert forced.demand > ductile.demand
-    unknown = eye_net_section(link("S235JR"), "100 N")  # no elongation in the record: Kt applied
+    unknown = check_eye_net_section(link("S235JR"), "100 N")  # no elongation in the record: Kt applied
     assert "unknown" in " ".join(unknown.notes)
 
 
@@ -62,16 +62,16 @@ def test_lug_checks_required_factors_and_material_warning():
 
 
 def test_pin_shear_uses_0577_sy_without_shear_yield():
-    r = pin_shear(link(), "1 kN", "S235JR", planes=2)
+    r = check_pin_shear(link(), "1 kN", "S235JR", planes=2)
     assert r.demand.m_as("MPa") == pytest.approx(1000 / (2 * 3.14159265 * 11**2), rel=1e-6)
     assert r.capacity.m_as("MPa") == pytest.approx(0.577 * 235, rel=0.03)
 
 
 def test_buckling_check():
-    r = member_buckling(link(), "100 N", required_sf=4)
+    r = check_member_buckling(link(), "100 N", required_sf=4)
     assert r.capacity.m_as("N") == pytest.approx(link().buckling().critical_load.m_as("N"))
     assert r.verdict is Verdict.PASS
-    t = member_buckling(link(), "-100 N")
+    t = check_member_buckling(link(), "-100 N")
     assert t.demand.m_as("N") == 0 and "tension" in " ".join(t.notes)
 
 
@@ -85,7 +85,7 @@ def test_deflection_limits():
         deflection_limit(2.0, span="1 m")
     r = deflection_check("3.3 mm", 0.01, span="268 mm", component="PLA arm")
     assert r.verdict is Verdict.FAIL and r.capacity.m_as("mm") == pytest.approx(2.68)
-    d = link_deflection(link(), "cantilever_end_load", "1.5 N", "1 mm", axis="z")
+    d = check_link_deflection(link(), "cantilever_end_load", "1.5 N", "1 mm", axis="z")
     assert d.demand.m_as("mm") == pytest.approx(1.5 * 100**3 / (3 * 2539 * 33 * 6**3 / 12), rel=1e-9)
 
 
@@ -93,7 +93,7 @@ def test_plate_stress_check_warns_for_holes():
     p = Plate.rectangle("200 mm", "200 mm", "6 mm", "Inventor Aluminum 6061",
                         holes=corner_holes("200 mm", "200 mm", "10 mm", "5 mm"))
     est = roark_rectangular_plate("200 mm", "200 mm", "6 mm", p.material.E, "10 kPa")
-    r = plate_stress(p, est, required_sf=2)
+    r = check_plate_stress_roark(p, est, required_sf=2)
     assert r.demand.m_as("MPa") == pytest.approx(0.2874 * 1e4 * 0.2**2 / 0.006**2 / 1e6, rel=1e-9)
     assert any("holes" in w for w in r.warnings)
     assert r.verdict is Verdict.WARN

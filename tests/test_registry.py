@@ -14,6 +14,7 @@ from mechverify.references import bibliography, keys_in, ref, references
 @pytest.fixture
 def scratch():
     """Names registered by a test are removed again afterwards."""
+    registry.load_all()
     before = dict(CHECKS), dict(registry._ALIASES)
     yield
     CHECKS.clear()
@@ -96,3 +97,43 @@ def test_references():
     # one edition per book: no title appears twice
     titles = [(r.authors, r.title, r.number) for r in refs.values()]
     assert len(titles) == len(set(titles))
+
+
+LINK = """
+[design]
+name = "alias test"
+
+[components.eye]
+type = "link"
+length = "200 mm"
+section = "rectangle"
+width = "20 mm"
+height = "8 mm"
+material = "S235JR"
+hole_diameter = "10 mm"
+{checks}
+
+[load_cases.pull.eye]
+axial_force = "2 kN"
+"""
+
+
+def _design(tmp_path, checks: str):
+    from mechverify.design.design import load
+
+    p = tmp_path / "design.toml"
+    p.write_text(LINK.format(checks=checks))
+    return load(p)
+
+
+def test_former_design_keys_still_work_with_a_deprecation_note(tmp_path):
+    """A former key (`buckling`, `lug`) sets the renamed check(s) and the result says so."""
+    rs = _design(tmp_path, "checks = { body_strength = { required_sf = 3.0 }, lug = false }").verify()
+    body = rs.get("eye", "member_body_strength")
+    assert body.required_sf == 3.0
+    assert any("Deprecated check key 'body_strength'" in n and "'member_body_strength'" in n for n in body.notes)
+    assert not [r for r in rs if r.check.startswith("lug_")]  # `lug` turned all four BTH-1 checks off
+    rs = _design(tmp_path, "checks = { member_body_strength = { required_sf = 3.0 } }").verify()
+    body = rs.get("eye", "member_body_strength")
+    assert body.required_sf == 3.0 and not any("Deprecated" in n for n in body.notes)
+    assert {r.check for r in rs} >= {"lug_tension", "lug_fracture_beyond", "lug_shear_out", "lug_bearing"}

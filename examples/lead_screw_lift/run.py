@@ -258,7 +258,7 @@ def plate_fea_table(run: tuple[Any, ResultSet] | None = None) -> str:
              "deflection |",
              "|---|---|---|---|---|"]
     for name, (sf, y) in doc.items():
-        s, d = rs.get(name, "plate_stress"), rs.get(name, "plate_deflection")
+        s, d = rs.get(name, "plate_stress_fea"), rs.get(name, "plate_deflection_fea")
         vm = s.demand.m_as("MPa")
         lines.append(f"| {name} | {vm:.1f} | {sy / vm:.2f} | {d.demand.m_as('mm'):.3f} | "
                      f"{'> ' if name == 'base_plate_8' else ''}{sf}, {y} mm |")

@@ -1,25 +1,27 @@
-"""Checks of structural members: link body strength, pin eye (Kt, lug, pin), buckling, deflection, Roark plates.
+"""Checks of structural members: link body strength, pin eye (Kt, lug, pin), buckling, deflection.
 
 Each returns a :class:`CheckResult` oriented so that it passes while demand <= capacity / required_sf.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from typing import Any
 
 import pint
 
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.components.links import BTH1_SOURCE, Link, pin_shear_stress
-from mechverify.components.plates import Plate, PlateEstimate
 from mechverify.errors import InputError
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
+from mechverify.references import ref
 from mechverify.units import Q, fmt, to_si
 
-SHIGLEY_KT = "Shigley's Mechanical Engineering Design, 10th ed., Sec. 3-13 (Kt under static loading)"
-PETERSON_HOLE = "Peterson's Stress Concentration Factors, 3rd ed., Eq. (4.1), Chart 4.1"
+SHIGLEY_KT = ref("shigley10", "Sec. 3-13 (Kt under static loading)")
+PETERSON_HOLE = ref("peterson3", "Eq. (4.1), Chart 4.1")
 
 
 def _strength_notes(link: Link) -> list[str]:
@@ -30,7 +32,12 @@ def _strength_notes(link: Link) -> list[str]:
     return notes
 
 
-def member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m", moment_z: Any = "0 N*m",
+@check("member_body_strength", title="Link body stress", sf_kind="static",
+       aliases=('link.body_strength',),
+       source=ref("shigley10", "Sec. 5-5 (distortion energy)"),
+       explain=("Von Mises stress of N/A, M_y/W_y + M_z/W_z (the transverse load's Table A-9 maximum moment added), "
+                'T/W_t + V/A_s against S_y (knocked down by strength_factor); Shigley 10th ed. Sec. 5-5.'))
+def check_member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m", moment_z: Any = "0 N*m",
                          torque: Any = "0 N*m", shear: Any = "0 N", *, required_sf: float = 1.0,
                          load_case: str = "") -> CheckResult:
     """Von Mises stress in the link body (away from the holes) against the yield strength."""
@@ -43,7 +50,7 @@ def member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m"
         capacity=link.yield_strength.to("MPa"), required_sf=required_sf, title="Link body stress (von Mises)",
         formula=r"\sigma_{vM} = \sqrt{\left(\left|\frac{N}{A}\right| + \frac{|M_y|}{W_y} + \frac{|M_z|}{W_z}\right)^2"
                 r" + 3\left(\frac{|T|}{W_t} + \frac{|V|}{A_s}\right)^2} \le S_y",
-        source="elementary beam theory; distortion-energy criterion (Shigley 10th ed., Sec. 5-5)",
+        source=f"elementary beam theory; distortion-energy criterion ({ref('shigley10', 'Sec. 5-5')})",
         inputs={"N": Q(to_si(axial, "force", "axial"), "N"), "My": Q(to_si(moment_y, "torque", "moment_y"), "N*m"),
                 "Mz": Q(to_si(moment_z, "torque", "moment_z"), "N*m"), "T": Q(to_si(torque, "torque", "torque"), "N*m"),
                 "A": link.section.area.to("mm**2"), "Wel_y": link.section.Wel_y.to("mm**3"),
@@ -52,7 +59,12 @@ def member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m"
         details={"axial": s.axial, "bending": s.bending, "torsion": s.torsion, "shear": s.shear})
 
 
-def eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_kt: bool | None = None,
+@check("eye_net_section", title="Pin eye net section", sf_kind="static",
+       source=f"{SHIGLEY_KT}; {PETERSON_HOLE}",
+       explain=('F/((w - D) t) across the hole against S_y; the open-hole Kt (Peterson Eq. 4.1) is applied to brittle'
+                ' materials or unknown elongation, not to ductile ones under static load (Shigley 10th ed. Sec. '
+                '3-13). Runs when hole_diameter is given.'))
+def check_eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_kt: bool | None = None,
                     load_case: str = "") -> CheckResult:
     """Net-section tension across the pin hole, with Kt where it matters.
 
@@ -61,7 +73,7 @@ def eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_k
     checked on the nominal net stress (Shigley 10th ed., Sec. 3-13: local yielding relieves the peak).
     """
     if link.lug is None:
-        raise InputError(f"{link.name}: eye_net_section needs a lug (pin eye)")
+        raise InputError(f"{link.name}: check_eye_net_section needs a lug (pin eye)")
     sigma = link.eye_net_stress(axial)
     kt = float(link.eye_kt().m_as(""))
     brittle = link.is_brittle
@@ -131,14 +143,61 @@ def lug_checks(link: Link, force: Any, *, design_factor: float = 2.0, load_case:
          r"P_v = 0.70 F_u A_v,\ A_v = 2\left[a + \frac{D_p}{2}(1 - \cos\phi) - Z'\right] t", "Eqs. (3-50)-(3-52)"),
         ("lug_bearing", "Pin bearing on the lug", s.bearing, design_factor, r"P_p = 1.25 F_y D_p t", "Sec. 3-3.3.3"),
     ]
-    return [CheckResult(check=check, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
+    return [CheckResult(check=name, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
                         title=title, formula=formula, source=f"{BTH1_SOURCE}: {eq}", inputs=inputs,
                         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
                         details={"b_eff": s.b_eff.to("mm"), "Av": s.shear_area.to("mm**2"), "Cr": s.Cr})
-            for check, title, cap, sf, formula, eq in modes]
+            for name, title, cap, sf, formula, eq in modes]
 
 
-def pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, required_sf: float = 1.0,
+def _lug_mode(name: str, link: Link, force: Any, design_factor: float, load_case: str) -> CheckResult:
+    return next(r for r in lug_checks(link, force, design_factor=design_factor, load_case=load_case)
+                if r.check == name)
+
+
+_LUG_EXPLAIN = (" ASME BTH-1-2008 Sec. 3-3.3.1 pinned-plate strength with the design factor Nd (2.0 = Design "
+                "Category A): allowable = P/(1.20 Nd) for the plate modes, P/Nd for bearing. In a design file the "
+                "required SF is Nd. Runs when hole_diameter is given.")
+
+
+@check("lug_tension", title="Lug tension through the pinhole (BTH-1)", sf_kind="static", aliases=("link.lug",),
+       source=ref("asme_bth1", "Sec. 3-3.3.1, Eq. (3-45)"),
+       explain="Tensile strength through the pinhole P_t = C_r F_u 2 t b_eff." + _LUG_EXPLAIN)
+def check_lug_tension(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
+    """Lug tension through the pinhole after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
+    return _lug_mode("lug_tension", link, force, design_factor, load_case)
+
+
+@check("lug_fracture_beyond", title="Lug fracture beyond the pinhole (BTH-1)", sf_kind="static",
+       source=ref("asme_bth1", "Sec. 3-3.3.1, Eq. (3-49)"),
+       explain="Single-plane fracture (tear-out) strength beyond the pinhole, BTH-1 Eq. (3-49)." + _LUG_EXPLAIN)
+def check_lug_fracture_beyond(link: Link, force: Any, *, design_factor: float = 2.0,
+                              load_case: str = "") -> CheckResult:
+    """Lug fracture beyond the pinhole after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
+    return _lug_mode("lug_fracture_beyond", link, force, design_factor, load_case)
+
+
+@check("lug_shear_out", title="Lug double-plane shear-out (BTH-1)", sf_kind="static",
+       source=ref("asme_bth1", "Sec. 3-3.3.1, Eqs. (3-50) to (3-52)"),
+       explain="Double-plane shear-out strength P_v = 0.70 F_u A_v, BTH-1 Eqs. (3-50) to (3-52)." + _LUG_EXPLAIN)
+def check_lug_shear_out(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
+    """Lug double-plane shear-out after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
+    return _lug_mode("lug_shear_out", link, force, design_factor, load_case)
+
+
+@check("lug_bearing", title="Pin bearing on the lug (BTH-1)", sf_kind="static",
+       source=ref("asme_bth1", "Sec. 3-3.3.3"),
+       explain="Bearing strength of the pin on the lug P_p = 1.25 F_y D_p t, BTH-1 Sec. 3-3.3.3." + _LUG_EXPLAIN)
+def check_lug_bearing(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
+    """Pin bearing on the lug after ASME BTH-1 (required SF ``Nd``); see :func:`lug_checks`."""
+    return _lug_mode("lug_bearing", link, force, design_factor, load_case)
+
+
+@check("pin_shear", title="Pin shear", sf_kind="static",
+       source=ref("shigley10", "Eq. (5-21)"),
+       explain=('Average shear F/(n pi d^2/4) in the pin against its S_sy (material value or 0.577 S_y, Shigley 10th '
+                'ed. Eq. 5-21). Runs when hole_diameter or pin_diameter is given.'))
+def check_pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, required_sf: float = 1.0,
               load_case: str = "") -> CheckResult:
     """Average shear stress in the pin ``F/(n pi d^2/4)`` against the pin's shear yield strength.
 
@@ -146,7 +205,7 @@ def pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, req
     Shigley 10th ed., Eq. (5-21)).
     """
     if link.pin_diameter is None:
-        raise InputError(f"{link.name}: pin_shear needs a pin diameter (lug or pin_diameter)")
+        raise InputError(f"{link.name}: check_pin_shear needs a pin diameter (lug or pin_diameter)")
     mat = pin_material if isinstance(pin_material, Material) else get_material(pin_material)
     tau = pin_shear_stress(force, link.pin_diameter, planes)
     if mat.shear_yield_strength is not None:
@@ -156,15 +215,20 @@ def pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, req
     return CheckResult(
         check="pin_shear", component=link.name, demand=tau.to("MPa"), capacity=cap.to("MPa"), required_sf=required_sf,
         title="Pin shear", formula=r"\tau = \frac{F}{n \pi d^2 / 4} \le S_{sy}",
-        source="average direct shear tau = F/A; Ssy = 0.577 Sy (Shigley's Mechanical Engineering Design, "
-               "10th ed., Eq. (5-21))",
+        source=f"average direct shear tau = F/A; Ssy = 0.577 Sy ({ref('shigley10', 'Eq. (5-21)')})",
         inputs={"F": Q(to_si(force, "force", "force"), "N"), "d": link.pin_diameter.to("mm"), "n": planes},
         notes=(f"{planes} shear plane(s); pin {mat.name}, S_sy = {how}",
                "average shear stress; the peak in a round pin is 4/3 of it (transverse shear)"),
         load_case=load_case)
 
 
-def member_buckling(link: Link, compression: Any, *, required_sf: float = 1.0, end: str | float | None = None,
+@check("member_buckling", title="Link buckling", sf_kind="buckling",
+       aliases=('link.buckling',),
+       source=ref("shigley10", "Secs. 4-11 to 4-13, Eqs. (4-43), (4-46), Table 4-2"),
+       explain=('Compression against the Euler (C pi^2 E I/l^2, Shigley Eq. 4-42) or Johnson (Eq. 4-46) critical load'
+                ' about the least principal axis, C from the end condition (Table 4-2). Runs in the load cases that '
+                'give axial_force.'))
+def check_member_buckling(link: Link, compression: Any, *, required_sf: float = 1.0, end: str | float | None = None,
                     basis: str = "recommended", load_case: str = "") -> CheckResult:
     """Compressive force against the Euler/Johnson critical load about the least principal axis."""
     P = to_si(compression, "force", "compression")
@@ -227,28 +291,23 @@ def deflection_check(deflection: Any, limit: Any, *, span: Any = None, component
         load_case=load_case)
 
 
-def link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis: str = "z", load_case: str = ""
+@check("link_deflection", title="Link deflection", sf_kind="deflection",
+       aliases=('link.deflection',),
+       source=ref("shigley10", "Table A-9"),
+       explain=('Largest deflection of the Table A-9 case (end condition and load kind) against the limit: a length, '
+                "'L/250' or a fraction of the length (requirements.deflection_limit). Runs in the load cases that "
+                'give transverse_load or distributed_load.'))
+def check_link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis: str = "z", load_case: str = ""
                     ) -> CheckResult:
     """Deflection of the link for a Shigley Table A-9 case (over its pin-centre length) against a limit."""
     y = link.deflection(case, load, axis)
-    return deflection_check(y, limit, span=link.length, component=link.name, load_case=load_case,
-                            source=f"Shigley's Mechanical Engineering Design, 10th ed., Table A-9 ({case})")
+    r = deflection_check(y, limit, span=link.length, component=link.name, load_case=load_case,
+                         source=ref("shigley10", f"Table A-9 ({case})"))
+    return dataclasses.replace(
+        r, check="link_deflection", title="Link deflection",
+        formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}")
 
 
-def plate_stress(plate: Plate, estimate: PlateEstimate, *, required_sf: float = 1.0, load_case: str = ""
-                 ) -> CheckResult:
-    """A Roark plate estimate's largest bending stress against the plate's yield strength."""
-    sy = plate.material.require("yield_strength")
-    warnings = list(estimate.warnings)
-    if plate.holes or plate.cutouts:
-        warnings.append("the plate has holes/cut-outs: Roark's closed form ignores them (use the FEA plate model)")
-    return CheckResult(
-        check="plate_stress", component=plate.name, demand=estimate.max_stress.to("MPa"), capacity=sy.to("MPa"),
-        required_sf=required_sf, title="Plate bending stress (Roark)", formula=r"\sigma_{max} \le S_y",
-        source=estimate.source, inputs={"t": Q(plate.thickness, "m").to("mm")},
-        notes=(estimate.case, f"largest stress at the {estimate.stress_location}"), warnings=tuple(warnings),
-        load_case=load_case, details={k: v.to("MPa") for k, v in estimate.stresses.items()})
-
-
-__all__ = ["member_body_strength", "eye_net_section", "lug_checks", "pin_shear", "member_buckling",
-           "deflection_limit", "deflection_check", "link_deflection", "plate_stress"]
+__all__ = ["check_member_body_strength", "check_eye_net_section", "lug_checks", "check_lug_tension",
+           "check_lug_fracture_beyond", "check_lug_shear_out", "check_lug_bearing", "check_pin_shear",
+           "check_member_buckling", "deflection_limit", "deflection_check", "check_link_deflection"]

@@ -33,6 +33,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
 import pint
 
 from mechverify.components import columns
@@ -41,7 +42,7 @@ from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue.notch import kt_plate_hole
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
-from mechverify.units import from_si, si_function, to_si
+from mechverify.units import fmt, from_si, si_function, to_si
 
 BTH1_SOURCE = "ASME BTH-1-2008, Sec. 3-3.3.1, Eqs. (3-45) to (3-52), Commentary Eq. (C3-2)"
 BRITTLE_ELONGATION = 0.05  # elongation at break below which a material is treated as brittle (Shigley Sec. 2-1)
@@ -198,20 +199,23 @@ class BeamCase:
     c_deflection: float
     c_moment: float
     where: str
+    #: largest end reaction (= largest shear force) as a multiple of ``F`` or ``w l`` (statics of the case)
+    c_reaction: float = 0.0
 
 
 _BEAM_CASES = {c.name: c for c in (
-    BeamCase("cantilever_end_load", "A-9-1", "force", 1 / 3, 1.0, "free end; moment at the wall"),
-    BeamCase("cantilever_uniform", "A-9-3", "line_load", 1 / 8, 1 / 2, "free end; moment at the wall"),
+    BeamCase("cantilever_end_load", "A-9-1", "force", 1 / 3, 1.0, "free end; moment at the wall", 1.0),
+    BeamCase("cantilever_uniform", "A-9-3", "line_load", 1 / 8, 1 / 2, "free end; moment at the wall", 1.0),
     BeamCase("cantilever_end_moment", "A-9-4", "moment", 1 / 2, 1.0, "free end; uniform moment"),
-    BeamCase("simply_supported_center_load", "A-9-5", "force", 1 / 48, 1 / 4, "mid-span"),
-    BeamCase("simply_supported_uniform", "A-9-7", "line_load", 5 / 384, 1 / 8, "mid-span"),
+    BeamCase("simply_supported_center_load", "A-9-5", "force", 1 / 48, 1 / 4, "mid-span", 0.5),
+    BeamCase("simply_supported_uniform", "A-9-7", "line_load", 5 / 384, 1 / 8, "mid-span", 0.5),
     BeamCase("fixed_pinned_center_load", "A-9-11", "force", 1 / (48 * math.sqrt(5)), 3 / 16,
-             "deflection at l/sqrt(5) from the pinned end; moment at the fixed end"),
+             "deflection at l/sqrt(5) from the pinned end; moment at the fixed end", 11 / 16),
     BeamCase("fixed_pinned_uniform", "A-9-13", "line_load", (39 + 55 * math.sqrt(33)) / 65536, 1 / 8,
-             "deflection at 0.4215 l from the pinned end; moment at the fixed end"),
-    BeamCase("fixed_fixed_center_load", "A-9-14", "force", 1 / 192, 1 / 8, "mid-span; moment at ends and centre"),
-    BeamCase("fixed_fixed_uniform", "A-9-16", "line_load", 1 / 384, 1 / 12, "deflection mid-span; moment at the ends"),
+             "deflection at 0.4215 l from the pinned end; moment at the fixed end", 5 / 8),
+    BeamCase("fixed_fixed_center_load", "A-9-14", "force", 1 / 192, 1 / 8, "mid-span; moment at ends and centre", 0.5),
+    BeamCase("fixed_fixed_uniform", "A-9-16", "line_load", 1 / 384, 1 / 12, "deflection mid-span; moment at the ends",
+             0.5),
 )}
 _LOAD_DIMS = {"force": ("force", 3, 1), "line_load": ("force_per_length", 4, 2), "moment": ("torque", 2, 0)}
 
@@ -248,6 +252,65 @@ def beam_max_moment(case: str, load: Any, length: Any) -> pint.Quantity:
     P = abs(to_si(load, dim, "load"))
     L = _pos(length, "length", "length")
     return from_si(c.c_moment * P * L**m, "torque")
+
+
+#: Link end condition -> (Table A-9 support name, name of the point-load case's load position).
+BEAM_SUPPORT = {"pinned-pinned": ("simply_supported", "center_load"), "fixed-free": ("cantilever", "end_load"),
+                "fixed-pinned": ("fixed_pinned", "center_load"), "fixed-fixed": ("fixed_fixed", "center_load")}
+
+
+def beam_case_name(end: str, uniform: bool) -> str:
+    """The Table A-9 case of a transverse load on a member with end condition ``end`` (a key of
+    :data:`BEAM_SUPPORT`): a point load at mid-span (tip of a cantilever) or a uniform load."""
+    if end not in BEAM_SUPPORT:
+        raise UnknownNameError("end condition", end, list(BEAM_SUPPORT))
+    support, point = BEAM_SUPPORT[end]
+    return f"{support}_{'uniform' if uniform else point}"
+
+
+def beam_max_reaction(case: str, load: Any, length: Any) -> pint.Quantity:
+    """Largest end reaction (= largest shear force) [N] of a Table A-9 case by statics: ``c F`` for a
+    point load, ``c w l`` for a uniform load (e.g. fixed-pinned, centre load: ``11 F/16`` at the fixed end)."""
+    c = beam_case(case)
+    dim, _, _ = _LOAD_DIMS[c.load_kind]
+    P = abs(to_si(load, dim, "load"))
+    L = _pos(length, "length", "length")
+    return from_si(c.c_reaction * P * (L if c.load_kind == "line_load" else 1.0), "force")
+
+
+def beam_moment_diagram(case: str, load: float, length: float, n: int = 201) -> tuple[np.ndarray, np.ndarray]:
+    """Bending moment along the beam [N m] (sagging positive, load downward, fixed end at x = 0) by
+    statics with the Table A-9 reactions; ``load`` in N (point cases) or N/m (uniform cases), SI floats.
+
+    Shigley 10th ed. Table A-9, cases 1, 3, 5, 7, 11, 13, 14, 16 (their moment diagrams).
+    """
+    x = np.linspace(0.0, length, n)
+    L, P = length, load
+    step = np.where(x > L / 2, x - L / 2, 0.0)  # Macaulay bracket <x - l/2>
+    M = {
+        "simply_supported_center_load": P / 2 * x - P * step,
+        "simply_supported_uniform": P * x * (L - x) / 2,
+        "cantilever_end_load": -P * (L - x),
+        "cantilever_uniform": -P * (L - x) ** 2 / 2,
+        "fixed_pinned_center_load": -3 * P * L / 16 + 11 * P / 16 * x - P * step,
+        "fixed_pinned_uniform": -P * L**2 / 8 + 5 * P * L / 8 * x - P * x**2 / 2,
+        "fixed_fixed_center_load": -P * L / 8 + P / 2 * x - P * step,
+        "fixed_fixed_uniform": -P * L**2 / 12 + P * L / 2 * x - P * x**2 / 2,
+    }[beam_case(case).name]
+    return x, M
+
+
+def beam_deflection_curve(case: str, load: float, length: float, EI: float, n: int = 201
+                          ) -> tuple[np.ndarray, np.ndarray]:
+    """Deflection along the beam [m] (upward positive) from ``E I y'' = M`` integrated twice with the
+    kinematic conditions of the supports (y = y' = 0 at a fixed x = 0; y = 0 at both simple supports)."""
+    x, M = beam_moment_diagram(case, load, length, n)
+    k = M / EI
+    slope = np.concatenate(([0.0], np.cumsum((k[1:] + k[:-1]) / 2 * np.diff(x))))
+    y = np.concatenate(([0.0], np.cumsum((slope[1:] + slope[:-1]) / 2 * np.diff(x))))
+    if beam_case(case).name.startswith("simply_supported"):
+        y = y - y[-1] * x / length  # add c1 x so that y(l) = 0
+    return x, y
 
 
 # --------------------------------------------------------------------------------------- links
@@ -399,6 +462,104 @@ class Link:
         return (self.section.area * self.length * rho).to("kg")
 
 
+
+# ------------------------------------------------------------------------------- link section forces
+@dataclass(frozen=True)
+class LinkSectionForces:
+    """Section forces of a link in one load case, composed from its loads (see :func:`link_section_forces`).
+
+    ``moment_y`` is the given bending moment plus the largest moment of the transverse load's Table A-9
+    case (added, conservative: they may peak at different sections); ``shear`` the largest end reaction
+    of that case. ``beam_case`` and ``transverse`` (the load, N or N/m, SI) are ``None`` without a
+    transverse load. ``notes`` say how each value was found.
+    """
+
+    axial: pint.Quantity
+    moment_y: pint.Quantity
+    moment_z: pint.Quantity
+    torque: pint.Quantity
+    shear: pint.Quantity
+    beam_case: str | None = None
+    transverse: float | None = None
+    notes: tuple[str, ...] = ()
+
+
+def link_transverse_case(link: Link, transverse_load: Any = None, distributed_load: Any = None
+                         ) -> tuple[str, float] | None:
+    """``(Table A-9 case, load in SI)`` of a transverse load on ``link`` (by its end condition), or ``None``.
+
+    Raises:
+        InputError: both a point and a distributed load are given, or the end condition has no beam case.
+    """
+    if transverse_load is not None and distributed_load is not None:
+        raise InputError("give transverse_load or distributed_load, not both")
+    if transverse_load is None and distributed_load is None:
+        return None
+    if str(link.end) not in BEAM_SUPPORT:
+        raise InputError(f"{link.name}: a transverse load needs an end condition of {', '.join(BEAM_SUPPORT)}, "
+                         f"got {link.end!r}")
+    uniform = distributed_load is not None
+    q = distributed_load if uniform else transverse_load
+    key = "distributed_load" if uniform else "transverse_load"
+    P = abs(to_si(q, "force_per_length" if uniform else "force", key))
+    return beam_case_name(str(link.end), uniform), P
+
+
+def link_section_forces(link: Link, axial_force: Any = "0 N", bending_moment: Any = "0 N*m",
+                        lateral_moment: Any = "0 N*m", torque: Any = "0 N*m", *, transverse_load: Any = None,
+                        distributed_load: Any = None) -> LinkSectionForces:
+    """Section forces for the body-strength check of ``link``: ``N``, ``M_y``, ``M_z``, ``T`` and ``V``.
+
+    A transverse point load [N] (mid-span; tip of a cantilever) or distributed load [N/m] across the
+    link in the plane of the section's height adds the largest moment and end reaction of its Shigley
+    10th ed. Table A-9 case, chosen from the link's end condition (:data:`BEAM_SUPPORT`).
+    """
+    M = abs(to_si(bending_moment, "torque", "bending_moment"))
+    V, notes, case, P = 0.0, [], None, None
+    tr = link_transverse_case(link, transverse_load, distributed_load)
+    if tr is not None:
+        case, P = tr
+        c = beam_case(case)
+        load = from_si(P, "force" if c.load_kind == "force" else "force_per_length")
+        Mt = beam_max_moment(case, load, link.length).m_as("N*m")
+        V = beam_max_reaction(case, load, link.length).m_as("N")
+        given = transverse_load if transverse_load is not None else distributed_load
+        given = fmt(given) if isinstance(given, pint.Quantity) else given
+        notes.append(f"transverse load {given}: Shigley's Mechanical Engineering Design, 10th ed., Table A-9-"
+                     f"{c.table_case[4:]} ({case.replace('_', ' ')}), M_max = {Mt:.4g} N·m ({c.where}), "
+                     f"V_max = {V:.4g} N")
+        if M:
+            notes.append("bending_moment and the transverse load's largest moment added (conservative: they may "
+                         "peak at different sections)")
+        M += Mt
+    return LinkSectionForces(axial=from_si(to_si(axial_force, "force", "axial_force"), "force"),
+                             moment_y=from_si(M, "torque"),
+                             moment_z=from_si(to_si(lateral_moment, "torque", "lateral_moment"), "torque"),
+                             torque=from_si(to_si(torque, "torque", "torque"), "torque"), shear=from_si(V, "force"),
+                             beam_case=case, transverse=P, notes=tuple(notes))
+
+
+def link_pin_force(link: Link, axial_force: Any = "0 N", *, transverse_load: Any = None,
+                   distributed_load: Any = None, pin_force: Any = None) -> tuple[pint.Quantity, str]:
+    """``(force through each pin [N], how it was found)``: ``pin_force`` when given, else the resultant of
+    the axial force and the largest end reaction of the transverse load's Table A-9 case."""
+    if pin_force is not None:
+        return from_si(abs(to_si(pin_force, "force", "pin_force")), "force"), "pin_force given by the load case"
+    N = abs(to_si(axial_force, "force", "axial_force"))
+    tr = link_transverse_case(link, transverse_load, distributed_load)
+    R = 0.0
+    if tr is not None:
+        case, P = tr
+        load = from_si(P, "force" if beam_case(case).load_kind == "force" else "force_per_length")
+        R = beam_max_reaction(case, load, link.length).m_as("N")
+    if R:
+        return from_si(math.hypot(N, R), "force"), (
+            f"pin force = resultant of the axial force {N:.4g} N and the largest end reaction {R:.4g} N of the "
+            "transverse load (Table A-9)")
+    return from_si(N, "force"), "pin force = |axial force| (no pin_force given)"
+
 __all__ = ["Lug", "LugStrength", "Link", "LinkStresses", "BeamCase", "lug_strength", "pin_shear_stress",
            "bearing_stress", "net_section_stress", "bth1_pin_clearance_factor", "beam_cases", "beam_case",
-           "beam_max_deflection", "beam_max_moment", "BTH1_SOURCE"]
+           "beam_max_deflection", "beam_max_moment", "BTH1_SOURCE", "BEAM_SUPPORT", "beam_case_name",
+           "beam_max_reaction", "beam_moment_diagram", "beam_deflection_curve", "LinkSectionForces",
+           "link_transverse_case", "link_section_forces", "link_pin_force"]

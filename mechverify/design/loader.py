@@ -386,16 +386,14 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
         if not isinstance(overrides, dict):
             col.add(f"{path}.checks", "expected a table of check settings")
             overrides = {}
-        known = {c.name: c for c in ct.checks} | {a: c for c in ct.checks for a in c.aliases}
+        known = [c.name for c in ct.checks] + [a for c in ct.checks for a in c.aliases]
         col.unknown_keys(overrides, known, f"{path}.checks")
         for key, setting in overrides.items():
             if key not in known:
                 continue
-            cname = known[key].name  # a former key (alias) sets the renamed check, with a deprecation note
-            alias = {"alias": key} if key != cname else {}
             cpath = f"{path}.checks.{key}"
             if isinstance(setting, bool):
-                checks[cname] = {"enabled": setting, **alias}
+                value = {"enabled": setting}
             elif isinstance(setting, dict):
                 col.unknown_keys(setting, ("enabled", "required_sf"), cpath)
                 sf = setting.get("required_sf")
@@ -405,11 +403,13 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
                 enabled = setting.get("enabled", True)  # settings without `enabled` turn the check on
                 if not isinstance(enabled, bool):
                     col.add(f"{cpath}.enabled", f"expected true or false, got {_describe(enabled)}")
-                checks[cname] = {"enabled": enabled is not False,
-                                 **{k: v for k, v in setting.items() if k == "required_sf"}} | alias
+                value = {"enabled": enabled is not False, **{k: v for k, v in setting.items() if k == "required_sf"}}
             else:
                 col.add(cpath, "expected true, false or a table such as { required_sf = 2.0 }, "
                                f"got {_describe(setting)}")
+                continue
+            for spec in ct.checks_named(key):  # a former key (alias) sets the renamed check(s), noted in the result
+                checks[spec.name] = value | ({"alias": key} if key != spec.name else {})
         out[name] = Entry(name, ct, params, raw, checks)
     return out
 

@@ -64,15 +64,18 @@ class CheckSpec:
     explain: str = ""
     #: former design-file keys of this check under its component type (accepted with a deprecation note)
     aliases: tuple[str, ...] = ()
+    #: the registry's :class:`~mechverify.checks.registry.CheckDef` (set by :meth:`of`)
+    definition: Any = field(default=None, compare=False, repr=False)
 
     @classmethod
     def of(cls, fn: Callable[..., Any], run: Callable[..., Any], needs: tuple[str, ...] = (),
-           default: bool = True) -> CheckSpec:
+           default: bool = True, aliases: tuple[str, ...] = ()) -> CheckSpec:
         """The spec of the registered check function ``fn`` (see :mod:`mechverify.checks.registry`).
 
         Name, title, safety-factor class and explanation come from the registry, never restated;
         ``run(component, loads, context)`` adapts the design file's component and loads to ``fn``.
-        The component type fills :attr:`aliases` from the registry's ``"<type>.<key>"`` aliases.
+        The component type adds the registry's ``"<type>.<key>"`` aliases to :attr:`aliases`; give
+        ``aliases`` for a former key that several checks share (``lug`` for the four BTH-1 lug checks).
 
         Raises:
             ValueError: ``fn`` is not decorated with :func:`mechverify.checks.registry.check`.
@@ -82,7 +85,7 @@ class CheckSpec:
             raise ValueError(f"{getattr(fn, '__qualname__', fn)!r} is not a registered check "
                              "(decorate it with @check from mechverify.checks.registry)")
         return cls(name=d.name, run=run, title=d.title, needs=tuple(needs), sf_kind=d.sf_kind,
-                   default=default, explain=d.explain)
+                   default=default, explain=d.explain, aliases=tuple(aliases), definition=d)
 
 
 @dataclass(frozen=True)
@@ -133,14 +136,19 @@ class ComponentType:
 
         specs = []
         for c in self.checks:
-            d = CHECKS.get(c.name)
+            d = c.definition or CHECKS.get(c.name)
             local = d.local_aliases(self.name) if d is not None else ()
-            specs.append(c if not local or c.aliases else replace(c, aliases=local))
+            specs.append(replace(c, aliases=tuple(dict.fromkeys((*c.aliases, *local)))) if local else c)
         object.__setattr__(self, "checks", tuple(specs))
+
+    def checks_named(self, key: str) -> list[CheckSpec]:
+        """The checks a design file's ``checks.<key>`` sets: the one named ``key``, or those with ``key``
+        as a former key (alias)."""
+        return [c for c in self.checks if key == c.name or key in c.aliases]
 
     def check(self, key: str) -> CheckSpec | None:
         """The check named ``key`` in a design file: its name, or a former key (alias) of it."""
-        return next((c for c in self.checks if key == c.name or key in c.aliases), None)
+        return next(iter(self.checks_named(key)), None)
 
     def field(self, name: str) -> Field:
         return {f.name: f for f in self.fields}[name]

@@ -173,8 +173,8 @@ class StudyResult:
                     *[f"{c} fu" for c in checks], *[f"{c} verdict" for c in checks], "message"])
         for s in self.samples:
             row = [s["index"], *[repr(s["inputs"][n]) for n in self.names], s["status"], s["verdict"], s["governing"],
-                   _full(s["max_fu"])]
-            row += [_full(s["checks"].get(c, {}).get("fu", math.nan)) for c in checks]
+                   _num(s["max_fu"])]
+            row += [_num(s["checks"].get(c, {}).get("fu")) for c in checks]
             row += [s["checks"].get(c, {}).get("verdict", "") for c in checks]
             w.writerow([*row, s["message"]])
         return buf.getvalue()
@@ -223,11 +223,10 @@ class StudyResult:
             if w is not None:
                 lines.append(f"worst sample {w['index']}: {w['governing']} u·SF = {_num(w['max_fu'])}  "
                              + ", ".join(f"{k} = {v:.6g}" for k, v in w["inputs"].items()))
-            sens = {c: v for c, v in self.sensitivity().items() if v}
+            sens = self.sensitivity().get("governing", [])
             if sens:
-                lines.append("sensitivity: Spearman rank correlation of u·SF with each input, strongest first")
-                for c, v in sens.items():
-                    lines.append(f"  {c:42s} " + ", ".join(f"{n} {r:+.3f}" for n, r in v))
+                lines.append("sensitivity of the governing u·SF (Spearman): "
+                             + ", ".join(f"{n} {r:+.3f}" for n, r in sens))
         else:
             lines.append("  ".join(f"{n:>22s}" for n in self.names) + f"  {'governing':40s} {'u·SF':>8s} verdict")
             for s in self.samples:
@@ -239,13 +238,6 @@ class StudyResult:
         for s in self.errors[:5]:
             lines.append(f"sample {s['index']} invalid: {s['message'].splitlines()[-1].strip()[:100]}")
         return "\n".join(lines)
-
-
-def _full(v: float | None) -> str:
-    """A value for CSV: every digit (repr), 'inf' for an unbounded u·SF, '' where the check did not run."""
-    if v is None:
-        return "inf"
-    return "" if math.isnan(v) else repr(v)
 
 
 def _num(v: float | None) -> str:
@@ -339,18 +331,6 @@ class Study:
 
     def overrides(self, inputs: Mapping[str, float]) -> dict[str, Any]:
         return {a.name: a.param.text(inputs[a.name]) for a in self.axes}
-
-    def result_skeleton(self) -> StudyResult:
-        """A result with the inputs only (no sample evaluated): what :meth:`reproduce` needs."""
-        axes = [{**a.to_dict(), "integer": a.param.integer} for a in self.axes]
-        samples = [{"index": i, "inputs": x, "status": "not run", "message": "", "verdict": "", "governing": "",
-                    "max_fu": None, "checks": {}} for i, x in enumerate(self.inputs())]
-        return StudyResult(self.kind, self.method, self.seed if self.kind == "monte_carlo" else None, axes, samples,
-                           self.design_name, self.doc, self.path)
-
-    def reproduce(self, i: int, path: str | Path) -> Path:
-        """Write sample ``i`` as a design file (the samples are rebuilt from the seed; nothing is evaluated)."""
-        return self.result_skeleton().reproduce(i, path)
 
     # ------------------------------------------------------------------ running
     def run(self, executor: Any = None, *, workers: int | None = None, progress: bool | Any = False,

@@ -201,8 +201,8 @@ def test_plate_results_scale_as_kirchhoff_theory_and_exceed_the_nominal_bounds(p
     sigma_vM = sqrt(3) tau; the base plate's mean stress across the mid-section 6 (P a / 4) / (b t^2) with
     P = 380 N on four corner supports (statics)."""
     _, rs = plates
-    s4, s6 = (rs.get(f"arm_plate_{t}", "plate_stress").demand.m_as("Pa") for t in (4, 6))
-    w4, w6 = (rs.get(f"arm_plate_{t}", "plate_deflection").demand.m_as("m") for t in (4, 6))
+    s4, s6 = (rs.get(f"arm_plate_{t}", "plate_stress_fea").demand.m_as("Pa") for t in (4, 6))
+    w4, w6 = (rs.get(f"arm_plate_{t}", "plate_deflection_fea").demand.m_as("m") for t in (4, 6))
     assert s4 / s6 == pytest.approx(2.25, rel=1e-3)
     assert w4 / w6 == pytest.approx(3.375, rel=1e-3)
     for t, s in ((4e-3, s4), (6e-3, s6)):
@@ -210,12 +210,12 @@ def test_plate_results_scale_as_kirchhoff_theory_and_exceed_the_nominal_bounds(p
         wt = (1 - 0.630 * t / b) / 3 * b * t**2
         assert s > math.sqrt(3) * 48.0 / wt
     for t in (8e-3, 6e-3):
-        sb = rs.get(f"base_plate_{round(t * 1e3)}", "plate_stress").demand.m_as("Pa")
+        sb = rs.get(f"base_plate_{round(t * 1e3)}", "plate_stress_fea").demand.m_as("Pa")
         assert sb > 6 * (380 * 0.450 / 4) / (0.400 * t**2)
     # the document's 6 mm arm-plate SF 2.75 and base-plate deflections 0.17 / 0.39 mm (Figs. 28, 31, 33)
     assert AL_SY / s6 == pytest.approx(2.75, rel=0.05)
-    assert rs.get("base_plate_8", "plate_deflection").demand.m_as("mm") == pytest.approx(0.17, rel=0.05)
-    assert rs.get("base_plate_6", "plate_deflection").demand.m_as("mm") == pytest.approx(0.39, rel=0.06)
+    assert rs.get("base_plate_8", "plate_deflection_fea").demand.m_as("mm") == pytest.approx(0.17, rel=0.05)
+    assert rs.get("base_plate_6", "plate_deflection_fea").demand.m_as("mm") == pytest.approx(0.39, rel=0.06)
 
 
 def test_arm_plate_as_a_cantilever_lies_between_beam_and_plate_strip_theory(tmp_path):
@@ -236,7 +236,7 @@ def test_arm_plate_as_a_cantilever_lies_between_beam_and_plate_strip_theory(tmp_
     rs = mechverify.design.load(p).verify()
     b, t, lever, force = 0.335, 4e-3, 0.1575, 50.0
     y_beam = force * lever**3 / (3 * AL_E * b * t**3 / 12)
-    y = rs.get("c", "plate_deflection").demand.m_as("m")
+    y = rs.get("c", "plate_deflection_fea").demand.m_as("m")
     assert y_beam * (1 - AL_NU**2) < y < y_beam
     sigma_root = 6 * force * lever / (b * t**2)
-    assert rs.get("c", "plate_stress").demand.m_as("Pa") > sigma_root * math.sqrt(1 - AL_NU + AL_NU**2)
+    assert rs.get("c", "plate_stress_fea").demand.m_as("Pa") > sigma_root * math.sqrt(1 - AL_NU + AL_NU**2)

@@ -306,8 +306,6 @@ class Drive:
     driver_current: Any = None
     inertia_ratio_limit: float | None = None
     reported: dict[str, Any] = dataclasses.field(default_factory=dict, compare=False, repr=False)
-    #: the last demands computed, (design, result): the 9 motor checks of one verify share them
-    memo: list[Any] = dataclasses.field(default_factory=list, compare=False, repr=False)
 
     def make_load(self, case: Mapping[str, Any]) -> LinearLoad | RotaryLoad:
         """The load with a load case's replacements: mass/inertia/external/gravity replaced, payload added,
@@ -343,19 +341,7 @@ class Drive:
         return [(lab, DriveTrain(self.motor, tuple(st), load, name=self.name)) for lab, st in combos]
 
     def demands(self, ctx: Any) -> list[tuple[str, Any, list[tuple[str, TorqueDemand]]]]:
-        """(load case, profile, [(variant, demand)]) for every case that names the drive, or its own profile once.
-
-        Computed once per design (every motor check of a verify asks for the same demands).
-        """
-        design = getattr(ctx, "design", None) if ctx is not None else None
-        if design is not None and self.memo and self.memo[0] is design:
-            return self.memo[1]
-        out = self._demands(ctx)
-        if design is not None:
-            self.memo[:] = [design, out]
-        return out
-
-    def _demands(self, ctx: Any) -> list[tuple[str, Any, list[tuple[str, TorqueDemand]]]]:
+        """(load case, profile, [(variant, demand)]) for every case that names the drive, or its own profile once."""
         cases = []
         if ctx is not None and getattr(ctx, "design", None) is not None:
             for case, comps in ctx.design.data.load_cases.items():

@@ -24,16 +24,23 @@ import numpy as np
 import pint
 
 from mechverify.checks import members as mc
+from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import sections
-from mechverify.components.links import Link, Lug, beam_case, beam_max_moment
+from mechverify.components.links import (
+    BEAM_SUPPORT,
+    Link,
+    Lug,
+    beam_case,
+    link_pin_force,
+    link_section_forces,
+    link_transverse_case,
+)
 from mechverify.components.plates import Plate, PlateEstimate, roark_circular_plate, roark_rectangular_plate
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
 from mechverify.materials import Material
 from mechverify.units import Q, fmt, to_si
-
-SHIGLEY_A9 = "Shigley's Mechanical Engineering Design, 10th ed., Table A-9"
 
 # ------------------------------------------------------------------------------------------ sections
 #: Section kinds a design file may name, with the constructor of :mod:`~mechverify.components.sections`.
@@ -68,53 +75,6 @@ def build_section(p: dict[str, Any]) -> sections.Section:
     if missing:
         raise InputError(f"{missing[0]}: missing; a {kind} section needs {', '.join(req)}")
     return sections.make_section(kind, **given)
-
-
-# ------------------------------------------------------------------------------------------ beam cases
-#: Link end condition -> (Table A-9 support name, name of the point-load case's load position).
-BEAM_SUPPORT = {"pinned-pinned": ("simply_supported", "center_load"), "fixed-free": ("cantilever", "end_load"),
-                "fixed-pinned": ("fixed_pinned", "center_load"), "fixed-fixed": ("fixed_fixed", "center_load")}
-#: Largest end reaction (= largest shear) per Table A-9 case, as a multiple of F or w l.
-REACTION = {"simply_supported_center_load": 0.5, "simply_supported_uniform": 0.5, "cantilever_end_load": 1.0,
-            "cantilever_uniform": 1.0, "fixed_pinned_center_load": 11 / 16, "fixed_pinned_uniform": 5 / 8,
-            "fixed_fixed_center_load": 0.5, "fixed_fixed_uniform": 0.5}
-
-
-def beam_case_name(end: str, uniform: bool) -> str:
-    support, point = BEAM_SUPPORT[end]
-    return f"{support}_{'uniform' if uniform else point}"
-
-
-def beam_moment_diagram(case: str, load: float, length: float, n: int = 201) -> tuple[np.ndarray, np.ndarray]:
-    """Bending moment along the beam [N m] (sagging positive, load downward, fixed end at x = 0) by
-    statics with the Table A-9 reactions; ``load`` in N (point cases) or N/m (uniform cases)."""
-    x = np.linspace(0.0, length, n)
-    L, P = length, load
-    step = np.where(x > L / 2, x - L / 2, 0.0)  # Macaulay bracket <x - l/2>
-    M = {
-        "simply_supported_center_load": P / 2 * x - P * step,
-        "simply_supported_uniform": P * x * (L - x) / 2,
-        "cantilever_end_load": -P * (L - x),
-        "cantilever_uniform": -P * (L - x) ** 2 / 2,
-        "fixed_pinned_center_load": -3 * P * L / 16 + 11 * P / 16 * x - P * step,
-        "fixed_pinned_uniform": -P * L**2 / 8 + 5 * P * L / 8 * x - P * x**2 / 2,
-        "fixed_fixed_center_load": -P * L / 8 + P / 2 * x - P * step,
-        "fixed_fixed_uniform": -P * L**2 / 12 + P * L / 2 * x - P * x**2 / 2,
-    }[case]
-    return x, M
-
-
-def beam_deflection_curve(case: str, load: float, length: float, EI: float, n: int = 201
-                          ) -> tuple[np.ndarray, np.ndarray]:
-    """Deflection along the beam [m] (upward positive) from ``E I y'' = M`` integrated twice with the
-    kinematic conditions of the supports (y = y' = 0 at a fixed x = 0; y = 0 at both simple supports)."""
-    x, M = beam_moment_diagram(case, load, length, n)
-    k = M / EI
-    slope = np.concatenate(([0.0], np.cumsum((k[1:] + k[:-1]) / 2 * np.diff(x))))
-    y = np.concatenate(([0.0], np.cumsum((slope[1:] + slope[:-1]) / 2 * np.diff(x))))
-    if case.startswith("simply_supported"):
-        y = y - y[-1] * x / length  # add c1 x so that y(l) = 0
-    return x, y
 
 
 # ------------------------------------------------------------------------------------------ the link
@@ -201,61 +161,25 @@ def _build_link(p: dict[str, Any], ctx: dict[str, Any]) -> LinkMember:
 
 def _transverse(m: LinkMember, loads: dict[str, Any]) -> tuple[str, float, pint.Quantity] | None:
     """(Table A-9 case, load in SI, load as given) of a transverse load, or None."""
-    if "transverse_load" in loads and "distributed_load" in loads:
-        raise InputError("give transverse_load or distributed_load, not both")
-    for key, uniform in (("transverse_load", False), ("distributed_load", True)):
-        if key in loads:
-            q = loads[key]
-            return beam_case_name(_end(m), uniform), abs(to_si(q, _dim(key), key)), q
-    return None
-
-
-def _dim(key: str) -> str:
-    return "force" if key == "transverse_load" else "force_per_length"
-
-
-def _end(m: LinkMember) -> str:
-    return str(m.link.end)  # one of BEAM_SUPPORT (a choice field)
-
-
-def _moments(m: LinkMember, loads: dict[str, Any]) -> tuple[float, float, list[str]]:
-    """(|M| about y, |shear| V) from bending_moment plus the transverse load's Table A-9 maximum."""
-    M = abs(to_si(loads.get("bending_moment", "0 N*m"), "torque", "bending_moment"))
-    V, notes = 0.0, []
-    tr = _transverse(m, loads)
-    if tr is not None:
-        case, P, q = tr
-        L = m.link.length.m_as("m")
-        Mt = beam_max_moment(case, Q(P, "N" if _dim_of(case) == "force" else "N/m"), m.link.length).m_as("N*m")
-        c = beam_case(case)
-        V = REACTION[case] * P * (1.0 if c.load_kind == "force" else L)
-        notes.append(f"transverse load {fmt(q)}: {SHIGLEY_A9}-{c.table_case[4:]} ({case.replace('_', ' ')}), "
-                     f"M_max = {Mt:.4g} N·m ({c.where}), V_max = {V:.4g} N")
-        if M:
-            notes.append("bending_moment and the transverse load's largest moment added (conservative: they may "
-                         "peak at different sections)")
-        M += Mt
-    return M, V, notes
+    tr = link_transverse_case(m.link, loads.get("transverse_load"), loads.get("distributed_load"))
+    if tr is None:
+        return None
+    return (*tr, loads.get("transverse_load", loads.get("distributed_load")))
 
 
 def _dim_of(case: str) -> str:
     return "force" if beam_case(case).load_kind == "force" else "force_per_length"
 
 
+def _end_reaction(m: LinkMember, loads: Any) -> pint.Quantity:
+    """The largest end reaction of the transverse load (Table A-9): the radial load on the bearing at that end."""
+    return link_pin_force(m.link, "0 N", transverse_load=(loads or {}).get("transverse_load"),
+                          distributed_load=(loads or {}).get("distributed_load"))[0]
+
+
 def _pin_force(m: LinkMember, loads: dict[str, Any]) -> tuple[pint.Quantity, str]:
-    """The pin force of a case: ``pin_force``, else the resultant of the axial force and the largest end reaction."""
-    if "pin_force" in loads:
-        return Q(abs(loads["pin_force"].m_as("N")), "N"), "pin_force given by the load case"
-    N = abs(to_si(loads.get("axial_force", "0 N"), "force", "axial_force"))
-    tr = _transverse(m, loads)
-    R = 0.0
-    if tr is not None:
-        case, P, _ = tr
-        R = REACTION[case] * P * (1.0 if beam_case(case).load_kind == "force" else m.link.length.m_as("m"))
-    if R:
-        return Q(math.hypot(N, R), "N"), (f"pin force = resultant of the axial force {N:.4g} N and the largest end "
-                                          f"reaction {R:.4g} N of the transverse load (Table A-9)")
-    return Q(N, "N"), "pin force = |axial force| (no pin_force given)"
+    return link_pin_force(m.link, loads.get("axial_force", "0 N"), transverse_load=loads.get("transverse_load"),
+                          distributed_load=loads.get("distributed_load"), pin_force=loads.get("pin_force"))
 
 
 def _with(r: CheckResult, notes: list[str] = (), details: dict[str, Any] | None = None, **kw: Any) -> CheckResult:
@@ -263,10 +187,13 @@ def _with(r: CheckResult, notes: list[str] = (), details: dict[str, Any] | None 
 
 
 def _body_strength(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResult:
-    M, V, notes = _moments(m, loads)
-    Mz = loads.get("lateral_moment", Q(0, "N*m"))
-    r = mc.member_body_strength(m.link, loads.get("axial_force", "0 N"), Q(M, "N*m"), Mz,
-                                loads.get("torque", "0 N*m"), Q(V, "N"), required_sf=ctx.required_sf)
+    f = link_section_forces(m.link, loads.get("axial_force", "0 N"), loads.get("bending_moment", "0 N*m"),
+                            loads.get("lateral_moment", "0 N*m"), loads.get("torque", "0 N*m"),
+                            transverse_load=loads.get("transverse_load"),
+                            distributed_load=loads.get("distributed_load"))
+    M, V, notes = f.moment_y.m_as("N*m"), f.shear.m_as("N"), list(f.notes)
+    r = mc.check_member_body_strength(m.link, f.axial, f.moment_y, f.moment_z, f.torque, f.shear,
+                                      required_sf=ctx.required_sf)
     if m.link.lug is None:
         notes.append("no hole_diameter given: the eye, lug and pin checks do not apply")
     else:
@@ -293,7 +220,7 @@ def _eye(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
     if m.link.lug is None:
         return []
     F, how = _pin_force(m, loads)
-    r = mc.eye_net_section(m.link, F, required_sf=ctx.required_sf)
+    r = mc.check_eye_net_section(m.link, F, required_sf=ctx.required_sf)
     notes = [how, *m.lug_defaults]
     if to_si(loads.get("axial_force", "0 N"), "force", "axial_force") < 0:
         notes.append("compressive axial force: the eye bears on the pin; checked as net-section tension "
@@ -301,30 +228,28 @@ def _eye(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
     return [_with(r, notes)]
 
 
-def _lug(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
-    """BTH-1 lug modes with the design's factor as Nd: the 1.20 of the plate modes goes into the capacity."""
+def _lug(m: LinkMember, loads: dict[str, Any], ctx: Any, mode: str) -> list[CheckResult]:
+    """A BTH-1 lug mode with the design's factor as Nd: the 1.20 of the plate modes goes into the capacity."""
     if m.link.lug is None:
         return []
     F, how = _pin_force(m, loads)
-    out = []
-    for r in mc.lug_checks(m.link, F, design_factor=ctx.required_sf):
-        if r.check == "lug_bearing":
-            out.append(_with(r, [how]))
-            continue
-        out.append(_with(r, [how, "capacity = BTH-1 nominal strength / 1.20, so the required SF is Nd (BTH-1 "
-                                  "Sec. 3-3.3.1: allowable = P / (1.20 Nd))"],
-                         capacity=(r.capacity / 1.2).to("N"),
-                         formula=r.formula + r",\ \ P_{allow} = P / (1.20\,N_d)"))
+    r = next(r for r in mc.lug_checks(m.link, F, design_factor=ctx.required_sf) if r.check == mode)
+    if r.check == "lug_bearing":
+        r = _with(r, [how])
+    else:
+        r = _with(r, [how, "capacity = BTH-1 nominal strength / 1.20, so the required SF is Nd (BTH-1 "
+                           "Sec. 3-3.3.1: allowable = P / (1.20 Nd))"],
+                  capacity=(r.capacity / 1.2).to("N"), formula=r.formula + r",\ \ P_{allow} = P / (1.20\,N_d)")
     nd = (f"Nd = the required SF {ctx.required_sf:g} (BTH-1: 2.0 for Design Category A, 3.0 for Category B; "
-          "set it with checks.lug = { required_sf = ... })")
-    return [dataclasses.replace(r, notes=tuple(nd if n.startswith("Nd =") else n for n in r.notes)) for r in out]
+          f"set it with checks.{mode} = {{ required_sf = ... }})")
+    return [dataclasses.replace(r, notes=tuple(nd if n.startswith("Nd =") else n for n in r.notes))]
 
 
 def _pin(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
     if m.link.pin_diameter is None:
         return []
     F, how = _pin_force(m, loads)
-    r = mc.pin_shear(m.link, F, m.pin_material, planes=m.shear_planes, required_sf=ctx.required_sf)
+    r = mc.check_pin_shear(m.link, F, m.pin_material, planes=m.shear_planes, required_sf=ctx.required_sf)
     notes = [how]
     if not m.pin_material_given:
         notes.append(f"pin_material not given: the link's material ({m.pin_material.name}) assumed for the pin")
@@ -335,7 +260,7 @@ def _buckling(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResul
     if "axial_force" not in loads:
         return []
     N = to_si(loads["axial_force"], "force", "axial_force")
-    r = mc.member_buckling(m.link, Q(-N, "N"), required_sf=ctx.required_sf)
+    r = mc.check_member_buckling(m.link, Q(-N, "N"), required_sf=ctx.required_sf)
     b = m.link.buckling()
     s = m.link.section
     return [_with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"],
@@ -350,13 +275,11 @@ def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckRes
         return []
     case, P, q = tr
     load = Q(P, "N" if _dim_of(case) == "force" else "N/m")
-    r = mc.link_deflection(m.link, case, load, m.deflection_limit)
+    r = mc.check_link_deflection(m.link, case, load, m.deflection_limit)
     E, I = m.link.material.require("E"), m.link.section.Iy
     c = beam_case(case)
     return [_with(r, [f"{c.table_case} {case.replace('_', ' ')}: largest deflection at {c.where.split(';')[0]}",
                      "load in the plane of the section's height (bending about the section's y axis, I_y)"],
-                 check="link_deflection", title="Link deflection",
-                 formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}",
                  inputs={**r.inputs, "load": q, "E": E.to("GPa"), "I": I.to("mm**4")},
                  details={"beam_case": case, "load_si": P, "length": m.link.length.to("mm"), "EI": (E * I).to("N*m**2"),
                           "limit": r.capacity})]
@@ -417,36 +340,14 @@ LINK = REGISTRY.register(ComponentType(
                                     "reaction of the transverse load)"),
     ),
     checks=(
-        CheckSpec("body_strength", lambda c, loads, ctx: _body_strength(c, loads, ctx), "Link body stress",
-                  needs=(ANY_LINK_LOAD,), sf_kind="static",
-                  explain="Von Mises stress of N/A, M_y/W_y + M_z/W_z (the transverse load's Table A-9 maximum "
-                          "moment added), T/W_t + V/A_s against S_y (knocked down by strength_factor); "
-                          "Shigley 10th ed. Sec. 5-5."),
-        CheckSpec("eye_net_section", lambda c, loads, ctx: _eye(c, loads, ctx), "Pin eye net section",
-                  needs=(ANY_LINK_LOAD,), sf_kind="static",
-                  explain="F/((w - D) t) across the hole against S_y; the open-hole Kt (Peterson Eq. 4.1) is "
-                          "applied to brittle materials or unknown elongation, not to ductile ones under static "
-                          "load (Shigley 10th ed. Sec. 3-13). Runs when hole_diameter is given."),
-        CheckSpec("lug", lambda c, loads, ctx: _lug(c, loads, ctx), "Lug (BTH-1)", needs=(ANY_LINK_LOAD,),
-                  sf_kind="static",
-                  explain="ASME BTH-1-2008 Sec. 3-3.3.1 pinned-plate strengths: tension through the pinhole, "
-                          "fracture beyond it, double-plane shear-out (allowable P/(1.20 Nd)) and pin bearing "
-                          "(P/Nd), with the required SF as Nd (2.0 = Design Category A). Runs when hole_diameter "
-                          "is given."),
-        CheckSpec("pin_shear", lambda c, loads, ctx: _pin(c, loads, ctx), "Pin shear", needs=(ANY_LINK_LOAD,),
-                  sf_kind="static",
-                  explain="Average shear F/(n pi d^2/4) in the pin against its S_sy (material value or 0.577 S_y, "
-                          "Shigley 10th ed. Eq. 5-21). Runs when hole_diameter or pin_diameter is given."),
-        CheckSpec("buckling", lambda c, loads, ctx: _buckling(c, loads, ctx), "Link buckling",
-                  needs=(ANY_LINK_LOAD,), sf_kind="buckling",
-                  explain="Compression against the Euler (C pi^2 E I/l^2, Shigley Eq. 4-42) or Johnson (Eq. 4-46) "
-                          "critical load about the least principal axis, C from the end condition (Table 4-2). "
-                          "Runs in the load cases that give axial_force."),
-        CheckSpec("deflection", lambda c, loads, ctx: _deflection(c, loads, ctx), "Link deflection",
-                  needs=(ANY_LINK_LOAD,), sf_kind="deflection",
-                  explain="Largest deflection of the Table A-9 case (end condition and load kind) against the "
-                          "limit: a length, 'L/250' or a fraction of the length (requirements.deflection_limit). "
-                          "Runs in the load cases that give transverse_load or distributed_load."),
+        CheckSpec.of(mc.check_member_body_strength, _body_strength, needs=(ANY_LINK_LOAD,)),
+        CheckSpec.of(mc.check_eye_net_section, _eye, needs=(ANY_LINK_LOAD,)),
+        *(CheckSpec.of(fn, lambda c, loads, ctx, mode=fn.check_def.name: _lug(c, loads, ctx, mode),
+                       needs=(ANY_LINK_LOAD,), aliases=("lug",))
+          for fn in (mc.check_lug_tension, mc.check_lug_fracture_beyond, mc.check_lug_shear_out, mc.check_lug_bearing)),
+        CheckSpec.of(mc.check_pin_shear, _pin, needs=(ANY_LINK_LOAD,)),
+        CheckSpec.of(mc.check_member_buckling, _buckling, needs=(ANY_LINK_LOAD,)),
+        CheckSpec.of(mc.check_link_deflection, _deflection, needs=(ANY_LINK_LOAD,)),
     ),
 ))
 
@@ -549,7 +450,7 @@ def _plate_load(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> tuple[pint.Q
 def _plate_stress(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResult:
     load, loading, notes = _plate_load(rp, loads, ctx)
     est = rp.estimate(load, loading)
-    r = mc.plate_stress(rp.plate, est, required_sf=ctx.required_sf)
+    r = pc.check_plate_stress_roark(rp.plate, est, required_sf=ctx.required_sf)
     inputs = {**r.inputs, ("q" if loading == "uniform" else "W"): load.to("kPa" if loading == "uniform" else "N"),
               "E": rp.plate.material.require("E").to("GPa")}
     inputs.update({k: v.to("mm") for k, v in zip(("a", "b") if rp.shape == "rectangle" else ("d",), rp.size,
@@ -573,14 +474,13 @@ def _plate_stress(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResul
 def _plate_deflection(rp: RoarkPlate, loads: dict[str, Any], ctx: Any) -> CheckResult:
     load, loading, notes = _plate_load(rp, loads, ctx)
     est = rp.estimate(load, loading)
-    r = mc.deflection_check(est.max_deflection, rp.deflection_limit, span=rp.span, source=est.source)
+    r = pc.check_plate_deflection_roark(rp.plate, est, rp.deflection_limit, span=rp.span)
     formula = (r"y_{max} = \alpha \frac{q b^4}{E t^3} \le \delta_{lim}" if rp.shape == "rectangle" and
                loading == "uniform" else r"y_{max} = \alpha \frac{W b^2}{E t^3} \le \delta_{lim}"
                if rp.shape == "rectangle" else r"y_{max} = \frac{q a^4}{64 D}\,\frac{5 + \nu}{1 + \nu}\ \mathrm{etc.},"
                r"\ D = \frac{E t^3}{12 (1 - \nu^2)}")
     return _with(r, [*notes, est.case, f"span for the limit: {fmt(rp.span, 'mm')} (shorter side or diameter)",
-                     FEA_NOTE], check="plate_deflection", title="Plate deflection (Roark)", formula=formula,
-                 warnings=tuple(est.warnings))
+                     FEA_NOTE], formula=formula)
 
 
 PLATE = REGISTRY.register(ComponentType(
@@ -611,13 +511,7 @@ PLATE = REGISTRY.register(ComponentType(
         Field("self_weight", "bool", "add the plate's weight rho g t to the pressure", default=False),
     ),
     checks=(
-        CheckSpec("stress", lambda c, loads, ctx: _plate_stress(c, loads, ctx), "Plate bending stress",
-                  needs=("pressure|central_force",), sf_kind="static",
-                  explain="Largest surface bending stress of Roark 8th ed. Table 11.4 (rectangle: cases 1a, 1b, "
-                          "8a, 8b) or Table 11.2 (circle: cases 10a, 10b, 16, 17) against S_y."),
-        CheckSpec("deflection", lambda c, loads, ctx: _plate_deflection(c, loads, ctx), "Plate deflection",
-                  needs=("pressure|central_force",), sf_kind="deflection",
-                  explain="Largest deflection of the same Roark case against the limit (a length, 'L/250' or a "
-                          "fraction of the shorter side)."),
+        CheckSpec.of(pc.check_plate_stress_roark, _plate_stress, needs=("pressure|central_force",)),
+        CheckSpec.of(pc.check_plate_deflection_roark, _plate_deflection, needs=("pressure|central_force",)),
     ),
 ))

@@ -9,11 +9,12 @@ units (``"12 mm, 0.1 m"``). Supports hold outline edges, points or the rims of b
 point forces and moments, patch loads, a uniform pressure and self-weight.
 
 The plate is solved once per load case with :func:`mechverify.fea.plate.solve_plate` (Kirchhoff,
-Morley triangles) and the result is kept for both checks and the report figure:
+Morley triangles) and the result is kept for both checks (:mod:`mechverify.checks.plates`) and the
+report figure:
 
-* ``plate_stress`` — the largest von Mises stress at the plate surfaces (bending) against the yield
+* ``plate_stress_fea`` — the largest von Mises stress at the plate surfaces (bending) against the yield
   strength, with the governing location in the notes;
-* ``plate_deflection`` — the largest deflection against a limit (a length, ``"L/250"`` or a fraction
+* ``plate_deflection_fea`` — the largest deflection against a limit (a length, ``"L/250"`` or a fraction
   of the span: the ``span`` field, else the shorter side of the plate's bounding box).
 """
 
@@ -30,6 +31,7 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from mechverify.checks import members as mc
+from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
 from mechverify.design.adapters.common import inline_table
@@ -42,10 +44,6 @@ from mechverify.units import Q, as_quantity, fmt
 SUPPORT_TYPES = {"fixed": "clamped", "clamped": "clamped", "pinned": "simply_supported",
                  "simply_supported": "simply_supported"}
 RECT_EDGES = {"bottom": 0, "right": 1, "top": 2, "left": 3}
-FEA_SOURCE = ("Kirchhoff plate bending, Morley triangles (Morley 1971; Timoshenko & Woinowsky-Krieger, Theory of "
-              "Plates and Shells, 2nd ed., ch. 4); verified against Roark 7th ed. Tables 11.2 and 11.4")
-VM_SOURCE = ("surface bending stresses sigma = 6 M / t^2 (Timoshenko & Woinowsky-Krieger 2nd ed., eq. 101); von "
-             "Mises criterion, Shigley 10th ed. Eq. 5-13")
 
 
 # --------------------------------------------------------------------------------------------- the component
@@ -385,89 +383,15 @@ def _mm(xy: Any) -> str:
     return f"({xy[0] * 1e3:.4g}, {xy[1] * 1e3:.4g}) mm"
 
 
-def _nearest_feature(c: PlateFEA, model: pl.PlateModel, xy: np.ndarray) -> str:
-    """Where a point lies: on a hole rim, a cut-out edge, the outline, at a load, or inside."""
-    pt = ShapelyPoint(xy)
-    tol = 0.02 * math.sqrt(c.plate.region.area)
-    cands: list[tuple[float, str]] = []
-    for hole in c.plate.holes:
-        cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - hole.radius),
-                      f"at the rim of hole {hole.name!r} (d = {hole.diameter * 1e3:.4g} mm)"))
-    for i, cut in enumerate(c.plate.cutouts):
-        cands.append((ShapelyPolygon(cut).exterior.distance(pt), f"at the edge of cut-out {i}"))
-    for i, (a, b) in enumerate(c.plate.edges()):
-        cands.append((shapely.LineString([a, b]).distance(pt), f"at outline edge {i} (from {_mm(a)} to {_mm(b)})"))
-    for i, ld in enumerate(model.loads):
-        if isinstance(ld, pl.PointLoad):
-            cands.append((float(np.hypot(*(xy - np.asarray(ld.point)))), f"at point load {i}"))
-    for s in model.supports:
-        if isinstance(s, pl.HoleSupport) and s.washer_diameter:
-            for hole in s.resolve(c.plate):
-                cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - s.washer_diameter / 2),
-                              f"at the edge of the washer (d = {s.washer_diameter * 1e3:.4g} mm) of hole "
-                              f"{hole.name!r}"))
-        if isinstance(s, pl.PointSupport):
-            cands.append((float(np.hypot(*(xy - np.asarray(s.point)))), f"at the point support {_mm(s.point)}"))
-    d, what = min(cands, key=lambda x: x[0])
-    return what if d <= tol else "inside the plate, away from holes and edges"
-
-
-def _singular_warning(c: PlateFEA, model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
-    xy = res.points[node, :2]
-    pts = res.points[:, :2]
-    h = float(np.median(np.linalg.norm(pts[res.surface[:, 1]] - pts[res.surface[:, 0]], axis=1)))
-    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PointLoad)
-            and np.hypot(*(xy - np.asarray(ld.point))) <= 2.5 * h]
-    near += [f"point support at {_mm(s.point)}" for s in model.supports if isinstance(s, pl.PointSupport)
-             and np.hypot(*(xy - np.asarray(s.point))) <= 2.5 * h]
-    if not near:
-        return ()
-    return (f"the largest stress is at a {near[0]}: plate theory makes the stress under a concentrated force or "
-            "support infinite, so this value depends on the mesh; spread the load over its real footprint "
-            "(patch_loads) or support on a hole rim or edge",)
-
-
 def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
-    mx = res.max_von_mises
-    sy = c.plate.material.require("yield_strength").to("MPa")
-    node = int(mx.node)
-    xy = res.points[node, :2]
-    s = res.sigma[node]
-    mom = [res.extra[k][node] for k in ("moment_xx_N", "moment_yy_N", "moment_xy_N")]
-    t = c.plate.thickness_q.to("mm")
-    notes = [f"governing location {_mm(xy)}, {_nearest_feature(c, model, xy)}",
-             f"there M_xx = {mom[0]:.4g}, M_yy = {mom[1]:.4g}, M_xy = {mom[2]:.4g} N·m/m; surface stresses "
-             f"sigma_x = {abs(s[0, 0]) / 1e6:.4g}, sigma_y = {abs(s[1, 1]) / 1e6:.4g} MPa in magnitude "
-             f"(top and bottom differ in sign only), tau_xy = {abs(s[0, 1]) / 1e6:.4g} MPa",
-             *res.notes, *_mesh_notes(c, res), *_load_notes(model, res)]
-    return CheckResult(
-        check="plate_stress", component=c.name, demand=mx.value.to("MPa"), capacity=sy,
-        title="Plate bending stress (FEA, von Mises at the surfaces)",
-        formula=r"\sigma_{vM} = \sqrt{\sigma_x^2 - \sigma_x \sigma_y + \sigma_y^2 + 3 \tau_{xy}^2},\ "
-                r"\sigma = \frac{6 M}{t^2} \le S_y",
-        source=f"{VM_SOURCE}; {FEA_SOURCE}",
-        inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
-                "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": c.plate.material.require("E").to("GPa"),
-                "nu": c.plate.material.require("nu")},
-        notes=tuple(notes), warnings=(*model.warnings(), *_singular_warning(c, model, res, node)),
-        details={"location": Q(xy, "m").to("mm"), "node": node})
+    return pc.check_plate_stress_fea(model, res, component=c.name, notes=_mesh_notes(c, res))
 
 
 def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
-    w = res.u[:, 2]
-    k = int(np.argmax(np.abs(w)))
-    r = mc.deflection_check(Q(abs(w[k]), "m"), c.deflection_limit, span=c.span, component=c.name,
-                            source=f"limit set by the design; deflection by {FEA_SOURCE}")
-    return dataclasses.replace(
-        r, check="plate_deflection", title="Plate deflection (FEA)",
-        formula=r"\delta_{max} = \max |w(x, y)| \le \delta_{lim}",
-        notes=(*r.notes, f"largest deflection w = {w[k] * 1e3:.4g} mm at {_mm(res.points[k, :2])}, "
-                         f"{_nearest_feature(c, model, res.points[k, :2])}",
-               "span for a fractional limit: the 'span' field, else the shorter side of the plate's bounding box",
-               *_mesh_notes(c, res), *_load_notes(model, res)),
-        details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
+    return pc.check_plate_deflection_fea(model, res, c.deflection_limit, span=c.span, component=c.name,
+                                         notes=_mesh_notes(c, res))
 
 
 def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
@@ -475,22 +399,6 @@ def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
     hole = "mesh size / 3 (default)" if c.hole_mesh_size is None else fmt(c.hole_mesh_size, "mm")
     return [f"mesh: {len(res.surface)} Morley triangles, {res.points.shape[0]} vertices; element size {size}, "
             f"at holes and cut-outs {hole}"]
-
-
-def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
-    sup = "; ".join(_describe_support(s) for s in model.supports)
-    return [f"supports: {sup}",
-            f"applied load {res.applied[2]:.4g} N along z, reactions {res.reaction[2]:.4g} N (equilibrium checked)"]
-
-
-def _describe_support(s: Any) -> str:
-    kind = "fixed" if s.condition == "clamped" else "pinned"
-    if isinstance(s, pl.EdgeSupport):
-        return f"{kind} edges {s.edges}"
-    if isinstance(s, pl.PointSupport):
-        return f"{kind} point {_mm(s.point)}"
-    washer = f" to washer d = {s.washer_diameter * 1e3:.4g} mm" if s.washer_diameter else ""
-    return f"{kind} rims of holes {s.holes}{washer}"
 
 
 # ------------------------------------------------------------------------------------------------------ figure
@@ -546,7 +454,7 @@ def _draw_support(ax: Any, plate: pl.Plate, s: Any) -> None:
 
 
 def _figures(c: PlateFEA, results: list[CheckResult]) -> list[tuple[str, Any]]:
-    gov = next((r for r in results if r.check == "plate_stress"), None) or next(iter(results), None)
+    gov = next((r for r in results if r.check == "plate_stress_fea"), None) or next(iter(results), None)
     if gov is None or gov.load_case not in c.solved:
         return []
     model, res = c.solved[gov.load_case]
@@ -595,15 +503,10 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         Field("self_weight", "bool", "add the plate's weight rho g t (requirements.g) along -z"),
     ),
     checks=(
-        CheckSpec("stress", lambda c, loads, ctx: _stress(c, loads, ctx), "Plate bending stress (FEA)",
-                  needs=("point_loads|patch_loads|pressure|self_weight",), sf_kind="static",
-                  explain="Largest von Mises stress of the bending stresses sigma = 6 M / t^2 at the plate surfaces "
-                          "(Kirchhoff plate FEA, Morley triangles) against the yield strength; Timoshenko & "
-                          "Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."),
-        CheckSpec("deflection", lambda c, loads, ctx: _deflection(c, loads, ctx), "Plate deflection (FEA)",
-                  needs=("point_loads|patch_loads|pressure|self_weight",), sf_kind="deflection",
-                  explain="Largest deflection of the plate (Kirchhoff plate FEA) against the limit: a length, "
-                          "'L/250' or a fraction of the span (requirements.deflection_limit by default)."),
+        CheckSpec.of(pc.check_plate_stress_fea, lambda c, loads, ctx: _stress(c, loads, ctx),
+                     needs=("point_loads|patch_loads|pressure|self_weight",)),
+        CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
+                     needs=("point_loads|patch_loads|pressure|self_weight",)),
     ),
     figures=_figures,
 ))

@@ -11,7 +11,7 @@ from mechverify.reports.plots import new_figure, plotter
 @plotter("link_deflection", "member_body_strength")
 def beam_diagram(r: CheckResult) -> Any:
     """Bending moment and deflection along the link for its Shigley Table A-9 case (from the result's details)."""
-    from mechverify.design.adapters.members import beam_deflection_curve, beam_moment_diagram
+    from mechverify.components.links import beam_deflection_curve, beam_moment_diagram
 
     d = r.details
     if not {"beam_case", "load_si", "length", "EI"} <= set(d):

@@ -1,0 +1,195 @@
+"""Checks of flat plates: Roark's closed-form cases and the plate-bending FEA model.
+
+Two methods check the same things, so each has its own name: ``plate_stress_roark`` and
+``plate_deflection_roark`` (a whole plate on its edges, Roark 8th ed. Tables 11.2 and 11.4),
+``plate_stress_fea`` and ``plate_deflection_fea`` (any outline with holes, cut-outs and supports on
+edges, points or hole rims: :func:`mechverify.fea.plate.solve_plate`, Kirchhoff, Morley triangles).
+Each returns a :class:`CheckResult` oriented so that it passes while demand <= capacity / required_sf.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+import shapely
+from shapely.geometry import Point as ShapelyPoint
+from shapely.geometry import Polygon as ShapelyPolygon
+
+from mechverify.checks.members import deflection_check
+from mechverify.checks.registry import check
+from mechverify.checks.result import CheckResult
+from mechverify.components import plates as pl
+from mechverify.fea.results import FieldResults
+from mechverify.references import ref
+from mechverify.units import Q
+
+FEA_SOURCE = (f"Kirchhoff plate bending, Morley triangles ({ref('morley1971')}; "
+              f"{ref('timoshenko_woinowsky', 'ch. 4')}); verified against {ref('roark8', 'Tables 11.2 and 11.4')}")
+VM_SOURCE = (f"surface bending stresses sigma = 6 M / t^2 ({ref('timoshenko_woinowsky', 'Eq. (101)')}); von Mises "
+             f"criterion, {ref('shigley10', 'Eq. (5-13)')}")
+
+
+# ------------------------------------------------------------------------------------------------ Roark
+@check("plate_stress_roark", title="Plate bending stress (Roark)", sf_kind="static", aliases=("plate.stress",),
+       source=ref("roark8", "Tables 11.2 and 11.4"),
+       explain=("Largest surface bending stress of Roark 8th ed. Table 11.4 (rectangle: cases 1a, 1b, 8a, 8b) or "
+                "Table 11.2 (circle: cases 10a, 10b, 16, 17) against S_y. The closed forms cover a whole plate "
+                "on its edges only; plates on bolts or with cut-outs need plate_stress_fea."))
+def check_plate_stress_roark(plate: pl.Plate, estimate: pl.PlateEstimate, *, required_sf: float = 1.0,
+                             load_case: str = "") -> CheckResult:
+    """A Roark plate estimate's largest bending stress against the plate's yield strength."""
+    sy = plate.material.require("yield_strength")
+    warnings = list(estimate.warnings)
+    if plate.holes or plate.cutouts:
+        warnings.append("the plate has holes/cut-outs: Roark's closed form ignores them (use the FEA plate model)")
+    return CheckResult(
+        check="plate_stress_roark", component=plate.name, demand=estimate.max_stress.to("MPa"),
+        capacity=sy.to("MPa"), required_sf=required_sf, title="Plate bending stress (Roark)",
+        formula=r"\sigma_{max} \le S_y", source=estimate.source, inputs={"t": Q(plate.thickness, "m").to("mm")},
+        notes=(estimate.case, f"largest stress at the {estimate.stress_location}"), warnings=tuple(warnings),
+        load_case=load_case, details={k: v.to("MPa") for k, v in estimate.stresses.items()})
+
+
+@check("plate_deflection_roark", title="Plate deflection (Roark)", sf_kind="deflection",
+       aliases=("plate.deflection",), source=ref("roark8", "Tables 11.2 and 11.4"),
+       explain=("Largest deflection of the same Roark case against the limit (a length, 'L/250' or a fraction "
+                "of the shorter side)."))
+def check_plate_deflection_roark(plate: pl.Plate, estimate: pl.PlateEstimate, limit: Any, *, span: Any = None,
+                                 load_case: str = "") -> CheckResult:
+    """A Roark plate estimate's largest deflection against ``limit`` (a length, ``"L/250"`` or a fraction of
+    ``span``, the shorter side or the diameter)."""
+    r = deflection_check(estimate.max_deflection, limit, span=span, component=plate.name, load_case=load_case,
+                         source=estimate.source)
+    return dataclasses.replace(r, check="plate_deflection_roark", title="Plate deflection (Roark)",
+                               notes=(*r.notes, estimate.case), warnings=tuple(estimate.warnings))
+
+
+# -------------------------------------------------------------------------------------------------- FEA
+def _mm(xy: Any) -> str:
+    return f"({xy[0] * 1e3:.4g}, {xy[1] * 1e3:.4g}) mm"
+
+
+def nearest_feature(model: pl.PlateModel, xy: np.ndarray) -> str:
+    """Where a point of the plate lies: on a hole rim, a cut-out edge, the outline, at a load, or inside."""
+    plate = model.plate
+    pt = ShapelyPoint(xy)
+    tol = 0.02 * math.sqrt(plate.region.area)
+    cands: list[tuple[float, str]] = []
+    for hole in plate.holes:
+        cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - hole.radius),
+                      f"at the rim of hole {hole.name!r} (d = {hole.diameter * 1e3:.4g} mm)"))
+    for i, cut in enumerate(plate.cutouts):
+        cands.append((ShapelyPolygon(cut).exterior.distance(pt), f"at the edge of cut-out {i}"))
+    for i, (a, b) in enumerate(plate.edges()):
+        cands.append((shapely.LineString([a, b]).distance(pt), f"at outline edge {i} (from {_mm(a)} to {_mm(b)})"))
+    for i, ld in enumerate(model.loads):
+        if isinstance(ld, pl.PointLoad):
+            cands.append((float(np.hypot(*(xy - np.asarray(ld.point)))), f"at point load {i}"))
+    for s in model.supports:
+        if isinstance(s, pl.HoleSupport) and s.washer_diameter:
+            for hole in s.resolve(plate):
+                cands.append((abs(float(np.hypot(*(xy - np.asarray(hole.center)))) - s.washer_diameter / 2),
+                              f"at the edge of the washer (d = {s.washer_diameter * 1e3:.4g} mm) of hole "
+                              f"{hole.name!r}"))
+        if isinstance(s, pl.PointSupport):
+            cands.append((float(np.hypot(*(xy - np.asarray(s.point)))), f"at the point support {_mm(s.point)}"))
+    d, what = min(cands, key=lambda x: x[0])
+    return what if d <= tol else "inside the plate, away from holes and edges"
+
+
+def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
+    xy = res.points[node, :2]
+    pts = res.points[:, :2]
+    h = float(np.median(np.linalg.norm(pts[res.surface[:, 1]] - pts[res.surface[:, 0]], axis=1)))
+    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PointLoad)
+            and np.hypot(*(xy - np.asarray(ld.point))) <= 2.5 * h]
+    near += [f"point support at {_mm(s.point)}" for s in model.supports if isinstance(s, pl.PointSupport)
+             and np.hypot(*(xy - np.asarray(s.point))) <= 2.5 * h]
+    if not near:
+        return ()
+    return (f"the largest stress is at a {near[0]}: plate theory makes the stress under a concentrated force or "
+            "support infinite, so this value depends on the mesh; spread the load over its real footprint "
+            "(patch_loads) or support on a hole rim or edge",)
+
+
+def describe_support(s: Any) -> str:
+    """A support of a plate model in words (``"fixed edges [0, 2]"``)."""
+    kind = "fixed" if s.condition == "clamped" else "pinned"
+    if isinstance(s, pl.EdgeSupport):
+        return f"{kind} edges {s.edges}"
+    if isinstance(s, pl.PointSupport):
+        return f"{kind} point {_mm(s.point)}"
+    washer = f" to washer d = {s.washer_diameter * 1e3:.4g} mm" if s.washer_diameter else ""
+    return f"{kind} rims of holes {s.holes}{washer}"
+
+
+def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
+    sup = "; ".join(describe_support(s) for s in model.supports)
+    return [f"supports: {sup}",
+            f"applied load {res.applied[2]:.4g} N along z, reactions {res.reaction[2]:.4g} N (equilibrium checked)"]
+
+
+@check("plate_stress_fea", title="Plate bending stress (FEA)", sf_kind="static", aliases=("plate_fea.stress",),
+       source=f"{VM_SOURCE}; {FEA_SOURCE}",
+       explain=("Largest von Mises stress of the bending stresses sigma = 6 M / t^2 at the plate surfaces "
+                "(Kirchhoff plate FEA, Morley triangles) against the yield strength; Timoshenko & "
+                "Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."))
+def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component: str = "",
+                           required_sf: float = 1.0, load_case: str = "", notes: Sequence[str] = ()) -> CheckResult:
+    """The largest surface von Mises stress of a solved plate model (:func:`mechverify.fea.plate.solve_plate`)
+    against the yield strength; the governing location, its moments and stresses are in the notes.
+    ``notes`` are added (e.g. the mesh used)."""
+    plate = model.plate
+    mx = res.max_von_mises
+    sy = plate.material.require("yield_strength").to("MPa")
+    node = int(mx.node)
+    xy = res.points[node, :2]
+    s = res.sigma[node]
+    mom = [res.extra[k][node] for k in ("moment_xx_N", "moment_yy_N", "moment_xy_N")]
+    t = plate.thickness_q.to("mm")
+    all_notes = [f"governing location {_mm(xy)}, {nearest_feature(model, xy)}",
+                 f"there M_xx = {mom[0]:.4g}, M_yy = {mom[1]:.4g}, M_xy = {mom[2]:.4g} N·m/m; surface stresses "
+                 f"sigma_x = {abs(s[0, 0]) / 1e6:.4g}, sigma_y = {abs(s[1, 1]) / 1e6:.4g} MPa in magnitude "
+                 f"(top and bottom differ in sign only), tau_xy = {abs(s[0, 1]) / 1e6:.4g} MPa",
+                 *res.notes, *notes, *_load_notes(model, res)]
+    return CheckResult(
+        check="plate_stress_fea", component=component or plate.name, demand=mx.value.to("MPa"), capacity=sy,
+        required_sf=required_sf, title="Plate bending stress (FEA, von Mises at the surfaces)",
+        formula=r"\sigma_{vM} = \sqrt{\sigma_x^2 - \sigma_x \sigma_y + \sigma_y^2 + 3 \tau_{xy}^2},\ "
+                r"\sigma = \frac{6 M}{t^2} \le S_y",
+        source=f"{VM_SOURCE}; {FEA_SOURCE}",
+        inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
+                "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": plate.material.require("E").to("GPa"),
+                "nu": plate.material.require("nu")},
+        notes=tuple(all_notes), warnings=(*model.warnings(), *_singular_warning(model, res, node)),
+        load_case=load_case, details={"location": Q(xy, "m").to("mm"), "node": node})
+
+
+@check("plate_deflection_fea", title="Plate deflection (FEA)", sf_kind="deflection",
+       aliases=("plate_fea.deflection",), source=FEA_SOURCE,
+       explain=("Largest deflection of the plate (Kirchhoff plate FEA) against the limit: a length, 'L/250' or "
+                "a fraction of the span (requirements.deflection_limit by default)."))
+def check_plate_deflection_fea(model: pl.PlateModel, res: FieldResults, limit: Any, *, span: Any = None,
+                               component: str = "", load_case: str = "", notes: Sequence[str] = ()) -> CheckResult:
+    """The largest deflection of a solved plate model against ``limit`` (a length, ``"L/250"`` or a fraction
+    of ``span``)."""
+    w = res.u[:, 2]
+    k = int(np.argmax(np.abs(w)))
+    r = deflection_check(Q(abs(w[k]), "m"), limit, span=span, component=component or model.plate.name,
+                         load_case=load_case, source=f"limit set by the design; deflection by {FEA_SOURCE}")
+    return dataclasses.replace(
+        r, check="plate_deflection_fea", title="Plate deflection (FEA)",
+        formula=r"\delta_{max} = \max |w(x, y)| \le \delta_{lim}",
+        notes=(*r.notes, f"largest deflection w = {w[k] * 1e3:.4g} mm at {_mm(res.points[k, :2])}, "
+                         f"{nearest_feature(model, res.points[k, :2])}",
+               "span for a fractional limit: the 'span' field, else the shorter side of the plate's bounding box",
+               *notes, *_load_notes(model, res)),
+        details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
+
+
+__all__ = ["check_plate_stress_roark", "check_plate_deflection_roark", "check_plate_stress_fea",
+           "check_plate_deflection_fea", "nearest_feature", "describe_support", "FEA_SOURCE", "VM_SOURCE"]
