@@ -6,7 +6,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechverify import Q, materials
-from mechverify.checks.fatigue import fatigue_check, fatigue_field_check
+from mechverify.checks.fatigue import check_fatigue, check_fatigue_field
 from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityError
 from mechverify.fatigue import criteria, endurance, life, notch, stress
 from mechverify.fatigue.rainflow import rainflow
@@ -143,39 +143,39 @@ def test_rainflow_properties(h):
 
 def test_check_reproduces_fea_tool_default_ratio():
     """Fully reversed stress against the ANSYS Structural Steel S-N table: SF = 86.2 MPa / sigma_a."""
-    r = fatigue_check("link", "70.2 MPa", "0 MPa", "Structural Steel")
+    r = check_fatigue("link", "70.2 MPa", "0 MPa", "Structural Steel")
     assert r.safety_factor == pytest.approx(86.2 / 70.2)
     assert r.details["governing_mode"] == "fatigue"
     assert any("S-N data used as given" in n for n in r.notes)
 
 
 def test_check_polymer_warns_and_aluminium_needs_life():
-    r = fatigue_check("pla link", "2 MPa", "2 MPa", "PLA (FDM, XY flat)", life=1e6)
+    r = check_fatigue("pla link", "2 MPa", "2 MPa", "PLA (FDM, XY flat)", life=1e6)
     assert r.warnings and "ASSUMED" in r.warnings[0] and r.verdict.value in ("warn", "fail")
     with pytest.raises(InputError, match="no endurance limit"):
-        fatigue_check("arm", "20 MPa", "0 MPa", "Aluminium 6061-T6")
-    r = fatigue_check("arm", "20 MPa", "0 MPa", "Aluminium 6061-T6", life=1e7, marin={"finish": "machined"})
+        check_fatigue("arm", "20 MPa", "0 MPa", "Aluminium 6061-T6")
+    r = check_fatigue("arm", "20 MPa", "0 MPa", "Aluminium 6061-T6", life=1e7, marin={"finish": "machined"})
     assert r.safety_factor > 1
 
 
 def test_check_steel_estimate_langer_governs_and_kf():
-    r = fatigue_check("shaft", "30 MPa", "200 MPa", "AISI 1045 CD", marin={"finish": "machined", "d": "20 mm"})
+    r = check_fatigue("shaft", "30 MPa", "200 MPa", "AISI 1045 CD", marin={"finish": "machined", "d": "20 mm"})
     assert r.details["n_yield"] == pytest.approx(530 / 230)
-    r2 = fatigue_check("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", Kf=2.0, marin={"finish": "machined"})
-    r1 = fatigue_check("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", marin={"finish": "machined"})
+    r2 = check_fatigue("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", Kf=2.0, marin={"finish": "machined"})
+    r1 = check_fatigue("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", marin={"finish": "machined"})
     assert r2.details["n_fatigue"] == pytest.approx(r1.details["n_fatigue"] / 2)
     with pytest.raises(InputError, match="Kf"):
-        fatigue_check("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", Kf=0.5)
+        check_fatigue("shaft", "30 MPa", "20 MPa", "AISI 1045 CD", Kf=0.5)
 
 
 def test_field_check_governing_node_and_location():
     sa = Q(np.array([10.0, 60.0, 40.0]), "MPa")
     sm = Q(np.array([0.0, 10.0, 50.0]), "MPa")
     xyz = Q(np.array([[0, 0, 0], [1, 2, 3], [4, 5, 6]]), "mm")
-    r = fatigue_field_check("link", sa, sm, "Structural Steel", coordinates=xyz)
+    r = check_fatigue_field("link", sa, sm, "Structural Steel", coordinates=xyz)
     n = criteria.goodman.si(sa.m_as("Pa"), sm.m_as("Pa"), 86.2e6, 460e6)
     assert r.details["governing_node"] == int(np.argmin(n))
     assert r.safety_factor == pytest.approx(n.min())
     assert r.details["governing_location"].m_as("mm") == pytest.approx([1, 2, 3])
     with pytest.raises(InputError):
-        fatigue_field_check("link", sa, sm[:2], "Structural Steel")
+        check_fatigue_field("link", sa, sm[:2], "Structural Steel")

@@ -2,10 +2,10 @@
 
 Public API::
 
-    fatigue_check(component, sigma_a, sigma_m, material, *, life=None, criterion="goodman",
+    check_fatigue(component, sigma_a, sigma_m, material, *, life=None, criterion="goodman",
                   load_line="proportional", Kf=1.0, Se=None, marin=None, polymer_fraction=None,
                   required_sf=1.0, load_case="") -> CheckResult
-    fatigue_field_check(component, sigma_a, sigma_m, material, *, coordinates=None, ...same...) -> CheckResult
+    check_fatigue_field(component, sigma_a, sigma_m, material, *, coordinates=None, ...same...) -> CheckResult
 
 ``sigma_a``/``sigma_m``: nominal alternating and mean (von Mises) stresses; Kf multiplies both
 (Shigley's practice for ductile materials). ``life``: cycles required; ``None`` asks for infinite life
@@ -28,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.errors import InputError, ValidityError
 from mechverify.fatigue import criteria
@@ -39,9 +40,10 @@ from mechverify.fatigue.endurance import (
 from mechverify.fatigue.life import BasquinCurve
 from mechverify.materials.database import get as get_material
 from mechverify.materials.material import Material
+from mechverify.references import ref
 from mechverify.units import Q, fmt, from_si, to_si
 
-SHIGLEY = "Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed., Sec. 6-12, Tables 6-6..6-8"
+SHIGLEY = ref("shigley10", "Sec. 6-12, Tables 6-6 to 6-8")
 _FORMULA = {
     "goodman": r"\frac{1}{n_f} = \frac{K_f\sigma_a}{S_e} + \frac{K_f\sigma_m}{S_{ut}}",
     "soderberg": r"\frac{1}{n_f} = \frac{K_f\sigma_a}{S_e} + \frac{K_f\sigma_m}{S_y}",
@@ -233,7 +235,13 @@ def _prepare(material: Any, life: float | None, Kf: float, criterion: str, load_
     return _material(material)
 
 
-def fatigue_check(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, life: float | None = None,
+@check("fatigue", title='Fatigue (one stress state)', sf_kind="fatigue",
+       source=SHIGLEY,
+       explain=('Alternating and mean stress (times Kf) against the fatigue strength by a mean-stress criterion '
+                '(Goodman by default; Gerber, Soderberg, ASME elliptic, Morrow, SWT, Walker) along a proportional or '
+                "constant-mean load line, with Langer first-cycle yield; endurance limit from Se' and the Marin "
+                'factors, or a finite-life strength from the S-N line (Shigley 10th ed. Secs. 6-7 to 6-12).'))
+def check_fatigue(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, life: float | None = None,
                   criterion: str = "goodman", load_line: str = "proportional", Kf: float = 1.0, Se: Any = None,
                   marin: dict | None = None, polymer_fraction: float | None = None, sigma_f: Any = None,
                   gamma: Any = None, required_sf: float = 1.0, load_case: str = "") -> CheckResult:
@@ -249,7 +257,11 @@ def fatigue_check(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, 
                    load_case, sigma_f, gamma, {}, (), "fatigue")
 
 
-def fatigue_field_check(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, coordinates: Any = None,
+@check("fatigue_field", title='Fatigue (FEA stress field)', sf_kind="fatigue",
+       source=SHIGLEY,
+       explain=('The fatigue check of every node of an FEA field of von Mises alternating and mean stresses; the node'
+                ' with the smallest safety factor governs and the whole safety-factor field is kept for the figure.'))
+def check_fatigue_field(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, coordinates: Any = None,
                         life: float | None = None, criterion: str = "goodman", load_line: str = "proportional",
                         Kf: float = 1.0, Se: Any = None, marin: dict | None = None,
                         polymer_fraction: float | None = None, sigma_f: Any = None, gamma: Any = None,
@@ -283,4 +295,9 @@ def fatigue_field_check(component: str, sigma_a: Any, sigma_m: Any, material: An
                    float(sm[i]), required_sf, load_case, sigma_f, gamma, extra, tuple(notes), "fatigue_field")
 
 
-__all__ = ["fatigue_check", "fatigue_field_check"]
+#: Former names, kept for callers not yet renamed (the frame adapter): use :func:`check_fatigue` and
+#: :func:`check_fatigue_field`.
+fatigue_check = check_fatigue
+fatigue_field_check = check_fatigue_field
+
+__all__ = ["check_fatigue", "check_fatigue_field", "fatigue_check", "fatigue_field_check"]

@@ -99,9 +99,9 @@ def test_steel_fatigue_as_ansys_and_the_document_value():
     # fully reversed, no mean stress: SF_fatigue / SF_static = S_N(1e6) / Sy = 86.2 / 250 (same von Mises stress)
     assert res["frame_fatigue"].safety_factor / res["frame_stress"].safety_factor == pytest.approx(86.2 / 250)
     # the document's stress (250 / 3.56 = 70.2 MPa) reproduces its fatigue factor 1.229 the same way
-    from mechverify.checks.fatigue import fatigue_check
+    from mechverify.checks.fatigue import check_fatigue
 
-    r = fatigue_check("link", f"{250 / 3.56} MPa", "0 MPa", "Structural Steel", life=1e6)
+    r = check_fatigue("link", f"{250 / 3.56} MPa", "0 MPa", "Structural Steel", life=1e6)
     assert r.safety_factor == pytest.approx(86.2 * 3.56 / 250, rel=1e-6)
     assert r.safety_factor == pytest.approx(1.229, abs=0.002)
 
