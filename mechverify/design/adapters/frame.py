@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -27,10 +27,9 @@ from mechverify.design.adapters.common import inline_table
 from mechverify.design.adapters.members import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS, build_section
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
-from mechverify.fea.frame import (
+from mechverify.fea.frame import (  # the solver itself (scipy) is imported in _build, when a frame is built
     THEORIES,
     DistributedLoad,
-    Frame,
     FrameResults,
     Hinge,
     Member,
@@ -40,6 +39,9 @@ from mechverify.fea.frame import (
 )
 from mechverify.materials.material import Material
 from mechverify.units import Q, as_quantity, fmt
+
+if TYPE_CHECKING:
+    from mechverify.fea.frame import Frame
 
 FATIGUE_LOADINGS = ("fully_reversed", "zero_to_max")
 FATIGUE_CRITERIA = ("goodman", "gerber", "soderberg", "asme_elliptic", "morrow")
@@ -197,6 +199,8 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
     nodes = p.get("nodes", {})
     parsed_nodes = {str(k): _vec(v, "length", f"nodes.{k}") for k, v in nodes.items()}
     members = _members(p, ctx)
+    from mechverify.fea.frame import Frame
+
     try:
         frame = Frame(parsed_nodes, members, _supports(p), _hinges(p), p["theory"], name=name)
     except MechverifyError as exc:

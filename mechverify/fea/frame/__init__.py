@@ -44,14 +44,17 @@ References
    Design*, 10th ed., Eq. 5-15 (von Mises stress of a beam fibre, ``sqrt(sigma^2 + 3 tau^2)``).
 """
 
-from mechverify.fea.frame.analysis import DENSE_CHECK_LIMIT, PROGRESS_THRESHOLD, Frame
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
 from mechverify.fea.frame.element import (
     fixed_end_forces,
     fixed_end_forces_linear,
     local_axes,
     local_stiffness,
 )
-from mechverify.fea.frame.figure import frame_figure
 from mechverify.fea.frame.model import (
     DOF_NAMES,
     RELEASE_NAMES,
@@ -83,6 +86,24 @@ from mechverify.fea.frame.results import (
     Range,
     section_fibres,
 )
+
+if TYPE_CHECKING:
+    from mechverify.fea.frame.analysis import DENSE_CHECK_LIMIT, PROGRESS_THRESHOLD, Frame
+    from mechverify.fea.frame.figure import frame_figure
+
+# The solver (scipy.sparse) and the figure (matplotlib) are imported when first used, so that a design
+# file's frame component can be parsed without them (issue 27: a fast cold start).
+_LAZY = {"Frame": "analysis", "DENSE_CHECK_LIMIT": "analysis", "PROGRESS_THRESHOLD": "analysis",
+         "frame_figure": "figure"}
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
+    globals()[name] = value
+    return value
+
 
 __all__ = ["DOF_NAMES", "RELEASE_NAMES", "STANDARD_GRAVITY", "SUPPORT_KINDS", "THEORIES", "DENSE_CHECK_LIMIT",
            "PROGRESS_THRESHOLD", "EXTREME_QUANTITIES", "DistributedLoad", "Hinge", "Load", "LoadCombination", "Member",
