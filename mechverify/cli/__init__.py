@@ -51,6 +51,13 @@ class _Formatter(argparse.HelpFormatter):
         kwargs.setdefault("max_help_position", 32)
         super().__init__(prog, **kwargs)
 
+    def add_argument(self, action: argparse.Action) -> None:
+        super().add_argument(action)
+        if isinstance(action, argparse._SubParsersAction):  # argparse forgets the commands' indentation
+            for sub in action._get_subactions():
+                n = len(self._format_action_invocation(sub)) + self._current_indent + 2 * self._indent_increment
+                self._action_max_length = max(self._action_max_length, n)
+
 
 def command_modules() -> list[ModuleType]:
     """The command modules of this package, in ``--help`` order."""
