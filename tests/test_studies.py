@@ -233,3 +233,35 @@ def test_other_sampling_methods_follow_the_distribution_bounds(method):
     s = Study(LIFT, vary={"components.lift.mass": "triangular:10 kg:12 kg:20 kg"}, samples=16, method=method, seed=1)
     xs = [x["components.lift.mass"] for x in s.inputs()]
     assert len(xs) == 16 and all(10 < x < 20 for x in xs) and len(set(xs)) == 16
+
+
+def test_drive_demand_computed_once_per_verify(monkeypatch):
+    """The motor checks of one drive share one torque demand per verify (memo on the drive)."""
+    from mechverify.design.adapters import drives
+
+    calls = []
+    real = drives.Drive._demands
+    monkeypatch.setattr(drives.Drive, "_demands", lambda self, ctx: calls.append(1) or real(self, ctx))
+    d = load(LIFT)
+    rs = d.verify()
+    assert sum(r.component == "lift" for r in rs) >= 3 and len(calls) == 1
+    d2 = d.with_overrides({"components.lift.mass": "20 kg"})
+    r2 = next(r for r in d2.verify() if r.check == "motor_peak_torque")
+    assert len(calls) == 2 and r2.factored_utilisation == pytest.approx(_motor_fu(20.0), rel=2e-3)
+
+
+def test_latin_hypercube_inputs_are_not_correlated_by_chance():
+    """Plain LHS pairs columns at random (rank correlation ~1/sqrt(n)); the optimised design keeps it small,
+    so a sensitivity ranking does not credit an input with another one's effect."""
+    from mechverify.studies import spearman
+
+    s = Study(LIFT, vary={"components.lift.mass": "uniform:10 kg:20 kg",
+                          "load_cases.raise.lift_screw.axial_force": "uniform:300 N:400 N",
+                          "profiles.raise.acceleration": "uniform:0.05 m/s^2:0.2 m/s^2"}, samples=100, seed=0)
+    xs = s.inputs()
+    cols = [[x[n] for x in xs] for n in xs[0]]
+    for i, (lo, hi) in enumerate(((10, 20), (300, 400), (0.05, 0.2))):
+        strata = np.floor((np.array(cols[i]) - lo) / (hi - lo) * 100).astype(int)
+        assert sorted(strata.tolist()) == list(range(100))  # one point in each of the 100 strata
+        for j in range(i + 1, 3):
+            assert abs(spearman(cols[i], cols[j])) < 0.05
