@@ -1,0 +1,78 @@
+"""Cold start-up of the command line, each a fresh process, against ``python -c "import numpy, pint"``.
+
+Three commands are timed, each run ``repeat`` times (minimum of 5) as a new interpreter, and the
+minimum wall time kept (the least disturbed run on a shared machine):
+
+- ``python -c "import numpy, pint"`` - the reference: what any unit-aware numerical tool pays;
+- ``mechverify --help`` - target ratio <= 0.6 (it needs neither numpy nor pint);
+- ``mechverify check examples/lead_screw_lift/design.toml`` - target ratio <= 2.0.
+
+Every run uses the same interpreter (``sys.executable``) and the warm caches a user has after the
+first run (bytecode, pint's registry cache); one untimed run of each primes them. Issue 27.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+DESIGN = ROOT / "examples" / "lead_screw_lift" / "design.toml"
+TARGETS = {"help": 0.6, "check": 2.0}
+
+
+def commands() -> dict[str, list[str]]:
+    py = sys.executable
+    cli = [py, "-m", "mechverify.cli"] if not _script() else [_script()]
+    return {"reference": [py, "-c", "import numpy, pint"], "help": [*cli, "--help"],
+            "check": [*cli, "check", str(DESIGN)]}
+
+
+def _script() -> str | None:
+    exe = Path(sys.executable).with_name("mechverify")
+    return str(exe) if exe.exists() else None
+
+
+def _time(cmd: list[str]) -> float:
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                          env={**os.environ, "COLUMNS": "200"})
+    dt = time.perf_counter() - t0
+    if proc.returncode not in (0, 1):  # check exits 1 when a check fails: still a complete run
+        raise RuntimeError(f"{' '.join(cmd)} exited {proc.returncode}: {proc.stderr.decode()[-500:]}")
+    return dt
+
+
+def main(argv: list[str] | None = None, repeat: int = 7) -> dict:
+    argv = argv or []
+    if argv:
+        repeat = max(5, int(argv[0]))
+    cmds = commands()
+    for cmd in cmds.values():  # prime bytecode and the pint cache
+        _time(cmd)
+    times: dict[str, list[float]] = {k: [] for k in cmds}
+    for _ in range(repeat):  # interleaved, so that a busy moment hits all three alike
+        for name, cmd in cmds.items():
+            times[name].append(_time(cmd))
+    best = {k: min(v) for k, v in times.items()}
+    ref = best["reference"]
+    out = {"repeat": repeat, **{f"{k}_s": round(v, 3) for k, v in best.items()},
+           **{f"{k}_ratio": round(best[k] / ref, 2) for k in TARGETS},
+           **{f"{k}_target": t for k, t in TARGETS.items()},
+           "meets_targets": all(best[k] / ref <= t for k, t in TARGETS.items())}
+    print(f"start-up, fresh processes, minimum of {repeat}:")
+    print(f"  python -c 'import numpy, pint' {ref:6.3f} s   (reference)")
+    for k, t in TARGETS.items():
+        print(f"  mechverify {k:<22} {best[k]:6.3f} s   ratio {best[k] / ref:5.2f}   target <= {t}")
+    results = ROOT / "benchmarks" / "results"
+    results.mkdir(exist_ok=True)
+    (results / "startup.json").write_text(json.dumps(out, indent=2) + "\n")
+    return out
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

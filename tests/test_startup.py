@@ -1,0 +1,95 @@
+"""A fast cold start (issue 27): what importing mechverify and its command line pull in, checked in a fresh
+interpreter (sys.modules), and the lazily imported entry points of the package. Not timed: the timings are
+in benchmarks/startup.py and docs/performance.md."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+HEAVY = ["scipy.sparse", "scipy.linalg", "scipy.optimize", "scipy.interpolate", "scipy.integrate", "scipy.spatial",
+         "matplotlib", "shapely", "trimesh", "skfem", "meshio", "sectionproperties", "weasyprint"]
+
+
+def _modules_after(code: str, env: dict | None = None) -> set[str]:
+    probe = f"{code}\nimport json, sys\nprint(json.dumps(sorted(sys.modules)))"
+    out = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True, env=env)
+    return set(json.loads(out.stdout.splitlines()[-1]))
+
+
+@pytest.mark.parametrize("code", ["import mechverify", "import mechverify.cli",
+                                  "import mechverify.cli; mechverify.cli.build_parser()"])
+def test_no_numpy_pint_or_heavy_modules_at_start(code):
+    """``mechverify --help`` builds the parser: it must need neither numpy nor pint (target ratio <= 0.6)."""
+    loaded = _modules_after(code)
+    unwanted = {*HEAVY, "numpy", "pint", "scipy", "rich", "jinja2"}
+    assert not loaded & unwanted, sorted(loaded & unwanted)
+
+
+def test_units_and_components_import_no_heavy_modules():
+    """The units and the components' formulas need numpy and pint only: no scipy sub-packages (pint itself imports
+    the top-level ``scipy`` package when it is installed, and dask - with jinja2 - when the ``cluster`` extra is),
+    no shapely, matplotlib, trimesh or the FEA."""
+    loaded = _modules_after("import mechverify.units, mechverify.components, mechverify.components.sections\n"
+                            "mechverify.components.sections.i_section('100 mm', '50 mm', '4 mm', '6 mm')")
+    assert not loaded & set(HEAVY), sorted(loaded & set(HEAVY))
+    assert not any(m.startswith("mechverify.fea") for m in loaded)
+
+
+def test_lazy_entry_points_work(tmp_path):
+    """Every documented entry point of the package resolves and works."""
+    import mechverify
+
+    assert str(mechverify.Q("3 mm").to("m")) == "0.003 m"
+    assert mechverify.ureg is mechverify.Q("1 N")._REGISTRY
+    assert isinstance(mechverify.Q("1 N"), mechverify.Quantity)
+    assert mechverify.QuantityLike is not None
+    assert mechverify.materials.get("PLA").name
+    assert mechverify.components.make_section("rectangle", width="10 mm", height="20 mm").area.m_as("mm**2") == 200
+    assert mechverify.checks.CheckResult.__name__ == "CheckResult"
+    assert mechverify.SolidModel.__name__ == "SolidModel"
+    assert mechverify.PlaneModel.__name__ == "PlaneModel"
+    assert mechverify.Frame.__name__ == "Frame"
+    assert mechverify.PlateModel.__name__ == "PlateModel"
+    assert mechverify.fea.__name__ == "mechverify.fea"
+    assert isinstance(mechverify.__version__, str)
+    from pathlib import Path
+
+    import mechverify.design
+
+    assert mechverify.load is mechverify.design.load
+    root = Path(__file__).resolve().parents[1]
+    design = mechverify.load(root / "examples" / "lever_arm" / "design.toml")
+    assert type(design).__name__ == "Design" and design.components
+    with pytest.raises(AttributeError, match="no attribute 'nonexistent'"):
+        _ = mechverify.nonexistent
+
+
+def test_unit_strings_parsed_once():
+    """Design files repeat unit strings: the string -> (magnitude, unit) parse is cached, and each call still
+    returns a new quantity (callers may modify theirs)."""
+    from mechverify.units import Q, _parse_cached
+
+    _parse_cached.cache_clear()
+    a, b = Q("12.5 mm"), Q("12.5 mm")
+    assert a == b and a is not b
+    info = _parse_cached.cache_info()
+    assert info.hits >= 1 and info.misses == 1
+
+
+def test_pint_registry_cache_folder(tmp_path):
+    """The registry is built from pint's cached definitions under MECHVERIFY_CACHE_DIR (or the user cache dir);
+    ``off`` disables the cache; an unwritable folder is skipped, never an error."""
+    import os
+
+    env = {**os.environ, "MECHVERIFY_CACHE_DIR": str(tmp_path)}
+    code = "from mechverify.units import Q; assert str(Q('1 Mpsi').to('psi')) == '1000000.0 psi'"
+    subprocess.run([sys.executable, "-c", code], check=True, env=env)
+    assert any((tmp_path).rglob("*")), "no cache files written"
+    subprocess.run([sys.executable, "-c", code], check=True, env=env)  # from the cache
+    for value in ("off", "/proc/cannot-write-here"):
+        subprocess.run([sys.executable, "-c", code], check=True, env={**os.environ, "MECHVERIFY_CACHE_DIR": value})
+
