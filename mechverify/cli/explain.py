@@ -19,7 +19,6 @@ def run(args: argparse.Namespace) -> int:
 
     from mechverify.cli._console import out
     from mechverify.design import REGISTRY, adapters  # noqa: F401
-    from mechverify.errors import UnknownNameError
 
     specs = {f"{ct.name}.{c.name}": (ct, c) for ct in REGISTRY.types.values() for c in ct.checks}
     if args.check_name is None:
@@ -32,8 +31,11 @@ def run(args: argparse.Namespace) -> int:
         return 0
     name = args.check_name
     hits = [v for k, v in specs.items() if k == name or k.split(".", 1)[1] == name]
-    if not hits:
-        raise UnknownNameError("check", name, list(specs) + [k.split(".", 1)[1] for k in specs])
+    if not hits:  # a registered check's name or former name (mechverify.checks.registry), else UnknownNameError
+        from mechverify.checks.registry import explain_text
+
+        out.print(explain_text(name), markup=False, highlight=False)
+        return 0
     for ct, c in hits:
         out.print(f"[bold]{ct.name}.{c.name}[/bold] — {c.title}")
         out.print(c.explain or "(no explanation)")

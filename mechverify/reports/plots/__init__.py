@@ -1,8 +1,10 @@
 """Figures for the report: matplotlib figures embedded as vector SVG data URIs.
 
-Plotters are registered per check name (:func:`plotter`); each receives a
+Plotters are registered per check name (:func:`plotter`), the name of a registered check
+(:mod:`mechverify.checks.registry`; an unknown name is an error when the module loads); each receives a
 :class:`~mechverify.checks.CheckResult` and returns a figure from its ``details``, or ``None``.
-One module per domain (``plots/screws.py``, ...) holds its plotters; :data:`DOMAINS` lists them.
+One module per domain (``plots/screws.py``, ...) holds its plotters; every module of this package is
+imported on first use (a new domain needs no list entry).
 """
 
 from __future__ import annotations
@@ -16,19 +18,33 @@ from mechverify.checks import CheckResult
 
 PLOTTERS: dict[str, Callable[[CheckResult], Any]] = {}
 
-#: Domain modules with plotters, imported on first use.
-DOMAINS = ("screws", "springs", "bearings", "drives", "members", "bolts")
+def domains() -> list[str]:
+    """The plot modules of this package (found with :mod:`pkgutil`, not listed by hand)."""
+    import pkgutil
+
+    return [m.name for m in pkgutil.iter_modules(__path__) if not m.name.startswith("_")]
 
 
 def _load_domains() -> None:
     import importlib
 
-    for d in DOMAINS:
-        importlib.import_module(f"mechverify.reports.plots.{d}")
+    for d in domains():
+        importlib.import_module(f"{__name__}.{d}")
 
 
 def plotter(*check_names: str) -> Callable:
-    """Register a plot function for the named checks."""
+    """Register a plot function for the named checks (registered check names, not former names).
+
+    Raises:
+        UnknownNameError: a name no check has (with suggestions).
+        ValueError: a former name (an alias) instead of the check's name.
+    """
+    from mechverify.checks.registry import CHECKS, get_check
+
+    for n in check_names:
+        d = get_check(n)
+        if n not in CHECKS:
+            raise ValueError(f"plotter: {n!r} is a former name; use the check's name {d.name!r}")
 
     def deco(f: Callable[[CheckResult], Any]) -> Callable[[CheckResult], Any]:
         for n in check_names:
