@@ -18,7 +18,7 @@ from mechverify.components.power_screw import (
     self_locking_mu,
 )
 from mechverify.components.threads import acme, generic, thread, trapezoidal
-from mechverify.errors import InputError, UnitError, UnknownNameError
+from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityError
 from mechverify.units import Q
 
 leads = st.floats(0.5, 40.0)  # mm
@@ -30,12 +30,17 @@ mus = st.floats(0.0, 0.5)
 @settings(max_examples=150, deadline=None)
 @given(lead=leads, d2=diams, flank=flanks, mu=st.floats(0.001, 0.5))
 def test_raise_exceeds_lower(lead, d2, flank, mu):
+    """T_R > T_L wherever the thread can be driven; where it wedges (cos(alpha_n) - mu tan(lambda) <= 0,
+    computed here independently: lambda = atan(l/(pi d2)), alpha_n = atan(tan(alpha) cos(lambda)), Shigley
+    Sec. 8-2, Hamrock Eq. 16.8) the formula raises ValidityError instead of returning a number."""
     l, d, a = lead * 1e-3, d2 * 1e-3, math.radians(flank)
-    try:
-        tr = raise_torque.si(100.0, d, l, mu, a)
-    except Exception:  # wedging (cos(an) - mu tan(lambda) <= 0) is reported, not returned
+    lam = math.atan(l / (math.pi * d))
+    wedges = math.cos(math.atan(math.tan(a) * math.cos(lam))) - mu * math.tan(lam) <= 0
+    if wedges:
+        with pytest.raises(ValidityError, match="wedges"):
+            raise_torque.si(100.0, d, l, mu, a)
         return
-    assert tr > lower_torque.si(100.0, d, l, mu, a)
+    assert raise_torque.si(100.0, d, l, mu, a) > lower_torque.si(100.0, d, l, mu, a)
 
 
 @settings(max_examples=150, deadline=None)

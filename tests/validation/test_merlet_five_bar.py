@@ -17,11 +17,12 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, reject, settings
 from hypothesis import strategies as st
 
 from mechverify import Q
 from mechverify.mechanisms import FiveBar
+from mechverify.mechanisms.errors import UnreachablePoseError
 
 L = 0.1  # seed 002: all five lengths 100 mm
 FB = FiveBar(*["100 mm"] * 5)
@@ -83,11 +84,10 @@ def test_virtual_work_oracle(ts, fx, fy):
     t1, t2 = ts
     try:
         pose = FB.forward(Q(t1, "rad"), Q(t2, "rad"))
-    except Exception:
-        return
+    except UnreachablePoseError:  # outside the workspace: not this property's concern
+        reject()
     m = FB.singularity_measures(pose)
-    if min(m.values()) < 0.05:
-        return
+    assume(min(m.values()) >= 0.05)  # away from singular poses, where finite differences lose accuracy
     J = _fd_jacobian(t1, t2)
     np.testing.assert_allclose(FB.jacobian(pose).m_as("m"), J, rtol=1e-5, atol=1e-9)
     sol = FB.statics(pose, (Q(fx, "N"), Q(fy, "N"))).solve()
