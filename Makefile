@@ -4,6 +4,7 @@ PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed-stamp
+BASE_STAMP := $(VENV)/.installed-base-stamp
 export MPLBACKEND := Agg
 
 .PHONY: demo test lint sysdeps bench clean
@@ -11,15 +12,21 @@ export MPLBACKEND := Agg
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 
-$(STAMP): pyproject.toml | $(BIN)/python
+# demo: the base install and gmsh (wheels only, no compiler); test/bench add the dev and cluster extras
+# (sectionproperties - which builds Triangle - and vtk are test references only).
+$(BASE_STAMP): pyproject.toml | $(BIN)/python
 	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e '.[mesh]'
+	touch $@
+
+$(STAMP): $(BASE_STAMP)
 	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster]'
 	touch $@
 
 sysdeps:
 	@bash scripts/system-deps.sh
 
-demo: $(STAMP) sysdeps
+demo: $(BASE_STAMP) sysdeps
 	$(BIN)/python -m mechverify.demo
 
 lint: $(STAMP)
