@@ -65,6 +65,8 @@ def _typed(ct: ComponentType) -> dict[str, Any]:
         "type": "object", "additionalProperties": False,
         "properties": {"enabled": {"type": "boolean"}, "required_sf": {"type": "number", "exclusiveMinimum": 0}}}]}
     checks = {c.name: {**check_setting, "description": c.title} for c in ct.checks}
+    checks.update({a: {**check_setting, "description": f"former name of {c.name} (deprecated)", "deprecated": True}
+                   for c in ct.checks for a in c.aliases})
     body = _object(ct.fields, {"type": {"const": ct.name},
                                "checks": {"type": "object", "properties": checks, "additionalProperties": False}})
     body["required"] = ["type", *body.get("required", [])]
