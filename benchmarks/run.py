@@ -7,13 +7,17 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import design_parameters
 import fea_vs_calculix
 import report_generation
+import startup
 
 
 def main() -> None:
     fea_vs_calculix.main([])
     report_generation.main([])
+    startup.main([])
+    design_parameters.main([])
 
 
 if __name__ == "__main__":

@@ -331,3 +331,33 @@ def test_bare_component_name_is_the_same_value_of_that_component(tmp_path):
     text = BASE.replace('force = "a.reaction / 2"', 'force = "a"')
     d = load(write(tmp_path, text))
     assert d.data.load_cases["lift"]["b"]["force"].m_as("N") == pytest.approx(2 * 49.05)
+
+
+@pytest.mark.parametrize("end, factor", [("pinned-pinned", 0.5), ("fixed-free", 1.0), ("fixed-pinned", 11 / 16)])
+def test_a_bearing_takes_its_radial_load_from_the_link_it_carries(tmp_path, end, factor):
+    """Shigley 10th ed. Table A-9 (beam cases by name): largest end reaction R = F/2 for simple supports with a
+    centre load, R = F for a cantilever with an end load, R1 = 11F/16 at the fixed end of a fixed/simply
+    supported beam with a centre load. F = 120 N."""
+    text = f"""
+    [design]
+    name = "beam on bearings"
+    [parameters]
+    F = "120 N"
+    [components.beam]
+    type = "link"
+    length = "450 mm"
+    section = "circle"
+    diameter = "7.5 mm"
+    material = "Inventor Steel"
+    end = "{end}"
+    [components.brg]
+    type = "ball_bearing"
+    model = "608"
+    [load_cases.side.beam]
+    transverse_load = "F"
+    [load_cases.side.brg]
+    radial_force = "beam.end_reaction"
+    speed = "100 rpm"
+    """
+    d = load(write(tmp_path, text))
+    assert d.data.load_cases["side"]["brg"]["radial_force"].m_as("N") == pytest.approx(factor * 120)

@@ -155,17 +155,30 @@ class Design:
         trace = self.data.trace
         if not trace.entries:
             return ()
+        cache = self.__dict__.setdefault("_derived_cache", {})
+        if (component, load_case) not in cache:
+            cache[(component, load_case)] = self._derived_notes(trace, component, load_case)
+        return cache[(component, load_case)]
+
+    def _derived_notes(self, trace: Any, component: str, load_case: str) -> tuple[str, ...]:
+        lines = self.__dict__.setdefault("_trace_lines", {})
+
+        def line(p: str, label: str) -> str:
+            if p not in lines:
+                lines[p] = trace.line(p, label)
+            return lines[p]
+
         out = []
         prefix = f"components.{component}."
         for p in trace.entries:
             if p.startswith(prefix) and "." not in p[len(prefix):].split("[")[0]:
-                out.append("derived input: " + trace.line(p, p[len(prefix):]))
+                out.append("derived input: " + line(p, p[len(prefix):]))
         for case in self.data.load_cases:
             if load_case == case or load_case.startswith(case + " ("):
                 prefix = f"load_cases.{case}.{component}."
                 for p in trace.entries:
                     if p.startswith(prefix) and p.count(".") == prefix.count("."):
-                        out.append(f"derived input ({case}): " + trace.line(p, p[len(prefix):]))
+                        out.append(f"derived input ({case}): " + line(p, p[len(prefix):]))
         return tuple(out)
 
     def verify(self, progress: Any = None) -> ResultSet:

@@ -37,7 +37,7 @@ from mechverify.components.links import (
     link_transverse_case,
 )
 from mechverify.components.plates import Plate, PlateEstimate, roark_circular_plate, roark_rectangular_plate
-from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError, MechverifyError
 from mechverify.materials import Material
 from mechverify.units import Q, fmt, to_si
@@ -348,6 +348,13 @@ LINK = REGISTRY.register(ComponentType(
         CheckSpec.of(mc.check_pin_shear, _pin, needs=(ANY_LINK_LOAD,)),
         CheckSpec.of(mc.check_member_buckling, _buckling, needs=(ANY_LINK_LOAD,)),
         CheckSpec.of(mc.check_link_deflection, _deflection, needs=(ANY_LINK_LOAD,)),
+    ),
+    outputs=(  # values other components read as "<link>.<name>" (design/parameters.py)
+        Output("end_reaction", "force", "largest end reaction of the transverse or distributed load (Shigley 10th ed. "
+               "Table A-9): the radial load on the bearing or pin at that end", _end_reaction,
+               needs=("transverse_load|distributed_load",)),
+        Output("pin_force", "force", "force through each pin: pin_force, or the resultant of the axial force and "
+               "the end reaction", lambda c, loads: _pin_force(c, dict(loads or {}))[0], needs=(ANY_LINK_LOAD,)),
     ),
 ))
 
