@@ -215,7 +215,8 @@ class StudyResult:
 
     def summary(self) -> str:
         """A plain-text summary: counts, the failure probabilities or the sweep table."""
-        lines = [f"{self.kind.replace('_', ' ')} of {self.design_name!r}: {len(self.samples)} samples"
+        label = {"monte_carlo": "Monte Carlo study", "sweep": "sweep"}.get(self.kind, self.kind)
+        lines = [f"{label} of {self.design_name!r}: {len(self.samples)} samples"
                  + (f" ({self.method}, seed {self.seed})" if self.kind == "monte_carlo" else "")
                  + (f", {len(self.errors)} invalid" if self.errors else "")]
         if self.kind == "monte_carlo":
