@@ -7,6 +7,8 @@
 - :class:`Pressure` - a pressure acting on a region, pushing into the surface when positive.
 - :class:`PinLoad` - a pin bearing on a hole: a total force spread over the half of the hole's wall
   the pin presses on, as a pressure ``p0 cos θ`` normal to the wall (θ from the force direction).
+- :class:`Traction` - a traction field t(x) [Pa] given as a function of position (an exact boundary
+  condition of a benchmark, a hydrostatic pressure), integrated exactly enough by Gauss points.
 - :class:`Gravity` - self-weight, ρ·g over the volume.
 
 Every load and support may state what its region should catch, ``expect_area=`` (solids: the loaded
@@ -204,6 +206,40 @@ class Pressure:
         a, ln = _expect(expect_area, expect_length)
         object.__setattr__(self, "expect_area", a)
         object.__setattr__(self, "expect_length", ln)
+
+
+@dataclass(frozen=True, init=False)
+class Traction:
+    """A traction field on ``region``: ``function(points) -> tractions``, with ``points[dim, k]`` in metres
+    and tractions ``[dim, k]`` in Pa (force per area on the body's surface, any direction), evaluated at
+    Gauss points of each boundary facet (plane models: 3 per edge; solids: 6 per triangle, degree 4)."""
+
+    region: Region
+    function: Any
+    expect_area: float | None
+    expect_length: float | None
+
+    def __init__(self, region: Region, function: Any, *, expect_area: Any = None, expect_length: Any = None):
+        object.__setattr__(self, "region", _region(region, "Traction"))
+        if not callable(function):
+            raise InputError(f"Traction: function must be callable (points [dim, k] m -> tractions [dim, k] Pa), "
+                             f"got {function!r}")
+        object.__setattr__(self, "function", function)
+        a, ln = _expect(expect_area, expect_length)
+        object.__setattr__(self, "expect_area", a)
+        object.__setattr__(self, "expect_length", ln)
+
+    def evaluate(self, points: Any) -> Any:
+        """Tractions ``[dim, k]`` at ``points[dim, k]``; an :class:`InputError` when the shape is wrong."""
+        import numpy as np
+
+        out = np.asarray(self.function(points), float)
+        if out.shape != points.shape:
+            out = np.broadcast_to(out, points.shape) if out.shape in ((points.shape[0], 1),) else out
+        if out.shape != points.shape or not np.all(np.isfinite(out)):
+            raise InputError(f"Traction: the function returned shape {out.shape} (or non-finite values) for "
+                             f"points of shape {points.shape}")
+        return out
 
 
 @dataclass(frozen=True, init=False)

@@ -28,6 +28,7 @@ from skfem import Basis, ElementTriP2, MeshTri
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import mesh2d
+from mechverify.fea import recovery as rc
 from mechverify.fea.linsolve import solve
 from mechverify.fea.loads import (
     STANDARD_GRAVITY,
@@ -38,11 +39,11 @@ from mechverify.fea.loads import (
     Pressure,
     RegionReport,
     Support,
+    Traction,
     compare_measure,
     pin_tractions,
 )
 from mechverify.fea.progress import Steps
-from mechverify.fea.recovery import project
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
 from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
@@ -67,7 +68,7 @@ class PlaneModel:
     thickness: Any
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
-    loads: tuple[Force | Pressure | PinLoad | Gravity, ...] = ()
+    loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     plane: str = "stress"
 
     def __post_init__(self) -> None:
@@ -170,6 +171,20 @@ class PlaneModel:
                 out.append((None, f))
                 continue
             nodes, length, normal = self._edges(ld.region)
+            if isinstance(ld, Traction):
+                # 3-point Gauss-Legendre on each straight edge; P2 edge shape functions (ends, middle)
+                gs = 0.5 + 0.5 * np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])
+                gw = np.array([5 / 18, 8 / 18, 5 / 18])
+                xa, xb = self.basis.doflocs[:, nodes[:, 0]], self.basis.doflocs[:, nodes[:, 1]]
+                for s_, w_ in zip(gs, gw):
+                    x = xa + s_ * (xb - xa)
+                    tr = ld.evaluate(x)  # 2, k
+                    N = np.array([(1 - s_) * (1 - 2 * s_), s_ * (2 * s_ - 1), 4 * s_ * (1 - s_)])
+                    for i in range(2):
+                        fv[:, i] += np.bincount(nodes.ravel(), weights=(length[:, None] * t * w_ * N[None, :]
+                                                                        * tr[i][:, None]).ravel(), minlength=b.N)
+                out.append((length, f))
+                continue
             if isinstance(ld, Force):
                 traction = np.broadcast_to(np.array(ld.vector[:2]) / (length.sum() * t), normal.shape)
             elif isinstance(ld, PinLoad):
@@ -234,8 +249,9 @@ class PlaneModel:
                     held.append(2 * nodes + i)
         return np.unique(np.concatenate(held))
 
-    def solve(self, progress: bool | None = None) -> FieldResults:
-        """Assemble, check the supports, solve (sparse direct), project stresses, check equilibrium."""
+    def solve(self, progress: bool | None = None, recovery: str = rc.DEFAULT_METHOD) -> FieldResults:
+        """Assemble, check the supports, solve (sparse direct), recover stresses (``recovery``, one of
+        :data:`mechverify.fea.recovery.METHODS`), check equilibrium."""
         mat = self.material
         E, nu = mat.E.m_as("Pa"), mat.nu.m_as("")
         lam3, mu = asm.lame(E, nu)
@@ -254,10 +270,9 @@ class PlaneModel:
             u, info = solve(K, f, held, b.doflocs, method="direct", progress=step)
             timings["solve"] = info.seconds
             t1 = time.perf_counter()
-            eps = asm.strain_at_nodes(m.p, m.t, b.element_dofs, u, corners_only=True)  # e, 3, 2, 2
-            sig = asm.hooke(eps, lam, mu)
-            comps = np.stack([sig[..., 0, 0], sig[..., 1, 1], sig[..., 0, 1]], axis=-1)
-            s = project(comps, area, b.element_dofs, pattern)
+            rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, area, pattern,
+                             plane_strain=self.plane == "strain")
+            s = rec.nodal
             timings["recovery"] = time.perf_counter() - t1
             reaction, applied = _equilibrium(K, u, f, held, b.doflocs, 2)
             reports = self.region_reports(nodal_reactions(K, u, f, held))
@@ -274,4 +289,17 @@ class PlaneModel:
             kind=f"plane {self.plane}", points=pts, u=uu, sigma=sigma, material=mat,
             reaction=np.r_[reaction, 0.0], applied=np.r_[applied, 0.0],
             cells=[("triangle6", b.element_dofs.T.copy())], surface=m.t.T.copy(), info=info, timings=timings,
-            regions=reports, warnings=tuple(r.warning for r in reports if r.warning))
+            regions=reports, warnings=tuple(r.warning for r in reports if r.warning), recovery=recovery,
+            elements=b.element_dofs.T.copy(),
+            ip_points=np.concatenate([rec.ip_points, np.zeros(rec.ip_points.shape[:2] + (1,))], axis=2),
+            ip_sigma=_plane_tensors(rec.ip_values, nu if self.plane == "strain" else 0.0),
+            element_error=rec.element_error, error_estimate=rec.error_estimate)
+
+
+def _plane_tensors(c: np.ndarray, nu_zz: float) -> np.ndarray:
+    """Plane components ``[..., 3]`` (xx yy xy) -> tensors ``[..., 3, 3]`` with σzz = ν_zz (σxx + σyy)."""
+    out = np.zeros(c.shape[:-1] + (3, 3))
+    out[..., 0, 0], out[..., 1, 1] = c[..., 0], c[..., 1]
+    out[..., 0, 1] = out[..., 1, 0] = c[..., 2]
+    out[..., 2, 2] = nu_zz * (c[..., 0] + c[..., 1])
+    return out

@@ -1,8 +1,11 @@
 """One results object for every continuum model (solid, plane stress, plate): fields at the nodes,
 maxima and where they occur, reactions, safety factors, VTU export and a report figure.
 
-Stresses are nodal tensors smoothed by L2 projection (see :mod:`mechverify.fea.recovery`); von
-Mises and principal stresses are derived from them. Everything is stored in SI and returned as
+Stresses are nodal tensors recovered from the element stresses (superconvergent patch recovery by
+default, see :mod:`mechverify.fea.recovery`); von Mises and principal stresses are derived from them.
+The raw integration-point stresses, the stress at any point (:meth:`FieldResults.stress_at`) and the
+Zienkiewicz-Zhu error indicator (:attr:`FieldResults.element_error`, :attr:`FieldResults.error_estimate`)
+come with the solid and plane results. Everything is stored in SI and returned as
 pint quantities.
 
 References
@@ -80,6 +83,12 @@ class FieldResults:
     notes: tuple[str, ...] = ()
     regions: tuple[Any, ...] = ()  # RegionReport per load and support (mechverify.fea.loads)
     warnings: tuple[str, ...] = ()  # e.g. a load region that caught less than the named geometry
+    recovery: str = "projection"  # how sigma was recovered at the nodes
+    elements: np.ndarray | None = None  # [e, nb] P2 node indices (vertices first), for stress_at
+    ip_points: np.ndarray | None = None  # [e, q, 3] m, order-2 integration points (CalculiX order)
+    ip_sigma: np.ndarray | None = None  # [e, q, 3, 3] Pa at those points (unsmoothed)
+    element_error: np.ndarray | None = None  # [e] ZZ indicator η_e, sqrt of energy (J^0.5)
+    error_estimate: float | None = None  # η / sqrt(‖σ*‖² + η²), estimated relative energy-norm error
 
     # -- fields -------------------------------------------------------------------------------
     @property
@@ -115,6 +124,85 @@ class FieldResults:
     def applied_load(self) -> pint.Quantity:
         """Total applied force ``[3]`` (surface loads plus self-weight)."""
         return Q(self.applied, "N")
+
+    @property
+    def integration_point_stress(self) -> pint.Quantity:
+        """Stress tensors ``[e, q, 3, 3]`` at the integration points of each element (unsmoothed)."""
+        if self.ip_sigma is None:
+            raise InputError(f"{self.kind} results carry no integration-point stresses")
+        return Q(self.ip_sigma, "Pa")
+
+    def stress_at(self, points: Any) -> pint.Quantity:
+        """The recovered stress tensor ``[k, 3, 3]`` at points ``[k, 2|3]`` (lengths: a quantity array or
+        strings; plain numbers are metres), interpolated in the element containing each point with the
+        P2 shape functions. A point outside the mesh raises :class:`InputError`."""
+        from mechverify.units import to_si
+
+        if self.elements is None:
+            raise InputError(f"{self.kind} results do not support stress_at (no element connectivity)")
+        if hasattr(points, "units"):
+            X = np.atleast_2d(np.asarray(to_si(points, "length", "points"), float))
+        else:
+            X = np.atleast_2d(np.array([[float(c) if isinstance(c, int | float | np.number) else
+                                         to_si(c, "length", "points") for c in row]
+                                        for row in np.atleast_2d(np.asarray(points, dtype=object))], float))
+        dim = 3 if self.kind == "solid" else 2
+        if X.shape[1] < dim:
+            raise InputError(f"stress_at: points need {dim} coordinates, got shape {X.shape}")
+        X = X[:, :dim]
+        elem, bary = self._locate(X)
+        from mechverify.fea.recovery import _voigt, p2_values
+
+        comps = _voigt(self.sigma if dim == 3 else self.sigma[:, :2, :2])
+        out = np.empty((X.shape[0], 3, 3))
+        for k in range(X.shape[0]):
+            v = p2_values(self.elements[elem[k]:elem[k] + 1].T, comps, bary[k][None])[0, 0]
+            out[k] = self._tensor(v, dim)
+        return Q(out, "Pa")
+
+    def _tensor(self, v: np.ndarray, dim: int) -> np.ndarray:
+        s = np.zeros((3, 3))
+        if dim == 3:
+            s[0, 0], s[1, 1], s[2, 2] = v[0], v[1], v[2]
+            s[0, 1] = s[1, 0] = v[3]
+            s[1, 2] = s[2, 1] = v[4]
+            s[0, 2] = s[2, 0] = v[5]
+        else:
+            s[0, 0], s[1, 1] = v[0], v[1]
+            s[0, 1] = s[1, 0] = v[2]
+            if self.kind == "plane strain":
+                s[2, 2] = self.material.nu.m_as("") * (v[0] + v[1])
+        return s
+
+    def _locate(self, X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Element index and barycentric coordinates of each point (nearest centroids first)."""
+        from scipy.spatial import cKDTree
+
+        dim = X.shape[1]
+        verts = self.points[self.elements[:, : dim + 1], :dim]  # e, nv, d
+        cent = verts.mean(axis=1)
+        tree = cKDTree(cent)
+        k = min(32, cent.shape[0])
+        _, cand = tree.query(X, k=k)
+        cand = np.atleast_2d(cand).reshape(X.shape[0], -1)
+        elem = np.full(X.shape[0], -1)
+        bary = np.zeros((X.shape[0], dim + 1))
+        size = float(np.linalg.norm(np.ptp(self.points, axis=0)))
+        for i, x in enumerate(X):
+            for pool in (cand[i], np.arange(cent.shape[0])):
+                V = verts[pool]  # c, nv, d
+                T = (V[:, 1:] - V[:, :1]).transpose(0, 2, 1)  # c, d, d
+                lam = np.linalg.solve(T, (x - V[:, 0])[:, :, None])[:, :, 0]
+                L = np.column_stack([1 - lam.sum(axis=1), lam])
+                tol = 1e-9 * (1 + size)
+                ok = np.flatnonzero(L.min(axis=1) >= -tol)
+                if ok.size:
+                    j = ok[np.argmax(L[ok].min(axis=1))]
+                    elem[i], bary[i] = pool[j], L[j]
+                    break
+            if elem[i] < 0:
+                raise InputError(f"stress_at: the point {tuple(np.round(x * 1e3, 4))} mm lies outside the mesh")
+        return elem, bary
 
     # -- extremes -----------------------------------------------------------------------------
     def _extreme(self, values: np.ndarray, unit: str, largest: bool = True) -> Extreme:

@@ -31,6 +31,7 @@ import numpy as np
 
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
+from mechverify.fea import recovery as rc
 from mechverify.fea.linsolve import p1_prolongation, solve
 from mechverify.fea.loads import (
     STANDARD_GRAVITY,
@@ -41,12 +42,12 @@ from mechverify.fea.loads import (
     Pressure,
     RegionReport,
     Support,
+    Traction,
     compare_measure,
     pin_tractions,
 )
 from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
-from mechverify.fea.recovery import project
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
 from mechverify.materials.database import get as get_material
@@ -82,7 +83,7 @@ class SolidModel:
     mesh: SolidMesh
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
-    loads: tuple[Force | Pressure | PinLoad | Gravity, ...] = ()
+    loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, SolidMesh):
@@ -94,8 +95,8 @@ class SolidModel:
             if not isinstance(s, Fixed | Support):
                 raise InputError(f"supports: expected Fixed or Support, got {s!r}")
         for ld in self.loads:
-            if not isinstance(ld, Force | Pressure | PinLoad | Gravity):
-                raise InputError(f"loads: expected Force, Pressure, PinLoad or Gravity, got {ld!r}")
+            if not isinstance(ld, Force | Pressure | PinLoad | Traction | Gravity):
+                raise InputError(f"loads: expected Force, Pressure, PinLoad, Traction or Gravity, got {ld!r}")
 
     # -- geometry of regions ------------------------------------------------------------------
     @cached_property
@@ -150,6 +151,10 @@ class SolidModel:
                 out.append((None, f))
                 continue
             fc = self.facets(ld.region)
+            if isinstance(ld, Traction):
+                self._traction_loads(ld, fc, fv)
+                out.append((fc, f))
+                continue
             if isinstance(ld, Force):
                 traction = np.broadcast_to(np.array(ld.vector, float) / fc.area.sum(), fc.normal.shape)
             elif isinstance(ld, PinLoad):
@@ -162,6 +167,35 @@ class SolidModel:
                                         minlength=fv.shape[0])
             out.append((fc, f))
         return out
+
+    def _traction_loads(self, ld: Traction, fc: Facets, fv: np.ndarray) -> None:
+        """Consistent nodal forces of a traction field on 6-node facets (degree-4 triangle rule)."""
+        from skfem.quadrature import get_quadrature
+        from skfem.refdom import RefTri
+
+        X, W = get_quadrature(RefTri, 4)
+        L = np.vstack([1 - X.sum(axis=0), X])  # 3, q
+        P = self.mesh.points
+        verts = P[:, fc.nodes[:, :3]]  # 3(xyz), k, 3(vertex)
+        mids = P[:, fc.nodes[:, 3:]]
+        # which vertex pair each mid-edge node sits between (straight facets: at the pair's midpoint)
+        pairs = ((0, 1), (1, 2), (0, 2))
+        pm = np.stack([(verts[:, :, i] + verts[:, :, j]) / 2 for i, j in pairs], axis=2)  # 3, k, pair
+        d = np.linalg.norm(mids[:, :, :, None] - pm[:, :, None, :], axis=0)  # k, mid, pair
+        which = np.argmin(d, axis=2)  # k, mid -> pair
+        for q in range(L.shape[1]):
+            x = np.einsum("dka,a->dk", verts, L[:, q])
+            tr = ld.evaluate(x)  # 3, k
+            Nc = L[:, q] * (2 * L[:, q] - 1)
+            Npair = np.array([4 * L[i, q] * L[j, q] for i, j in pairs])
+            Nm = Npair[which]  # k, mid
+            wA = 2 * W[q] * fc.area  # reference triangle area 1/2
+            for i in range(3):
+                fv[:, i] += np.bincount(fc.nodes[:, :3].ravel(),
+                                        weights=(wA[:, None] * Nc[None, :] * tr[i][:, None]).ravel(),
+                                        minlength=fv.shape[0])
+                fv[:, i] += np.bincount(fc.nodes[:, 3:].ravel(), weights=(wA[:, None] * Nm * tr[i][:, None]).ravel(),
+                                        minlength=fv.shape[0])
 
     def region_reports(self, reaction: np.ndarray | None = None) -> tuple[RegionReport, ...]:
         """What each load and support caught (count, area, resultant) and a warning where the area differs
@@ -239,10 +273,12 @@ class SolidModel:
         return np.unique(np.concatenate(held))
 
     # -- solve --------------------------------------------------------------------------------
-    def solve(self, method: str = "auto", progress: bool | None = None) -> FieldResults:
+    def solve(self, method: str = "auto", progress: bool | None = None,
+              recovery: str = rc.DEFAULT_METHOD) -> FieldResults:
         """Assemble, check the supports, solve, recover stresses, check equilibrium.
 
         ``method``: ``"auto"`` (direct below ~12k unknowns, AMG-CG above), ``"direct"`` or ``"amg"``.
+        ``recovery``: how nodal stresses are recovered (:data:`mechverify.fea.recovery.METHODS`).
         ``progress``: show a status line (default: for models above :data:`PROGRESS_DOFS`).
         """
         mat = self.material
@@ -265,7 +301,8 @@ class SolidModel:
             timings["solve"] = info.seconds
             t1 = time.perf_counter()
             step("recovering stresses")
-            sigma = self._stresses(u, lam, mu, measure, pattern)
+            rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, measure, pattern)
+            sigma = _tensors(rec.nodal)
             timings["recovery"] = time.perf_counter() - t1
             reaction, applied = _equilibrium(K, u, f, held, self.mesh.points, 3)
             reports = self.region_reports(nodal_reactions(K, u, f, held))
@@ -274,22 +311,9 @@ class SolidModel:
             kind="solid", points=self.mesh.points.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
             surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
-            warnings=tuple(r.warning for r in reports if r.warning))
-
-    def _stresses(self, u: np.ndarray, lam: float, mu: float, measure: np.ndarray,
-                  pattern: asm.BlockPattern) -> np.ndarray:
-        m, b = self.mesh.mesh, self.mesh.basis
-        eps = asm.strain_at_nodes(m.p, m.t, b.element_dofs, u, corners_only=True)  # e, 4, 3, 3
-        sig = asm.hooke(eps, lam, mu)
-        comps = np.stack([sig[..., 0, 0], sig[..., 1, 1], sig[..., 2, 2], sig[..., 0, 1], sig[..., 1, 2],
-                          sig[..., 0, 2]], axis=-1)
-        s = project(comps, measure, b.element_dofs, pattern)
-        out = np.empty((s.shape[0], 3, 3))
-        out[:, 0, 0], out[:, 1, 1], out[:, 2, 2] = s[:, 0], s[:, 1], s[:, 2]
-        out[:, 0, 1] = out[:, 1, 0] = s[:, 3]
-        out[:, 1, 2] = out[:, 2, 1] = s[:, 4]
-        out[:, 0, 2] = out[:, 2, 0] = s[:, 5]
-        return out
+            warnings=tuple(r.warning for r in reports if r.warning), recovery=recovery,
+            elements=b.element_dofs.T.copy(), ip_points=rec.ip_points, ip_sigma=_tensors(rec.ip_values),
+            element_error=rec.element_error, error_estimate=rec.error_estimate)
 
     def integration_point_stress(self, u: Any) -> np.ndarray:
         """Stress ``[e, 4, 3, 3]`` [Pa] at the 4 integration points of each element, in CalculiX's order.
@@ -302,6 +326,16 @@ class SolidModel:
         m, b = self.mesh.mesh, self.mesh.basis
         s = asm.hooke(asm.strain_at_points(m.p, m.t, b.element_dofs, np.asarray(u).ravel()), lam, mu)
         return s[:, asm.natural_point_order(3)]
+
+
+def _tensors(c: np.ndarray) -> np.ndarray:
+    """Components ``[..., 6]`` (xx yy zz xy yz zx) -> symmetric tensors ``[..., 3, 3]``."""
+    out = np.empty(c.shape[:-1] + (3, 3))
+    out[..., 0, 0], out[..., 1, 1], out[..., 2, 2] = c[..., 0], c[..., 1], c[..., 2]
+    out[..., 0, 1] = out[..., 1, 0] = c[..., 3]
+    out[..., 1, 2] = out[..., 2, 1] = c[..., 4]
+    out[..., 0, 2] = out[..., 2, 0] = c[..., 5]
+    return out
 
 
 def nodal_reactions(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray) -> np.ndarray:

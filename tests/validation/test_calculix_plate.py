@@ -52,18 +52,19 @@ def test_plate_displacements_and_integration_point_stresses_agree(plate_case):
     assert np.abs(ccx.ip_stress - mine).max() <= 1e-4 * np.abs(mine).max()
 
 
-def test_plate_nodal_stresses_within_one_percent(plate_case):
-    """At the tetrahedra's corner nodes: CalculiX sets a mid-edge node's stress to the mean of its
-    edge's corners (linear extrapolation from the integration points), mechverify projects onto the
-    quadratic field, so on a coarse mesh the two differ most at mid-edge nodes of the plate's edges."""
+def test_plate_nodal_stresses_agree(plate_case):
+    """mechverify's default recovery (SPR) against CalculiX's extrapolate-and-average at the corner nodes
+    away from the supports: within 1.5 % of the peak (1.05 % measured on this 3-layer mesh); with ``recovery="average"`` mechverify does what
+    CalculiX does (each element's stress at its nodes, averaged), so the two agree to output precision."""
     model, res, ccx = plate_case
-    s = res.sigma
-    mine = np.column_stack([s[:, 0, 0], s[:, 1, 1], s[:, 2, 2], s[:, 0, 1], s[:, 1, 2], s[:, 0, 2]])
     x = res.points[:, 0]
     away = (x >= 0.02) & (x <= 0.1) & (np.arange(x.size) < model.mesh.mesh.nvertices)
     peak = np.abs(ccx.stress[away, 0]).max()
-    assert np.abs(mine[away, 0]).max() == pytest.approx(peak, rel=0.01)
-    assert np.abs(mine[away] - ccx.stress[away]).max() <= 0.01 * peak
+    for r, tol in ((res, 0.015), (model.solve(recovery="average"), 1e-4)):
+        s = r.sigma
+        mine = np.column_stack([s[:, 0, 0], s[:, 1, 1], s[:, 2, 2], s[:, 0, 1], s[:, 1, 2], s[:, 0, 2]])
+        assert np.abs(mine[away, 0]).max() == pytest.approx(peak, rel=tol)
+        assert np.abs(mine[away] - ccx.stress[away]).max() <= tol * peak
 
 
 def test_kirchhoff_plate_model_matches_the_solid(plate_case):

@@ -4,7 +4,8 @@ Source: G. Dhondt, CalculiX CrunchiX User's Manual 2.20 - C3D10 elements (sec. 6
 ccx itself on the same nodes, elements, material, supports and nodal loads. The same discrete
 problem must give the same displacements and integration-point stresses (to solver precision);
 nodal stresses differ only in how each program smooths them (CalculiX extrapolates and averages,
-mechverify projects), within 1 % away from the clamped end's singular corners.
+mechverify's default recovers by superconvergent patches): within 1.5 % away from the clamped end's
+singular corners, and identical with mechverify's ``recovery="average"``.
 """
 
 import shutil
@@ -47,7 +48,12 @@ def test_integration_point_stresses_agree(bracket):
 
 
 def test_nodal_stresses_within_one_percent_away_from_the_clamp(bracket):
-    _, res, ccx = bracket
+    """Default recovery (SPR) within 1.5 % of CalculiX's extrapolate-and-average away from the clamp;
+    ``recovery="average"`` is CalculiX's own method and agrees everywhere to output precision."""
+    model, res, ccx = bracket
+    same = model.solve(recovery="average").sigma
+    mine = np.column_stack([same[:, 0, 0], same[:, 1, 1], same[:, 2, 2], same[:, 0, 1], same[:, 1, 2], same[:, 0, 2]])
+    assert np.abs(mine - ccx.stress).max() <= 1e-4 * np.abs(ccx.stress).max()
     s = res.sigma
     mine = np.column_stack([s[:, 0, 0], s[:, 1, 1], s[:, 2, 2], s[:, 0, 1], s[:, 1, 2], s[:, 0, 2]])
     x = res.points[:, 0]
@@ -55,5 +61,5 @@ def test_nodal_stresses_within_one_percent_away_from_the_clamp(bracket):
     vm_ccx = np.sqrt(0.5 * ((ccx.stress[:, 0] - ccx.stress[:, 1]) ** 2 + (ccx.stress[:, 1] - ccx.stress[:, 2]) ** 2
                             + (ccx.stress[:, 2] - ccx.stress[:, 0]) ** 2) + 3 * (ccx.stress[:, 3:] ** 2).sum(axis=1))
     peak = vm_ccx[away].max()
-    assert res.von_mises.m_as("Pa")[away].max() == pytest.approx(peak, rel=0.01)
-    assert np.abs(mine[away] - ccx.stress[away]).max() <= 0.01 * peak
+    assert res.von_mises.m_as("Pa")[away].max() == pytest.approx(peak, rel=0.015)
+    assert np.abs(mine[away] - ccx.stress[away]).max() <= 0.015 * peak

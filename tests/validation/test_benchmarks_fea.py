@@ -1,0 +1,83 @@
+"""Published linear-elasticity benchmarks on small meshes (the full sequences are in
+``benchmarks/verification.py`` and ``docs/verification.md``).
+
+Sources (reference values; the models are in :mod:`mechverify.fea.verification`):
+- [TG] Timoshenko & Goodier, Theory of Elasticity, 3rd ed., sec. 35 (Kirsch): σxx = 3σ at the top
+  of a circular hole in an infinite plate; the model carries Kirsch's exact tractions on its outer
+  edges, so the closed form is the exact solution of the modelled domain.
+- [Shigley] Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed., eq. (3-50): Lamé,
+  σθ(ri) = p (ro² + ri²)/(ro² - ri²) = 83.33 MPa for ri = 20 mm, ro = 40 mm, p = 50 MPa (hand
+  calculation from the formula).
+- [NAFEMS] The Standard NAFEMS Benchmarks, TNSB Rev. 3 (1990), LE1: σyy at D = 92.7 MPa (printed
+  value; quoted identically by the NAFEMS LE1 pages of Altair OptiStruct's verification manual and
+  Seamplex's FEA cases, found with the search tool).
+
+The errors asserted are the measured ones of these meshes with a margin (the recovery method is
+chosen by them: superconvergent patch recovery is several times closer than extrapolate-and-average
+or L2 projection on each benchmark).
+"""
+
+import numpy as np
+import pytest
+
+pytest.importorskip("gmsh")
+
+from mechverify.errors import InputError
+from mechverify.fea import verification as V
+
+
+@pytest.fixture(scope="module")
+def coarse():
+    return {"kirsch": V.kirsch(0.01, 0.002), "lame": V.lame(0.004), "le1": V.le1(0.3, 0.1)}
+
+
+def err(b, res):
+    return b.component(res.stress_at([b.point]).m[0]) / b.reference - 1
+
+
+@pytest.mark.parametrize(("name", "spr_tol", "others_min"), [("kirsch", 0.003, 0.015), ("lame", 0.003, 0.005),
+                                                             ("le1", 0.006, 0.015)])
+def test_patch_recovery_beats_average_and_projection(coarse, name, spr_tol, others_min):
+    """Measured on these meshes: Kirsch +0.07 % (SPR) vs -1.9 % (average) and -2.3 % (projection);
+    Lamé -0.11 % vs -0.77 % and -0.88 %; LE1 -0.33 % vs -1.8 % and -2.1 %."""
+    b = coarse[name]
+    spr = b.model.solve()
+    assert spr.recovery == "spr"
+    assert abs(err(b, spr)) <= spr_tol
+    for method in ("average", "projection"):
+        assert abs(err(b, b.model.solve(recovery=method))) >= others_min
+    assert spr.warnings == ()
+
+
+def test_exact_field_everywhere_and_zz_indicator(coarse):
+    """Kirsch and Lamé are exact everywhere: over all nodes the recovered field's error (relative to the peak)
+    measured 0.36 % rms / 2.9 % max (Kirsch, 8 edges on the quarter hole) and 0.45 % rms / 1.9 % max (Lamé),
+    better in rms than average (0.45 / 0.66 %) and projection (0.47 / 0.68 %); the ZZ estimate (relative
+    energy-norm error) is small and falls when the mesh is refined."""
+    for name in ("kirsch", "lame"):
+        b = coarse[name]
+        res = b.model.solve()
+        ex = b.exact(res.points.T[:2])
+        d = np.abs(res.sigma[:, :2, :2] - ex[:, :2, :2]).max(axis=(1, 2))
+        assert d.max() <= 0.035 * b.reference and np.sqrt((d**2).mean()) <= 0.005 * b.reference
+        assert 0 < res.error_estimate < 0.02
+        assert res.element_error.shape == (b.model.mesh.nelements,)
+    fine = V.lame(0.002).model.solve()
+    assert fine.error_estimate < 0.5 * coarse["lame"].model.solve().error_estimate
+
+
+def test_integration_point_stress_and_stress_at(coarse):
+    b = coarse["lame"]
+    res = b.model.solve()
+    ip = res.integration_point_stress.m_as("Pa")
+    assert ip.shape == (b.model.mesh.nelements, 3, 3, 3) and res.ip_points.shape == (b.model.mesh.nelements, 3, 3)
+    exact = b.exact(res.ip_points.reshape(-1, 3).T[:2]).reshape(ip.shape)
+    assert np.abs(ip[..., :2, :2] - exact[..., :2, :2]).max() <= 0.05 * b.reference
+    # plane strain: σzz = ν(σxx + σyy) at the integration points too
+    assert ip[..., 2, 2] == pytest.approx(0.3 * (ip[..., 0, 0] + ip[..., 1, 1]))
+    s = res.stress_at([("30 mm", "0 mm"), (0.0, 0.03)]).m_as("Pa")
+    want = b.exact(np.array([[0.03, 0.0], [0.0, 0.03]]))
+    # 5 elements through the wall: -0.84 % measured at mid-wall on the symmetry line
+    assert s[0, 1, 1] == pytest.approx(want[0, 1, 1], rel=0.01) and s[1, 0, 0] == pytest.approx(want[1, 0, 0], rel=0.01)
+    with pytest.raises(InputError, match="outside the mesh"):
+        res.stress_at([(0.0, 0.0)])
