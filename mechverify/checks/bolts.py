@@ -213,7 +213,8 @@ def check_bolt_slip(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float 
         formula=r"\frac{F_Q}{q_F \mu_{T,min}} \le F_{KR,min} = F_{M,min} - (1-\Phi_n)F_{A,max} - F_Z - \Delta F_{Vth}",
         source=ref(VDI, "R12"),
         inputs={**_inputs(joint), "F_Q": _kN(a.F_Q), "mu_T": Q(joint.mu_T or 0.0, ""), "q_F": Q(joint.q_F, "")},
-        notes=("VDI 2230 R12 asks S_G >= 1.2 for static and 1.8 for alternating transverse loads",),
+        notes=("VDI 2230 R12 asks S_G >= 1.2 for static and 1.8 for alternating transverse loads",
+               *(("no transverse load in this case",) if a.F_Q == 0 else ())),
         load_case=load_case, details=_diagram(joint, a))
 
 

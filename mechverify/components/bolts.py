@@ -736,6 +736,7 @@ class BoltedJoint:
     tapped: ClampedPart | None = None
     d_W: float = 0.0            # head bearing diameter (0: from the ISO head table)
     d_h: float = 0.0            # hole diameter (0: ISO 273 medium)
+    d_W_nut: float = 0.0        # nut (or washer) bearing diameter (0: ISO 4032 d_w)
     D_A: float | None = None    # outer diameter of the clamped body (None: unbounded, full cone)
     shank_length: float | None = None  # unthreaded shank (None: L - thread length of the standard)
     mu_G: tuple[float, float] = (0.10, 0.16)
@@ -942,8 +943,11 @@ class BoltedJoint:
         p_head = bearing_pressure.si(F_press, self.d_W_eff, self.d_h_eff)
         p_nut = None
         if self.through:
-            nd = nut_dimensions(th)
-            p_nut = bearing_pressure.si(F_press, nd["dw"], self.d_h_eff) if nd["dw"] > self.d_h_eff else math.inf
+            dw_nut = self.d_W_nut or nut_dimensions(th)["dw"]
+            if dw_nut <= self.d_h_eff:
+                raise InputError(f"{self.name}: nut bearing diameter {dw_nut * 1e3:g} mm is not larger than the hole "
+                                 f"{self.d_h_eff * 1e3:g} mm; give a washer's nut_bearing_diameter")
+            p_nut = bearing_pressure.si(F_press, dw_nut, self.d_h_eff)
         # stripping (R11): internal thread against the bolt's breaking force
         strip_cap, strip_dem = self._stripping()
         # residual clamp load in service (R12)
@@ -995,8 +999,9 @@ def bolted_joint(name: str, thread: str, grade: str, parts: Sequence[tuple[Quant
     if tapped is not None and not isinstance(tapped, ClampedPart):
         tapped = ClampedPart.of("1 mm", tapped)  # the tapped body's thickness is not used
     kw["tapped"] = tapped
-    dims = {"d_W": "length", "d_h": "length", "D_A": "length", "shank_length": "length", "roughness": "length",
-            "tightening_torque": "torque", "F_K_req": "force", "internal_Rm": "pressure", "E_S": "pressure"}
+    dims = {"d_W": "length", "d_h": "length", "d_W_nut": "length", "D_A": "length", "shank_length": "length",
+            "roughness": "length", "tightening_torque": "torque", "F_K_req": "force", "internal_Rm": "pressure",
+            "E_S": "pressure"}
     conv = {k: ((None if v is None else to_si(v, dims[k], k)) if k in dims else v) for k, v in kw.items()}
     return BoltedJoint(name, th, gr, ps, to_si(length, "length", "length"), **conv)
 
@@ -1089,9 +1094,45 @@ class BoltPattern:
         return out
 
 
+def hole_support_forces(plate: Any, supports: Sequence[Any], xy: Any, reaction_z: Any,
+                        name: str = "") -> dict[str, tuple[tuple[float, float], float]]:
+    """Bolt tension at each bolt-hole support of a plate-bending FEA: hole name -> ((x, y) [m], tension [N]).
+
+    The sum of the vertical reactions ``reaction_z`` [N] at the vertices ``xy`` [m] on the hole's rim or washer
+    ring (:class:`mechverify.components.plates.HoleSupport`), its sign turned so that a plate pulled off its
+    support puts the bolt in tension. The moments a clamped rim also takes are not counted: they load the
+    bolted interface, not the bolt's axis (VDI 2230's eccentric clamping is not modelled).
+    """
+    xy = np.asarray(xy, dtype=float)
+    rz = np.asarray(reaction_z, dtype=float)
+    out: dict[str, tuple[tuple[float, float], float]] = {}
+    for s in supports:
+        if type(s).__name__ != "HoleSupport":
+            continue
+        holes = plate.holes if s.holes == "all" else [plate.hole(k) for k in s.holes]
+        w = s.washer_diameter
+        w = 0.0 if w is None else (w if isinstance(w, float) else to_si(w, "length", "washer_diameter"))
+        for h in holes:
+            r = 0.5 * max(h.diameter, w) * (1 + 1e-6) + 1e-9
+            near = np.hypot(xy[:, 0] - h.center[0], xy[:, 1] - h.center[1]) <= r
+            out[h.name] = ((float(h.center[0]), float(h.center[1])), float(-rz[near].sum()))
+    if not out:
+        raise InputError(f"{name}: the plate has no bolt-hole supports")
+    return out
+
+
+def force_resultants(forces: Any) -> tuple[float, float, float]:
+    """(F_z, M_x, M_y) of bolt forces ``[((x, y), F), ...]`` about their centroid: sum F, sum F v, -sum F u."""
+    f = list(forces)
+    xc = sum(p[0] for p, _ in f) / len(f)
+    yc = sum(p[1] for p, _ in f) / len(f)
+    return (sum(t for _, t in f), sum(t * (p[1] - yc) for p, t in f), -sum(t * (p[0] - xc) for p, t in f))
+
+
 __all__ = [
     "MetricThread", "metric_thread", "thread_sizes", "PropertyClass", "property_class", "head_bearing_diameter",
-    "nut_dimensions", "clearance_hole", "friction_class", "limiting_surface_pressure", "embedding_amount", "tightening_factor",
+    "nut_dimensions", "clearance_hole", "friction_class", "limiting_surface_pressure", "embedding_amount",
+    "tightening_factor",
     "pitch_diameter", "minor_diameter", "stress_area", "shigley_bolt_stiffness", "frustum_stiffness",
     "member_stiffness_equal", "WILEMAN", "wileman_member_stiffness", "joint_constant", "shigley_preload",
     "shigley_yielding_factor", "shigley_load_factor", "shigley_separation_factor", "bolt_goodman_strength",
@@ -1100,5 +1141,6 @@ __all__ = [
     "embedding_loss", "thermal_preload_change", "min_assembly_preload", "permissible_assembly_preload",
     "tightening_torque", "thread_torque", "working_stress", "endurance_rolled_before_ht", "endurance_rolled_after_ht",
     "bearing_pressure", "alexander_C1", "alexander_C3", "internal_thread_shear_area", "external_thread_shear_area",
-    "slip_clamp_load", "ClampedPart", "JointAnalysis", "BoltedJoint", "bolted_joint", "BoltLoad", "BoltPattern",
+    "slip_clamp_load", "hole_support_forces", "force_resultants",
+    "ClampedPart", "JointAnalysis", "BoltedJoint", "bolted_joint", "BoltLoad", "BoltPattern",
 ]

@@ -23,10 +23,6 @@ class BoltGroup:
     pattern: b.BoltPattern
     labels: tuple[str, ...]
 
-    @property
-    def joint(self) -> b.BoltedJoint:
-        return self.pattern.joint
-
 
 def _parts(p: Mapping[str, Any]) -> tuple[b.ClampedPart, ...]:
     out = []
@@ -53,6 +49,11 @@ def _mu(p: Mapping[str, Any], key: str) -> tuple[float, float] | None:
     return float(lo), float(hi)
 
 
+OPTIONAL = {"head_bearing_diameter": ("d_W", "length"), "nut_bearing_diameter": ("d_W_nut", "length"),
+            "outer_diameter": ("D_A", "length"), "shank_length": ("shank_length", "length"),
+            "tightening_torque": ("tightening_torque", "torque"), "residual_clamp_load": ("F_K_req", "force")}
+
+
 def _joint(p: Mapping[str, Any]) -> b.BoltedJoint:
     th = b.metric_thread(p["thread"])
     grade = b.property_class(p["property_class"], Q(th.d, "m"))
@@ -67,24 +68,15 @@ def _joint(p: Mapping[str, Any]) -> b.BoltedJoint:
     kw = dict(head=p["head"], tapped=tapped, d_h=d_h, mu_G=mu_G, mu_K=mu_K, mu_T=p.get("mu_interface"),
               q_F=p["interfaces"], alpha_A=float(alpha_A), nu=float(p["utilisation"]), n=float(p["load_introduction"]),
               rolled_after_heat_treatment=p["rolled_after_heat_treatment"], roughness=to_si(p["roughness"], "length"))
-    for key, attr, dim in (("head_bearing_diameter", "d_W", "length"), ("outer_diameter", "D_A", "length"),
-                           ("shank_length", "shank_length", "length"), ("tightening_torque", "tightening_torque",
-                                                                        "torque"),
-                           ("residual_clamp_load", "F_K_req", "force")):
-        if key in p:
-            kw[attr] = to_si(p[key], dim, key)
+    kw.update({attr: to_si(p[key], dim, key) for key, (attr, dim) in OPTIONAL.items() if key in p})
     return b.BoltedJoint(p["_name"], th, grade, _parts(p), to_si(p["length"], "length", "length"), **kw)
 
 
 def _point(v: Any, unit: str, path: str) -> tuple[float, float]:
-    parts = [s.strip() for s in str(v).split(",")]
-    if len(parts) != 2:
-        raise InputError(f"{path}: expected a point \"x, y\", got {v!r}")
-    out = []
-    for s in parts:
-        q = Q(s) if any(c.isalpha() for c in s) else Q(float(s), unit)
-        out.append(to_si(q, "length", path))
-    return out[0], out[1]
+    from mechverify.design.adapters.plate_fea import parse_point  # plate_fea imports this module
+
+    x, y = parse_point(v, unit, path)
+    return to_si(x, "length", path), to_si(y, "length", path)
 
 
 def _group(p: Mapping[str, Any]) -> BoltGroup:
@@ -95,13 +87,10 @@ def _group(p: Mapping[str, Any]) -> BoltGroup:
     return BoltGroup(p["_name"], b.BoltPattern(_joint(p), pos, labels), labels)
 
 
-def _F(loads: Mapping[str, Any] | None, key: str) -> Any:
-    return Q(0, "N") if loads is None or key not in loads else loads[key]
-
-
 def _analyse(j: b.BoltedJoint, loads: Mapping[str, Any] | None) -> b.JointAnalysis:
-    return j.analyse(_F(loads, "axial_force"), F_A_min=_F(loads, "axial_force_min"), F_Q=_F(loads, "transverse_force"),
-                     dT=(loads or {}).get("temperature_change", Q(0, "K")))
+    L = loads or {}
+    return j.analyse(L.get("axial_force", "0 N"), F_A_min=L.get("axial_force_min", "0 N"),
+                     F_Q=L.get("transverse_force", "0 N"), dT=L.get("temperature_change", Q(0, "K")))
 
 
 def _group_analyses(g: BoltGroup, loads: Mapping[str, Any] | None) -> list[b.JointAnalysis]:
@@ -122,8 +111,8 @@ def _single(fn: Any) -> Any:
 
 def _per_bolt(fn: Any) -> Any:
     def run(g: BoltGroup, loads: Mapping[str, Any] | None, ctx: Any) -> CheckResult:
-        rs = [fn(g.joint, a, required_sf=ctx.required_sf, load_case=ctx.load_case) for a in _group_analyses(g, loads)]
-        return cb.governing_bolt(rs, g.labels)
+        j, sf, lc = g.pattern.joint, ctx.required_sf, ctx.load_case
+        return cb.governing_bolt([fn(j, a, required_sf=sf, load_case=lc) for a in _group_analyses(g, loads)], g.labels)
     return run
 
 
@@ -140,6 +129,7 @@ JOINT_FIELDS = (
     Field("hole_fit", "choice", "ISO 273 clearance hole", default="medium", choices=("fine", "medium", "coarse")),
     Field("hole_diameter", "length", "clearance hole diameter d_h, instead of ISO 273"),
     Field("head_bearing_diameter", "length", "head (or washer) bearing diameter d_W, instead of the ISO head table"),
+    Field("nut_bearing_diameter", "length", "nut (or washer) bearing diameter, instead of ISO 4032 d_w"),
     Field("outer_diameter", "length", "outer diameter D_A of the clamped body around the bolt (default: unbounded)"),
     Field("shank_length", "length", "unthreaded shank (default: length - standard thread length)"),
     Field("friction_class", "choice", "VDI 2230 Table A5 friction class for mu_G and mu_K",
@@ -169,13 +159,12 @@ LOADS = (
 CHECKS = (cb.check_bolt_assembly_stress, cb.check_bolt_working_stress, cb.check_bolt_fatigue,
           cb.check_bolt_surface_pressure_head, cb.check_bolt_surface_pressure_nut, cb.check_bolt_thread_stripping,
           cb.check_bolt_separation, cb.check_bolt_slip, cb.check_bolt_tightening_torque)
-_ANY = "axial_force|transverse_force|temperature_change"
-NEEDS = {"bolt_working_stress": (_ANY,), "bolt_fatigue": ("axial_force",), "bolt_surface_pressure_head": (_ANY,),
-         "bolt_surface_pressure_nut": (_ANY,), "bolt_separation": ("axial_force",), "bolt_slip": ("transverse_force",)}
-_GANY = "axial_force|force_x|force_y|moment_x|moment_y|moment_z|temperature_change"
-GROUP_NEEDS = {"bolt_working_stress": (_GANY,), "bolt_fatigue": ("axial_force|moment_x|moment_y",),
-               "bolt_surface_pressure_head": (_GANY,), "bolt_surface_pressure_nut": (_GANY,),
-               "bolt_separation": ("axial_force|moment_x|moment_y",), "bolt_slip": ("force_x|force_y|moment_z",)}
+_A = "axial_force|transverse_force|temperature_change"
+_GA = "axial_force|force_x|force_y|moment_x|moment_y|moment_z|temperature_change"
+# every load-dependent check runs in each case that loads the joint (a missing load counts as zero)
+NEEDS = {n: (_A,) for n in ("bolt_working_stress", "bolt_fatigue", "bolt_surface_pressure_head",
+                            "bolt_surface_pressure_nut", "bolt_separation", "bolt_slip")}
+GROUP_NEEDS = {n: (_GA,) for n in NEEDS}
 
 
 def _applies(fn: Any, group: bool) -> Any:
@@ -184,7 +173,7 @@ def _applies(fn: Any, group: bool) -> Any:
         return run
 
     def nut_only(c: Any, loads: Any, ctx: Any) -> Any:  # a tapped joint has no nut
-        return run(c, loads, ctx) if (c.joint if group else c).through else []
+        return run(c, loads, ctx) if (c.pattern.joint if group else c).through else []
     return nut_only
 
 
@@ -230,3 +219,32 @@ BOLT_GROUP = REGISTRY.register(ComponentType(
     ),
     checks=tuple(CheckSpec.of(fn, _applies(fn, True), needs=GROUP_NEEDS.get(fn.check_def.name, ())) for fn in CHECKS),
 ))
+
+
+# ------------------------------------------------------------------ plate_fea outputs: bolt-hole support forces
+G_STANDARD = 9.80665  # outputs are asked without the design's requirements: self-weight at standard gravity
+
+def hole_support_forces(c: Any, loads: Mapping[str, Any] | None) -> dict[str, tuple[tuple[float, float], float]]:
+    """Bolt tension at each bolt-hole support of a ``plate_fea`` component in a load case (solved once per loads)."""
+    key = "outputs:" + repr(sorted((k, repr(v)) for k, v in (loads or {}).items()))
+    _, res = c.solve(loads or {}, key, G_STANDARD)
+    return b.hole_support_forces(c.plate, c.supports, res.points[:, :2], res.extra["reaction_z_N"], c.name)
+
+
+def _resultants(c: Any, loads: Mapping[str, Any] | None) -> tuple[float, float, float]:
+    return b.force_resultants(hole_support_forces(c, loads).values())
+
+
+def plate_bolt_outputs() -> tuple[Output, ...]:
+    """Outputs of ``plate_fea`` a ``bolted_joint`` or ``bolt_group`` reads as ``"<plate>.<name>"``."""
+    needs = ("point_loads|patch_loads|pressure|self_weight",)
+    return (
+        Output("bolt_tension_max", "force", "largest bolt tension of one bolt-hole support (its FEA rim reactions)",
+               lambda c, loads: Q(max(0.0, *(t for _, t in hole_support_forces(c, loads).values())), "N"), needs),
+        Output("bolt_force_total", "force", "total bolt tension of the bolt-hole supports (F_z of a bolt_group)",
+               lambda c, loads: Q(_resultants(c, loads)[0], "N"), needs),
+        Output("bolt_moment_x", "torque", "moment about x of the bolt-hole forces about their centroid",
+               lambda c, loads: Q(_resultants(c, loads)[1], "N*m"), needs),
+        Output("bolt_moment_y", "torque", "moment about y of the bolt-hole forces about their centroid",
+               lambda c, loads: Q(_resultants(c, loads)[2], "N*m"), needs),
+    )

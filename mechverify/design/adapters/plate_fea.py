@@ -34,6 +34,7 @@ from mechverify.checks import members as mc
 from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
+from mechverify.design.adapters.bolts import plate_bolt_outputs
 from mechverify.design.adapters.common import inline_table
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, suggest
@@ -508,5 +509,6 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
                      needs=("point_loads|patch_loads|pressure|self_weight",)),
     ),
+    outputs=plate_bolt_outputs(),  # bolt-hole support forces for bolted_joint / bolt_group (adapters/bolts.py)
     figures=_figures,
 ))
