@@ -164,3 +164,39 @@ def test_check_settings_without_enabled_turn_the_check_on(tmp_path, capsys):
                  "[components.lift_screw.checks]\nbuckling = { enabled = \"yes\" }")
     code, _, err = run(capsys, bad)
     assert code == 2 and "checks.buckling.enabled: expected true or false" in err
+
+
+def test_schema_describes_motor_data_and_gearhead_data():
+    """Every key a user can write is in the schema: the motor_data variants (by `type`) and gearhead_data
+    come from the component dataclasses, so a missing step_angle is caught by an editor too."""
+    import jsonschema
+
+    from mechverify.design.schema import design_schema
+
+    text = str(design_schema())
+    assert "step_angle" in text and "max_input_speed" in text
+    motor = {"type": "stepper", "step_angle": "1.8 deg", "holding_torque": "0.4 N*m"}
+    schema = _find(design_schema(), "motor_data")
+    jsonschema.validate(motor, schema)
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate({k: v for k, v in motor.items() if k != "step_angle"}, schema)
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate({**motor, "colour": "red"}, schema)
+    jsonschema.validate({"ratio": "26/7", "efficiency": 0.8}, _find(design_schema(), "gearhead_data"))
+
+
+def _find(node, key):
+    """The first sub-schema under ``properties[key]`` anywhere in ``node``."""
+    if isinstance(node, dict):
+        if key in node.get("properties", {}):
+            return node["properties"][key]
+        for v in node.values():
+            hit = _find(v, key)
+            if hit is not None:
+                return hit
+    elif isinstance(node, list):
+        for v in node:
+            hit = _find(v, key)
+            if hit is not None:
+                return hit
+    return None

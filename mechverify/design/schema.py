@@ -43,11 +43,43 @@ def field_schema(f: Field) -> dict[str, Any]:
     elif f.kind == "list":
         s = {"type": "array", "items": field_schema(Field(f.name, f.item or "str", choices=f.choices)),
              "description": doc}
+    elif f.name in _DATASHEET_TABLES:
+        s = {**_datasheet_table(f.name), "description": doc}
     else:
         s = {"type": "object", "description": doc}
     if f.default is not None:
         s["default"] = f.default
     return s
+
+
+_DATASHEET_TABLES = ("motor_data", "gearhead_data")
+
+
+def _datasheet_table(name: str) -> dict[str, Any]:
+    """The keys of an inline datasheet table (``motor_data``: one variant per motor ``type``;
+    ``gearhead_data``), read from the component dataclasses so that they never drift apart."""
+    from dataclasses import MISSING, fields
+
+    from mechverify.components.gearheads import Gearhead
+    from mechverify.components.motors import _TYPES
+
+    def variant(cls: type, kind: str | None) -> dict[str, Any]:
+        fs = [f for f in fields(cls) if f.init and f.name != "derived"]
+        props: dict[str, Any] = {f.name: {"description": f"{cls.__name__}.{f.name}"} for f in fs}
+        props["name"] = {"type": "string", "description": "name shown in reports (default: '<component> motor')"}
+        props["notes"] = {"type": "array", "items": {"type": "string"}}
+        req = [f.name for f in fs if f.name != "name" and f.default is MISSING and f.default_factory is MISSING]
+        if kind is not None:
+            props["type"] = {"const": kind}
+            req = ["type", *req]
+        out: dict[str, Any] = {"type": "object", "properties": props, "additionalProperties": False}
+        if req:
+            out["required"] = req
+        return out
+
+    if name == "motor_data":
+        return {"oneOf": [variant(cls, kind) for kind, cls in sorted(_TYPES.items())]}
+    return variant(Gearhead, None)
 
 
 def _object(fields: tuple[Field, ...], extra: dict[str, Any] | None = None) -> dict[str, Any]:
