@@ -204,3 +204,13 @@ def explain_text(name: str) -> str:
         lines += ["", "Former names (still accepted): " + ", ".join(d.aliases)]
     lines += ["", f"Python: {d.module}.{d.function.__name__}"]
     return "\n".join(lines)
+
+
+def checks_markdown() -> str:
+    """The index of all registered checks as a Markdown table (kept in ``docs/design-files.md`` between
+    ``<!-- checks:begin -->`` and ``<!-- checks:end -->``; a test compares it with the registry)."""
+    rows = ["| check | title | class | former names | function |", "|---|---|---|---|---|"]
+    for d in all_checks():
+        former = ", ".join(f"`{a}`" for a in d.aliases) or "-"
+        rows.append(f"| `{d.name}` | {d.title} | `{d.sf_kind}` | {former} | `{d.module}.{d.function.__name__}` |")
+    return "\n".join(rows)
