@@ -160,3 +160,19 @@ def test_stress_area_formula_table_8_1():
     d2 = b.pitch_diameter("12 mm", "1.75 mm").m_as("mm")
     d3 = b.minor_diameter("12 mm", "1.75 mm").m_as("mm")
     assert math.pi / 4 * ((d2 + d3) / 2) ** 2 == pytest.approx(b.stress_area("12 mm", "1.75 mm").m_as("mm**2"), rel=1e-6)
+
+
+def test_frusta_prob_8_23_and_a_slip_in_the_manual():
+    """[SM8-23] (coursehero "11-ch-08"): the 40 mm M12 cap screw in 20 mm steel on cast iron; printed frusta
+    k1 = 5316 (207 GPa, D = 18, t = 13), k2 = 15 620 (207 GPa, D = 24.9, t = 7) and k3 = 3887 MN/m (100 GPa, D = 18,
+    t = 6) - all three reproduced. The printed k_m = 2158 MN/m is [(1/5316) + (1/55 620) + (1/3887)]^-1: the sum
+    shows 55 620 instead of the 15 620 printed a line above (a slip in the manual or in its transcription); with
+    15 620 the hand calculation gives 1963 MN/m. The
+    printed load factor n = (600(84.3) - 37.9 kN)/(C (8.48 kN)) = 5.84 with the printed C = 0.256 is reproduced."""
+    ks = [b.frustum_stiffness(E, "12 mm", D, t).m_as("MN/m") for E, D, t in
+          [("207 GPa", "18 mm", "13 mm"), ("207 GPa", "24.9 mm", "7 mm"), ("100 GPa", "18 mm", "6 mm")]]
+    for k, printed in zip(ks, (5316, 15620, 3887), strict=True):
+        assert rel(k, printed) < 2e-4
+    assert 1 / sum(1 / k for k in (5316, 55620, 3887)) == pytest.approx(2158, abs=0.5)   # the printed sum
+    assert 1 / sum(1 / k for k in ks) == pytest.approx(1963, abs=1)                      # hand, correct k2
+    assert b.shigley_load_factor("600 MPa", "84.3 mm**2", 0.256, "8.48 kN", "37.9 kN") == pytest.approx(5.84, abs=0.005)
