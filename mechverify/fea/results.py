@@ -296,8 +296,9 @@ class FieldResults:
 
     # -- export -------------------------------------------------------------------------------
     def to_vtu(self, path: str | Path) -> Path:
-        """Write nodes, cells and fields (displacement, stress, von Mises, principal, safety) to VTU."""
-        import meshio
+        """Write nodes, cells and fields (displacement, stress, von Mises, principal, safety) to VTU
+        (meshio's writer, or mechverify's own if meshio fails: :func:`mechverify.fea.vtu.write_vtu`)."""
+        from mechverify.fea.vtu import write_vtu
 
         path = Path(path)
         s = self.sigma
@@ -311,8 +312,7 @@ class FieldResults:
             data["safety_factor_yield"] = np.minimum(self.safety_factor().m, 1e6)
         for k, v in self.extra.items():
             data[k] = v
-        meshio.Mesh(self.points, self.cells, point_data=data).write(path)
-        return path
+        return write_vtu(path, self.points, self.cells, data)
 
     def plot(self, path: str | Path | None = None, field: str = "von_mises", scale: float | None = None,
              title: str | None = None) -> Any:
