@@ -404,7 +404,7 @@ def run_model(model: Any, ip_stress: bool = False, threads: int = 1, keep: str |
     E, nu = mat.E.m_as("Pa"), mat.nu.m_as("")
     if hasattr(model, "plane"):  # PlaneModel
         b = model.basis
-        return run(b.doflocs.T, b.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(), ip_stress=ip_stress,
+        return run(model.nodes.T, b.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(), ip_stress=ip_stress,
                    threads=threads, keep=keep, element="CPS6" if model.plane == "stress" else "CPE6",
                    thickness=model.thickness)
     mesh = model.mesh

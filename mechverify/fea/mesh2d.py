@@ -43,6 +43,7 @@ class NamedMeshTri(MeshTri1):
 
     named_points: dict[str, np.ndarray] = field(default_factory=dict)
     measures: dict[str, float] = field(default_factory=dict)
+    curved: np.ndarray | None = None  # [2, n] P2 node coordinates on the geometry (vertices, then edges)
 
 
 def tri_mesh(p: np.ndarray, t: np.ndarray, like: MeshTri | None = None) -> MeshTri:
@@ -57,7 +58,7 @@ def tri_mesh(p: np.ndarray, t: np.ndarray, like: MeshTri | None = None) -> MeshT
     p, t = contiguous(p, t)
     if isinstance(like, NamedMeshTri):
         m: MeshTri = NamedMeshTri(p, t, sort_t=False, named_points=dict(like.named_points),
-                                  measures=dict(like.measures))
+                                  measures=dict(like.measures), curved=like.curved)
     else:
         m = MeshTri(p, t, sort_t=False)
     if like is not None and like.boundaries:
@@ -152,14 +153,19 @@ def from_gmsh_model(gmsh: Any) -> NamedMeshTri:
     tags, coords, _ = gmsh.model.mesh.getNodes()
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
     index[tags.astype(np.int64)] = np.arange(tags.size)
-    tris = []
-    for ty, npe in ((2, 3), (9, 6)):  # linear or quadratic triangles: the corners
+    tris, mids = [], []
+    for ty, npe in ((2, 3), (9, 6)):  # linear or quadratic triangles: the corners (and mid-side nodes)
         _, ntags = gmsh.model.mesh.getElementsByType(ty)
         if ntags.size:
-            tris.append(index[ntags.astype(np.int64)].reshape(-1, npe)[:, :3])
+            conn = index[ntags.astype(np.int64)].reshape(-1, npe)
+            tris.append(conn[:, :3])
+            if npe == 6:
+                mids.append(conn[:, 3:])
     if not tris:
         raise ModelError("gmsh produced no triangles (is the geometry a closed surface, meshed in 2D?)")
     t = np.vstack(tris).T
+    xyz = coords.reshape(-1, 3).T[:2]
+    pair_mid = _mid_nodes(xyz, t.T, mids[0]) if mids and len(tris) == 1 else None
     used = np.unique(t)
     remap = np.full(tags.size, -1, dtype=np.int64)
     remap[used] = np.arange(used.size)
@@ -168,6 +174,31 @@ def from_gmsh_model(gmsh: Any) -> NamedMeshTri:
     named, measures = physical_groups(gmsh, lambda k: remap[index[k]], (1, 0))
     base = tri_mesh(p, orient_triangles(p, t))
     points = {k: np.unique(v) for k, v in named.items() if v.shape[1] == 1}
-    m = NamedMeshTri(base.p, base.t, sort_t=False, named_points=points, measures=measures)
+    curved = None
+    if pair_mid is not None:
+        keys, mid_xy = pair_mid
+        n = remap.size
+        f = np.sort(used[base.facets], axis=0)
+        want = f[0] * n + f[1]
+        pos = np.minimum(np.searchsorted(keys, want), keys.size - 1)
+        if not np.array_equal(keys[pos], want):
+            raise ModelError("gmsh's second-order mesh has edges without a mid-side node")
+        curved = np.hstack([base.p, mid_xy[:, pos]])
+    m = NamedMeshTri(base.p, base.t, sort_t=False, named_points=points, measures=measures, curved=curved)
     curves = {k: _facets_of(m, v.T) for k, v in named.items() if v.shape[1] == 2}
     return m.with_boundaries(curves) if curves else m
+
+
+def _mid_nodes(xyz: np.ndarray, corners: np.ndarray, mids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Sorted keys ``a * n + b`` (gmsh node indices a < b of each edge) and the coordinates ``[2, k]`` of the
+    mid-side node gmsh placed on each edge, matched to the vertex pair whose straight midpoint is nearest."""
+    pairs = np.array([(0, 1), (1, 2), (0, 2)])
+    pm = (xyz[:, corners[:, pairs[:, 0]]] + xyz[:, corners[:, pairs[:, 1]]]) / 2  # 2, e, pair
+    d = np.linalg.norm(xyz[:, mids][:, :, :, None] - pm[:, :, None, :], axis=0)  # e, mid, pair
+    which = np.argmin(d, axis=2)
+    a = corners[np.arange(corners.shape[0])[:, None], pairs[which, 0]]
+    b = corners[np.arange(corners.shape[0])[:, None], pairs[which, 1]]
+    n = xyz.shape[1]
+    key = (np.minimum(a, b) * n + np.maximum(a, b)).ravel()
+    key, first = np.unique(key, return_index=True)
+    return key, xyz[:, mids.ravel()[first]]

@@ -70,6 +70,7 @@ class PlaneModel:
     supports: tuple[Fixed | Support, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     plane: str = "stress"
+    curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
 
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, MeshTri):
@@ -88,6 +89,38 @@ class PlaneModel:
     @cached_property
     def basis(self) -> Basis:
         return Basis(self.mesh, ElementTriP2(), intorder=1)
+
+    @cached_property
+    def _curved_nodes(self) -> np.ndarray | None:
+        c = getattr(self.mesh, "curved", None)
+        if c is not None and self.curved is not False and c.shape == self.basis.doflocs.shape:
+            return np.asarray(c, float)
+        if self.curved:
+            raise InputError("curved=True needs a mesh with curved mid-side nodes (mesh2d.from_gmsh_model of a "
+                             "second-order gmsh mesh)")
+        return None
+
+    @property
+    def nodes(self) -> np.ndarray:
+        """Coordinates ``[2, n]`` of the P2 nodes: on the curved geometry where the mesh has it (gmsh
+        second-order meshes, :func:`mechverify.fea.mesh2d.from_gmsh_model`) and ``curved`` is not False,
+        else the straight mid-points."""
+        c = self._curved_nodes
+        return self.basis.doflocs if c is None else c
+
+    @property
+    def is_curved(self) -> bool:
+        """Whether the elements are isoparametric with curved sides."""
+        return self._curved_nodes is not None
+
+    def _edge_rule(self, nodes: np.ndarray, normal: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Curved edges: shape functions ``[3, q]``, points ``[k, q, 2]`` and outward normals times length
+        weights ``[k, q, 2]``."""
+        from mechverify.fea import isoparametric as iso
+
+        N, x, nw = iso.facet_rule(self.nodes, nodes)
+        sign = np.sign(np.einsum("kqd,kd->k", nw, normal))
+        return N, x, nw * sign[:, None, None]
 
     @cached_property
     def _boundary(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -123,7 +156,7 @@ class PlaneModel:
         if isinstance(region, Named):
             sel = self._named_edges(region.name)
         else:
-            inside = region.contains(self.basis.doflocs, 1e-6 * self.size)
+            inside = region.contains(self.nodes, 1e-6 * self.size)
             sel = np.all(inside[nodes[:, :2]], axis=1)  # by the end vertices (a chord's middle is off an arc)
         if not np.any(sel):
             raise InputError(f"{region.describe()} contains no boundary edge of the mesh")
@@ -140,7 +173,7 @@ class PlaneModel:
             return np.unique(nodes_all[self._named_edges(region.name)])
         bverts = np.unique(nodes_all[:, :2])
         inside = np.zeros(self.basis.N, dtype=bool)
-        inside[bverts] = region.contains(self.basis.doflocs[:, bverts], 1e-6 * self.size)
+        inside[bverts] = region.contains(self.nodes[:, bverts], 1e-6 * self.size)
         if not np.any(inside):
             raise InputError(f"{region.describe()} contains no boundary node of the mesh")
         edge_in = inside[nodes_all[:, 0]] & inside[nodes_all[:, 1]]
@@ -164,6 +197,16 @@ class PlaneModel:
             if isinstance(ld, Gravity):
                 rho = self.material.require("density").m_as("kg/m**3")
                 g = np.array(ld.acceleration[:2] if ld.acceleration is not None else (0.0, -STANDARD_GRAVITY))
+                if self.is_curved:
+                    from mechverify.fea import isoparametric as iso
+
+                    _, W, N, dN = iso.reference(2, 4)
+                    det, _ = iso.geometry(self.nodes, b.element_dofs, dN)
+                    wN = np.einsum("aq,eq->ae", N, det * W[None, :]) * rho * t  # a, e
+                    for i in range(2):
+                        fv[:, i] += np.bincount(b.element_dofs.ravel(), weights=(wN * g[i]).ravel(), minlength=b.N)
+                    out.append((None, f))
+                    continue
                 mids = b.element_dofs[3:]
                 for i in range(2):
                     fv[:, i] += np.bincount(mids.ravel(), weights=np.repeat(area[None, :] / 3 * rho * g[i] * t, 3,
@@ -171,6 +214,21 @@ class PlaneModel:
                 out.append((None, f))
                 continue
             nodes, length, normal = self._edges(ld.region)
+            if self.is_curved and not isinstance(ld, PinLoad):
+                N, x, nw = self._edge_rule(nodes, normal)
+                ds = np.linalg.norm(nw, axis=2)  # k, q
+                if isinstance(ld, Force):
+                    tr = np.broadcast_to(np.array(ld.vector[:2])[None, None, :] / (ds.sum() * t), nw.shape)
+                    w = ds[:, :, None] * tr
+                elif isinstance(ld, Traction):
+                    w = ds[:, :, None] * ld.evaluate(x.reshape(-1, 2).T).T.reshape(x.shape)
+                else:
+                    w = -ld.value * nw
+                loc = np.einsum("aq,kqd->kad", N, w) * t  # k, 3, 2
+                for i in range(2):
+                    fv[:, i] += np.bincount(nodes.ravel(), weights=loc[:, :, i].ravel(), minlength=b.N)
+                out.append((ds.sum(axis=1), f))
+                continue
             if isinstance(ld, Traction):
                 # 3-point Gauss-Legendre on each straight edge; P2 edge shape functions (ends, middle)
                 gs = 0.5 + 0.5 * np.array([-np.sqrt(0.6), 0.0, np.sqrt(0.6)])
@@ -262,19 +320,29 @@ class PlaneModel:
             t0 = time.perf_counter()
             step("assembling")
             pattern = asm.block_pattern(b.element_dofs, b.N)
-            K = asm.assemble_blocks(asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness), pattern, 2)
-            _, area = asm.barycentric_gradients(m.p, m.t)
+            if self.is_curved:
+                from mechverify.fea import isoparametric as iso
+
+                blocks, area = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu, self.thickness)
+            else:
+                blocks = asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness)
+                _, area = asm.barycentric_gradients(m.p, m.t)
+            K = asm.assemble_blocks(blocks, pattern, 2)
             f = self.load_vector(area)
             held = self.held_dofs()
             timings["assembly"] = time.perf_counter() - t0
-            u, info = solve(K, f, held, b.doflocs, method="direct", progress=step)
+            u, info = solve(K, f, held, self.nodes, method="direct", progress=step)
             timings["solve"] = info.seconds
             t1 = time.perf_counter()
-            rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, area, pattern,
-                             plane_strain=self.plane == "strain")
+            if self.is_curved:
+                rec = rc.recover_curved(recovery, self.nodes, m.t, b.element_dofs, u, lam, mu, E, nu,
+                                        plane_strain=self.plane == "strain")
+            else:
+                rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, area, pattern,
+                                 plane_strain=self.plane == "strain")
             s = rec.nodal
             timings["recovery"] = time.perf_counter() - t1
-            reaction, applied = _equilibrium(K, u, f, held, b.doflocs, 2)
+            reaction, applied = _equilibrium(K, u, f, held, self.nodes, 2)
             reports = self.region_reports(nodal_reactions(K, u, f, held))
         n = b.N
         sigma = np.zeros((n, 3, 3))
@@ -282,7 +350,7 @@ class PlaneModel:
         sigma[:, 0, 1] = sigma[:, 1, 0] = s[:, 2]
         if self.plane == "strain":
             sigma[:, 2, 2] = nu * (s[:, 0] + s[:, 1])
-        pts = np.column_stack([b.doflocs.T, np.zeros(n)])
+        pts = np.column_stack([self.nodes.T, np.zeros(n)])
         uu = np.zeros((n, 3))
         uu[:, :2] = u.reshape(-1, 2)
         return FieldResults(

@@ -295,3 +295,36 @@ def _plane_full(v: np.ndarray, nu: float, plane_strain: bool) -> np.ndarray:
     if plane_strain:
         out[..., 2] = nu * (v[..., 0] + v[..., 1])
     return out
+
+
+def recover_curved(method: str, nodes: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, u: np.ndarray,
+                   lam: float, mu: float, E: float, nu: float, plane_strain: bool = False) -> Recovered:
+    """:func:`recover` for curved (isoparametric) P2 elements with node coordinates ``nodes[dim, n]``: the
+    element stresses are evaluated at the element's own nodes (``average``) and integration points
+    (``spr``, the ZZ indicator) through the curved mapping and extrapolated linearly from them to the
+    element's nodes (``average``). L2 projection is for straight sides only."""
+    from mechverify.fea import assembly as asm
+    from mechverify.fea import isoparametric as iso
+
+    if method not in METHODS:
+        raise InputError(f"recovery must be one of {METHODS}, got {method!r}")
+    if method == "projection":
+        raise InputError("recovery='projection' is for straight-sided elements; use 'spr' or 'average' on a "
+                         "curved mesh")
+    dim = nodes.shape[0]
+    n = nodes.shape[1]
+    bary = sample_bary(dim)
+    eps_q, xq, det = iso.strain(nodes, element_dofs, u, bary[:, 1:].T)
+    ipv = _voigt(asm.hooke(eps_q, lam, mu))
+    # each element's stress extrapolated linearly from its integration points to its corners (mid-side
+    # nodes: the mean of their edge's ends), as CalculiX does: the values at the integration points are
+    # the accurate ones, the curved element's own field at its vertices is not
+    corner = np.einsum("aq,eqm->eam", np.linalg.inv(bary).T, ipv)  # bary[q, a]: ip q = Σ_a bary[q,a] corner a
+    nodal = extrapolate_average(corner, element_dofs, n)
+    if method == "spr":
+        nodal = patch_recovery(nodes, t, element_dofs, xq, ipv, n, nodal, 2, True)
+    full = (lambda v: v) if dim == 3 else (lambda v: _plane_full(v, nu, plane_strain))
+    w = det * (1.0 / bary.shape[0]) * (0.5 if dim == 2 else 1.0 / 6.0)  # e, q: the order-2 rule's weights
+    eta_e, rel = zz_indicator(nodes, t, element_dofs, full(nodal), bary, full(ipv), w,
+                              np.ones(element_dofs.shape[1]), E, nu)
+    return Recovered(nodal, xq, ipv, eta_e, rel)

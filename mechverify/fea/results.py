@@ -83,7 +83,7 @@ class FieldResults:
     notes: tuple[str, ...] = ()
     regions: tuple[Any, ...] = ()  # RegionReport per load and support (mechverify.fea.loads)
     warnings: tuple[str, ...] = ()  # e.g. a load region that caught less than the named geometry
-    recovery: str = "projection"  # how sigma was recovered at the nodes
+    recovery: str = ""  # how sigma was recovered at the nodes (mechverify.fea.recovery.METHODS)
     elements: np.ndarray | None = None  # [e, nb] P2 node indices (vertices first), for stress_at
     ip_points: np.ndarray | None = None  # [e, q, 3] m, order-2 integration points (CalculiX order)
     ip_sigma: np.ndarray | None = None  # [e, q, 3, 3] Pa at those points (unsmoothed)
