@@ -11,6 +11,7 @@ import design_parameters
 import fea_vs_calculix
 import report_generation
 import startup
+import studies
 
 
 def main() -> None:
@@ -18,6 +19,7 @@ def main() -> None:
     report_generation.main([])
     startup.main([])
     design_parameters.main([])
+    studies.main([])
 
 
 if __name__ == "__main__":

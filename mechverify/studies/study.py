@@ -152,6 +152,16 @@ class StudyResult:
             out[c] = sorted(ranks, key=lambda t: -abs(t[1]))
         return out
 
+    def changing_checks(self) -> list[str]:
+        """Checks whose u·SF changes over the valid samples, by their highest u·SF (highest first)."""
+        out = []
+        for c in self.checks:
+            v = self.fu(c)
+            v = v[~np.isnan(v)]
+            if v.size and np.ptp(np.where(np.isinf(v), 1e300, v)) > 0:
+                out.append((float(np.max(v)), c))
+        return [c for _, c in sorted(out, key=lambda t: -t[0])]
+
     def most_influential(self) -> str | None:
         r = self.sensitivity().get("governing") or []
         return r[0][0] if r else (self.names[0] if self.names else None)
@@ -235,13 +245,17 @@ class StudyResult:
                 for c, v in sens.items():
                     lines.append(f"  {c:42s} " + ", ".join(f"{n} {r:+.3f}" for n, r in v))
         else:
-            lines.append("  ".join(f"{n:>22s}" for n in self.names) + f"  {'governing':40s} {'u·SF':>8s} verdict")
+            shown = self.changing_checks()[:3]
+            lines.append("  ".join(n for n in self.names) + "  " + "  ".join(shown) + "  governing (u·SF)  verdict")
             for s in self.samples:
-                ins = "  ".join(f"{s['inputs'][n]:22.6g}" for n in self.names)
+                ins = "  ".join(f"{s['inputs'][n]:>{len(n)}.6g}" for n in self.names)
                 if s["status"] == "ok":
-                    lines.append(f"{ins}  {s['governing']:40s} {_num(s['max_fu']):>8s} {s['verdict']}")
+                    fus = "  ".join(f"{_num(s['checks'].get(c, {}).get('fu')):>{len(c)}s}" for c in shown)
+                    lines.append(f"{ins}  {fus}  {s['governing']} ({_num(s['max_fu'])})  {s['verdict']}")
                 else:
                     lines.append(f"{ins}  invalid: {s['message'].splitlines()[-1].strip()[:80]}")
+            if shown:
+                lines.append("(u·SF of the checks that change over the sweep, highest first)")
         for s in self.errors[:5]:
             lines.append(f"sample {s['index']} invalid: {s['message'].splitlines()[-1].strip()[:100]}")
         return "\n".join(lines)

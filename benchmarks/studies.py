@@ -1,0 +1,117 @@
+"""Study throughput on the lead-screw lift (issue 19): samples per second per core, and Dask's overhead.
+
+Measured: a warm ``verify()`` of the lift (same design object, repeated), one study sample
+(``Design.with_overrides`` + ``verify``, what a worker does), a Monte Carlo study on the local
+process pool (one worker per core) and the same study on a Dask ``LocalCluster`` with as many
+single-threaded worker processes. Dask overhead per sample = (t_dask - t_pool) / n. Also the cost
+of a unit conversion by string (``q.to("kN")``) against a parsed unit, the share the issue names.
+Target (issue 19): >= 200 samples/s per core. On a shared machine the wall-clock rates depend on the
+load; the CPU seconds per sample (this process's for the serial runs, the reaped worker processes'
+for the pool and the cluster) do not, and are printed too.
+"""
+
+from __future__ import annotations
+
+import json
+import resource
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+LIFT = ROOT / "examples" / "lead_screw_lift" / "design.toml"
+OUT = ROOT / "benchmarks" / "results" / "studies.json"
+VARY = {"components.lift.mass": "normal:15 kg:1 kg", "parameters.lifted_load": "uniform:300 N:400 N",
+        "profiles.raise.acceleration": "triangular:0.05 m/s^2:0.1 m/s^2:0.2 m/s^2"}
+
+
+def _children_cpu() -> float:
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+def _cpu_per_call(f, n: int) -> float:
+    t0 = time.process_time()
+    for _ in range(n):
+        f()
+    return (time.process_time() - t0) / n
+
+
+def _per_call(f, n: int, repeat: int = 3) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        for _ in range(n):
+            f()
+        best = min(best, (time.perf_counter() - t0) / n)
+    return best
+
+
+def _load() -> float:
+    import os
+
+    return os.getloadavg()[0]
+
+
+def main(argv: list[str]) -> dict:
+    from mechverify.design import load
+    from mechverify.studies import Study, dask_executor
+    from mechverify.studies.execution import default_workers
+    from mechverify.units import Q, ureg
+
+    n = int(argv[0]) if argv else 400
+    cores = default_workers()
+    d = load(LIFT)
+    d.verify()
+    warm = _per_call(d.verify, 20)
+    one = lambda: d.with_overrides({"components.lift.mass": "15.0 kg"}).verify()  # noqa: E731
+    sample = _per_call(one, 20)
+    sample_cpu = _cpu_per_call(one, 40)
+    q, unit = Q(1234.0, "N"), ureg.Unit("kN")
+    to_str = _per_call(lambda: q.to("kN"), 2000)
+    to_unit = _per_call(lambda: q.to(unit), 2000)
+
+    study = Study(LIFT, vary=VARY, samples=n, seed=1)
+    Study(LIFT, vary=VARY, samples=2 * cores, seed=1).run(workers=cores)  # warm the OS caches
+    c0, t0 = _children_cpu(), time.perf_counter()
+    pool = study.run(workers=cores)
+    t_pool, cpu_pool = time.perf_counter() - t0, _children_cpu() - c0
+    row = {"samples": n, "cores": cores, "warm_verify_ms": warm * 1e3, "sample_ms": sample * 1e3,
+           "serial_samples_per_s": 1 / sample,
+           "sample_cpu_ms": sample_cpu * 1e3, "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_s": t_pool,
+           "pool_samples_per_s_per_core": n / t_pool / cores, "load_average": _load(),
+           "to_string_unit_us": to_str * 1e6, "to_parsed_unit_us": to_unit * 1e6, "target_per_core": 200}
+    try:
+        from distributed import LocalCluster
+    except ImportError:
+        row["dask"] = "not installed (pip install 'mechverify[cluster]')"
+    else:
+        c0 = _children_cpu()
+        with LocalCluster(n_workers=cores, threads_per_worker=1, processes=True, dashboard_address=None) as cl:
+            with dask_executor(cl.scheduler_address, timeout=30) as ex:
+                Study(LIFT, vary=VARY, samples=2 * cores, seed=1).run(ex)  # workers import mechverify
+                t0 = time.perf_counter()
+                dask = study.run(ex)
+                t_dask = time.perf_counter() - t0
+        cpu_dask = _children_cpu() - c0  # includes the workers' start-up and the warm-up study
+        row["dask_worker_cpu_s_total"] = cpu_dask
+        row.update({"dask_s": t_dask, "dask_samples_per_s_per_core": n / t_dask / cores,
+                    "dask_overhead_ms_per_sample": (t_dask - t_pool) / n * 1e3,
+                    "dask_equals_pool": dask.to_json() == pool.to_json()})
+    OUT.parent.mkdir(parents=True, exist_ok=True)
+    OUT.write_text(json.dumps(row, indent=1) + "\n")
+    print(f"lift: warm verify {warm * 1e3:.1f} ms, one sample (override + verify) {sample * 1e3:.1f} ms "
+          f"= {1 / sample:.0f} samples/s on one core (target 200)")
+    print(f"  CPU per sample: {sample_cpu * 1e3:.1f} ms in this process = {1 / sample_cpu:.0f} samples per CPU-second")
+    print(f"process pool, {cores} workers, {n} samples: {t_pool:.2f} s = {row['pool_samples_per_s_per_core']:.1f} "
+          f"samples/s per core (wall; load average {_load():.1f}); worker CPU {cpu_pool / n * 1e3:.1f} ms per sample")
+    if "dask_s" in row:
+        print(f"Dask LocalCluster, {cores} workers: {row['dask_s']:.2f} s = {row['dask_samples_per_s_per_core']:.1f} "
+              f"samples/s per core; overhead {row['dask_overhead_ms_per_sample']:+.2f} ms per sample against the "
+              f"pool; same result: {row['dask_equals_pool']}")
+    print(f"unit conversion: q.to('kN') {to_str * 1e6:.1f} us, with a parsed unit {to_unit * 1e6:.1f} us")
+    return row
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

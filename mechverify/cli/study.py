@@ -1,0 +1,101 @@
+"""``mechverify study``: a sweep or a Monte Carlo study of a design, locally or on a Dask cluster."""
+
+from __future__ import annotations
+
+import argparse
+import os
+from pathlib import Path
+
+from mechverify.cli._common import write
+
+ORDER = 41
+
+
+def add_parser(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("study", help="sweep or Monte Carlo study of a design (local cores or a Dask cluster)",
+                       description="Vary parameters of DESIGN (key paths of the file) and verify every sample. "
+                                   "A sweep: every --vary NAME=START:STOP:N (full factorial). Monte Carlo: every "
+                                   "--vary NAME=normal:MEAN:SD | uniform:LO:HI | triangular:LO:MODE:HI with "
+                                   "--samples N. Bare numbers take the unit of the file's value. A sample that is "
+                                   "invalid is recorded with its message. Exit 0 when the study ran, 2 on invalid "
+                                   "input or an unreachable scheduler.")
+    p.add_argument("design", type=Path, metavar="DESIGN", help="design file (TOML)")
+    p.add_argument("--vary", action="append", required=True, metavar="NAME=SPEC",
+                   help="a parameter and its range or distribution (repeat for several)")
+    p.add_argument("--samples", "-n", type=int, metavar="N", help="Monte Carlo samples")
+    p.add_argument("--method", default="lhs", choices=("lhs", "sobol", "random"),
+                   help="Monte Carlo sampling: Latin hypercube (default), scrambled Sobol, pseudo-random")
+    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    p.add_argument("--workers", type=int, metavar="N", help="local worker processes (default: one per core)")
+    p.add_argument("--serial", action="store_true", help="run in this process (no worker processes)")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on the Dask cluster at tcp://host:8786 (default: $DASK_SCHEDULER_ADDRESS if set)")
+    p.add_argument("--timeout", type=float, default=10.0, metavar="S",
+                   help="seconds to wait for the scheduler (default 10)")
+    p.add_argument("--batch-size", type=int, metavar="N", help="samples per task (default: about 4 tasks a worker)")
+    p.add_argument("--json", dest="json_out", type=Path, metavar="PATH", help="write every sample as JSON")
+    p.add_argument("--csv", type=Path, metavar="PATH", help="write every sample as CSV")
+    p.add_argument("--report", type=Path, metavar="PATH", help="write the study report (.html or .pdf)")
+    p.add_argument("--reproduce", type=int, metavar="I",
+                   help="write sample I as a design file (--out) instead of running the study")
+    p.add_argument("--out", type=Path, metavar="PATH", help="the design file --reproduce writes")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    p.add_argument("--quiet", "-q", action="store_true", help="print only the summary line")
+    p.add_argument("--allow-outside-includes", action=argparse.BooleanOptionalAction, default=False,
+                   help="allow includes outside the design's folder (default: refused)")
+    p.set_defaults(run=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from mechverify.cli import Invalid
+    from mechverify.fileio import check_output_paths
+
+    if args.report is not None and args.report.suffix.lower() not in (".html", ".htm", ".pdf"):
+        raise Invalid(f"--report: expected a .html or .pdf file name, got {str(args.report)!r}")
+    for opt, path, ext in (("--json", args.json_out, ".json"), ("--csv", args.csv, ".csv")):
+        if path is not None and path.suffix.lower() != ext:
+            raise Invalid(f"{opt}: expected a {ext} file name, got {str(path)!r}")
+    if args.reproduce is not None and args.out is None:
+        raise Invalid("--reproduce: give the design file to write with --out PATH")
+    if args.out is not None and args.reproduce is None:
+        raise Invalid("--out: only with --reproduce I")
+    scheduler = args.scheduler or os.environ.get("DASK_SCHEDULER_ADDRESS") or None
+    if scheduler and args.serial:
+        raise Invalid("--serial and --scheduler: choose one")
+    outputs = {"--json": args.json_out, "--csv": args.csv, "--report": args.report, "--out": args.out}
+    check_output_paths(outputs, [args.design])
+
+    from mechverify.cli._common import load_designs
+    from mechverify.cli._console import console
+    from mechverify.studies import Study
+
+    (design,) = load_designs([args.design], args.allow_outside_includes)
+    study = Study(design, vary=args.vary, samples=args.samples, method=args.method, seed=args.seed,
+                  batch_size=args.batch_size)
+    out = console()
+    if args.reproduce is not None:
+        if not 0 <= args.reproduce < study.n_samples:
+            raise Invalid(f"--reproduce: sample {args.reproduce} does not exist (0..{study.n_samples - 1})")
+        path = study.reproduce(args.reproduce, args.out)
+        out.print(f"sample {args.reproduce} written to {path}; check it with: mechverify check {path}",
+                  markup=False, highlight=False, soft_wrap=True)
+        return 0
+    progress = not args.no_progress
+    if scheduler:
+        from mechverify.studies import dask_executor
+
+        with dask_executor(scheduler, timeout=args.timeout) as executor:
+            result = study.run(executor, progress=progress)
+    else:
+        result = study.run("serial" if args.serial else None, workers=args.workers, progress=progress)
+    text = result.summary()
+    out.print(text.splitlines()[0] if args.quiet else text, markup=False, highlight=False, soft_wrap=True)
+    if args.json_out:
+        write(args.json_out, result.to_json() + "\n")
+    if args.csv:
+        write(args.csv, result.to_csv())
+    if args.report:
+        from mechverify.reports.study import write_study_report
+
+        write_study_report(result, args.report)
+    return 0
