@@ -3,6 +3,8 @@
 A block that cannot run in a test (it runs ``make``, needs network access, ...) is preceded by an
 explicit ``<!-- skip-test: reason -->`` comment; every other block runs:
 
+- a ``python`` or ``sh`` block that reads ``design.toml`` finds there the nearest ```toml block above it in
+  the same document that holds a ``[design]`` table (the document's own example);
 - a ``python`` block in a fresh interpreter of this virtual environment, in a temporary folder holding
   a copy of ``examples/`` (blocks of one file run separately: each must stand on its own);
 - a ``sh`` block line by line (comments stripped, ``\\`` continuations joined) with bash in a temporary
@@ -29,25 +31,30 @@ FENCE = re.compile(r"^```(\w+)[^\n]*\n(.*?)^```\s*$", re.S | re.M)
 SKIP = re.compile(r"<!--\s*skip-test:\s*(.+?)\s*-->\s*$")
 
 
-def blocks(path: Path) -> list[tuple[str, int, str, str | None]]:
-    """(language, line number, code, skip reason) of every fenced block of ``path``."""
+def blocks(path: Path) -> list[tuple[str, int, str, str | None, str | None]]:
+    """(language, line number, code, skip reason, the nearest design-file block above) of every fenced
+    block of ``path``."""
     text = path.read_text(encoding="utf-8")
     out = []
+    design = None
     for m in FENCE.finditer(text):
         before = text[:m.start()].rstrip("\n").splitlines()
         skip = SKIP.search(before[-1]) if before else None
-        out.append((m.group(1), text.count("\n", 0, m.start()) + 1, m.group(2), skip.group(1) if skip else None))
+        out.append((m.group(1), text.count("\n", 0, m.start()) + 1, m.group(2), skip.group(1) if skip else None,
+                    design))
+        if m.group(1) == "toml" and re.search(r"^\[design\]", m.group(2), re.M):
+            design = m.group(2)
     return out
 
 
 def cases(lang: str) -> list:
     params = []
     for doc in DOCS:
-        for kind, line, code, skip in blocks(doc):
+        for kind, line, code, skip, design in blocks(doc):
             if kind != lang:
                 continue
             marks = [pytest.mark.skip(reason=f"skip-test: {skip}")] if skip else []
-            params.append(pytest.param(code, id=f"{doc.relative_to(ROOT)}:{line}", marks=marks))
+            params.append(pytest.param(code, design, id=f"{doc.relative_to(ROOT)}:{line}", marks=marks))
     return params
 
 
@@ -102,8 +109,10 @@ def test_every_doc_has_been_scanned():
     assert sh_commands("a  # x\nb \\\n  c\n# only a comment\n") == ["a", "b c"]
 
 
-@pytest.mark.parametrize("code", cases("python"))
-def test_python_block_runs(code: str, workdir: Path):
+@pytest.mark.parametrize(("code", "design"), cases("python"))
+def test_python_block_runs(code: str, design: str | None, workdir: Path):
+    if design and "design.toml" in code:
+        (workdir / "design.toml").write_text(design, encoding="utf-8")
     script = workdir / "snippet.py"
     script.write_text(code, encoding="utf-8")
     r = subprocess.run([sys.executable, str(script)], cwd=workdir, env=_env(), capture_output=True, text=True,
@@ -111,8 +120,11 @@ def test_python_block_runs(code: str, workdir: Path):
     assert r.returncode == 0, f"the block failed:\n{code}\n--- stderr ---\n{r.stderr[-3000:]}"
 
 
-@pytest.mark.parametrize("code", cases("sh"))
-def test_sh_block_runs(code: str, workdir: Path):
+@pytest.mark.parametrize(("code", "design"), cases("sh"))
+def test_sh_block_runs(code: str, design: str | None, workdir: Path):
+    if design and "design.toml" in code and "init design.toml" not in code:
+        (workdir / "design.toml").write_text(design, encoding="utf-8")
+        commit(workdir)
     for cmd in sh_commands(code):
         r = subprocess.run(["bash", "-c", cmd], cwd=workdir, env=_env(), capture_output=True, text=True,
                            timeout=300)
