@@ -71,11 +71,7 @@ def test_help_starts_without_numpy_pint_rich_or_typer():
     code = ("import sys\nfrom mechverify.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
             "print(sorted(m for m in ('numpy', 'pint', 'rich', 'typer', 'scipy', 'matplotlib') if m in sys.modules))")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=ROOT, timeout=120)
-    heavy = r.stdout.strip().splitlines()[-1]
-    cli_only = [m for m in ("rich", "typer", "scipy", "matplotlib") if m in heavy]
-    assert not cli_only, heavy  # the command modules import nothing heavy at start-up
-    if "numpy" in heavy or "pint" in heavy:  # mechverify/__init__.py (issue 27 makes it lazy)
-        pytest.xfail(f"mechverify/__init__.py still imports {heavy}")
+    assert r.stdout.strip().splitlines()[-1] == "[]", r.stdout + r.stderr
 
 
 def test_usage_errors_and_version(capsys):
