@@ -200,3 +200,17 @@ def _find(node, key):
             if hit is not None:
                 return hit
     return None
+
+
+def test_docs_list_every_motor_data_and_gearhead_data_key():
+    """docs/design-files.md names every key of the inline datasheet tables (from the component classes)."""
+    from dataclasses import fields
+
+    from mechverify.components.gearheads import Gearhead
+    from mechverify.components.motors import _TYPES
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "design-files.md").read_text(encoding="utf-8")
+    for cls in [*_TYPES.values(), Gearhead]:
+        for f in fields(cls):
+            if f.init and f.name != "derived":
+                assert f"`{f.name}`" in text, (cls.__name__, f.name)
