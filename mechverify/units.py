@@ -135,7 +135,7 @@ class PlausibilityWarning(UserWarning):
 def _check_bounds(q: Any, dim: str, name: str, from_text: bool) -> None:
     lo, hi = BOUNDS[dim]
     try:
-        mag = np.abs(np.asarray(q.to(DIMENSIONS[dim][1]).magnitude, dtype=float))
+        mag = np.abs(np.asarray(q.to(_unit(DIMENSIONS[dim][1])).magnitude, dtype=float))
     except (OverflowError, ZeroDivisionError, FloatingPointError):
         raise InputError(f"{name}: {_describe(q)} is outside any physically meaningful range") from None
     if not np.all(np.isfinite(mag)) or np.any(mag > hi) or (from_text and np.any((mag > 0) & (mag < lo))):
@@ -164,7 +164,13 @@ def Q(value: Any, unit: str | None = None) -> pint.Quantity:
         if isinstance(value, str):
             return _parse(value, "value")
         return Quantity(value, "dimensionless")
-    return Quantity(value, unit)
+    return Quantity(value, _unit(unit) if isinstance(unit, str) else unit)
+
+
+@functools.lru_cache(maxsize=1024)
+def _unit(text: str) -> pint.Unit:
+    """A unit string parsed once (pint parses the string on every ``Quantity(value, "mm")`` and ``.to("m")``)."""
+    return ureg.Unit(text)
 
 
 def _parse(text: str, name: str) -> pint.Quantity:
@@ -229,13 +235,13 @@ def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
 def to_si(value: Any, dim: str, name: str = "value") -> Any:
     """The SI magnitude (float or ndarray) of ``value`` after :func:`as_quantity` checks it."""
     q = as_quantity(value, dim, name)
-    mag = q.to(DIMENSIONS[dim][1]).magnitude
+    mag = q.to(_unit(DIMENSIONS[dim][1])).magnitude
     return float(mag) if _is_scalar(mag) else np.asarray(mag, dtype=float)
 
 
 def from_si(value: Any, dim: str) -> pint.Quantity:
     """Wrap an SI magnitude as a quantity in the SI unit of ``dim``."""
-    return Quantity(value, DIMENSIONS[dim][1])
+    return Quantity(value, _unit(DIMENSIONS[dim][1]))
 
 
 def require_positive(value: float, name: str, *, allow_zero: bool = False) -> float:
