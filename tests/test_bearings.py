@@ -61,8 +61,11 @@ def test_static_and_speed_checks():
     b = bearing("6200")
     s = check_bearing_static_safety(b, "3000 N", required_s0=1.0)
     assert s.safety_factor == pytest.approx(2360 / 3000) and s.verdict == "fail"
-    assert check_bearing_speed(b, "20000 rpm").verdict == "pass"
+    # 6200's ratings and speeds are not verified against SKF's table: a warning, so at least WARN
+    r = check_bearing_speed(b, "20000 rpm")
+    assert r.verdict == "warn" and r.warnings == (next(w for w in r.warnings if "data not verified" in w),)
     assert check_bearing_speed(b, "40000 rpm").verdict == "fail"
+    assert check_bearing_speed(bearing("608"), "20000 rpm").verdict == "pass"  # the verified row
     assert check_bearing_speed(bearing("6200-2RS1"), "1000 rpm").warnings
 
 
@@ -94,3 +97,19 @@ def test_bushing_pressure_velocity_pv():
         check_bushing_pv(PlainBushing(d="10 mm", length="10 mm"), "1 N", "1 m/s")
     with pytest.raises(InputError):
         PlainBushing(d="0 mm", length="10 mm")
+
+
+def test_unverified_catalogue_rows_carry_a_warning():
+    """Provenance acts: 20 of the 21 rows are not verified against the SKF table (their `verified = false`);
+    every check of such a bearing warns, naming the row and what is unverified."""
+    from mechverify.components.bearings import bearing_catalogue
+
+    rows = bearing_catalogue()
+    unverified = [b for b in rows if b.unverified]
+    assert (len(rows), len(unverified)) == (21, 20)
+    b = bearing("6001")
+    for r in (check_bearing_life(b, "100 N", "0 N", "1000 rpm", "1000 h"), check_bearing_static_safety(b, "100 N"),
+              check_bearing_speed(b, "1000 rpm")):
+        assert r.verdict == "warn" and any(w.startswith("data not verified against source: bearing 6001")
+                                           for w in r.warnings), r
+    assert not check_bearing_life(bearing("608"), "100 N", "0 N", "1000 rpm", "1000 h").warnings

@@ -24,12 +24,20 @@ ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
 BUSHING = f"{ref('shigley10', 'Sec. 12-15')}; bushing maker's limits"
 
 
+def provenance_warning(b: BallBearing) -> tuple[str, ...]:
+    """The caveat of a catalogue row not verified against its source (empty for a verified row)."""
+    if not b.unverified:
+        return ()
+    return (f"data not verified against source: bearing {b.designation} ({b.unverified}; {b.source})",)
+
+
 def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
     fa = Q(to_si(Fa, "force", "Fa"), "N")
     if fa > b.axial_load_limit:
         return (f"axial load {fmt(fa.to('kN'))} exceeds {fmt(b.axial_load_limit)} recommended for "
-                f"deep groove ball bearing {b.designation} (SKF 17000 EN: 0.25 C0 small/light series, else 0.5 C0)",)
-    return ()
+                f"deep groove ball bearing {b.designation} (SKF 17000 EN: 0.25 C0 small/light series, else 0.5 C0)",
+                *provenance_warning(b))
+    return provenance_warning(b)
 
 
 @check("bearing_life", title="Bearing rating life", sf_kind="bearing",
@@ -97,7 +105,7 @@ def check_bearing_speed(b: BallBearing, speed: Any, *, load_case: str = "") -> C
     return CheckResult(
         check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
         title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
-        notes=tuple(notes), warnings=warnings, load_case=load_case)
+        notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case)
 
 
 def _bushing_inputs(bush: PlainBushing, F: Any, v: Any) -> dict[str, Any]:

@@ -64,6 +64,9 @@ class BallBearing:
     variant: str = "open"  # open, shielded, sealed (contact seals)
     source: str = ""
     aliases: tuple[str, ...] = field(default=(), compare=False)
+    #: what of this row is not verified against its source ("" when the row is verified); the checks
+    #: that use the bearing carry it as a warning
+    unverified: str = ""
 
     def __post_init__(self) -> None:
         for name, dim in (("d", "length"), ("D", "length"), ("B", "length"), ("C", "force"), ("C0", "force"),
@@ -108,6 +111,13 @@ class BallBearing:
                 f"C={fmt(self.C, 'kN')} C0={fmt(self.C0, 'kN')}>")
 
 
+def _unverified(row: dict) -> str:
+    """The row's verification caveat: "" for ``verified = true``, else its note (or a general one)."""
+    if row.get("verified") is True:
+        return ""
+    return row.get("verification") or "catalogue row not checked against the published SKF table"
+
+
 @cache
 def _catalogue() -> dict[str, BallBearing]:
     data = _data()
@@ -119,7 +129,7 @@ def _catalogue() -> dict[str, BallBearing]:
             C=Q(row["C"], "kN"), C0=Q(row["C0"], "kN"), Pu=Q(row["Pu"], "kN"),
             reference_speed=Q(row["reference_speed"], "rpm"), limiting_speed=Q(row["limiting_speed"], "rpm"),
             f0=float(row["f0"]), kr=float(row.get("kr", 0.025)), mass=Q(row["mass"], "kg"), source=src,
-            aliases=tuple(row.get("aliases", ())))
+            aliases=tuple(row.get("aliases", ())), unverified=_unverified(row))
         for key in (b.designation, *b.aliases):
             out[key] = b
     return out
