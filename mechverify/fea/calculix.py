@@ -408,5 +408,5 @@ def run_model(model: Any, ip_stress: bool = False, threads: int = 1, keep: str |
                    threads=threads, keep=keep, element="CPS6" if model.plane == "stress" else "CPE6",
                    thickness=model.thickness)
     mesh = model.mesh
-    return run(mesh.points.T, mesh.basis.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(),
+    return run(model.nodes.T, mesh.basis.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(),
                ip_stress=ip_stress, threads=threads, keep=keep)

@@ -66,6 +66,7 @@ class SolidMesh:
     mesh: MeshTet
     named: Mapping[str, np.ndarray] = field(default_factory=dict)  # name -> sorted vertex tuples [k, 3|2|1]
     measures: Mapping[str, float] = field(default_factory=dict)  # name -> CAD area [m²] / length [m]
+    curved: np.ndarray | None = None  # [3, n] P2 nodes on the CAD geometry (gmsh second order), else None
 
     @cached_property
     def basis(self) -> Basis:
@@ -73,8 +74,9 @@ class SolidMesh:
 
     @property
     def points(self) -> np.ndarray:
-        """Coordinates of the P2 nodes (vertices, then edge midpoints) ``[3, n]`` [m]."""
-        return self.basis.doflocs
+        """Coordinates of the P2 nodes (vertices, then edge mid-side nodes) ``[3, n]`` [m]: on the curved
+        geometry when the mesh has it (:attr:`curved`), else the straight edge midpoints."""
+        return self.basis.doflocs if self.curved is None else self.curved
 
     @property
     def n_nodes(self) -> int:
@@ -172,8 +174,13 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
     index[tags.astype(np.int64)] = np.arange(tags.size)
     _, ntags = gmsh.model.mesh.getElementsByType(4)
-    if ntags.size == 0:
-        raise ModelError("gmsh produced no tetrahedra (is the geometry a closed volume?)")
+    mids = None
+    if ntags.size == 0:  # second-order mesh: 10-node tetrahedra, corners first
+        _, ntags10 = gmsh.model.mesh.getElementsByType(11)
+        if ntags10.size == 0:
+            raise ModelError("gmsh produced no tetrahedra (is the geometry a closed volume?)")
+        conn = index[ntags10.astype(np.int64)].reshape(-1, 10)
+        ntags, mids = ntags10.reshape(-1, 10)[:, :4].ravel(), conn[:, 4:]
     t = index[ntags.astype(np.int64)].reshape(-1, 4).T
     used = np.unique(t)
     remap = np.full(tags.size, -1, dtype=np.int64)
@@ -181,7 +188,32 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
     p = coords[:, used]
     t = remap[t]
     named, measures = physical_groups(gmsh, lambda k: remap[index[k]], (2, 1, 0))
-    return SolidMesh(MeshTet(*contiguous(p, orient(p, t))), named, measures)
+    m = MeshTet(*contiguous(p, orient(p, t)))
+    curved = None
+    if mids is not None:
+        curved = curved_nodes(m, coords, used, index[ntags.astype(np.int64)].reshape(-1, 4), mids)
+    return SolidMesh(m, named, measures, curved)
+
+
+def curved_nodes(m: MeshTet, coords: np.ndarray, used: np.ndarray, corners: np.ndarray,
+                 mids: np.ndarray) -> np.ndarray:
+    """P2 node coordinates ``[3, n]`` of ``m`` (vertices, then scikit-fem's edges) with each edge's node
+    where gmsh's second-order mesh put it; gmsh's mid node of an element edge is matched to the vertex
+    pair whose straight midpoint is nearest (independent of gmsh's local edge numbering)."""
+    pairs = np.array([(0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)])
+    pm = (coords[:, corners[:, pairs[:, 0]]] + coords[:, corners[:, pairs[:, 1]]]) / 2  # 3, e, pair
+    d = np.linalg.norm(coords[:, mids][:, :, :, None] - pm[:, :, None, :], axis=0)  # e, mid, pair
+    which = np.argmin(d, axis=2)
+    rows = np.arange(corners.shape[0])[:, None]
+    a, b = corners[rows, pairs[which, 0]], corners[rows, pairs[which, 1]]
+    n = coords.shape[1]
+    key, first = np.unique((np.minimum(a, b) * n + np.maximum(a, b)).ravel(), return_index=True)
+    e = np.sort(used[m.edges], axis=0)
+    want = e[0] * n + e[1]
+    pos = np.minimum(np.searchsorted(key, want), key.size - 1)
+    if not np.array_equal(key[pos], want):
+        raise ModelError("gmsh's second-order mesh has edges without a mid-side node")
+    return np.hstack([m.p, coords[:, mids.ravel()[first][pos]]])
 
 
 #: Vertices of the linear element of each dimension (point, line, triangle).
@@ -239,6 +271,12 @@ def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size
     f.setAsBackgroundMesh(thr)
 
 
+def second_order(gmsh: Any) -> None:
+    """Raise the current gmsh mesh to second order with the new nodes on the CAD geometry (curved
+    elements, :mod:`mechverify.fea.isoparametric`)."""
+    gmsh.model.mesh.setOrder(2)
+
+
 def gmsh_session(gmsh: Any, mesh_size: float) -> None:
     gmsh.initialize(interruptible=False)
     gmsh.option.setNumber("General.Terminal", 0)
@@ -248,8 +286,9 @@ def gmsh_session(gmsh: Any, mesh_size: float) -> None:
     gmsh.model.add("mechverify")
 
 
-def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> SolidMesh:
-    """A solid round bar along ``axis`` from 0 to ``length``, meshed by gmsh.
+def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z", curved: bool = True) -> SolidMesh:
+    """A solid round bar along ``axis`` from 0 to ``length``, meshed by gmsh; ``curved`` (default) puts the
+    mid-side nodes on the round surface (isoparametric elements).
 
     Named regions: ``start`` and ``end`` (the flat ends) and ``side`` (the curved surface).
     """
@@ -277,17 +316,21 @@ def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z") -> Solid
             gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
         gmsh.model.addPhysicalGroup(3, [vol])
         gmsh.model.mesh.generate(3)
+        if curved:
+            second_order(gmsh)
         return from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()
 
 
-def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_mesh_size: Any = None) -> SolidMesh:
+def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_mesh_size: Any = None,
+                     curved: bool = True) -> SolidMesh:
     """A rectangular block from the origin to ``size`` (x, y, z lengths) with through-holes along z,
     ``holes`` = [((x, y), diameter), ...] (bolt or pin holes; lengths or strings), meshed by gmsh
     with ``hole_mesh_size`` (default mesh_size / 2) at the holes.
 
     Named regions: ``xmin, xmax, ymin, ymax, zmin, zmax`` (faces) and ``hole0``, ``hole1``, ... (walls).
+    With holes and ``curved`` (default) the mid-side nodes lie on the hole walls (isoparametric elements).
     """
     gmsh = import_gmsh()
     L = [to_si(v, "length", f"size[{i}]") for i, v in enumerate(size)]
@@ -333,15 +376,18 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_m
             refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
             gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
         gmsh.model.mesh.generate(3)
+        if curved and hs:
+            second_order(gmsh)
         return from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()
 
 
-def from_step(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
+def from_step(path: str | Path, mesh_size: Any, unit: str = "mm", curved: bool = True) -> SolidMesh:
     """Tetrahedral mesh of the solid(s) in a STEP file (gmsh/OpenCASCADE); ``unit`` is the unit the
     file's lengths are in when it declares none (CAD exports are usually mm). Each CAD face becomes a
-    named region ``face<k>`` (gmsh's face tag)."""
+    named region ``face<k>`` (gmsh's face tag). ``curved`` (default) puts the mid-side nodes on the CAD
+    faces where any face is not a plane (isoparametric elements)."""
     gmsh = import_gmsh()
     path = Path(path)
     if not path.exists():
@@ -362,6 +408,8 @@ def from_step(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
             gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [tag]), f"face{tag}")
         gmsh.model.addPhysicalGroup(3, vols)
         gmsh.model.mesh.generate(3)
+        if curved and any(gmsh.model.getType(2, tag) != "Plane" for _, tag in gmsh.model.getEntities(2)):
+            second_order(gmsh)
         return from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()

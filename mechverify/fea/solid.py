@@ -84,6 +84,7 @@ class SolidModel:
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
+    curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
 
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, SolidMesh):
@@ -97,6 +98,39 @@ class SolidModel:
         for ld in self.loads:
             if not isinstance(ld, Force | Pressure | PinLoad | Traction | Gravity):
                 raise InputError(f"loads: expected Force, Pressure, PinLoad, Traction or Gravity, got {ld!r}")
+        if self.curved and self.mesh.curved is None:
+            raise InputError("curved=True needs a mesh with curved mid-side nodes (a gmsh second-order mesh)")
+
+    @property
+    def is_curved(self) -> bool:
+        """Whether the elements are isoparametric with curved sides (the mesh has them, ``curved`` not False)."""
+        return self.mesh.curved is not None and self.curved is not False
+
+    @property
+    def nodes(self) -> np.ndarray:
+        """Coordinates ``[3, n]`` of the P2 nodes the model uses (curved or straight mid-side nodes)."""
+        return self.mesh.curved if self.is_curved else self.mesh.basis.doflocs
+
+    def _facet_rule(self, fc: Facets) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Curved facets: shape functions ``[6, q]``, points ``[k, q, 3]``, outward normals times area weights
+        ``[k, q, 3]`` and the facet nodes in ElementTriP2 order (vertices, then pairs (0,1), (1,2), (0,2))."""
+        from mechverify.fea import isoparametric as iso
+
+        nodes = self._pair_ordered(fc.nodes)
+        N, x, nw = iso.facet_rule(self.nodes, nodes)
+        sign = np.sign(np.einsum("kqd,kd->k", nw, fc.normal))
+        return N, x, nw * sign[:, None, None], nodes
+
+    def _pair_ordered(self, fnodes: np.ndarray) -> np.ndarray:
+        """Facet nodes ``[k, 6]`` with the mid-edge nodes reordered to the vertex pairs (0,1), (1,2), (0,2)."""
+        P = self.mesh.basis.doflocs  # straight midpoints identify the pairs exactly
+        verts, mids = P[:, fnodes[:, :3]], P[:, fnodes[:, 3:]]
+        pairs = ((0, 1), (1, 2), (0, 2))
+        pm = np.stack([(verts[:, :, i] + verts[:, :, j]) / 2 for i, j in pairs], axis=2)  # 3, k, pair
+        which = np.argmin(np.linalg.norm(mids[:, :, :, None] - pm[:, :, None, :], axis=0), axis=1)  # k, pair->mid
+        out = fnodes.copy()
+        out[:, 3:] = np.take_along_axis(fnodes[:, 3:], which, axis=1)
+        return out
 
     # -- geometry of regions ------------------------------------------------------------------
     @cached_property
@@ -124,7 +158,7 @@ class SolidModel:
             # judged by the facet's vertices: a straight mid-edge node of a curved surface (a hole wall)
             # lies on the chord, inside the true surface
             tol = 1e-6 * self.mesh.size
-            inside = region.contains(self.mesh.points, tol)
+            inside = region.contains(self.nodes, tol)
             sel = np.all(inside[nodes[:, :3]], axis=1)
         if not np.any(sel):
             raise InputError(f"{region.describe()} contains no boundary facet of the mesh")
@@ -144,6 +178,16 @@ class SolidModel:
                 rho = self.material.require("density").m_as("kg/m**3")
                 g = np.array(ld.acceleration if ld.acceleration is not None else (0.0, 0.0, -STANDARD_GRAVITY))
                 ed = self.mesh.basis.element_dofs
+                if self.is_curved:
+                    from mechverify.fea import isoparametric as iso
+
+                    _, W, N, dN = iso.reference(3, 4)
+                    det, _ = iso.geometry(self.nodes, ed, dN)
+                    wN = np.einsum("aq,eq->ae", N, det * W[None, :]) * rho
+                    for i in range(3):
+                        fv[:, i] += np.bincount(ed.ravel(), weights=(wN * g[i]).ravel(), minlength=fv.shape[0])
+                    out.append((None, f))
+                    continue
                 w = np.r_[np.full(4, -1 / 20), np.full(6, 1 / 5)]
                 for i in range(3):
                     fv[:, i] += np.bincount(ed.ravel(), weights=(w[:, None] * measure[None, :] * rho * g[i]).ravel(),
@@ -151,6 +195,20 @@ class SolidModel:
                 out.append((None, f))
                 continue
             fc = self.facets(ld.region)
+            if self.is_curved and not isinstance(ld, PinLoad):
+                N, x, nw, fnodes = self._facet_rule(fc)
+                dA = np.linalg.norm(nw, axis=2)  # k, q
+                if isinstance(ld, Force):
+                    w = dA[:, :, None] * (np.array(ld.vector, float) / dA.sum())[None, None, :]
+                elif isinstance(ld, Traction):
+                    w = dA[:, :, None] * ld.evaluate(x.reshape(-1, 3).T).T.reshape(x.shape)
+                else:
+                    w = -ld.value * nw
+                loc = np.einsum("aq,kqd->kad", N, w)
+                for i in range(3):
+                    fv[:, i] += np.bincount(fnodes.ravel(), weights=loc[:, :, i].ravel(), minlength=fv.shape[0])
+                out.append((Facets(fc.nodes, dA.sum(axis=1), fc.normal), f))
+                continue
             if isinstance(ld, Traction):
                 self._traction_loads(ld, fc, fv)
                 out.append((fc, f))
@@ -175,7 +233,7 @@ class SolidModel:
 
         X, W = get_quadrature(RefTri, 4)
         L = np.vstack([1 - X.sum(axis=0), X])  # 3, q
-        P = self.mesh.points
+        P = self.mesh.basis.doflocs
         verts = P[:, fc.nodes[:, :3]]  # 3(xyz), k, 3(vertex)
         mids = P[:, fc.nodes[:, 3:]]
         # which vertex pair each mid-edge node sits between (straight facets: at the pair's midpoint)
@@ -210,7 +268,7 @@ class SolidModel:
                 out.append(RegionReport(f"{type(ld).__name__} {k + 1}", 0, 0.0, "m**2",
                                         tuple(f.reshape(-1, 3).sum(axis=0)), None, None))
                 continue
-            area = float(fc.area.sum())
+            area = float(fc.area.sum())  # curved facets: the curved area
             expected = ld.expect_area if ld.expect_area is not None else self._known_area(ld.region)
             out.append(RegionReport(name, len(fc.area), area, "m**2", tuple(f.reshape(-1, 3).sum(axis=0)), expected,
                                     compare_measure(name, area, expected, "m**2")))
@@ -291,24 +349,33 @@ class SolidModel:
             t0 = time.perf_counter()
             step(f"assembling {m.nelements} quadratic tetrahedra ({self.mesh.n_dofs} DOF)")
             pattern = asm.block_pattern(b.element_dofs, b.N)
-            K = asm.assemble_blocks(asm.elasticity_blocks(m.p, m.t, lam, mu), pattern, 3)
-            _, measure = asm.barycentric_gradients(m.p, m.t)
+            if self.is_curved:
+                from mechverify.fea import isoparametric as iso
+
+                blocks, measure = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu)
+            else:
+                blocks = asm.elasticity_blocks(m.p, m.t, lam, mu)
+                _, measure = asm.barycentric_gradients(m.p, m.t)
+            K = asm.assemble_blocks(blocks, pattern, 3)
             f = self._load_vector(measure)
             held = self._held()
             timings["assembly"] = time.perf_counter() - t0
             P = p1_prolongation(m.nvertices, m.edges, 3)
-            u, info = solve(K, f, held, self.mesh.points, method=method, progress=step, prolongation=P)
+            u, info = solve(K, f, held, self.nodes, method=method, progress=step, prolongation=P)
             timings["solve"] = info.seconds
             t1 = time.perf_counter()
             step("recovering stresses")
-            rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, measure, pattern)
+            if self.is_curved:
+                rec = rc.recover_curved(recovery, self.nodes, m.t, b.element_dofs, u, lam, mu, E, nu)
+            else:
+                rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, measure, pattern)
             sigma = _tensors(rec.nodal)
             timings["recovery"] = time.perf_counter() - t1
-            reaction, applied = _equilibrium(K, u, f, held, self.mesh.points, 3)
+            reaction, applied = _equilibrium(K, u, f, held, self.nodes, 3)
             reports = self.region_reports(nodal_reactions(K, u, f, held))
         bf, nodes, _, _ = self._boundary
         return FieldResults(
-            kind="solid", points=self.mesh.points.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
+            kind="solid", points=self.nodes.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
             surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
             warnings=tuple(r.warning for r in reports if r.warning), recovery=recovery,
@@ -324,6 +391,11 @@ class SolidModel:
         mat = self.material
         lam, mu = asm.lame(mat.E.m_as("Pa"), mat.nu.m_as(""))
         m, b = self.mesh.mesh, self.mesh.basis
+        if self.is_curved:
+            from mechverify.fea import isoparametric as iso
+
+            eps, _, _ = iso.strain(self.nodes, b.element_dofs, np.asarray(u).ravel(), rc.sample_bary(3)[:, 1:].T)
+            return asm.hooke(eps, lam, mu)
         s = asm.hooke(asm.strain_at_points(m.p, m.t, b.element_dofs, np.asarray(u).ravel()), lam, mu)
         return s[:, asm.natural_point_order(3)]
 

@@ -218,3 +218,39 @@ def le1(h: float, h_d: float | None = None, order: int = 1) -> Benchmark:
                        loads=(Pressure(Named("outer"), "-10 MPa"),))
     return Benchmark("NAFEMS LE1: elliptic membrane, σyy at D", model, (2.0, 0.0), lambda s: s[1, 1], 92.7e6,
                      "NAFEMS TNSB Rev. 3 (1990), LE1: 92.7 MPa")
+
+
+def lame_solid(h: float, order: int = 2, ri: float = 0.02, ro: float = 0.04, length: float = 0.01,
+               p: float = 50e6) -> tuple[Any, float]:
+    """A quarter ring slice (bore ``ri``, outside ``ro``, ``length`` along z) of quadratic tetrahedra with
+    symmetry rollers on x = 0 and y = 0 and both end faces held along z (plane strain), internal pressure
+    ``p`` on the named surface ``bore``: the Lamé solution of :func:`lame_stress` (ref. 2). Returns the
+    :class:`~mechverify.fea.solid.SolidModel` and the exact hoop stress at the bore."""
+    from mechverify.fea import mesh
+    from mechverify.fea.regions import Plane
+    from mechverify.fea.solid import SolidModel
+
+    gmsh = import_gmsh()
+    gmsh_session(gmsh, h)
+    try:
+        occ = gmsh.model.occ
+        outer = occ.addCylinder(0, 0, 0, 0, 0, length, ro)
+        inner = occ.addCylinder(0, 0, 0, 0, 0, length, ri)
+        ring, _ = occ.cut([(3, outer)], [(3, inner)])
+        occ.intersect(ring, [(3, occ.addBox(0, 0, 0, ro, ro, length))])
+        occ.synchronize()
+        cyl = [t for _, t in gmsh.model.getEntities(2) if gmsh.model.getType(2, t) == "Cylinder"]
+        bore = min(cyl, key=lambda t: occ.getMass(2, t))
+        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [bore]), "bore")
+        gmsh.model.addPhysicalGroup(3, [t for _, t in gmsh.model.getEntities(3)])
+        gmsh.model.mesh.generate(3)
+        if order == 2:
+            mesh.second_order(gmsh)
+        m = mesh.from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()
+    model = SolidModel(m, _material(200e9, 0.3),
+                       supports=(Support(Plane(x="0 m"), x=True), Support(Plane(y="0 m"), y=True),
+                                 Support(Plane(z="0 m"), z=True), Support(Plane(z=Q(length, "m")), z=True)),
+                       loads=(Pressure(Named("bore"), Q(p, "Pa")),))
+    return model, p * (ro**2 + ri**2) / (ro**2 - ri**2)

@@ -156,3 +156,33 @@ def test_inverted_curved_element_is_a_named_error(lame_curved):
     broken = mesh2d.NamedMeshTri(m.p, m.t, sort_t=False, curved=bad)
     with pytest.raises(InvertedElementError, match="inverted"):
         PlaneModel(broken, "1 m", curved.material, supports=curved.supports[:1]).solve()
+
+
+def test_curved_tetrahedra_on_the_lame_ring():
+    """The Lamé cylinder as a quarter ring of quadratic tetrahedra (gmsh second order, 812 nodes), plane
+    strain by z-rollers on both ends. Measured on the same mesh: u_r error 0.27 % curved against 1.25 %
+    straight; hoop stress at the bore +0.35 % against +2.6 % (the faceted bore concentrates stress);
+    CalculiX's C3D10 on the same curved nodes agrees to 1e-4."""
+    import shutil
+    from dataclasses import replace
+
+    from mechverify.fea import calculix
+
+    model, hoop = V.lame_solid(0.006)
+    straight = replace(model, curved=False)
+    assert model.is_curved and not straight.is_curved
+    out = {}
+    for name, mdl in (("curved", model), ("straight", straight)):
+        res = mdl.solve()
+        r = np.hypot(res.points[:, 0], res.points[:, 1])
+        u_r = (res.u[:, 0] * res.points[:, 0] + res.u[:, 1] * res.points[:, 1]) / r
+        hoop_fe = res.stress_at([(LAME["ri"], 0.0, 0.005)]).m_as("Pa")[0, 1, 1]  # σyy = σθ on y = 0
+        out[name] = (np.abs(u_r - lame_ur(r)).max() / lame_ur(LAME["ri"]), abs(hoop_fe / hoop - 1), res)
+    assert out["curved"][0] < 0.004 < 0.01 < out["straight"][0]
+    assert out["curved"][1] < 0.01 < out["straight"][1]
+    rep = out["curved"][2].regions[0]
+    assert rep.measure == pytest.approx(np.pi * LAME["ri"] / 2 * 0.01, rel=1e-4)  # CAD area, not faceted
+    if shutil.which("ccx"):
+        ccx = calculix.run_model(model)
+        u = out["curved"][2].u
+        assert np.abs(ccx.displacement - u).max() <= 2e-4 * np.abs(u).max()
