@@ -12,7 +12,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import shapely
@@ -23,9 +23,11 @@ from mechverify.checks.members import deflection_check
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
-from mechverify.fea.results import FieldResults
 from mechverify.references import ref
 from mechverify.units import Q
+
+if TYPE_CHECKING:  # annotations only: importing the checks does not import the FEA layer
+    from mechverify.fea.results import FieldResults
 
 FEA_SOURCE = (f"Kirchhoff plate bending, Morley triangles ({ref('morley1971')}; "
               f"{ref('timoshenko_woinowsky', 'ch. 4')}); verified against {ref('roark8', 'Tables 11.2 and 11.4')}")

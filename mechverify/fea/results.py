@@ -20,15 +20,17 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import pint
 
 from mechverify.errors import InputError
-from mechverify.fea.linsolve import SolveInfo
 from mechverify.materials.material import Material
 from mechverify.units import Q
+
+if TYPE_CHECKING:  # annotations only: results are read without scipy (a fast cold start)
+    from mechverify.fea.linsolve import SolveInfo
 
 
 @dataclass(frozen=True)

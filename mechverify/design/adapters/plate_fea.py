@@ -23,7 +23,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import shapely
@@ -38,9 +38,10 @@ from mechverify.design.adapters.bolts import plate_bolt_outputs
 from mechverify.design.adapters.common import inline_table
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, suggest
-from mechverify.fea.plate import solve_plate
-from mechverify.fea.results import FieldResults
 from mechverify.units import Q, as_quantity, fmt
+
+if TYPE_CHECKING:  # the FEA layer (scipy, scikit-fem) is imported when a plate is solved
+    from mechverify.fea.results import FieldResults
 
 SUPPORT_TYPES = {"fixed": "clamped", "clamped": "clamped", "pinned": "simply_supported",
                  "simply_supported": "simply_supported"}
@@ -66,6 +67,8 @@ class PlateFEA:
         """The plate model and its FEA result of one load case (solved on first use, then cached)."""
         if case not in self.solved:
             model = self.model(loads, case, g)
+            from mechverify.fea.plate import solve_plate
+
             self.solved[case] = (model, solve_plate(model, self.mesh_size, self.hole_mesh_size))
         return self.solved[case]
 
