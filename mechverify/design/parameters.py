@@ -41,6 +41,7 @@ class Trace:
 
     entries: dict[str, tuple[str, Any]] = field(default_factory=dict)
     edges: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key path -> names it reads
+    invalid: set[str] = field(default_factory=set)  # parameters that failed (their error is reported once)
 
     def add(self, path: str, source: str, value: Any, names: tuple[str, ...] = ()) -> None:
         self.entries[path] = (source, value)
@@ -121,7 +122,10 @@ def resolve_parameters(table: Any, add: AddError, trace: Trace) -> dict[str, Any
         for n in sorted(e.names):
             if n in values and n not in exprs:
                 continue
-            if n not in exprs:
+            if n in table and n not in exprs:  # a parameter with its own error
+                add(f"parameters.{name}", f"{e.source!r}: parameter {n!r} is invalid (see parameters.{n})")
+                ok = False
+            elif n not in exprs:
                 known = [k for k in table if k != name]
                 hint = suggest(n, known, 1)
                 add(f"parameters.{name}", f"unknown name {n!r} in {e.source!r}"
@@ -142,6 +146,7 @@ def resolve_parameters(table: Any, add: AddError, trace: Trace) -> dict[str, Any
 
     for name in exprs:
         visit(name, [])
+    trace.invalid = {k for k in table if k not in values}
     return {k: values[k] for k in table if k in values}
 
 
@@ -171,6 +176,8 @@ def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Map
                 raise ExpressionError(f"{e.source!r}: no component {comp!r}"
                                       + (f"; did you mean {hint[0]!r}?" if hint else ""))
         elif n not in params:
+            if n in ctx["trace"].invalid:
+                raise ExpressionError(f"{e.source!r}: parameter {n!r} is invalid (see parameters.{n})")
             raise ExpressionError(f"{e.source!r}: " + unknown_name(n, params, comps))
     if any("." in n for n in e.names):
         return Deferred(e, kind, path, field_name)
