@@ -302,6 +302,10 @@ def test_report_appendix_and_json_show_the_load_path():
     html = render_html([(d, rs)])
     assert "<h3>Parameters</h3>" in html and "Derived values and connections" in html
     assert "<code>lifted_load / g</code>" in html and "load_cases.raise.screw_bearing.axial_force" in html
+    variant = d.with_parameters(lifted_load="420 N")
+    html2 = render_html([(variant, variant.verify())])
+    assert "Overrides of the design file" in html2 and "<code>parameters.lifted_load</code>" in html2
+    assert "Overrides of the design file" not in html
     doc = run_document([(d, rs)])
     notes = [n for r in doc["designs"][0]["results"] for n in r["notes"]]
     assert "derived input (raise): axial_force = 350 N ← lift_screw.support_axial_force" in notes
@@ -361,3 +365,17 @@ def test_a_bearing_takes_its_radial_load_from_the_link_it_carries(tmp_path, end,
     """
     d = load(write(tmp_path, text))
     assert d.data.load_cases["side"]["brg"]["radial_force"].m_as("N") == pytest.approx(factor * 120)
+
+
+def test_a_drive_takes_its_external_force_from_the_screw_it_turns(tmp_path):
+    """docs example + a load case of the drive: external_force = "lift_screw.axial_force" (73.575 N) replaces
+    the drive's own external force in that case (Drive.make_load)."""
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "design-files.md").read_text(encoding="utf-8")
+    text = re.search(r"```toml\n(.*?)```", doc.split("## Parameters, expressions and connections", 1)[1],
+                     re.S).group(1)
+    text += '[load_cases.raise.lift]\nexternal_force = "lift_screw.axial_force"\nmass = "0.5 kg"\n'
+    d = load(write(tmp_path, text))
+    case = d.data.load_cases["raise"]["lift"]
+    assert case["external_force"].m_as("N") == pytest.approx(7.5 * 9.81)
+    load_ = d["lift"].make_load(case)
+    assert load_.external_force.m_as("N") == pytest.approx(73.575) and load_.mass.m_as("kg") == 0.5

@@ -133,6 +133,7 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
         "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
         **_parameters_view(entries),
+        "overrides": [{"key": k, "value": str(v)} for k, v in (getattr(design, "overrides", None) or {}).items()],
     }
 
 
