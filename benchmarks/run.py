@@ -12,6 +12,7 @@ import fea_vs_calculix
 import report_generation
 import startup
 import studies
+import verification
 
 
 def main() -> None:
@@ -20,6 +21,7 @@ def main() -> None:
     startup.main([])
     design_parameters.main([])
     studies.main([])
+    verification.main([])
 
 
 if __name__ == "__main__":
