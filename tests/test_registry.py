@@ -137,3 +137,15 @@ def test_former_design_keys_still_work_with_a_deprecation_note(tmp_path):
     body = rs.get("eye", "member_body_strength")
     assert body.required_sf == 3.0 and not any("Deprecated" in n for n in body.notes)
     assert {r.check for r in rs} >= {"lug_tension", "lug_fracture_beyond", "lug_shear_out", "lug_bearing"}
+
+
+def test_report_lists_the_cited_references(tmp_path):
+    """The report's reference list is built from the bibliography: the sources its checks cite, once each."""
+    from mechverify.reports.render import render_html
+
+    d = _design(tmp_path, "")
+    html = render_html([(d, d.verify())])
+    refs = html[html.index("<h3>References</h3>"):]
+    refs = refs[:refs.index("</ol>")]
+    assert refs.count("Shigley&#39;s Mechanical Engineering Design, 10th ed.") == 1
+    assert "ASME BTH-1-2008" in refs

@@ -42,9 +42,10 @@ from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue.notch import kt_plate_hole
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
+from mechverify.references import ref
 from mechverify.units import fmt, from_si, si_function, to_si
 
-BTH1_SOURCE = "ASME BTH-1-2008, Sec. 3-3.3.1, Eqs. (3-45) to (3-52), Commentary Eq. (C3-2)"
+BTH1_SOURCE = ref("asme_bth1", "Sec. 3-3.3.1, Eqs. (3-45) to (3-52), Commentary Eq. (C3-2)")
 BRITTLE_ELONGATION = 0.05  # elongation at break below which a material is treated as brittle (Shigley Sec. 2-1)
 
 

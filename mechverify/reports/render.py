@@ -19,6 +19,7 @@ from mechverify.errors import InputError
 from mechverify.fileio import atomic_write
 from mechverify.materials import Material
 from mechverify.materials.material import PROPERTY_DIMENSIONS
+from mechverify.references import bibliography, keys_in
 from mechverify.reports.mathtext import formula_html
 from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
 from mechverify.units import fmt
@@ -132,6 +133,7 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
         "results": [views[id(r)] for r in ordered],
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
         "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
+        "references": [c for _, c in bibliography(keys_in("\n".join(r.source for r in rs)))],
         **_parameters_view(entries),
         "overrides": [{"key": k, "value": str(v)} for k, v in (getattr(design, "overrides", None) or {}).items()],
     }
