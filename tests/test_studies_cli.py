@@ -90,3 +90,17 @@ def test_study_unreachable_scheduler_exit_2_within_timeout(capsys, monkeypatch):
     rc = main(["study", str(LIFT), "--vary", "components.lift.mass=10 kg:20 kg:2", "--timeout", "2", "--no-progress"])
     assert rc == 2 and "cannot reach the Dask scheduler at tcp://127.0.0.1:9" in capsys.readouterr().err
     assert time.perf_counter() - t < 15
+
+
+def test_report_histogram_of_a_nearly_constant_check():
+    """u·SF equal up to rounding in every sample (3.149, one sample one ulp higher: matplotlib cannot make
+    8 bins of that range) still gives one bar, not an error."""
+    from mechverify.reports.study import histogram
+    from mechverify.studies import StudyResult
+
+    samples = [{"index": i, "inputs": {"x": float(i)}, "status": "ok", "message": "", "verdict": "fail",
+                "governing": "a.b", "max_fu": 3.149 + (i == 5) * 4.5e-16,
+                "checks": {"a.b": {"u": 1.0, "required_sf": 1.0, "fu": 3.149 + (i == 5) * 4.5e-16, "verdict": "fail"}}}
+               for i in range(64)]
+    res = StudyResult("monte_carlo", "lhs", 0, [{"name": "x", "unit": "", "spec": "", "base": 0.0}], samples, "d")
+    assert histogram(res, "a.b").startswith("data:image/svg+xml;base64,")

@@ -53,7 +53,12 @@ def histogram(result: StudyResult, check: str) -> str:
     v = v[np.isfinite(v)]
     fig, ax = new_figure(4.6, 2.6)
     if v.size:
-        ax.hist(v, bins=min(40, max(5, int(math.sqrt(v.size)))), color="#4c72b0", alpha=0.85)
+        lo, hi = float(np.min(v)), float(np.max(v))
+        if hi - lo <= 1e-9 * max(1.0, abs(hi)):  # (nearly) constant: one bar, not bins narrower than rounding
+            pad = max(0.01 * abs(hi), 1e-3)
+            ax.hist(v, bins=1, range=(lo - pad, hi + pad), color="#4c72b0", alpha=0.85)
+        else:
+            ax.hist(v, bins=min(40, max(5, int(math.sqrt(v.size)))), color="#4c72b0", alpha=0.85)
     ax.axvline(1.0, color="#cf222e", lw=1.5, label="limit u·SF = 1")
     ax.set_xlabel(f"u·SF of {check}")
     ax.set_ylabel("samples")
