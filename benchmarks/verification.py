@@ -40,7 +40,7 @@ from mechverify.units import Q  # noqa: E402
 BEGIN, END = "<!-- verification table: begin (benchmarks/verification.py) -->", "<!-- verification table: end -->"
 
 
-def _ccx_value(model, point, component, n_dofs_dim):
+def _ccx_value(model, point, component):
     """CalculiX's nodal stress (extrapolate-and-average) at the node nearest ``point``, and its run time."""
     if shutil.which("ccx") is None:
         return None, None
@@ -60,8 +60,8 @@ def run_case(name, model, point, component, reference, h):
     variants = [("curved", model), ("straight", replace(model, thickness=Q(model.thickness, "m"), curved=False)
                                     if hasattr(model, "thickness") else replace(model, curved=False))]
     for geom, mdl in variants:
-        row = {"benchmark": name, "h_mm": h * 1e3, "elements": geom, "dofs": int(mdl.basis.N * 2) if hasattr(mdl, "plane")
-               else int(mdl.mesh.n_dofs)}
+        dofs = int(mdl.basis.N * 2) if hasattr(mdl, "plane") else int(mdl.mesh.n_dofs)
+        row = {"benchmark": name, "h_mm": h * 1e3, "elements": geom, "dofs": dofs}
         for rec in ("spr", "average"):
             t0 = time.perf_counter()
             res = mdl.solve(recovery=rec)
@@ -70,7 +70,7 @@ def run_case(name, model, point, component, reference, h):
             row[f"{rec}_MPa"] = v / 1e6
             row[f"{rec}_err_pct"] = 100 * (v / reference - 1)
             row["zz_pct"] = 100 * res.error_estimate
-        v, wall = _ccx_value(mdl, point, component, None)
+        v, wall = _ccx_value(mdl, point, component)
         if v is not None:
             row["ccx_MPa"], row["ccx_err_pct"], row["ccx_time_s"] = v / 1e6, 100 * (v / reference - 1), wall
         rows.append(row)
