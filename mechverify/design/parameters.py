@@ -182,16 +182,16 @@ def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Map
     if any("." in n for n in e.names):
         return Deferred(e, kind, path, field_name)
     v = e.evaluate(params)
-    v = _as_kind(v, kind, e.source)
+    v = _as_kind(v, kind, e.source, len(e._code) > 1)
     ctx["trace"].add(path, e.source, v, tuple(sorted(e.names)))
     return v
 
 
-def _as_kind(v: Any, kind: str, source: str) -> Any:
+def _as_kind(v: Any, kind: str, source: str, computed: bool = True) -> Any:
     if kind in DIMENSIONS:
         q = check_kind(v, kind, source)
-        if len(q.units._units) > 1 and kind not in ("angle", "angular_velocity", "dimensionless"):
-            q = q.to(DIMENSIONS[kind][1])  # N·s²/m -> kg: a derived value in the SI unit of its kind
+        if computed and len(q.units._units) > 1 and kind not in ("angle", "angular_velocity", "dimensionless"):
+            q = q.to(DIMENSIONS[kind][1])  # N·s²/m -> kg: a computed value in the SI unit of its kind
         return q
     q = v if isinstance(v, Quantity) else None
     if q is not None:
@@ -259,7 +259,7 @@ class _Resolver:
                 if "." in n:
                     env[n] = self.value(n, v)
             out = v.expr.evaluate(env)
-            out = _as_kind(out, v.kind, v.expr.source)
+            out = _as_kind(out, v.kind, v.expr.source, len(v.expr._code) > 1)
         except ExpressionError as exc:
             self.failed.add(key)
             self.add(v.path, str(exc))
@@ -359,7 +359,7 @@ def resolve_fields(entry: Any, entries: Mapping[str, Any], params: Mapping[str, 
                     env[n] = check_kind(out.fn(other.obj, None), out.kind, n)
                 except MechverifyError as exc:
                     raise ExpressionError(f"{v.expr.source!r}: {n}: {exc}") from None
-            val = _as_kind(v.expr.evaluate(env), v.kind, v.expr.source)
+            val = _as_kind(v.expr.evaluate(env), v.kind, v.expr.source, len(v.expr._code) > 1)
         except ExpressionError as exc:
             add(v.path, str(exc))
             ok = False
