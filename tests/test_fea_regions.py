@@ -179,3 +179,47 @@ def test_solid_load_partial_area_warns():
     assert rep.measure == pytest.approx(0.02 * 0.02 / 3) and "66.7 % of the expected 200 mm²" in rep.warning
     assert rep.resultant[2] == pytest.approx(-1e6 * 0.02 * 0.02 / 3)
     assert res.regions[1].resultant[2] == pytest.approx(1e6 * 0.02 * 0.02 / 3)
+
+
+def test_traction_field_resultant_and_moment():
+    """A linearly varying traction t_x = 1 MPa (y - c)/c plus a uniform t_z (t_y in 2D) on the end face:
+    resultant and bending moment of the consistent nodal loads equal the integrals by hand
+    (∫ t dA = t_z A; ∫ t_x (y - c) dA = 1 MPa / c · b h³/12)."""
+    from mechverify.fea.loads import Traction
+
+    m = mesh.box(("100 mm", "20 mm", "10 mm"), (5, 2, 2))
+    f3 = lambda x: np.vstack([1e6 * (x[1] - 0.01) / 0.01, 0 * x[0], 0 * x[0] + 2e5])  # noqa: E731
+    model = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Plane(x="0 m")),),
+                             loads=(Traction(Plane(x="100 mm"), f3),))
+    F, P = model.load_vector().reshape(-1, 3), model.mesh.points.T
+    assert F.sum(axis=0) == pytest.approx([0, 0, 2e5 * 2e-4], abs=1e-9)
+    assert (F[:, 0] * (P[:, 1] - 0.01)).sum() == pytest.approx(1e6 / 0.01 * 0.01 * 0.02**3 / 12)
+    f2 = lambda x: np.vstack([1e6 * (x[1] - 0.01) / 0.01, 0 * x[0] + 2e5])  # noqa: E731
+    p = PlaneModel(mesh2d.rectangle(0.1, 0.02, 5, 3), "1 mm", "Structural Steel", supports=(Fixed(Plane(x="0 m")),),
+                   loads=(Traction(Plane(x="100 mm"), f2),))
+    F, P = p.load_vector().reshape(-1, 2), p.basis.doflocs.T
+    assert F.sum(axis=0) == pytest.approx([0, 2e5 * 0.02 * 1e-3], abs=1e-9)
+    assert (F[:, 0] * (P[:, 1] - 0.01)).sum() == pytest.approx(1e6 / 0.01 * 1e-3 * 0.02**3 / 12)
+    with pytest.raises(InputError, match="callable"):
+        Traction(Plane(x="0 m"), "1 MPa")
+    bad = PlaneModel(p.mesh, "1 mm", "Structural Steel", supports=p.supports,
+                     loads=(Traction(Plane(x="100 mm"), lambda x: np.zeros(3)),))
+    with pytest.raises(InputError, match="returned shape"):
+        bad.load_vector()
+
+
+def test_solid_stress_at_and_integration_points():
+    """Uniform tension of a bar: σxx = F/A everywhere (hand calculation), at any point and integration point."""
+    m = mesh.box(("100 mm", "20 mm", "10 mm"), (5, 2, 2))
+    model = solid.SolidModel(m, "Structural Steel",
+                             supports=(Support(Plane(x="0 m"), x=True), Support(Box(("0 m",) * 3, ("0 m",) * 3),
+                                                                                 y=True, z=True),
+                                       Support(Box(("0 m", "20 mm", "0 m"), ("0 m", "20 mm", "0 m")), z=True)),
+                             loads=(Force(Plane(x="100 mm"), ("2000 N", "0 N", "0 N")),))
+    res = model.solve()
+    s = res.stress_at([("50 mm", "10 mm", "5 mm"), (0.0999, 0.0001, 0.0099)]).m_as("MPa")
+    assert s[:, 0, 0] == pytest.approx([10.0, 10.0], rel=1e-6)
+    assert res.integration_point_stress.m_as("MPa")[..., 0, 0] == pytest.approx(10.0, rel=1e-6)
+    assert res.error_estimate < 1e-6  # the exact solution is in the P2 space: nothing to recover
+    with pytest.raises(InputError, match="outside the mesh"):
+        res.stress_at([("150 mm", "0 mm", "0 mm")])

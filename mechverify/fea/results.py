@@ -27,7 +27,7 @@ import pint
 
 from mechverify.errors import InputError
 from mechverify.materials.material import Material
-from mechverify.units import Q
+from mechverify.units import Q, QuantityLike
 
 if TYPE_CHECKING:  # annotations only: results are read without scipy (a fast cold start)
     from mechverify.fea.linsolve import SolveInfo
@@ -134,10 +134,12 @@ class FieldResults:
             raise InputError(f"{self.kind} results carry no integration-point stresses")
         return Q(self.ip_sigma, "Pa")
 
-    def stress_at(self, points: Any) -> pint.Quantity:
+    def stress_at(self, points: QuantityLike) -> pint.Quantity:
         """The recovered stress tensor ``[k, 3, 3]`` at points ``[k, 2|3]`` (lengths: a quantity array or
         strings; plain numbers are metres), interpolated in the element containing each point with the
-        P2 shape functions. A point outside the mesh raises :class:`InputError`."""
+        P2 shape functions. A point outside the mesh raises :class:`InputError`. In curved elements the
+        point is located and interpolated in the straight-sided element of the same vertices (exact at
+        the nodes and on straight faces)."""
         from mechverify.units import to_si
 
         if self.elements is None:
@@ -258,7 +260,7 @@ class FieldResults:
         return Q(np.where(dominant < 0, -self._vm, self._vm), "Pa")
 
     def fatigue_safety_factor(self, criterion: str = "goodman", stress_ratio: float = -1.0,
-                              cycles: float | None = None, endurance: Any = None,
+                              cycles: float | None = None, endurance: QuantityLike | None = None,
                               load_line: str = "proportional") -> pint.Quantity:
         """Nodal fatigue safety factor when the loads cycle between ``stress_ratio`` x this load case and
         the load case itself (R = -1 fully reversed, R = 0 repeated on-off).
