@@ -198,6 +198,16 @@ def test_wilson_interval_hand_calculations():
         wilson_interval(3, 0)
 
 
+def test_spearman_ignores_rounding_noise():
+    """A u·SF constant up to one ulp has no rank correlation with anything (None), a monotonic one has +-1."""
+    from mechverify.studies import spearman
+
+    x = [1.0, 2.0, 3.0, 4.0, 5.0]
+    assert spearman(x, [0.6353, 0.6353000000000001, 0.6353, 0.6353000000000001, 0.6353]) is None
+    assert spearman(x, [v**3 for v in x]) == pytest.approx(1.0)
+    assert spearman(x, [-math.exp(v) for v in x]) == pytest.approx(-1.0)
+
+
 def test_monte_carlo_statistics_sensitivity_and_reproduce(tmp_path):
     vary = {"components.lift.mass": "normal:14.5 kg:0.5 kg",
             "load_cases.raise.lift_screw.axial_force": "uniform:300 N:400 N"}

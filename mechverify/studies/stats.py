@@ -42,13 +42,18 @@ def wilson_interval(k: int, n: int, z: float = Z95) -> tuple[float, float]:
 
 
 def spearman(x: Sequence[float], y: Sequence[float]) -> float | None:
-    """Spearman rank correlation of x and y [3]; None when either is constant or fewer than 3 pairs."""
+    """Spearman rank correlation of x and y [3]; None when either is constant (to 1e-9 relative: values that
+    differ by rounding only would rank by their rounding noise) or fewer than 3 pairs."""
     from scipy import stats
 
     xa, ya = np.asarray(x, float), np.asarray(y, float)
     ok = np.isfinite(xa) & np.isfinite(ya)
     xa, ya = xa[ok], ya[ok]
-    if len(xa) < 3 or np.ptp(xa) == 0 or np.ptp(ya) == 0:
+
+    def constant(v: np.ndarray) -> bool:
+        return bool(np.ptp(v) <= 1e-9 * max(float(np.max(np.abs(v))), 1e-300))
+
+    if len(xa) < 3 or constant(xa) or constant(ya):
         return None
     rho = float(stats.spearmanr(xa, ya).statistic)
     return None if math.isnan(rho) else rho
