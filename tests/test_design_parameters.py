@@ -308,6 +308,8 @@ def test_report_appendix_and_json_show_the_load_path():
     assert "Overrides of the design file" not in html
     doc = run_document([(d, rs)])
     notes = [n for r in doc["designs"][0]["results"] for n in r["notes"]]
+    assert doc["designs"][0]["parameters"]["lifted_load"] == "350 newton"
+    assert doc["designs"][0]["derived"]["components.lift.mass"]["expression"] == "lifted_load / g"
     assert "derived input (raise): axial_force = 350 N ← lift_screw.support_axial_force" in notes
 
 

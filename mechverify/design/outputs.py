@@ -37,9 +37,26 @@ def run_document(designs: list[tuple[Any, ResultSet]]) -> dict[str, Any]:
     return {
         "mechverify": __version__,
         "verdict": worst.value,
-        "designs": [{"name": d.name, "revision": d.revision, "files": file_hashes(d.files), **rs.to_dict()}
-                    for d, rs in designs],
+        "designs": [{"name": d.name, "revision": d.revision, "files": file_hashes(d.files), **_load_path(d),
+                     **rs.to_dict()} for d, rs in designs],
     }
+
+
+def _load_path(design: Any) -> dict[str, Any]:
+    """Parameters, derived values (key path -> value and expression) and overrides, when the design has any."""
+    from mechverify.design.expressions import format_value
+
+    data = getattr(design, "data", None)
+    trace = getattr(data, "trace", None)
+    out: dict[str, Any] = {}
+    if getattr(data, "parameters", None):
+        out["parameters"] = {k: format_value(v) for k, v in data.parameters.items()}
+    if trace is not None and trace.entries:
+        out["derived"] = {p: {"value": format_value(v), "expression": src, "reads": list(trace.edges.get(p, ()))}
+                          for p, (src, v) in trace.entries.items()}
+    if getattr(design, "overrides", None):
+        out["overrides"] = {k: str(v) for k, v in design.overrides.items()}
+    return out
 
 
 def to_json(doc: dict[str, Any]) -> str:
