@@ -34,7 +34,7 @@ import pint
 from mechverify.errors import InputError, UnknownNameError, ValidityError
 from mechverify.materials import database as _materials
 from mechverify.materials.material import Material
-from mechverify.units import Q, fmt, from_si, si_function, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, si_function, to_si
 
 _DATA = Path(__file__).parent / "data" / "bearings_ball.toml"
 
@@ -205,7 +205,7 @@ def iso281_factors(relative_axial_load: float) -> tuple[float, float]:
     return float(np.interp(x, t["f0_fa_c0"], t["e"])), float(np.interp(x, t["f0_fa_c0"], t["Y"]))
 
 
-def equivalent_dynamic_load(Fr: Any, Fa: Any, C0: Any, f0: float) -> EquivalentLoad:
+def equivalent_dynamic_load(Fr: QuantityLike, Fa: QuantityLike, C0: QuantityLike, f0: float) -> EquivalentLoad:
     """P = X·Fr + Y·Fa for a single-row radial ball bearing ([1] Sec. 6.2, Table 3).
 
     Fa/Fr <= e: X = 1, Y = 0; Fa/Fr > e: X = 0.56, Y(f0·Fa/C0). Fr, Fa [N], C0 [N], f0 [-].
@@ -223,7 +223,7 @@ def equivalent_dynamic_load(Fr: Any, Fa: Any, C0: Any, f0: float) -> EquivalentL
     return EquivalentLoad(P=Q(X * fr + Y * fa, "N"), X=X, Y=Y, e=e, relative_axial_load=rel)
 
 
-def basic_rating_life(C: Any, P: Any, exponent: float = 3.0) -> pint.Quantity:
+def basic_rating_life(C: QuantityLike, P: QuantityLike, exponent: float = 3.0) -> pint.Quantity:
     """L10 = (C/P)^p ·10⁶ revolutions; p = 3 for ball, 10/3 for roller bearings ([1] Eq. (1))."""
     c, p = to_si(C, "force", "C"), to_si(P, "force", "P")
     if c <= 0 or p < 0:
@@ -233,7 +233,7 @@ def basic_rating_life(C: Any, P: Any, exponent: float = 3.0) -> pint.Quantity:
     return Q((c / p) ** exponent * 1e6, "revolution")
 
 
-def life_hours(revolutions: Any, speed: Any) -> pint.Quantity:
+def life_hours(revolutions: Any, speed: QuantityLike) -> pint.Quantity:
     """Life in hours L_h = L / (60·n) with L in revolutions and n in r/min."""
     n = to_si(speed, "angular_velocity", "speed")
     if n <= 0:
@@ -258,7 +258,7 @@ def reliability_factor(reliability: float) -> float:
     return float(np.interp(math.log(math.log(1 / R)), x[::-1], np.asarray(t["a1"])[::-1]))
 
 
-def equivalent_static_load(Fr: Any, Fa: Any = "0 N") -> pint.Quantity:
+def equivalent_static_load(Fr: QuantityLike, Fa: QuantityLike = "0 N") -> pint.Quantity:
     """P0 = X0·Fr + Y0·Fa (X0 = 0.6, Y0 = 0.5), and P0 = Fr if that is larger ([2] Sec. 6.2.2)."""
     fr, fa = to_si(Fr, "force", "Fr"), to_si(Fa, "force", "Fa")
     if fr < 0 or fa < 0:
@@ -321,7 +321,7 @@ class PlainBushing:
     def pressure(self, F: Any) -> pint.Quantity:
         return bushing_pressure(F, self.d, self.length).to("MPa")
 
-    def pv(self, F: Any, v: Any) -> pint.Quantity:
+    def pv(self, F: Any, v: QuantityLike) -> pint.Quantity:
         """p·v [MPa·m/s] for radial load F and sliding speed v."""
         return (self.pressure(F) * Q(to_si(v, "velocity", "v"), "m/s")).to("MPa*m/s")
 

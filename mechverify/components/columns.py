@@ -34,7 +34,7 @@ from typing import Any
 import pint
 
 from mechverify.errors import InputError, UnknownNameError, ValidityError
-from mechverify.units import from_si, require_positive, to_si
+from mechverify.units import QuantityLike, from_si, require_positive, to_si
 
 _DATA = Path(__file__).parent / "data" / "column_end_conditions.toml"
 BASES = ("recommended", "theoretical", "conservative")
@@ -116,7 +116,7 @@ def _check(E: float, I: float, length: float, A: float | None = None, Sy: float 
         require_positive(Sy, "Sy")
 
 
-def radius_of_gyration(A: Any, I: Any) -> pint.Quantity:
+def radius_of_gyration(A: QuantityLike, I: QuantityLike) -> pint.Quantity:
     """``k = sqrt(I/A)`` [m]."""
     a, i = to_si(A, "area", "A"), to_si(I, "second_moment", "I")
     require_positive(a, "A")
@@ -124,14 +124,14 @@ def radius_of_gyration(A: Any, I: Any) -> pint.Quantity:
     return from_si(math.sqrt(i / a), "length")
 
 
-def slenderness_ratio(length: Any, A: Any, I: Any) -> pint.Quantity:
+def slenderness_ratio(length: QuantityLike, A: Any, I: Any) -> pint.Quantity:
     """``l/k`` [-] with the actual (not effective) length, as Shigley uses it with ``C``."""
     L = to_si(length, "length", "length")
     require_positive(L, "length")
     return from_si(L / radius_of_gyration(A, I).m_as("m"), "dimensionless")
 
 
-def euler_critical_load(E: Any, I: Any, length: Any, end: str | float = "pinned-pinned",
+def euler_critical_load(E: QuantityLike, I: QuantityLike, length: QuantityLike, end: str | float = "pinned-pinned",
                         basis: str = "recommended") -> pint.Quantity:
     """Euler critical load ``P_cr = C pi^2 E I / l^2`` [N] (Shigley 10th ed., Eq. (4-42)).
 
@@ -144,7 +144,7 @@ def euler_critical_load(E: Any, I: Any, length: Any, end: str | float = "pinned-
     return from_si(C * math.pi**2 * e * i / L**2, "force")
 
 
-def transition_slenderness(E: Any, Sy: Any, end: str | float = "pinned-pinned",
+def transition_slenderness(E: QuantityLike, Sy: QuantityLike, end: str | float = "pinned-pinned",
                            basis: str = "recommended") -> pint.Quantity:
     """``(l/k)_1 = sqrt(2 pi^2 C E / S_y)`` [-] (Shigley 10th ed., Eq. (4-45)).
 
@@ -157,7 +157,8 @@ def transition_slenderness(E: Any, Sy: Any, end: str | float = "pinned-pinned",
     return from_si(math.sqrt(2 * math.pi**2 * C * e / sy), "dimensionless")
 
 
-def johnson_critical_load(E: Any, Sy: Any, A: Any, I: Any, length: Any, end: str | float = "pinned-pinned",
+def johnson_critical_load(E: QuantityLike, Sy: QuantityLike, A: QuantityLike, I: QuantityLike, length: QuantityLike,
+                          end: str | float = "pinned-pinned",
                           basis: str = "recommended") -> pint.Quantity:
     """J. B. Johnson critical load ``P_cr = A [S_y - (S_y l/(2 pi k))^2 / (C E)]`` [N] (Shigley 10th ed., Eq. (4-46)).
 
@@ -192,7 +193,8 @@ class ColumnBuckling:
     source: str = SOURCE
 
 
-def column_buckling(E: Any, Sy: Any, A: Any, I: Any, length: Any, end: str | float = "pinned-pinned",
+def column_buckling(E: QuantityLike, Sy: QuantityLike, A: QuantityLike, I: QuantityLike, length: QuantityLike,
+                    end: str | float = "pinned-pinned",
                     basis: str = "recommended") -> ColumnBuckling:
     """Critical load choosing Euler (``l/k > (l/k)_1``) or Johnson (``l/k <= (l/k)_1``), with the details.
 

@@ -29,12 +29,12 @@ import pint
 from mechverify.components.catalogue import Catalogue
 from mechverify.components.transmissions import _Reduction, effort_to_input
 from mechverify.errors import InputError
-from mechverify.units import fmt, from_si, to_si
+from mechverify.units import QuantityLike, fmt, from_si, to_si
 
 _DATA = Path(__file__).parent / "data" / "gearheads.toml"
 
 
-def parse_ratio(value: Any, name: str = "ratio") -> float:
+def parse_ratio(value: QuantityLike, name: str = "ratio") -> float:
     """A reduction ratio from a number, a fraction string ('531441/625') or 'a:b' ('850:1')."""
     if isinstance(value, bool):
         raise InputError(f"{name}: expected a number or a fraction string, got {value!r}")

@@ -36,7 +36,7 @@ import pint
 
 from mechverify.components.catalogue import Catalogue
 from mechverify.errors import InputError, UnitError
-from mechverify.units import Q, as_quantity, fmt, from_si, to_si
+from mechverify.units import Q, QuantityLike, as_quantity, fmt, from_si, to_si
 
 _GRADIENT_UNIT = "rad/s/(N*m)"  # SI unit of the speed-torque gradient
 _DATA = Path(__file__).parent / "data" / "motors.toml"
@@ -253,7 +253,8 @@ class DCMotor:
         return (_si(self.terminal_resistance) * self.current_si(torque)
                 + np.abs(np.asarray(speed, float)) / _si(self.speed_constant))
 
-    def torque_speed_curve(self, voltage: Any = None, n: int = 2) -> tuple[pint.Quantity, pint.Quantity]:
+    def torque_speed_curve(self, voltage: QuantityLike | None = None,
+                           n: int = 2) -> tuple[pint.Quantity, pint.Quantity]:
         U = None if voltage is None else to_si(voltage, "voltage", "voltage")
         w0 = float(self.available_torque_si(0.0, U)) * _si(self.speed_torque_gradient)
         w = np.linspace(0.0, w0, max(n, 2))

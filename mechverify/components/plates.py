@@ -39,7 +39,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 from mechverify.errors import InputError, UnknownNameError, ValidityError
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
-from mechverify.units import Q, from_si, to_si
+from mechverify.units import Q, QuantityLike, from_si, to_si
 
 HOLE_SEGMENTS = 48  # sides of the polygon that stands for a circular hole in `Plate.region`
 G0 = 9.80665  # standard gravity [m/s^2]
@@ -399,9 +399,9 @@ class PointLoad:
     """A concentrated load at ``point``: force along z (``force``, +z up) and optional moments about x and y."""
 
     point: Any
-    force: Any = "0 N"
-    moment_x: Any = "0 N*m"
-    moment_y: Any = "0 N*m"
+    force: QuantityLike = "0 N"
+    moment_x: QuantityLike = "0 N*m"
+    moment_y: QuantityLike = "0 N*m"
     unit: str | None = None
 
     def __post_init__(self) -> None:
@@ -424,8 +424,8 @@ class PatchLoad:
     center: Any = None
     size: Any = None
     polygon: Any = None
-    force: Any = None
-    pressure: Any = None
+    force: QuantityLike | None = None
+    pressure: QuantityLike | None = None
     unit: str | None = None
 
     def __post_init__(self) -> None:
@@ -465,7 +465,7 @@ class PatchLoad:
 class PressureLoad:
     """A uniform pressure over the whole plate (its net area), along +z."""
 
-    pressure: Any
+    pressure: QuantityLike
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "pressure", to_si(self.pressure, "pressure", "PressureLoad.pressure"))
@@ -476,7 +476,7 @@ class SelfWeight:
     """The plate's weight, ``factor`` x g x density x thickness per unit area, along ``direction`` (-1: -z)."""
 
     factor: float = 1.0
-    g: Any = "9.80665 m/s**2"
+    g: QuantityLike = "9.80665 m/s**2"
     direction: int = -1
 
     def __post_init__(self) -> None:
@@ -632,7 +632,8 @@ def _plate_warnings(y: float, t: float, span: float) -> tuple[str, ...]:
     return tuple(out)
 
 
-def roark_rectangular_plate(a: Any, b: Any, thickness: Any, E: Any, load: Any, edges: str = "simply_supported",
+def roark_rectangular_plate(a: QuantityLike, b: QuantityLike, thickness: QuantityLike, E: QuantityLike,
+                            load: QuantityLike, edges: str = "simply_supported",
                             loading: str = "uniform", load_radius: Any = "0 m") -> PlateEstimate:
     """Rectangular plate, all four edges simply supported or clamped (Roark 8th ed., Table 11.4, nu = 0.3).
 
@@ -688,7 +689,8 @@ def roark_rectangular_plate(a: Any, b: Any, thickness: Any, E: Any, load: Any, e
                          warnings=_plate_warnings(y, t, B))
 
 
-def roark_circular_plate(radius: Any, thickness: Any, E: Any, nu: Any, load: Any, edges: str = "simply_supported",
+def roark_circular_plate(radius: QuantityLike, thickness: QuantityLike, E: QuantityLike, nu: QuantityLike,
+                         load: QuantityLike, edges: str = "simply_supported",
                          loading: str = "uniform", load_radius: Any = "0 m") -> PlateEstimate:
     """Solid circular plate of outer ``radius`` a, edge simply supported or clamped (Roark 8th ed., Table 11.2).
 

@@ -41,7 +41,7 @@ from mechverify.components.columns import ColumnBuckling, column_buckling, end_c
 from mechverify.components.threads import Thread, thread
 from mechverify.errors import InputError, ValidityError
 from mechverify.materials.material import Material
-from mechverify.units import as_quantity, fmt, from_si, require_positive, si_function, to_si
+from mechverify.units import QuantityLike, as_quantity, fmt, from_si, require_positive, si_function, to_si
 
 _DATA = Path(__file__).parent / "data" / "power_screw_factors.toml"
 
@@ -304,7 +304,7 @@ class ScrewStresses:
     von_mises: pint.Quantity  # sqrt(sigma^2 + 3 tau^2)
 
 
-def screw_stresses(F: Any, torque: Any, d3: Any) -> ScrewStresses:
+def screw_stresses(F: QuantityLike, torque: QuantityLike, d3: QuantityLike) -> ScrewStresses:
     """Axial ``4F/(pi d3^2)``, torsional ``16T/(pi d3^3)`` and von Mises ``sqrt(s^2 + 3 t^2)`` stress [Pa]
     at the minor diameter (Shigley 9th ed., Sec. 8-2, p. 418, and Eq. 5-15)."""
     f, t, d = to_si(F, "force", "F"), to_si(torque, "torque", "torque"), to_si(d3, "length", "d3")
@@ -367,7 +367,8 @@ def shaft_inertia(density: float, diameter: float, length: float) -> float:
     return math.pi * density * length * diameter**4 / 32
 
 
-def critical_speed(E: Any, density: Any, d3: Any, length: Any, end: str = "pinned-pinned") -> pint.Quantity:
+def critical_speed(E: QuantityLike, density: QuantityLike, d3: QuantityLike, length: QuantityLike,
+                   end: str = "pinned-pinned") -> pint.Quantity:
     """First whirling (critical) speed of a screw shaft [rad/s; ``.to("rpm")``].
 
     ``w_c = lambda_1^2 / L^2 sqrt(E I / (rho A))`` with ``I/A = d3^2 / 16`` (the root section), the
@@ -408,7 +409,7 @@ class Nut:
     """
 
     material: Material | str | None = None
-    length: Any = None
+    length: QuantityLike | None = None
     engaged_threads: float | None = None
     mu_min: Any = None
     mu_max: Any = None
@@ -495,7 +496,7 @@ class LeadScrew:
     """
 
     thread: Thread | str
-    length: Any
+    length: QuantityLike
     material: Material | str | None = None
     end_supports: str = "fixed-pinned"
     name: str = "lead screw"
@@ -536,13 +537,15 @@ class LeadScrew:
         """Friction coefficient below which the load back-drives the screw."""
         return from_si(self_locking_mu.si(*self._g()), "dimensionless")
 
-    def raise_torque(self, F: Any, mu: Any, collar_mu: Any = 0.0, collar_diameter: Any = None) -> pint.Quantity:
+    def raise_torque(self, F: QuantityLike, mu: Any, collar_mu: Any = 0.0,
+                     collar_diameter: Any = None) -> pint.Quantity:
         """Torque to drive against the load [N m]."""
         d2, l, a = self._g()
         mc, dc = self._collar(collar_mu, collar_diameter)
         return from_si(raise_torque.si(to_si(F, "force", "F"), d2, l, _dimensionless(mu, "mu"), a, mc, dc), "torque")
 
-    def lower_torque(self, F: Any, mu: Any, collar_mu: Any = 0.0, collar_diameter: Any = None) -> pint.Quantity:
+    def lower_torque(self, F: QuantityLike, mu: Any, collar_mu: Any = 0.0,
+                     collar_diameter: Any = None) -> pint.Quantity:
         """Torque to drive with the load [N m]; negative: the load back-drives the screw."""
         d2, l, a = self._g()
         mc, dc = self._collar(collar_mu, collar_diameter)
@@ -565,7 +568,8 @@ class LeadScrew:
         mc, dc = self._collar(collar_mu, collar_diameter)
         return from_si(backdrive_efficiency.si(d2, l, _dimensionless(mu, "mu"), a, mc, dc), "dimensionless")
 
-    def axial_force(self, torque: Any, mu: Any, collar_mu: Any = 0.0, collar_diameter: Any = None) -> pint.Quantity:
+    def axial_force(self, torque: QuantityLike, mu: Any, collar_mu: Any = 0.0,
+                    collar_diameter: Any = None) -> pint.Quantity:
         """Axial force a drive torque produces against the load [N]."""
         d2, l, a = self._g()
         mc, dc = self._collar(collar_mu, collar_diameter)

@@ -24,7 +24,7 @@ import pint
 from mechverify.errors import InputError, ValidityError
 from mechverify.materials import database as _materials
 from mechverify.materials.material import Material
-from mechverify.units import Q, as_quantity, fmt, from_si, si_function, to_si
+from mechverify.units import Q, QuantityLike, as_quantity, fmt, from_si, si_function, to_si
 
 
 # --------------------------------------------------------------------------------------------- data
@@ -84,7 +84,7 @@ def wire_tensile_strength(material: Material, d: Any) -> pint.Quantity:
 
 
 # ----------------------------------------------------------------------------------------- geometry
-def coil_geometry(name: str, d: Any, D: Any = None, OD: Any = None, ID: Any = None) -> tuple[float, float]:
+def coil_geometry(name: str, d: QuantityLike, D: Any = None, OD: Any = None, ID: Any = None) -> tuple[float, float]:
     """Wire and mean coil diameter [m] from ``d`` and exactly one of ``D`` (mean), ``OD`` or ``ID``.
 
     ``D = OD - d = ID + d``; raises :class:`InputError` for a non-positive wire or ``D <= d``.
@@ -191,7 +191,7 @@ def mean_diameter_for_rate(k: float, d: float, Na: float, G: float) -> float:
     return D
 
 
-def active_coils_for_rate(k: Any, d: Any, D: Any, G: Any) -> float:
+def active_coils_for_rate(k: QuantityLike, d: QuantityLike, D: QuantityLike, G: QuantityLike) -> float:
     """Sizing: active coils Nₐ = Gd⁴/(8D³k) [-] for rate k (Shigley [1] Eq. (10-9) inverted)."""
     ks, ds, Ds, Gs = (to_si(k, "force_per_length", "k"), to_si(d, "length", "d"), to_si(D, "length", "D"),
                       to_si(G, "pressure", "G"))
@@ -219,7 +219,7 @@ def surge_frequency(k: float, m: float, one_end_free: bool = False) -> float:
 
 
 # --------------------------------------------------------------------------------------- strengths
-def torsional_ultimate_strength(Sut: Any) -> pint.Quantity:
+def torsional_ultimate_strength(Sut: QuantityLike) -> pint.Quantity:
     """Torsional modulus of rupture of spring wire S_su = 0.67·S_ut [Pa]. Shigley [1] Sec. 10-9, Eq. (10-30)."""
     return from_si(0.67 * to_si(Sut, "pressure", "Sut"), "pressure").to("MPa")
 
@@ -234,7 +234,7 @@ class ZimmerliData:
     source: str
 
 
-def zimmerli(peened: bool = False, d: Any = None) -> ZimmerliData:
+def zimmerli(peened: bool = False, d: QuantityLike | None = None) -> ZimmerliData:
     """Zimmerli data: unpeened S_sa = 241 MPa (35 ksi), S_sm = 379 MPa (55 ksi); peened 398 / 534 MPa.
 
     With ``d`` given, wires of 10 mm and over raise :class:`ValidityError` (the data were measured on

@@ -24,7 +24,7 @@ from mechverify.components import spring_formulas as sf
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue import criteria
 from mechverify.materials.material import Material
-from mechverify.units import Q, fmt, from_si, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
 
 SHIGLEY = "Shigley's Mechanical Engineering Design, 10th ed. (2015)"
 
@@ -107,7 +107,7 @@ class CompressionSpring:
     """
 
     d: Any
-    L0: Any
+    L0: QuantityLike
     D: Any = None
     OD: Any = None
     ID: Any = None
@@ -115,10 +115,10 @@ class CompressionSpring:
     Nt: float | None = None
     end: str | EndType = EndType.SQUARED_GROUND
     material: str | Material = "A228"
-    G: Any = None
-    E: Any = None
-    Sut: Any = None
-    density: Any = None
+    G: QuantityLike | None = None
+    E: QuantityLike | None = None
+    Sut: QuantityLike | None = None
+    density: QuantityLike | None = None
     spring_class: str | None = None
     set_removed: bool = False
     peened: bool = False
@@ -249,13 +249,13 @@ class CompressionSpring:
         """Force to close the spring solid, k(L₀ - Lₛ)."""
         return from_si(self._k() * (self._si["L0"] - self._si["Ls"]), "force")
 
-    def force(self, deflection: Any) -> pint.Quantity:
+    def force(self, deflection: QuantityLike) -> pint.Quantity:
         """F = k·y for a deflection y up to the solid deflection."""
         y = to_si(deflection, "length", "deflection")
         self._within_travel(y)
         return from_si(self._k() * y, "force")
 
-    def deflection(self, force: Any) -> pint.Quantity:
+    def deflection(self, force: QuantityLike) -> pint.Quantity:
         """y = F/k; forces beyond the solid force raise :class:`InputError` (the spring would be solid)."""
         F = to_si(force, "force", "force")
         y = F / self._k()
@@ -274,7 +274,7 @@ class CompressionSpring:
                              f"{fmt(self.solid_deflection)} (solid force {fmt(self.solid_force, 'N')})")
 
     # ------------------------------------------------------------------------------ stresses
-    def shear_stress(self, force: Any, factor: str = "auto") -> pint.Quantity:
+    def shear_stress(self, force: QuantityLike, factor: str = "auto") -> pint.Quantity:
         """τ = K·8FD/(πd³) (Shigley [1] Eqs. (10-2), (10-7)).
 
         ``factor``: ``"auto"`` (K_s with set removed, else K_B), ``"bergstrasser"``, ``"wahl"``,
@@ -362,7 +362,7 @@ class CompressionSpring:
         return sf.surge_frequency(self.rate, self.active_mass, one_end_free=one_end_free).to("Hz")
 
     # ------------------------------------------------------------------------------ fatigue
-    def fatigue(self, F_min: Any, F_max: Any, criterion: str = "gerber") -> SpringFatigue:
+    def fatigue(self, F_min: QuantityLike, F_max: QuantityLike, criterion: str = "gerber") -> SpringFatigue:
         """Infinite-life fatigue of the spring cycling between ``F_min`` and ``F_max`` (both compressive, >= 0).
 
         Shigley [1] Secs. 10-9, 10-10: τₐ = K_B·8FₐD/(πd³), τₘ = K_B·8FₘD/(πd³) with Fₐ = (F_max - F_min)/2,
@@ -404,7 +404,7 @@ class CompressionSpring:
                              zimmerli=z)
 
     # ------------------------------------------------------------------------------ as a column
-    def rigidities(self, length: Any = None) -> SpringRigidities:
+    def rigidities(self, length: QuantityLike | None = None) -> SpringRigidities:
         """Timoshenko's equivalent-column rigidities at working length L (default: the free length).
 
         Unloaded ([3] Sec. 2.18), with n active coils, R = D/2, I = πd⁴/64:
@@ -450,7 +450,7 @@ class CompressionSpring:
                 f"k={fmt(self.rate, 'N/mm')}>")
 
 
-def en13906_min_gap_sum(d: Any, D: Any, n: float, dynamic: bool = False) -> pint.Quantity:
+def en13906_min_gap_sum(d: QuantityLike, D: QuantityLike, n: float, dynamic: bool = False) -> pint.Quantity:
     """Minimum sum of gaps between active coils at the largest working length, EN 13906-1 [2] Sec. 10.
 
     Sₐ = (0.0015·D²/d + 0.1·d)·n for cold-coiled springs under static loading (D, d in mm);

@@ -18,7 +18,7 @@ import pint
 from mechverify.components import spring_formulas as sf
 from mechverify.errors import InputError
 from mechverify.materials.material import Material
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 
 def hook_bending_factor(C1: float) -> float:
@@ -49,9 +49,9 @@ class ExtensionSpring:
     D: Any = None
     OD: Any = None
     ID: Any = None
-    Fi: Any = "0 N"
-    r1: Any = None
-    r2: Any = None
+    Fi: QuantityLike = "0 N"
+    r1: QuantityLike | None = None
+    r2: QuantityLike | None = None
     material: str | Material = "A228"
     G: Any = None
     E: Any = None
@@ -102,14 +102,14 @@ class ExtensionSpring:
     def initial_tension(self) -> pint.Quantity:
         return Q(self._si["Fi"], "N")
 
-    def force(self, extension: Any) -> pint.Quantity:
+    def force(self, extension: QuantityLike) -> pint.Quantity:
         """F = F_i + k·y."""
         y = to_si(extension, "length", "extension")
         if y < 0:
             raise InputError(f"{self.name}: extension must be >= 0")
         return Q(self._si["Fi"] + self.rate.m_as("N/m") * y, "N")
 
-    def extension(self, force: Any) -> pint.Quantity:
+    def extension(self, force: QuantityLike) -> pint.Quantity:
         """y = (F - F_i)/k; zero below the initial tension."""
         F = to_si(force, "force", "force")
         return Q(max(F - self._si["Fi"], 0.0) / self.rate.m_as("N/m"), "m").to("mm")
@@ -120,7 +120,7 @@ class ExtensionSpring:
         KB = sf.bergstrasser_factor(self.index)
         return sf.helical_shear_stress(force, Q(s["D"], "m"), Q(s["d"], "m"), KB).to("MPa")
 
-    def hook_bending_stress(self, force: Any) -> pint.Quantity:
+    def hook_bending_stress(self, force: QuantityLike) -> pint.Quantity:
         """Bending + tension at hook section A: σ_A = F[(K)_A·16D/(πd³) + 4/(πd²)], C₁ = 2r₁/d ([1] Sec. 10-11)."""
         s = self._si
         F = to_si(force, "force", "force")

@@ -19,7 +19,7 @@ import pint
 from mechverify.components import spring_formulas as sf
 from mechverify.errors import InputError
 from mechverify.materials.material import Material
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 
 @dataclass(frozen=True)
@@ -32,8 +32,8 @@ class TorsionSpring:
     D: Any = None
     OD: Any = None
     ID: Any = None
-    l1: Any = "0 mm"
-    l2: Any = "0 mm"
+    l1: QuantityLike = "0 mm"
+    l2: QuantityLike = "0 mm"
     material: str | Material = "A228"
     E: Any = None
     Sut: Any = None
@@ -75,12 +75,12 @@ class TorsionSpring:
             k = s["d"] ** 4 * s["E"] / (64 * s["D"] * self.active_turns)
         return Q(k, "N*m/rad")
 
-    def angle(self, moment: Any, friction_corrected: bool = True) -> pint.Quantity:
+    def angle(self, moment: QuantityLike, friction_corrected: bool = True) -> pint.Quantity:
         """Angular deflection θ = M/k."""
         M = to_si(moment, "torque", "moment")
         return Q(M / self.rate(friction_corrected).m_as("N*m/rad"), "rad").to("deg")
 
-    def bending_stress(self, moment: Any, fibre: str = "inner") -> pint.Quantity:
+    def bending_stress(self, moment: QuantityLike, fibre: str = "inner") -> pint.Quantity:
         """σ = K·32M/(πd³) with K_i (inner fibre, default) or K_o ([1] Sec. 10-12)."""
         M = to_si(moment, "torque", "moment")
         Ki, Ko = sf.torsion_spring_factors(self.index)

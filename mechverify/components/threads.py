@@ -43,7 +43,7 @@ from typing import Any
 import pint
 
 from mechverify.errors import InputError, UnknownNameError, ValidityError
-from mechverify.units import Q, as_quantity, fmt, to_si
+from mechverify.units import Q, QuantityLike, as_quantity, fmt, to_si
 
 _DATA = Path(__file__).parent / "data"
 FORMS = ("trapezoidal", "acme", "square", "generic", "ball")
@@ -125,7 +125,7 @@ class Thread:
         """Second moment of area at the minor diameter, ``pi d3^4 / 64`` [m^4]."""
         return (math.pi * self.d3**4 / 64).to("mm**4")
 
-    def tooth_width(self, diameter: Any, part: str = "screw") -> pint.Quantity:
+    def tooth_width(self, diameter: QuantityLike, part: str = "screw") -> pint.Quantity:
         """Axial width of one thread tooth at ``diameter`` [m].
 
         The tooth is ``P/2`` wide at the pitch diameter and widens by ``2 tan(alpha)`` per unit of
@@ -203,7 +203,7 @@ def _acme_table() -> dict[str, Any]:
             "source": _expand(data["profile"]["source"], refs), "shigley": refs["shigley"]}
 
 
-def crest_clearance(pitch: Any) -> pint.Quantity:
+def crest_clearance(pitch: QuantityLike) -> pint.Quantity:
     """ISO 2904 crest clearance ``ac`` for a trapezoidal pitch [m] (ValidityError outside the table)."""
     P = to_si(pitch, "length", "pitch") * 1e3
     for lo, hi, ac in _trapezoidal_table()["clearance"]:
@@ -231,7 +231,7 @@ def known_designations() -> list[str]:
 
 
 # ---------------------------------------------------------------------- builders
-def trapezoidal(d: Any, pitch: Any, starts: int = 1, left_hand: bool = False) -> Thread:
+def trapezoidal(d: QuantityLike, pitch: QuantityLike, starts: int = 1, left_hand: bool = False) -> Thread:
     """ISO metric trapezoidal thread ``Tr d x (starts*P) P P`` from its table (ISO 2902/2904).
 
     ``d`` and ``pitch`` must be a tabulated pair (ISO 2902 plus a few catalogue sizes); an
@@ -264,7 +264,8 @@ def _tr_name(d: float, P: float, starts: int, lh: bool) -> str:
     return base + ("LH" if lh else "")
 
 
-def acme(d: Any, tpi: float | None = None, *, pitch: Any = None, starts: int = 1, left_hand: bool = False) -> Thread:
+def acme(d: QuantityLike, tpi: float | None = None, *, pitch: QuantityLike | None = None, starts: int = 1,
+         left_hand: bool = False) -> Thread:
     """General-purpose Acme thread (ASME B1.5) by nominal diameter and threads per inch (or ``pitch``).
 
     Basic dimensions (Shigley 9th ed., Fig. 8-3c): depth ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``.
@@ -294,7 +295,7 @@ def acme(d: Any, tpi: float | None = None, *, pitch: Any = None, starts: int = 1
                   notes=("basic dimensions; the design minor diameter is smaller by the root clearance",))
 
 
-def square(d: Any, pitch: Any, starts: int = 1) -> Thread:
+def square(d: QuantityLike, pitch: QuantityLike, starts: int = 1) -> Thread:
     """Square thread (Shigley 9th ed., Fig. 8-3a): depth = width = ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``."""
     dm, P = to_si(d, "length", "d") * 1e3, to_si(pitch, "length", "pitch") * 1e3
     if dm <= 0 or P <= 0 or P >= dm:
@@ -305,8 +306,9 @@ def square(d: Any, pitch: Any, starts: int = 1) -> Thread:
                   D4=Q(dm, "mm"), H1=Q(P / 2, "mm"), standard="square", source="Shigley 9th ed., Fig. 8-3a")
 
 
-def generic(lead: Any, starts: int, d2: Any, flank_angle: Any = "15 deg", *, d: Any = None, d3: Any = None,
-            H1: Any = None, designation: str = "") -> Thread:
+def generic(lead: QuantityLike, starts: int, d2: QuantityLike, flank_angle: QuantityLike = "15 deg", *,
+            d: QuantityLike | None = None, d3: QuantityLike | None = None,
+            H1: QuantityLike | None = None, designation: str = "") -> Thread:
     """A catalogue lead screw known by lead, starts and pitch diameter (e.g. an 8 mm-lead 4-start Ø8).
 
     Missing dimensions follow the ISO 2904 proportions of the pitch ``P = lead/starts``:
@@ -345,7 +347,8 @@ def generic(lead: Any, starts: int, d2: Any, flank_angle: Any = "15 deg", *, d: 
                   H1=Q(H1_mm, "mm"), standard="catalogue", source="user data", notes=tuple(notes))
 
 
-def ball_screw(d0: Any, lead: Any, root_diameter: Any, starts: int = 1, designation: str = "") -> Thread:
+def ball_screw(d0: QuantityLike, lead: QuantityLike, root_diameter: QuantityLike, starts: int = 1,
+               designation: str = "") -> Thread:
     """Ball screw: nominal (ball-circle) diameter ``d0``, lead, root (minor) diameter from the catalogue.
 
     The flank angle is zero: the efficiency of a ball screw is ``(1 - mu tan(lambda)) / (1 + mu/tan(lambda))``

@@ -35,7 +35,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError
-from mechverify.units import Q, from_si, to_si
+from mechverify.units import Q, QuantityLike, from_si, to_si
 
 MOTORING, HOLDING = 1, 0
 
@@ -104,28 +104,28 @@ class _Reduction:
                            _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency",
                                 allow_negative=negative_backdrive))
 
-    def input_speed(self, output_speed: Any) -> pint.Quantity:
+    def input_speed(self, output_speed: QuantityLike) -> pint.Quantity:
         """ω_in = r·v_out."""
         v = to_si(output_speed, "velocity" if self.output_kind == "length" else "angular_velocity", "output_speed")
         return from_si(self.ratio_si * v, "angular_velocity")
 
-    def output_speed(self, input_speed: Any) -> pint.Quantity:
+    def output_speed(self, input_speed: QuantityLike) -> pint.Quantity:
         w = to_si(input_speed, "angular_velocity", "input_speed")
         return from_si(w / self.ratio_si, "velocity" if self.output_kind == "length" else "angular_velocity")
 
-    def reflected_inertia(self, load: Any) -> pint.Quantity:
+    def reflected_inertia(self, load: QuantityLike) -> pint.Quantity:
         """Load mass (linear output) or inertia (rotary output) seen at the input: J = m/r² [1]."""
         dim = "mass" if self.output_kind == "length" else "inertia"
         return from_si(to_si(load, dim, "load") / self.ratio_si**2, "inertia")
 
-    def input_torque(self, output_effort: Any, *, backdriven: bool = False) -> pint.Quantity:
+    def input_torque(self, output_effort: QuantityLike, *, backdriven: bool = False) -> pint.Quantity:
         """Input torque for an output force/torque, motoring (default) or back-driven [1]."""
         dim = "force" if self.output_kind == "length" else "torque"
         F = to_si(output_effort, dim, "output_effort")
         d = -1.0 if backdriven else 1.0
         return from_si(float(self.input_effort_si(np.array([F]), np.array([d * (1 if F >= 0 else -1)]))[0]), "torque")
 
-    def output_effort(self, input_torque: Any) -> pint.Quantity:
+    def output_effort(self, input_torque: QuantityLike) -> pint.Quantity:
         """Force/torque delivered at the output for a motoring input torque: F = T·r·η."""
         T = to_si(input_torque, "torque", "input_torque")
         return from_si(T * self.ratio_si * self.efficiency_forward,
@@ -171,7 +171,7 @@ class BeltDrive(_Reduction):
     output_kind: str = field(default="angle", init=False)
 
     def __post_init__(self) -> None:
-        def size(v: Any, what: str) -> float:
+        def size(v: QuantityLike, what: str) -> float:
             if isinstance(v, int | float) and not isinstance(v, bool):
                 if v <= 0:
                     raise InputError(f"{self.name}.{what}: tooth count must be positive")
@@ -203,7 +203,7 @@ class Drum(_Reduction):
     (or pulleys') own inertia at the input shaft.
     """
 
-    diameter: Any
+    diameter: QuantityLike
     efficiency: Any = 1.0
     backdrive_efficiency: Any = None
     inertia: Any = None
@@ -239,7 +239,7 @@ class ScrewDrive(_Reduction):
     """
 
     screw: Any
-    mu: Any
+    mu: QuantityLike
     inertia: Any = None
     collar_mu: Any = 0.0
     collar_diameter: Any = None

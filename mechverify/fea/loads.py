@@ -25,7 +25,7 @@ from typing import Any
 
 from mechverify.errors import InputError
 from mechverify.fea.regions import MEASURE_RTOL, Region
-from mechverify.units import to_si
+from mechverify.units import QuantityLike, to_si
 
 
 @dataclass(frozen=True)
@@ -200,7 +200,7 @@ class Pressure:
     expect_area: float | None
     expect_length: float | None
 
-    def __init__(self, region: Region, value: Any, *, expect_area: Any = None, expect_length: Any = None):
+    def __init__(self, region: Region, value: QuantityLike, *, expect_area: Any = None, expect_length: Any = None):
         object.__setattr__(self, "region", _region(region, "Pressure"))
         object.__setattr__(self, "value", to_si(value, "pressure", "Pressure.value"))
         a, ln = _expect(expect_area, expect_length)

@@ -22,7 +22,7 @@ import numpy as np
 from skfem import Basis, ElementTetP2, MeshTet
 
 from mechverify.errors import InputError, ModelError
-from mechverify.units import Q, to_si
+from mechverify.units import Q, QuantityLike, to_si
 
 GMSH_HINT = ("this needs the gmsh mesher, an optional extra (GPL-licensed): "
              "pip install 'mechverify[mesh]'  (or: pip install gmsh)")
@@ -286,7 +286,8 @@ def gmsh_session(gmsh: Any, mesh_size: float) -> None:
     gmsh.model.add("mechverify")
 
 
-def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z", curved: bool = True) -> SolidMesh:
+def cylinder(radius: QuantityLike, length: QuantityLike, mesh_size: QuantityLike, axis: str = "z",
+             curved: bool = True) -> SolidMesh:
     """A solid round bar along ``axis`` from 0 to ``length``, meshed by gmsh; ``curved`` (default) puts the
     mid-side nodes on the round surface (isoparametric elements).
 
@@ -323,7 +324,8 @@ def cylinder(radius: Any, length: Any, mesh_size: Any, axis: str = "z", curved: 
         gmsh.finalize()
 
 
-def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_mesh_size: Any = None,
+def block_with_holes(size: Any, holes: Any = (), mesh_size: QuantityLike = "5 mm",
+                     hole_mesh_size: QuantityLike | None = None,
                      curved: bool = True) -> SolidMesh:
     """A rectangular block from the origin to ``size`` (x, y, z lengths) with through-holes along z,
     ``holes`` = [((x, y), diameter), ...] (bolt or pin holes; lengths or strings), meshed by gmsh
@@ -383,7 +385,7 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: Any = "5 mm", hole_m
         gmsh.finalize()
 
 
-def from_step(path: str | Path, mesh_size: Any, unit: str = "mm", curved: bool = True) -> SolidMesh:
+def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curved: bool = True) -> SolidMesh:
     """Tetrahedral mesh of the solid(s) in a STEP file (gmsh/OpenCASCADE); ``unit`` is the unit the
     file's lengths are in when it declares none (CAD exports are usually mm). Each CAD face becomes a
     named region ``face<k>`` (gmsh's face tag). ``curved`` (default) puts the mid-side nodes on the CAD
@@ -427,7 +429,7 @@ class StlProperties:
     inertia: Any | None  # kg m^2 [3, 3] about the centroid, when a density was given
 
 
-def stl_properties(path: str | Path, unit: str = "mm", density: Any = None) -> StlProperties:
+def stl_properties(path: str | Path, unit: str = "mm", density: QuantityLike | None = None) -> StlProperties:
     """Load an STL with trimesh and report watertightness and mass properties.
 
     ``unit`` is the length unit the file's coordinates are in (STL carries none; CAD exports mm).
@@ -452,7 +454,7 @@ def stl_properties(path: str | Path, unit: str = "mm", density: Any = None) -> S
                          Q(np.asarray(tm.center_mass), "m"), mass, inertia)
 
 
-def from_stl(path: str | Path, mesh_size: Any, unit: str = "mm") -> SolidMesh:
+def from_stl(path: str | Path, mesh_size: QuantityLike, unit: str = "mm") -> SolidMesh:
     """Tetrahedral mesh of the volume inside a watertight STL surface (trimesh check, gmsh mesh).
 
     The STL triangles are used as the boundary mesh as they are (gmsh fills the volume), so the

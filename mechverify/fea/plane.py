@@ -48,10 +48,10 @@ from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
 from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
 from mechverify.materials.material import Material
-from mechverify.units import to_si
+from mechverify.units import QuantityLike, to_si
 
 
-def mesh_region(region: Any, size: Any, hole_size: Any = None) -> MeshTri:
+def mesh_region(region: Any, size: QuantityLike, hole_size: QuantityLike | None = None) -> MeshTri:
     """Triangles of a shapely polygon in metres (outline with holes), element ``size`` graded to
     ``hole_size`` (default size/3) at the holes. Needs gmsh."""
     h = to_si(size, "length", "size")
@@ -65,7 +65,7 @@ class PlaneModel:
     ``"stress"`` (thin parts) or ``"strain"`` (long prismatic bodies, thickness per unit length)."""
 
     mesh: MeshTri
-    thickness: Any
+    thickness: QuantityLike
     material: Material | str
     supports: tuple[Fixed | Support, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()

@@ -39,6 +39,7 @@ from mechverify.errors import InputError, ModelError
 from mechverify.fea import mesh2d
 from mechverify.fea.linsolve import SolveInfo
 from mechverify.fea.results import FieldResults
+from mechverify.units import QuantityLike
 
 try:  # the declarative plate belongs to the components layer (issue 6)
     from mechverify.components import plates as _plates
@@ -264,7 +265,8 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
                      + ". Add a support off that line, or clamp an edge.")
 
 
-def solve_plate(model: Any, mesh_size: Any = None, hole_mesh_size: Any = None) -> FieldResults:
+def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
+                hole_mesh_size: QuantityLike | None = None) -> FieldResults:
     """Solve a :class:`mechverify.components.plates.PlateModel` for deflection and surface stresses.
 
     ``mesh_size`` (default: shorter side / 16) and ``hole_mesh_size`` (default: mesh_size / 3) are

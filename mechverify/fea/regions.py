@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.errors import InputError
-from mechverify.units import to_si
+from mechverify.units import QuantityLike, to_si
 
 #: Relative difference between what a region caught and its known size above which a warning is given.
 #: Faceting a curve with 8 straight segments per half circle shortens it by 0.6 %; 3 % leaves room for
@@ -156,7 +156,7 @@ class Cylinder(Region):
     axis: tuple[float, ...]
     rel_tol: float
 
-    def __init__(self, center: Any, radius: Any, axis: Any = (0, 0, 1), rel_tol: float = 0.05):
+    def __init__(self, center: Any, radius: QuantityLike, axis: Any = (0, 0, 1), rel_tol: float = 0.05):
         c = _vec(center, "center")
         r = to_si(radius, "length", "radius")
         if r <= 0:
@@ -196,7 +196,7 @@ class Arc(Region):
     end: float  # rad
     rel_tol: float
 
-    def __init__(self, center: Any, radius: Any, start: Any, end: Any, rel_tol: float = 0.05):
+    def __init__(self, center: Any, radius: QuantityLike, start: Any, end: Any, rel_tol: float = 0.05):
         c = _vec(center, "center")
         r = to_si(radius, "length", "radius")
         if r <= 0:
@@ -239,7 +239,7 @@ class Polyline(Region):
     vertices: tuple[tuple[float, ...], ...]
     tol: float
 
-    def __init__(self, points: Any, tol: Any = None):
+    def __init__(self, points: QuantityLike, tol: QuantityLike | None = None):
         if hasattr(points, "units") and np.ndim(points.magnitude) == 2:  # a quantity array [n, d]
             arr = np.asarray(to_si(points, "length", "points"), float)
             points = [tuple(r) for r in arr]

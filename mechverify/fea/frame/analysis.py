@@ -29,7 +29,7 @@ from mechverify.fea.frame.element import (
     Condensed,
     condense,
     fixed_end_forces_linear,
-    local_axes,
+    local_axes_batch,
     local_stiffness_batch,
 )
 from mechverify.fea.frame.model import (
@@ -205,15 +205,20 @@ class Frame:
         pts = np.array([p for e in self.ends + self.spring_ends for p in e] + list(self.nodes.values()))
         self.size = float(np.max(np.ptp(pts, axis=0))) or 1.0
         self.tol = 1e-6 * self.size
-        for m, (a, b) in zip(self.members, self.ends, strict=True):
-            if np.linalg.norm(b - a) <= self.tol:
-                raise InputError(f"member {m.name}: start and end coincide (zero length)")
-            local_axes(a, b, m.orientation)  # orientation across the member
         if self.members:
             self._a = np.array([e[0] for e in self.ends])
             self._d = np.array([e[1] - e[0] for e in self.ends])
         else:
             self._a = self._d = np.zeros((0, 3))
+        short = np.flatnonzero(np.linalg.norm(self._d, axis=1) <= self.tol)
+        if len(short):
+            raise InputError(f"member {self.members[short[0]].name}: start and end coincide (zero length)")
+        try:  # orientation across each member
+            local_axes_batch(self._a, self._a + self._d, [m.orientation for m in self.members])
+        except InputError as exc:
+            i = int(str(exc).split(":")[0].split()[1])
+            raise InputError(f"member {self.members[i].name}: orientation is parallel to the member; give a vector "
+                             "across it") from None
         self.supports = tuple(supports)
         self.hinges = tuple(hinges)
         for s in self.supports:
@@ -339,11 +344,11 @@ class Frame:
         dofs = (6 * en[:, [0] * 6 + [1] * 6] + np.tile(np.arange(6), 2)).astype(np.int64)
         props = [self._props_of(self.members[i]) for i in emember]
         R = np.zeros((ne, 3, 3))
-        for i, m in enumerate(self.members):
-            els = member_elems[i]
-            R[els] = local_axes(self._a[i], self._a[i] + self._d[i], m.orientation, self._props_of(m).roll)
-        L = np.diff(np.append(es0, 0.0))  # placeholder, replaced below
-        L = np.array([float(np.linalg.norm(points[j] - points[i])) for i, j in en]) if ne else np.zeros(0)
+        if self.members:
+            Rm = local_axes_batch(self._a, self._a + self._d, [m.orientation for m in self.members],
+                                  np.array([self._props_of(m).roll for m in self.members]))
+            R = Rm[np.array(emember, dtype=np.int64)] if ne else R
+        L = np.linalg.norm(points[en[:, 1]] - points[en[:, 0]], axis=1) if ne else np.zeros(0)
         P = np.array([[p.E, p.G, p.A, p.Iy, p.Iz, p.J, p.sy, p.sz] for p in props]).reshape(-1, 8)
         k = local_stiffness_batch(L, *P.T) if ne else np.zeros((0, 12, 12))
         cond, released_nodes = self._releases(en, np.array(emember, dtype=np.int64), member_elems, R, k, idx, named)

@@ -44,6 +44,28 @@ def local_axes(p1: np.ndarray, p2: np.ndarray, orientation: Any = None, roll: fl
     return np.vstack((ex, ey, ez))
 
 
+def local_axes_batch(a: np.ndarray, b: np.ndarray, orientations: list[Any], rolls: np.ndarray | None = None
+                     ) -> np.ndarray:
+    """:func:`local_axes` of many members ``[n, 3, 3]``; ``orientations[i]`` None for the default."""
+    ex = b - a
+    ex = ex / np.linalg.norm(ex, axis=1)[:, None]
+    ref = np.where((np.abs(ex[:, 2]) < 1.0 - 1e-9)[:, None], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+    given = [i for i, o in enumerate(orientations) if o is not None]
+    if given:
+        ref[given] = np.array([orientations[i] for i in given], dtype=float)
+    ez = ref - np.einsum("ij,ij->i", ref, ex)[:, None] * ex
+    nz = np.linalg.norm(ez, axis=1)
+    bad = np.flatnonzero(nz < 1e-9 * np.linalg.norm(ref, axis=1))
+    if len(bad):
+        raise InputError(f"member {int(bad[0])}: orientation is parallel to the member; give a vector across it")
+    ez /= nz[:, None]
+    ey = np.cross(ez, ex)
+    if rolls is not None and np.any(rolls):
+        c, s = np.cos(rolls)[:, None], np.sin(rolls)[:, None]
+        ey, ez = c * ey + s * ez, -s * ey + c * ez
+    return np.stack((ex, ey, ez), axis=1)
+
+
 def local_stiffness_batch(L: np.ndarray, E: np.ndarray, G: np.ndarray, A: np.ndarray, Iy: np.ndarray,
                           Iz: np.ndarray, J: np.ndarray, sy: np.ndarray, sz: np.ndarray) -> np.ndarray:
     """``[n, 12, 12]`` local stiffnesses; ``sy = 1/(G Asy)``, ``sz = 1/(G Asz)`` (0: Euler-Bernoulli)."""

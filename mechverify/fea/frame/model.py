@@ -20,7 +20,7 @@ import pint
 from mechverify.components.sections import Section
 from mechverify.errors import InputError, suggest
 from mechverify.materials.material import Material
-from mechverify.units import QuantityLike, from_si, to_si
+from mechverify.units import BOUNDS, QuantityLike, from_si, to_si
 
 #: Node DOF names, in order (translations then rotations, global axes).
 DOF_NAMES = ("x", "y", "z", "rx", "ry", "rz")
@@ -51,16 +51,33 @@ def _material(m: Any, name: str) -> Material:
     raise InputError(f"{name}: expected a Material or its name, got {m!r}")
 
 
+_UNIT_FACTORS: dict[tuple[Any, str], float] = {}
+
+
+def _si(v: Any, dim: str, name: str) -> Any:
+    """:func:`~mechverify.units.to_si` with the unit factor of a quantity cached (large frames convert
+    thousands of loads and points): the dimension is checked once per unit, the bounds on every value."""
+    if isinstance(v, pint.Quantity):
+        key = (v._units, dim)
+        f = _UNIT_FACTORS.get(key)
+        if f is None:
+            f = _UNIT_FACTORS[key] = to_si(v.__class__(1.0, v.units), dim, name)
+        mag = np.asarray(v.magnitude, dtype=float) * f
+        if np.all(np.isfinite(mag)) and np.all(np.abs(mag) <= BOUNDS[dim][1]):
+            return float(mag) if mag.ndim == 0 else mag
+    return to_si(v, dim, name)  # strings, numbers without units, values out of bounds: the named errors
+
+
 def _vector(v: Any, dim: str, name: str) -> np.ndarray:
     """Three components with units (a quantity array, or three strings/quantities) as SI floats."""
     if isinstance(v, pint.Quantity | str):
-        arr = np.atleast_1d(np.asarray(to_si(v, dim, name), dtype=float))
+        arr = np.atleast_1d(np.asarray(_si(v, dim, name), dtype=float))
     else:
         try:
             items = list(v)
         except TypeError:
             raise InputError(f"{name}: expected three components, got {v!r}") from None
-        arr = np.array([to_si(c, dim, f"{name}[{i}]") for i, c in enumerate(items)], dtype=float)
+        arr = np.array([_si(c, dim, f"{name}[{i}]") for i, c in enumerate(items)], dtype=float)
     if arr.shape != (3,):
         raise InputError(f"{name}: expected three components (x, y, z), got {arr.size}")
     return arr

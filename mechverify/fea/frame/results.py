@@ -17,7 +17,7 @@ from mechverify.components.sections import Section
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fea.frame.element import element_polynomials, poly_extremes, stationary_points
 from mechverify.fea.frame.model import NO_FIBRES, Load, LoadCombination, Where
-from mechverify.units import Q, to_si
+from mechverify.units import Q, QuantityLike, to_si
 
 if TYPE_CHECKING:
     from mechverify.fea.frame.analysis import Frame, _Mesh
@@ -241,7 +241,7 @@ class FrameResults:
         self._ranges[member] = out
         return out
 
-    def diagram(self, member: str, points_per_element: int = 41, fibres: Any = None) -> Diagram:
+    def diagram(self, member: str, points_per_element: int = 41, fibres: QuantityLike | None = None) -> Diagram:
         """Internal forces, displacements and fibre stresses along ``member`` (the stationary points of the
         moments, shears and axial force are included, so the sampled extremes are the exact ones).
 
