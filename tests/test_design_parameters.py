@@ -381,3 +381,9 @@ def test_a_drive_takes_its_external_force_from_the_screw_it_turns(tmp_path):
     assert case["external_force"].m_as("N") == pytest.approx(7.5 * 9.81)
     load_ = d["lift"].make_load(case)
     assert load_.external_force.m_as("N") == pytest.approx(73.575) and load_.mass.m_as("kg") == 0.5
+
+
+def test_a_cycle_of_component_fields_is_named(tmp_path):
+    text = BASE.replace('area = "20 mm^2 * n / 2"', 'area = "b.area_out"')
+    errs = _errors(tmp_path, text)
+    assert errs["components"] in ("cycle a -> b -> a", "cycle b -> a -> b")

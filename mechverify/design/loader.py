@@ -418,15 +418,20 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
     """Build every entry; one whose fields read other components' outputs after those (dependency order)."""
     bad = {e.name for e in entries.values()
            if any(p == f"{section}.{e.name}" or p.startswith(f"{section}.{e.name}.") for p, _ in col.errors)}
-    building: set[str] = set()  # being built (a second visit is a cycle)
+    building: list[str] = []  # being built, in order (a second visit is a cycle)
     done: set[str] = set()
 
     def build(e: Entry) -> bool:
         if e.name in done:
             return True
-        if e.name in bad or e.name in building:
+        if e.name in building:
+            cycle = " -> ".join([*building[building.index(e.name):], e.name])
+            if not any(m == f"cycle {cycle}" for _, m in col.errors):
+                col.add(section, f"cycle {cycle}")
             return False
-        building.add(e.name)
+        if e.name in bad:
+            return False
+        building.append(e.name)
         try:
             if not resolve_fields(e, entries, ctx.get("parameters", {}), build, col.add, ctx["trace"]):
                 bad.add(e.name)
@@ -439,7 +444,7 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
             bad.add(e.name)
             return False
         finally:
-            building.discard(e.name)
+            building.remove(e.name)
 
     for e in entries.values():
         build(e)
