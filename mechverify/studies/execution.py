@@ -15,6 +15,7 @@ import copy
 import json
 import math
 import os
+import threading
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from pathlib import Path
@@ -44,7 +45,8 @@ def _finite(x: float) -> float | None:
     return x if math.isfinite(x) else None
 
 
-_BASE: dict[str, Any] = {}  # per process: the last base design built, by its TOML data
+_BASE: dict[str, Any] = {}  # per process: the last few base designs built, by their TOML data
+_BASE_LOCK = threading.Lock()  # a Dask worker may run several tasks in threads
 
 
 def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
@@ -54,11 +56,15 @@ def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
     from mechverify.design.loader import parse
 
     key = json.dumps([doc, path], sort_keys=True)
-    if _BASE.get("key") != key:
-        _BASE.clear()
-        _BASE["design"] = Design(parse(copy.deepcopy(dict(doc)), Path(path) if path else None))
-        _BASE["key"] = key
-    return _BASE["design"]
+    with _BASE_LOCK:
+        design = _BASE.get(key)
+    if design is None:
+        design = Design(parse(copy.deepcopy(dict(doc)), Path(path) if path else None))
+        with _BASE_LOCK:
+            while len(_BASE) >= 4:
+                _BASE.pop(next(iter(_BASE)))
+            _BASE[key] = design
+    return design
 
 
 def evaluate(doc: Mapping[str, Any], path: str | None, overrides: Mapping[str, Any]) -> dict[str, Any]:
