@@ -17,7 +17,7 @@ from mechverify.components.bearings import (
     reliability_factor,
 )
 from mechverify.references import ref
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 ISO281 = ref("iso281", "Eq. (1), Table 3 (X, Y, e), Table 12 (a1)")
 ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
@@ -45,7 +45,8 @@ def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
        source=ISO281,
        explain=('L10h = a1 (C/P)^3 10^6/(60 n), P = X Fr + Y Fa (ISO 281 Eq. (1), Table 3), against the required '
                 'life.'))
-def check_bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_life: Any, *, reliability: float = 0.9,
+def check_bearing_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
+                       required_life: QuantityLike, *, reliability: float = 0.9,
                  load_case: str = "") -> CheckResult:
     """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours."""
     eq = b.equivalent_load(Fr, Fa)
@@ -73,7 +74,7 @@ def check_bearing_life(b: BallBearing, Fr: Any, Fa: Any, speed: Any, required_li
        source=ISO76,
        explain=('s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) (ISO 76); the required s0 is the bearing class factor '
                 '(SKF: 1 normal, 1.5 shock loads, 2 quiet running).'))
-def check_bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, required_s0: float = 1.0,
+def check_bearing_static_safety(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike = "0 N", *, required_s0: float = 1.0,
                           load_case: str = "") -> CheckResult:
     """Static safety s0 = C0/P0 against the required s0 (SKF guideline for rotating ball bearings: 1,
     1.5 with shock loads, 2 where low noise matters; ISO 76)."""
@@ -91,7 +92,7 @@ def check_bearing_static_safety(b: BallBearing, Fr: Any, Fa: Any = "0 N", *, req
        aliases=('ball_bearing.speed',),
        source=ref("skf17000", "product tables: limiting and reference speeds"),
        explain=('Speed against the catalogue limiting speed (the reference speed is noted).'))
-def check_bearing_speed(b: BallBearing, speed: Any, *, load_case: str = "") -> CheckResult:
+def check_bearing_speed(b: BallBearing, speed: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
     n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
     warnings: tuple[str, ...] = ()
@@ -123,7 +124,7 @@ def _bushing_notes(bush: PlainBushing) -> tuple[str, ...]:
        aliases=('plain_bushing.pressure',),
        source=BUSHING,
        explain=('p = F/(dL) against p_max.'))
-def check_bushing_pressure(bush: PlainBushing, F: Any, *, load_case: str = "") -> CheckResult:
+def check_bushing_pressure(bush: PlainBushing, F: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Projected pressure p = F/(dL) against p_max."""
     return CheckResult(
         check="bushing_pressure", component=bush.name, demand=bush.pressure(F), capacity=bush.limit("p_max"),
@@ -137,7 +138,7 @@ def check_bushing_pressure(bush: PlainBushing, F: Any, *, load_case: str = "") -
        aliases=('plain_bushing.velocity',),
        source=BUSHING,
        explain=('Sliding speed against v_max.'))
-def check_bushing_velocity(bush: PlainBushing, v: Any, *, load_case: str = "") -> CheckResult:
+def check_bushing_velocity(bush: PlainBushing, v: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Sliding speed against v_max."""
     vv = Q(abs(to_si(v, "velocity", "v")), "m/s")
     return CheckResult(

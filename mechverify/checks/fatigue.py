@@ -41,7 +41,7 @@ from mechverify.fatigue.life import BasquinCurve
 from mechverify.materials.database import get as get_material
 from mechverify.materials.material import Material
 from mechverify.references import ref
-from mechverify.units import Q, fmt, from_si, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
 
 SHIGLEY = ref("shigley10", "Sec. 6-12, Tables 6-6 to 6-8")
 _FORMULA = {
@@ -241,7 +241,8 @@ def _prepare(material: Any, life: float | None, Kf: float, criterion: str, load_
                 '(Goodman by default; Gerber, Soderberg, ASME elliptic, Morrow, SWT, Walker) along a proportional or '
                 "constant-mean load line, with Langer first-cycle yield; endurance limit from Se' and the Marin "
                 'factors, or a finite-life strength from the S-N line (Shigley 10th ed. Secs. 6-7 to 6-12).'))
-def check_fatigue(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, life: float | None = None,
+def check_fatigue(component: str, sigma_a: QuantityLike, sigma_m: QuantityLike, material: Any, *,
+                  life: float | None = None,
                   criterion: str = "goodman", load_line: str = "proportional", Kf: float = 1.0, Se: Any = None,
                   marin: dict | None = None, polymer_fraction: float | None = None, sigma_f: Any = None,
                   gamma: Any = None, required_sf: float = 1.0, load_case: str = "") -> CheckResult:
@@ -261,7 +262,8 @@ def check_fatigue(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, 
        source=SHIGLEY,
        explain=('The fatigue check of every node of an FEA field of von Mises alternating and mean stresses; the node'
                 ' with the smallest safety factor governs and the whole safety-factor field is kept for the figure.'))
-def check_fatigue_field(component: str, sigma_a: Any, sigma_m: Any, material: Any, *, coordinates: Any = None,
+def check_fatigue_field(component: str, sigma_a: QuantityLike, sigma_m: QuantityLike, material: Any, *,
+                        coordinates: QuantityLike | None = None,
                         life: float | None = None, criterion: str = "goodman", load_line: str = "proportional",
                         Kf: float = 1.0, Se: Any = None, marin: dict | None = None,
                         polymer_fraction: float | None = None, sigma_f: Any = None, gamma: Any = None,

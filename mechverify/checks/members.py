@@ -18,7 +18,7 @@ from mechverify.errors import InputError
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.references import ref
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 SHIGLEY_KT = ref("shigley10", "Sec. 3-13 (Kt under static loading)")
 PETERSON_HOLE = ref("peterson3", "Eq. (4.1), Chart 4.1")
@@ -37,9 +37,10 @@ def _strength_notes(link: Link) -> list[str]:
        source=ref("shigley10", "Sec. 5-5 (distortion energy)"),
        explain=("Von Mises stress of N/A, M_y/W_y + M_z/W_z (the transverse load's Table A-9 maximum moment added), "
                 'T/W_t + V/A_s against S_y (knocked down by strength_factor); Shigley 10th ed. Sec. 5-5.'))
-def check_member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "0 N*m", moment_z: Any = "0 N*m",
-                         torque: Any = "0 N*m", shear: Any = "0 N", *, required_sf: float = 1.0,
-                         load_case: str = "") -> CheckResult:
+def check_member_body_strength(link: Link, axial: QuantityLike = "0 N", moment_y: QuantityLike = "0 N*m",
+                               moment_z: QuantityLike = "0 N*m", torque: QuantityLike = "0 N*m",
+                               shear: QuantityLike = "0 N", *, required_sf: float = 1.0,
+                               load_case: str = "") -> CheckResult:
     """Von Mises stress in the link body (away from the holes) against the yield strength."""
     s = link.stresses(axial, moment_y, moment_z, torque, shear)
     notes = [*_strength_notes(link),
@@ -64,7 +65,7 @@ def check_member_body_strength(link: Link, axial: Any = "0 N", moment_y: Any = "
        explain=('F/((w - D) t) across the hole against S_y; the open-hole Kt (Peterson Eq. 4.1) is applied to brittle'
                 ' materials or unknown elongation, not to ductile ones under static load (Shigley 10th ed. Sec. '
                 '3-13). Runs when hole_diameter is given.'))
-def check_eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, apply_kt: bool | None = None,
+def check_eye_net_section(link: Link, axial: QuantityLike, *, required_sf: float = 1.0, apply_kt: bool | None = None,
                     load_case: str = "") -> CheckResult:
     """Net-section tension across the pin hole, with Kt where it matters.
 
@@ -109,7 +110,8 @@ def check_eye_net_section(link: Link, axial: Any, *, required_sf: float = 1.0, a
         details={"sigma_net": sigma.to("MPa"), "Kt": kt, "kt_applied": use_kt})
 
 
-def lug_checks(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> list[CheckResult]:
+def lug_checks(link: Link, force: QuantityLike, *, design_factor: float = 2.0,
+               load_case: str = "") -> list[CheckResult]:
     """Lug strength after ASME BTH-1: tension through the pinhole, fracture beyond it, double-plane
     shear-out (each with required SF ``1.20 Nd``) and pin bearing (``Nd``).
 
@@ -197,7 +199,7 @@ def check_lug_bearing(link: Link, force: Any, *, design_factor: float = 2.0, loa
        source=ref("shigley10", "Eq. (5-21)"),
        explain=('Average shear F/(n pi d^2/4) in the pin against its S_sy (material value or 0.577 S_y, Shigley 10th '
                 'ed. Eq. 5-21). Runs when hole_diameter or pin_diameter is given.'))
-def check_pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 2, required_sf: float = 1.0,
+def check_pin_shear(link: Link, force: QuantityLike, pin_material: Any, *, planes: int = 2, required_sf: float = 1.0,
               load_case: str = "") -> CheckResult:
     """Average shear stress in the pin ``F/(n pi d^2/4)`` against the pin's shear yield strength.
 
@@ -228,7 +230,8 @@ def check_pin_shear(link: Link, force: Any, pin_material: Any, *, planes: int = 
        explain=('Compression against the Euler (C pi^2 E I/l^2, Shigley Eq. 4-42) or Johnson (Eq. 4-46) critical load'
                 ' about the least principal axis, C from the end condition (Table 4-2). Runs in the load cases that '
                 'give axial_force.'))
-def check_member_buckling(link: Link, compression: Any, *, required_sf: float = 1.0, end: str | float | None = None,
+def check_member_buckling(link: Link, compression: QuantityLike, *, required_sf: float = 1.0,
+                          end: str | float | None = None,
                     basis: str = "recommended", load_case: str = "") -> CheckResult:
     """Compressive force against the Euler/Johnson critical load about the least principal axis."""
     P = to_si(compression, "force", "compression")
@@ -252,7 +255,7 @@ def check_member_buckling(link: Link, compression: Any, *, required_sf: float = 
 _FRACTION = re.compile(r"^\s*(?:l|L|span)\s*/\s*([0-9.]+)\s*$")
 
 
-def deflection_limit(limit: Any, span: Any = None) -> pint.Quantity:
+def deflection_limit(limit: QuantityLike, span: QuantityLike | None = None) -> pint.Quantity:
     """A deflection limit as a length: a length (``"1 mm"``), a fraction of the span (``0.01``) or
     ``"L/250"`` / ``"span/250"``."""
     if isinstance(limit, str):
@@ -272,7 +275,8 @@ def deflection_limit(limit: Any, span: Any = None) -> pint.Quantity:
     return Q(frac * to_si(span, "length", "span"), "m")
 
 
-def deflection_check(deflection: Any, limit: Any, *, span: Any = None, component: str = "member",
+def deflection_check(deflection: QuantityLike, limit: Any, *, span: QuantityLike | None = None,
+                     component: str = "member",
                      load_case: str = "", source: str = "") -> CheckResult:
     """Deflection against a limit given as a length, a fraction of ``span`` (0.01) or ``"L/250"``."""
     y = Q(abs(to_si(deflection, "length", "deflection")), "m")

@@ -39,7 +39,7 @@ from mechverify.components.gearheads import Gearhead
 from mechverify.errors import InputError
 from mechverify.loads.drive_train import TorqueDemand, rms
 from mechverify.references import ref
-from mechverify.units import Q, fmt, from_si, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
 
 _SRC_MAXON = ref("maxon", "'maxon DC motor: Key information' and 'maxon gear: Key information'")
 _SRC_ORIENTAL = ref("oriental_motor")
@@ -80,7 +80,7 @@ def _case(demand: TorqueDemand, i: int) -> str:
                 'comes from estimated friction, efficiency and load, so it carries their uncertainty (Oriental Motor:'
                 " 1.5-2 on a stepper's pull-out torque)."))
 def check_motor_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: float | None = None,
-                      supply_voltage: Any = None, component: str | None = None) -> CheckResult:
+                      supply_voltage: QuantityLike | None = None, component: str | None = None) -> CheckResult:
     """|T(t)| against the motor's intermittent limit at the speed of the same point [1, 2].
 
     The governing point is the one of highest utilisation |T|/T_avail(ω), not necessarily the
@@ -291,7 +291,7 @@ def check_inertia_ratio(demand: TorqueDemand, motor: Any = None, *, max_ratio: f
        source=_SRC_MAXON,
        explain=('DC motors with supply_voltage: U = R(|T|/k_t + I_0) + |omega|/k_n at the worst point against the '
                 'supply (maxon): a hard limit (class limit, default 1.0).'))
-def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: Any, motor: Any = None, *,
+def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: QuantityLike, motor: Any = None, *,
                          component: str | None = None) -> CheckResult:
     """DC motor: terminal voltage U = R·(|T|/k_t + I_0) + |ω|/k_n needed at the worst point
     against the supply (less the driver's drop, if any, given by the caller) [1]."""
@@ -314,7 +314,7 @@ def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: Any, motor:
                 'Scales with the torque, so the torque margin applies. Margin (motor class, default 1.5): the torque '
                 'comes from estimated friction, efficiency and load, so it carries their uncertainty (Oriental Motor:'
                 " 1.5-2 on a stepper's pull-out torque)."))
-def check_driver_current(demand: TorqueDemand, max_current: Any, motor: Any = None, *,
+def check_driver_current(demand: TorqueDemand, max_current: QuantityLike, motor: Any = None, *,
                          component: str | None = None) -> CheckResult:
     """Motor current I = |T|/k_t + I_0 at the worst point against the driver's max. current [1]."""
     m = _motor(demand, motor)

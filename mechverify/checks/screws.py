@@ -29,7 +29,7 @@ from mechverify.components.power_screw import (
 )
 from mechverify.errors import InputError
 from mechverify.references import ref
-from mechverify.units import Q, as_quantity, fmt
+from mechverify.units import Q, QuantityLike, as_quantity, fmt
 
 SHIGLEY_SCREWS = ref("shigley10", "Sec. 8-2")
 HAMROCK = ref("hamrock3", "Sec. 16.3")
@@ -93,7 +93,7 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
        source=f"{HAMROCK}, Eq. (16.12); {SHIGLEY_SCREWS}, Eq. (8-2)",
        explain=('Torque the load puts back on the screw at mu_min against the torque available at rest (motor holding'
                 ' torque or brake); zero demand when the thread self-locks.'))
-def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Any, *, required_sf: float = 1.0,
+def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: QuantityLike, *, required_sf: float = 1.0,
                          load_case: str = "") -> CheckResult:
     """The torque available at the screw when stopped (motor holding torque, brake) must hold the load.
 
@@ -157,7 +157,7 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
 @check("nut_pv", title="Nut pv", sf_kind="pressure",
        source=f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); nut maker's pv rating",
        explain=("Flank pressure times sliding speed at d2 against the nut material's pv limit."))
-def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = None, speed: Any = None,
+def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: QuantityLike | None = None, speed: Any = None,
                  required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """``pv`` (mean flank pressure x sliding speed at d2) against the nut material's pv limit.
 
@@ -192,7 +192,7 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Any = 
        source=f"{SHIGLEY_SCREWS} (body stresses), Eq. (5-15) (von Mises)",
        explain=('Von Mises stress at the minor diameter from the axial force and the raising torque at mu_max against'
                 ' the yield strength.'))
-def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, torque: Any = None,
+def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, torque: QuantityLike | None = None,
                          required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """Von Mises stress at the minor diameter from the axial force and the drive torque, against yield.
 
@@ -230,7 +230,7 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
        source=ref("shigley10", "Secs. 4-11 to 4-13, Eqs. (4-43), (4-46), Table 4-2"),
        explain=('Axial force against the Euler/Johnson critical load of the root section with the end-fixity constant'
                 ' of Shigley 10th ed. Table 4-2 (recommended values).'))
-def check_screw_buckling(screw: LeadScrew, F: Any, *, length: Any = None, basis: str = "recommended",
+def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | None = None, basis: str = "recommended",
                          required_sf: float = 2.0, load_case: str = "") -> CheckResult:
     """Compressive axial force against the column critical load of the root section (Euler or Johnson).
 
@@ -262,7 +262,7 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: Any = None, basis:
        source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
        explain=('Operating speed against the first bending (whirling) speed of the screw between its supports '
                 '(Blevins Table 8-1; THK runs below 0.8 of it).'))
-def check_screw_critical_speed(screw: LeadScrew, rotational_speed: Any, *, length: Any = None,
+def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike, *, length: QuantityLike | None = None,
                                required_sf: float = 1.25, load_case: str = "") -> CheckResult:
     """Operating speed against the first whirling speed of the screw between its supports.
 

@@ -18,7 +18,7 @@ from mechverify.components.spring_formulas import torsion_spring_factors
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring, en13906_min_gap_sum
 from mechverify.errors import UnknownNameError
 from mechverify.references import ref
-from mechverify.units import Q, fmt, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 SHIGLEY = ref("shigley10")
 
@@ -46,7 +46,7 @@ def _factor_note(spring: CompressionSpring) -> str:
        source=ref("shigley10", "Eqs. (10-5), (10-7), Table 10-6"),
        explain=('tau = K_B 8FD/(pi d^3) (K_s with set removed) against S_sy of Shigley Table 10-6; Shigley Sec. 10-7 '
                 'designs springs for n_s >= 1.2.'))
-def check_spring_static_stress(spring: CompressionSpring, F_max: Any, *, required_sf: float = 1.2,
+def check_spring_static_stress(spring: CompressionSpring, F_max: QuantityLike, *, required_sf: float = 1.2,
                          load_case: str = "") -> CheckResult:
     """Working shear stress at the largest operating force against S_sy (Shigley Table 10-6)."""
     tau = spring.shear_stress(F_max)
@@ -85,7 +85,7 @@ def check_spring_solid_stress(spring: CompressionSpring, *, required_sf: float =
        source=f"{ref('shigley10', 'Eqs. (10-10) to (10-13), Table 10-2')}; {ref('en13906_1', 'Sec. 9')}",
        explain=('Working deflection against the critical deflection of Shigley Eq. (10-10) with alpha of Table 10-2 '
                 '(= EN 13906-1); an absolutely stable spring is held to its travel.'))
-def check_spring_buckling(spring: CompressionSpring, F_max: Any, *, end: str = "fixed-fixed",
+def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end: str = "fixed-fixed",
                     required_sf: float = 1.0, load_case: str = "") -> CheckResult:
     """Working deflection against the critical (buckling) deflection for the given end condition.
 
@@ -116,7 +116,8 @@ def check_spring_buckling(spring: CompressionSpring, F_max: Any, *, end: str = "
        source=ref("shigley10", "Secs. 10-9, 10-10, Eq. (10-30)"),
        explain=('Zimmerli endurance data with a mean-stress criterion (Gerber by default) along the proportional load'
                 ' line (Shigley Secs. 10-9, 10-10).'))
-def check_spring_fatigue(spring: CompressionSpring, F_min: Any, F_max: Any, *, criterion: str = "gerber",
+def check_spring_fatigue(spring: CompressionSpring, F_min: QuantityLike, F_max: QuantityLike, *,
+                         criterion: str = "gerber",
                    required_sf: float = 1.5, load_case: str = "") -> CheckResult:
     """Infinite-life fatigue with Zimmerli data and a mean-stress criterion (Shigley Secs. 10-9, 10-10).
 
@@ -149,7 +150,7 @@ def check_spring_fatigue(spring: CompressionSpring, F_min: Any, F_max: Any, *, c
        source=f"{ref('shigley10', 'Sec. 10-7')}; {ref('en13906_1', 'Sec. 10')}",
        explain=("(1 + 0.15) y_max <= L0 - Ls (Shigley Sec. 10-7), or EN 13906-1's minimum sum of gaps between coils "
                 '(doubled when the case gives a fatigue cycle).'))
-def check_spring_clash(spring: CompressionSpring, F_max: Any, *, method: str = "shigley", xi: float = 0.15,
+def check_spring_clash(spring: CompressionSpring, F_max: QuantityLike, *, method: str = "shigley", xi: float = 0.15,
                  dynamic: bool = False, load_case: str = "") -> CheckResult:
     """Clash allowance: the spring must not approach solid at the largest working force.
 
@@ -196,7 +197,7 @@ def _initial_tension_note(s: ExtensionSpring) -> str:
        aliases=('extension_spring.body_stress',),
        source=ref("shigley10", "Sec. 10-11, Eq. (10-7), Table 10-7"),
        explain=('tau = K_B 8FD/(pi d^3) against the body allowable of Shigley Table 10-7.'))
-def check_extension_body_stress(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
+def check_extension_body_stress(s: ExtensionSpring, F: QuantityLike, *, required_sf: float = 1.0) -> CheckResult:
     """Body shear stress τ = K_B·8FD/(πd³) against the Table 10-7 body allowable (Shigley 10th ed. Sec. 10-11)."""
     Fq = Q(to_si(F, "force", "F"), "N")
     return CheckResult(
@@ -211,7 +212,7 @@ def check_extension_body_stress(s: ExtensionSpring, F: Any, *, required_sf: floa
        source=ref("shigley10", "Sec. 10-11, Table 10-7"),
        explain=("Bending plus tension at the hook's section A against the end-bending allowable (Shigley Sec. 10-11, "
                 'Table 10-7).'))
-def check_extension_hook_bending(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> CheckResult:
+def check_extension_hook_bending(s: ExtensionSpring, F: QuantityLike, *, required_sf: float = 1.0) -> CheckResult:
     """Bending and tension at hook section A against the Table 10-7 end-bending allowable."""
     Fq = Q(to_si(F, "force", "F"), "N")
     notes = ["hook bend radius r1 = " + fmt(Q(s._si["r1"], "m").to("mm")) + " (default D/2: full loop)"]
@@ -231,7 +232,7 @@ def check_extension_hook_bending(s: ExtensionSpring, F: Any, *, required_sf: flo
        source=ref("shigley10", "Sec. 10-11, Table 10-7"),
        explain=("Torsion at the hook's side bend B against the end-torsion allowable; runs when hook_side_radius is "
                 'given.'))
-def check_extension_hook_torsion(s: ExtensionSpring, F: Any, *, required_sf: float = 1.0) -> list[CheckResult]:
+def check_extension_hook_torsion(s: ExtensionSpring, F: QuantityLike, *, required_sf: float = 1.0) -> list[CheckResult]:
     """Torsion at hook section B against the Table 10-7 end-torsion allowable (only when r2 is known)."""
     if s.r2 is None:
         return []
@@ -254,7 +255,7 @@ def _tor_inputs(s: TorsionSpring, M: pint.Quantity) -> dict[str, Any]:
        aliases=('torsion_spring.bending_stress',),
        source=ref("shigley10", "Sec. 10-12, Eqs. (10-43), (10-57)"),
        explain=('sigma = K_i 32M/(pi d^3) against S_y = 0.78 S_ut (music wire; Shigley Eq. (10-57)).'))
-def check_torsion_spring_stress(s: TorsionSpring, M: Any, *, required_sf: float = 1.0) -> CheckResult:
+def check_torsion_spring_stress(s: TorsionSpring, M: QuantityLike, *, required_sf: float = 1.0) -> CheckResult:
     """Inner-fibre bending stress σ = K_i·32M/(πd³) against S_y of Shigley 10th ed. Eq. (10-57)."""
     Mq = Q(to_si(M, "torque", "M"), "N*m")
     Ki, _ = torsion_spring_factors(s.index)
@@ -272,7 +273,8 @@ def check_torsion_spring_stress(s: TorsionSpring, M: Any, *, required_sf: float 
        source=ref("shigley10", "Sec. 10-12"),
        explain=('Arbor diameter against the inside diameter of the wound-up coil (Shigley Sec. 10-12); runs when '
                 'arbor_diameter is given.'))
-def check_torsion_spring_arbor(s: TorsionSpring, arbor_diameter: Any, M: Any, *, required_sf: float = 1.0,
+def check_torsion_spring_arbor(s: TorsionSpring, arbor_diameter: QuantityLike, M: QuantityLike, *,
+                               required_sf: float = 1.0,
                             load_case: str = "") -> CheckResult:
     """The coil must not close onto its arbor: arbor diameter against the loaded inside diameter."""
     arbor = Q(to_si(arbor_diameter, "length", "arbor_diameter"), "m")
