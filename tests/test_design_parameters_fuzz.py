@@ -13,7 +13,10 @@ import math
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
+import mechverify.design.adapters  # noqa: F401  (registers the real component types)
+from mechverify.design import Design, DesignFileError
 from mechverify.design.expressions import FUNCTIONS, ExpressionError, parse
+from mechverify.design.loader import parse as parse_design
 from mechverify.units import Q, Quantity
 
 TOKENS = ["1", "2.5", "0", "1e3", "350 N", "9.81 m/s^2", "3 kg", "45 deg", "a", "b", "c.force", "pi", "+", "-",
@@ -95,3 +98,32 @@ def test_only_whitelisted_functions(name):
         assert "not allowed" in str(exc)
     else:
         raise AssertionError(f"{name}(1) was accepted")
+
+
+# ------------------------------------------------------------------------------- whole design files
+NAMES = ["a", "b", "c", "g", "payload"]
+VALUES = ["3 kg", "9.81 m/s^2", "a * g", "b + 1 N", "a", "c.force", "screw.axial_force", "2", "payload * g",
+          "sqrt(a)", "1/0", "a.b.c", "__import__('os')", "b * 1000", "max(a, 1 kg)", "nan"]
+
+
+@settings(max_examples=150, deadline=None)
+@given(params=st.dictionaries(st.sampled_from(NAMES), st.one_of(st.sampled_from(VALUES), st.integers(-3, 3),
+                                                                  st.booleans()), max_size=5),
+       force=st.sampled_from(VALUES + ["350 N", "payload * g", "screw", "bearing.axial_force"]),
+       speed=st.sampled_from(["540 rpm", "screw.rotational_speed", "screw.speed", "a", "10 N"]))
+def test_designs_with_parameters_give_a_design_or_a_design_file_error(params, force, speed):
+    """A lead screw carried by a 608 whose loads read parameters and the screw: the outcome is a verified
+    design or a DesignFileError (with key paths), never another exception."""
+    doc = {"design": {"name": "fuzz"}, "parameters": params,
+           "components": {"screw": {"type": "lead_screw", "thread": "Tr10x2", "length": "450 mm",
+                                    "material": "Structural Steel", "nut_material": "iglidur R",
+                                    "nut_length": "10 mm"},
+                          "bearing": {"type": "ball_bearing", "model": "608"}},
+           "load_cases": {"run": {"screw": {"axial_force": force, "rotational_speed": "540 rpm"},
+                                  "bearing": {"axial_force": "screw.support_axial_force", "speed": speed}}}}
+    try:
+        outcome = ("design", Design(parse_design(doc)).verify())
+    except DesignFileError as exc:
+        outcome = ("error", exc.errors)
+    kind, v = outcome
+    assert (kind == "design" and len(v) > 0) or (kind == "error" and all(path or msg for path, msg in v))
