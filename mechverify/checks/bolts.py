@@ -161,7 +161,8 @@ def check_bolt_surface_pressure_nut(joint: BoltedJoint, a: JointAnalysis, *, req
        source=ref(VDI, "R11, Sec. 5.5.5 (Alexander)"),
        explain=("The internal thread (nut or tapped part) must carry the bolt's breaking force R_m A_S: its "
                 "stripping force tau_BM A_SGM C1 C3 (Alexander's shear area, nut dilation C1 and thread bending C3, "
-                "tau_B = 0.6 R_m) over the engaged length, so that an overload breaks the bolt, not the thread."))
+                "tau_B = 0.6 R_m) over the load-bearing engaged length m_eff = m_ges - 2P, so that an overload "
+                "breaks the bolt, not the thread."))
 def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float = 1.0,
                                 load_case: str = "") -> CheckResult:
     """R_m A_S against the internal thread's stripping force (VDI 2230 R11)."""
@@ -169,12 +170,14 @@ def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, require
     return CheckResult(
         check="bolt_thread_stripping", component=joint.name, demand=_kN(a.stripping_demand),
         capacity=_kN(a.stripping_capacity), required_sf=required_sf,
-        title=f"Thread stripping in the {where}, m_eff = {joint.engagement * 1e3:.3g} mm",
+        title=f"Thread stripping in the {where}, m_eff = {joint.effective_engagement * 1e3:.3g} mm",
         formula=r"R_{m,S} A_S \le \tau_{BM} A_{SGM} C_1 C_3,\ A_{SGM} = \frac{\pi d\, m_{eff}}{P}"
                 r"\left[\frac{P}{2} + (d - D_2)\tan 30^\circ\right]",
         source=ref(VDI, "Sec. 5.5.5"),
-        inputs={**_inputs(joint), "m_eff": Q(joint.engagement * 1e3, "mm")},
-        notes=("tau_B = 0.6 R_m for the internal and external thread (VDI 2230 Table 5.5/5 ratio, assumed)",
+        inputs={**_inputs(joint), "m_ges": Q(joint.engagement * 1e3, "mm"),
+                "m_eff": Q(joint.effective_engagement * 1e3, "mm")},
+        notes=("m_eff = m_ges - 2P: two non-bearing thread turns (VDI 2230:2015 m_zu)",
+               "tau_B = 0.6 R_m for the internal and external thread (VDI 2230 Table 5.5/5 ratio, assumed)",
                "Alexander's C1, C3 as quoted from VDI 2230 Sec. 5.5.5.2 (not checked against a found source)"),
         load_case=load_case)
 

@@ -815,6 +815,14 @@ class BoltedJoint:
         return self.length - self.clamp_length
 
     @property
+    def effective_engagement(self) -> float:
+        """Load-bearing engaged length m_eff = m_ges - m_zu, m_zu = 2 P of non-bearing thread (chamfers and run-out).
+
+        Source: VDI 2230 Part 1:2015, Sec. 5.5.5 (m_ges = m_eff + m_zu, m_zu = 2P), as summarised in HEXAGON Info
+        Letter No. 148 (2014) on the new VDI 2230 release (not checked against the guideline itself)."""
+        return self.engagement - 2 * self.thread.P
+
+    @property
     def thread_length(self) -> float:
         """Threaded length b: 2d + 6 mm (hex bolts, Shigley Table 8-7 for L <= 125 mm) or 2d + 12 mm (ISO 4762)."""
         b = 2 * self.thread.d + (6e-3 if self.head == "hex" else 12e-3)
@@ -970,7 +978,9 @@ class BoltedJoint:
         else:
             Rm_M = self.tapped.Rm or g.Rm
         tau_BM, tau_BS = 0.6 * Rm_M, 0.6 * g.Rm
-        m = self.engagement
+        m = self.effective_engagement
+        if m <= 0:
+            return 0.0, g.Rm * th.As
         A_M = internal_thread_shear_area.si(th.d, th.P, m)
         A_S_ = external_thread_shear_area.si(th.d, th.P, m)
         R_S = tau_BM * A_M / (tau_BS * A_S_)

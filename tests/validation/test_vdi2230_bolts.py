@@ -144,3 +144,23 @@ def test_thread_stripping_areas_hand():
     hand = math.pi * 10 * 8.4 / 1.5 * (0.75 + 0.649519 * 1.5 * math.tan(math.radians(30)))
     assert a == pytest.approx(hand)
     assert a == pytest.approx(230.9, abs=0.05)
+
+
+def test_stripping_capacity_of_a_nut_hand():
+    """Sec. 5.5.5 (Alexander, VDI 2230:2015 m_eff = m_ges - 2P): M10 8.8 through bolt with an ISO 4032 nut
+    (m = 8.4 mm, s = 16 mm, bolt-class strength): m_eff = 8.4 - 3.0 = 5.4 mm; C1 = 3.8 (1.6) - 1.6^2 - 2.61 = 0.91;
+    R_S = A_SGM/A_SGS (equal strengths); C3 from R_S; capacity 0.6 R_m A_SGM C1 C3 against R_m A_S (hand calculation
+    from the guideline's equations, not a printed value)."""
+    j = b.bolted_joint("j", "M10", "8.8", [("10 mm", "S235JR"), ("10 mm", "S235JR")], "45 mm")
+    assert j.effective_engagement == pytest.approx(5.4e-3)
+    d, P, m = 10.0, 1.5, 5.4
+    A_M = math.pi * d * m / P * (P / 2 + 0.649519 * P * math.tan(math.radians(30)))
+    D1 = d - 1.082532 * P
+    A_S = math.pi * D1 * m / P * (P / 2 + (d - 0.649519 * P - D1) * math.tan(math.radians(30)))
+    R = A_M / A_S
+    C3 = 0.728 + 1.769 * min(R, 1) - 2.896 * min(R, 1) ** 2 + 1.296 * min(R, 1) ** 3
+    assert b.alexander_C1(1.6) == pytest.approx(0.91)
+    cap = 0.6 * 800 * A_M * 0.91 * C3   # N (MPa x mm^2)
+    a = j.analyse("1 kN")
+    assert a.stripping_capacity == pytest.approx(cap, rel=1e-9)
+    assert a.stripping_demand == pytest.approx(800 * j.thread.As * 1e6, rel=1e-12)
