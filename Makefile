@@ -20,7 +20,7 @@ $(BASE_STAMP): pyproject.toml | $(BIN)/python
 	touch $@
 
 $(STAMP): $(BASE_STAMP)
-	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster]'
+	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster,explore]'
 	touch $@
 
 sysdeps:

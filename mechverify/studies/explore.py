@@ -1,0 +1,132 @@
+"""Interactive exploration in Jupyter: sliders for a design's parameters, re-verified on every change.
+
+``design.explore()`` (or :func:`explore`) shows one slider per numeric ``[parameters]`` value (or per
+key path given), from half to twice today's value unless a range is given, the summary table of
+u·SF per check and the governing check's figure. Needs ``ipywidgets`` (``pip install
+'mechverify[explore]'``). Each change builds the variant with :meth:`Design.with_overrides` and
+verifies it; an invalid combination shows its message instead of the table.
+"""
+
+from __future__ import annotations
+
+import html
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from mechverify.errors import InputError, MechverifyError
+from mechverify.studies.params import Parameter, resolver
+from mechverify.studies.study import design_and_source
+
+COLOURS = {"pass": "#1a7f37", "warn": "#9a6700", "fail": "#cf222e"}
+
+
+def _parameters(design: Any, doc: Mapping[str, Any], names: Sequence[str] | Mapping[str, Any] | None
+                ) -> list[tuple[Parameter, float, float]]:
+    """(parameter, low, high) per slider."""
+    res = resolver(design)
+    if names is None:
+        table = doc.get("parameters", {}) if isinstance(doc.get("parameters"), dict) else {}
+        out = []
+        for k in table:
+            try:
+                p = Parameter.of(doc, f"parameters.{k}", res)
+            except MechverifyError:
+                continue  # a text or table parameter: no slider
+            out.append((p, *_default_range(p)))
+        if not out:
+            raise InputError("explore: the design has no numeric [parameters]; name key paths to vary, e.g. "
+                             "design.explore(['components.lift.mass'])")
+        return out
+    items = names.items() if isinstance(names, Mapping) else [(n, None) for n in names]
+    out = []
+    for path, rng in items:
+        p = Parameter.of(doc, path, res)
+        if rng is None:
+            lo, hi = _default_range(p)
+        else:
+            if len(rng) != 2:
+                raise InputError(f"explore: {path}: expected (low, high), got {rng!r}")
+            lo, hi = p.value(rng[0]), p.value(rng[1])
+            if not lo < hi:
+                raise InputError(f"explore: {path}: expected low < high, got {rng!r}")
+        out.append((p, lo, hi))
+    return out
+
+
+def _default_range(p: Parameter) -> tuple[float, float]:
+    b = p.base
+    if b > 0:
+        return b / 2, b * 2
+    if b < 0:
+        return b * 2, b / 2
+    return -1.0, 1.0
+
+
+def summary_html(rs: Any) -> str:
+    """The table of checks (component, check, u·SF, verdict), highest u·SF first, and the governing figure."""
+    from mechverify.reports.plots import figure_for
+
+    rows = sorted(rs, key=lambda r: -r.factored_utilisation)
+    cells = "".join(
+        f"<tr><td>{html.escape(r.component)}</td><td>{html.escape(r.title or r.check)}</td>"
+        f"<td style='text-align:right'>{r.factored_utilisation:.3g}</td>"
+        f"<td style='color:{COLOURS[r.verdict.value]}'><b>{r.verdict.value}</b></td></tr>" for r in rows)
+    out = ("<table><tr><th>component</th><th>check</th><th>u·SF</th><th>verdict</th></tr>" + cells + "</table>")
+    if rows:
+        try:
+            fig = figure_for(rows[0])
+        except Exception:  # (a figure is a nicety: never lose the table for it)
+            fig = None
+        if fig:
+            out += (f"<p>Governing: {html.escape(rows[0].component)} / {html.escape(rows[0].title or rows[0].check)}"
+                    f"</p><img style='max-width:40rem' src='{fig}'>")
+    return out
+
+
+class Explorer:
+    """Sliders and the verified summary; ``update({path: value})`` re-verifies without a browser (tests)."""
+
+    def __init__(self, design: Any, names: Sequence[str] | Mapping[str, Any] | None = None, steps: int = 100):
+        try:
+            import ipywidgets as w
+        except ImportError:
+            raise InputError("design.explore() needs ipywidgets: pip install 'mechverify[explore]'") from None
+        self.doc, self.path, self.design = design_and_source(design)
+        self.params = _parameters(self.design, self.doc, names)
+        self.html = ""
+        self.sliders = {}
+        for p, lo, hi in self.params:
+            label = p.path.split(".", 1)[-1] if p.path.startswith("parameters.") else p.path
+            s = w.FloatSlider(value=p.base, min=lo, max=hi, step=(hi - lo) / steps, continuous_update=False,
+                              description=f"{label} [{p.unit}]" if p.unit else label,
+                              style={"description_width": "initial"}, layout=w.Layout(width="36rem"),
+                              readout_format=".4g")
+            s.observe(lambda change: self._changed(), names="value")
+            self.sliders[p.path] = s
+        self.output = w.HTML()
+        self.widget = w.VBox([*self.sliders.values(), self.output])
+        self.update({})
+
+    def _changed(self) -> None:
+        self.update({path: s.value for path, s in self.sliders.items()})
+
+    def update(self, values: Mapping[str, float]) -> str:
+        """Verify with ``values`` (key path -> number in the parameter's unit); the summary HTML."""
+        by_path = {p.path: p for p, _, _ in self.params}
+        overrides = {k: by_path[k].text(v) for k, v in values.items() if k in by_path}
+        try:
+            design = self.design.with_overrides(overrides) if overrides else self.design
+            self.html = summary_html(design.verify())
+        except MechverifyError as exc:
+            self.html = f"<pre style='color:#cf222e'>{html.escape(str(exc))}</pre>"
+        self.output.value = self.html
+        return self.html
+
+    def _repr_mimebundle_(self, **kwargs: Any) -> Any:
+        return self.widget._repr_mimebundle_(**kwargs)
+
+
+def explore(design: Any, names: Sequence[str] | Mapping[str, Any] | None = None, steps: int = 100) -> Explorer:
+    """Sliders for the design's numeric ``[parameters]`` (or the key paths ``names``, optionally mapping to
+    ``(low, high)``); displayed by Jupyter when it is the cell's value."""
+    return Explorer(design, names, steps)
