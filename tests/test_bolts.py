@@ -6,7 +6,10 @@ import math
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from mechverify.components import bolts as b
 from mechverify.errors import InputError, UnitError, UnknownNameError
@@ -164,3 +167,30 @@ def test_pattern_analyse_per_bolt():
     assert max(r.F_A_max for r in res) > 500
     assert all(r.F_Q == pytest.approx(100) for r in res)
     assert all(math.isfinite(r.sigma_red_B) for r in res)
+
+
+_coord = st.floats(-0.2, 0.2, allow_nan=False)
+
+
+@settings(max_examples=60, deadline=None)
+@given(pts=st.lists(st.tuples(_coord, _coord), min_size=3, max_size=8),
+       Fz=st.floats(-5e3, 5e3), Mx=st.floats(-200, 200), My=st.floats(-200, 200),
+       Fx=st.floats(-1e3, 1e3), Fy=st.floats(-1e3, 1e3), Mz=st.floats(-100, 100))
+def test_pattern_loads_are_in_equilibrium(pts, Fz, Mx, My, Fx, Fy, Mz):
+    """The elastic method's bolt loads balance the applied force and moments about the centroid (statics), for any
+    pattern that is not a line."""
+    p = np.asarray(pts)
+    u, v = p[:, 0] - p[:, 0].mean(), p[:, 1] - p[:, 1].mean()
+    A = np.array([[u @ u, u @ v], [u @ v, v @ v]])
+    assume(np.linalg.det(A) > 1e-8)
+    pat = b.BoltPattern(_joint(), tuple(map(tuple, pts)))
+    loads = pat.distribute(F_z=Fz, F_x=Fx, F_y=Fy, M_x=Mx, M_y=My, M_z=Mz)
+    ax = np.array([bl.axial for bl in loads])
+    tx = np.array([bl.transverse[0] for bl in loads])
+    ty = np.array([bl.transverse[1] for bl in loads])
+    tol = 1e-6 * (1 + abs(Fz) + abs(Mx) + abs(My) + abs(Fx) + abs(Fy) + abs(Mz))
+    assert abs(ax.sum() - Fz) < tol
+    assert abs((ax * v).sum() - Mx) < tol
+    assert abs(-(ax * u).sum() - My) < tol
+    assert abs(tx.sum() - Fx) < tol and abs(ty.sum() - Fy) < tol
+    assert abs((u * ty - v * tx).sum() - Mz) < tol
