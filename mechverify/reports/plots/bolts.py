@@ -17,22 +17,20 @@ def joint_diagram(ax: Any, d: dict[str, Any]) -> None:
     k = 1e-3
     ax.plot([0, fS], [0, FM * k], color="#0969da", lw=1.8, label="bolt (slope 1/δ_S)")
     ax.plot([fS, fS + fP], [FM * k, 0], color="#8250df", lw=1.8, label="clamped parts (slope 1/δ_P)")
+    ax.plot([0, fS], [FM * k, FM * k], color="0.4", lw=0.6, ls=":", label=f"F_M,max = {FM / 1e3:.3g} kN")
     if FA > 0:
         x = fS + FSA * dS * 1e3
         ax.plot([fS, x], [FM * k, (FM + FSA) * k], color="#0969da", lw=1.8)
-        ax.plot([x, x], [(FM - FPA) * k, (FM + FSA) * k], color="#cf222e", lw=2.2, label="F_A")
-        ax.annotate("F_SA", (x, (FM + 0.5 * FSA) * k), xytext=(6, 0), textcoords="offset points", fontsize=8)
-        ax.annotate("F_PA", (x, (FM - 0.5 * FPA) * k), xytext=(6, 0), textcoords="offset points", fontsize=8)
-        ax.plot([fS, x], [FM * k, FM * k], color="0.5", lw=0.6, ls=":")
+        ax.plot([x, x], [(FM - FPA) * k, (FM + FSA) * k], color="#cf222e", lw=2.4,
+                label=f"F_A = {FA / 1e3:.3g} kN: F_SA {FSA / 1e3:.3g} (bolt) + F_PA {FPA / 1e3:.3g} (parts)")
         ax.plot([x, fS + fP], [(FM - FPA) * k, 0], color="#8250df", lw=0.8, ls="--")
-    ax.annotate(f"F_M = {FM / 1e3:.3g} kN", (fS, FM * k), xytext=(-10, 8), textcoords="offset points", fontsize=8,
-                ha="right")
-    ax.axhline(d["F_M_min"] * k, color="#bf8700", lw=0.8, ls="--", label="F_M,min = F_M,max/α_A")
+    ax.axhline(d["F_M_min"] * k, color="#bf8700", lw=0.8, ls="--",
+               label=f"F_M,min = F_M,max/α_A = {d['F_M_min'] / 1e3:.3g} kN")
     ax.set_xlabel("elongation of bolt / shortening of parts [mm]")
     ax.set_ylabel("force [kN]")
     ax.set_xlim(0, (fS + fP) * 1.05)
     ax.set_ylim(0, (FM + max(FSA, 0)) * k * 1.2)
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=6.5, loc="lower center", framealpha=0.9)
 
 
 def per_bolt_bars(ax: Any, per: list[tuple[str, float]], title: str) -> None:
