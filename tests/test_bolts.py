@@ -194,3 +194,12 @@ def test_pattern_loads_are_in_equilibrium(pts, Fz, Mx, My, Fx, Fy, Mz):
     assert abs(-(ax * u).sum() - My) < tol
     assert abs(tx.sum() - Fx) < tol and abs(ty.sum() - Fy) < tol
     assert abs((u * ty - v * tx).sum() - Mz) < tol
+
+
+def test_friction_classes_vdi_2230_table_a5():
+    """VDI 2230 Table A5 friction classes (printed in the reproduction named in the data file): A 0.04-0.10,
+    B 0.08-0.16, C 0.14-0.24, D 0.20-0.35, E >= 0.30."""
+    assert [b.friction_class(c) for c in "ABCD"] == [(0.04, 0.10), (0.08, 0.16), (0.14, 0.24), (0.20, 0.35)]
+    assert b.friction_class("e")[0] == 0.30
+    with pytest.raises(UnknownNameError):
+        b.friction_class("F")
