@@ -278,7 +278,7 @@ def test_latin_hypercube_inputs_are_not_correlated_by_chance():
 
 
 def test_explore_sliders_reverify_the_design():
-    """design.explore(): one slider per numeric parameter; a change re-verifies. At the sized limit of the
+    """explore(design): one slider per numeric parameter; a change re-verifies. At the sized limit of the
     lifted load (the hand-calculated 14.86 kg x 9.81 m/s² = 145.8 N, the file's g) the motor check reads 1."""
     pytest.importorskip("ipywidgets")
     import re
@@ -286,7 +286,9 @@ def test_explore_sliders_reverify_the_design():
     d = load(LIFT)
     if "lifted_load" not in d.parameters:
         pytest.skip("the example has no lifted_load parameter")
-    e = d.explore({"parameters.lifted_load": ("100 N", "400 N")})
+    from mechverify.reports.explore import explore
+
+    e = explore(d, {"parameters.lifted_load": ("100 N", "400 N")})
     slider = e.sliders["parameters.lifted_load"]
     assert (slider.min, slider.max, slider.value) == (100.0, 400.0, 350.0)
     m_lim = (T_PULLOUT / SF - (J_SCREW + J_ROTOR) * ALPHA) / (_k_raise() * (G + ACC))
@@ -294,6 +296,6 @@ def test_explore_sliders_reverify_the_design():
     row = re.search(r"<tr><td>lift</td><td>[^<]*</td><td[^>]*>([^<]*)</td>", e.html)
     assert row and float(row.group(1)) == pytest.approx(1.0, abs=0.005)
     assert "Governing:" in e.html and "data:image/svg+xml" in e.html
-    assert len(d.explore().sliders) == sum(1 for v in d.parameters.values() if hasattr(v, "magnitude"))
+    assert len(explore(d).sliders) == sum(1 for v in d.parameters.values() if hasattr(v, "magnitude"))
     e.update({"parameters.lifted_load": -5.0})  # invalid: the message instead of the table
     assert "<pre" in e.html

@@ -85,13 +85,6 @@ class Design:
         """Parameter name -> resolved value (a quantity or a number)."""
         return dict(self.data.parameters)
 
-    def explore(self, names: Any = None, steps: int = 100) -> Any:
-        """Jupyter sliders for the numeric ``[parameters]`` (or key paths ``names``), re-verified on every change:
-        the u·SF table and the governing check's figure (:mod:`mechverify.studies.explore`, needs ipywidgets)."""
-        from mechverify.studies.explore import explore  # studies sit above design; imported on use only
-
-        return explore(self, names, steps)
-
     def __reduce__(self) -> tuple[Any, tuple[Any, ...]]:
         return _rebuild, (self.data.raw, self.data.path, list(self.data.files), self.overrides)
 

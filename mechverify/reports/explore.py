@@ -1,6 +1,6 @@
 """Interactive exploration in Jupyter: sliders for a design's parameters, re-verified on every change.
 
-``design.explore()`` (or :func:`explore`) shows one slider per numeric ``[parameters]`` value (or per
+``explore(design)`` shows one slider per numeric ``[parameters]`` value (or per
 key path given), from half to twice today's value unless a range is given, the summary table of
 u·SF per check and the governing check's figure. Needs ``ipywidgets`` (``pip install
 'mechverify[explore]'``). Each change builds the variant with :meth:`Design.with_overrides` and
@@ -35,7 +35,7 @@ def _parameters(design: Any, doc: Mapping[str, Any], names: Sequence[str] | Mapp
             out.append((p, *_default_range(p)))
         if not out:
             raise InputError("explore: the design has no numeric [parameters]; name key paths to vary, e.g. "
-                             "design.explore(['components.lift.mass'])")
+                             "explore(design, ['components.lift.mass'])")
         return out
     items = names.items() if isinstance(names, Mapping) else [(n, None) for n in names]
     out = []
@@ -90,7 +90,7 @@ class Explorer:
         try:
             import ipywidgets as w
         except ImportError:
-            raise InputError("design.explore() needs ipywidgets: pip install 'mechverify[explore]'") from None
+            raise InputError("explore() needs ipywidgets: pip install 'mechverify[explore]'") from None
         self.doc, self.path, self.design = design_and_source(design)
         self.params = _parameters(self.design, self.doc, names)
         self.html = ""
