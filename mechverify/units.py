@@ -105,27 +105,27 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
 
 #: Physically meaningful magnitudes (SI, absolute value; zero is always allowed): outside them a value
 #: is a mistake (a unit prefix or an exponent typed wrongly) and an :class:`InputError`, before it can
-#: overflow or divide by zero in a formula. The upper bound applies to every value; the lower bound to
-#: values given as text (design files, ``"350 N"``), since computed intermediate values may be tiny.
-#: Generous on purpose: from far below a micro-mechanism to far above a crane.
+#: overflow or divide by zero in a formula. The upper bounds are generous physical limits (far above a
+#: crane); they apply to every value. The lower bound applies to values given as text (design files,
+#: ``"350 N"``) and only stops magnitudes that would underflow in a formula (``"1e-300 mm"``): tiny values
+#: such as a coordinate computed as 6e-18 m (a rounded zero) stay valid.
 BOUNDS: dict[str, tuple[float, float]] = {
-    "dimensionless": (0.0, 1e30), "length": (1e-12, 1e7), "area": (1e-24, 1e14), "volume": (1e-36, 1e21),
-    "second_moment": (1e-48, 1e28), "mass": (1e-12, 1e9), "time": (1e-12, 1e13), "force": (1e-9, 1e12),
-    "force_per_length": (1e-9, 1e15), "pressure": (1e-6, 1e13), "torque": (1e-12, 1e12), "energy": (1e-12, 1e15),
-    "power": (1e-12, 1e12), "velocity": (1e-12, 1e6), "acceleration": (1e-12, 1e9), "angle": (1e-12, 1e9),
-    "angular_velocity": (1e-12, 1e7), "angular_acceleration": (1e-12, 1e10), "frequency": (1e-12, 1e12),
-    "density": (1e-6, 1e5), "inertia": (1e-18, 1e9), "torsional_stiffness": (1e-12, 1e12), "pv": (1e-9, 1e12),
-    "current": (1e-12, 1e6), "voltage": (1e-9, 1e7), "resistance": (1e-9, 1e12), "inductance": (1e-12, 1e3),
-    "torque_constant": (1e-9, 1e4), "speed_constant": (1e-6, 1e7), "thermal_resistance": (1e-6, 1e6),
-    "temperature": (1e-3, 1e5), "viscous_damping": (1e-15, 1e9),
+    "dimensionless": (0.0, 1e30), "length": (1e-30, 1e7), "area": (1e-40, 1e14), "volume": (1e-50, 1e21),
+    "second_moment": (1e-60, 1e28), "mass": (1e-30, 1e9), "time": (1e-30, 1e13), "force": (1e-30, 1e12),
+    "force_per_length": (1e-30, 1e15), "pressure": (1e-30, 1e13), "torque": (1e-30, 1e12),
+    "energy": (1e-30, 1e15), "power": (1e-30, 1e12), "velocity": (1e-30, 1e6), "acceleration": (1e-30, 1e9),
+    "angle": (1e-30, 1e9), "angular_velocity": (1e-30, 1e7), "angular_acceleration": (1e-30, 1e10),
+    "frequency": (1e-30, 1e12), "density": (1e-30, 1e5), "inertia": (1e-40, 1e9),
+    "torsional_stiffness": (1e-30, 1e12), "pv": (1e-30, 1e12), "current": (1e-30, 1e6), "voltage": (1e-30, 1e7),
+    "resistance": (1e-30, 1e12), "inductance": (1e-30, 1e3), "torque_constant": (1e-30, 1e4),
+    "speed_constant": (1e-30, 1e7), "thermal_resistance": (1e-30, 1e6), "temperature": (1e-30, 1e5),
+    "viscous_damping": (1e-30, 1e9),
 }
 
-#: Magnitudes plausible in a small machine (SI): a value given as text outside them is accepted with a
+#: Largest magnitudes plausible in a small machine (SI): a value given as text above them is accepted with a
 #: :class:`PlausibilityWarning` ("300 km" for a screw length is more likely a wrong prefix than a design).
-PLAUSIBLE: dict[str, tuple[float, float]] = {
-    "length": (1e-7, 1e3), "force": (1e-6, 1e8), "mass": (1e-7, 1e5), "velocity": (1e-9, 1e3),
-    "pressure": (1e-3, 1e12), "angular_velocity": (1e-9, 1e5),
-}
+PLAUSIBLE: dict[str, float] = {"length": 1e3, "force": 1e8, "mass": 1e5, "velocity": 1e3, "pressure": 1e12,
+                               "angular_velocity": 1e5}
 
 
 class PlausibilityWarning(UserWarning):
@@ -142,14 +142,12 @@ def _check_bounds(q: Any, dim: str, name: str, from_text: bool) -> None:
         raise InputError(f"{name}: {_describe(q)} is outside the physically meaningful range of "
                          f"{_ARTICLE[dim]} ({lo:g} to {hi:g} {DIMENSIONS[dim][1]} in magnitude, or zero); "
                          "check the unit prefix and the exponent")
-    if from_text and dim in PLAUSIBLE:
-        plo, phi = PLAUSIBLE[dim]
-        if np.any(mag > phi) or np.any((mag > 0) & (mag < plo)):
-            import warnings
+    if from_text and dim in PLAUSIBLE and np.any(mag > PLAUSIBLE[dim]):
+        import warnings
 
-            warnings.warn(f"{name}: {_describe(q)} is implausible for {_ARTICLE[dim]} in a small machine "
-                          f"(expected {plo:g} to {phi:g} {DIMENSIONS[dim][1]}); is the unit right?",
-                          PlausibilityWarning, stacklevel=4)
+        warnings.warn(f"{name}: {_describe(q)} is implausible for {_ARTICLE[dim]} in a small machine "
+                      f"(expected at most {PLAUSIBLE[dim]:g} {DIMENSIONS[dim][1]}); is the unit right?",
+                      PlausibilityWarning, stacklevel=4)
 
 
 # Readable names of dimensions for error messages ("expected a length").
