@@ -89,3 +89,69 @@ def test_report_has_the_frame_figure(tmp_path):
     d = mvd.load(p)
     html = render_html([(d, d.verify())])
     assert "deformed shape" in html and "data:image/svg+xml" in html
+
+
+RELEASED = """
+[design]
+name = "floor beam"
+
+[components.beam]
+type = "frame"
+material = "Structural Steel"
+section = "rectangle"
+width = "10 mm"
+height = "20 mm"
+theory = "euler"
+nodes = { A = ["0 mm", "0 mm", "0 mm"], B = ["400 mm", "0 mm", "0 mm"] }
+members = [ { name = "b", start = "A", end = "B", releases_start = "My", releases_end = "My" } ]
+supports = [ { at = "A", type = "fixed" }, { at = "B", type = "fixed" } ]
+deflection_limit = "L/100"
+
+[load_cases.dead.beam]
+distributed_loads = [ { member = "b", load = ["0 N/m", "0 N/m", "-1000 N/m"] } ]
+
+[load_cases.live.beam]
+distributed_loads = [ { member = "b", load = ["0 N/m", "0 N/m", "-2000 N/m"], start = "0 mm", end = "400 mm" } ]
+
+[load_cases.ULS.beam]
+combination = { dead = 1.35, live = 1.5 }
+"""
+
+
+def test_releases_and_a_combination_case(tmp_path):
+    """Pinned-ended beam between fixed supports (releases): a simple beam, M = w l² / 8 (AISC Table 3-23 case 1);
+    ULS = 1.35 dead + 1.5 live governs: w = 4350 N/m, M = 87 N·m, sigma = M / (b h²/6) = 130.5 MPa at mid-span
+    (V = 0 there: von Mises = sigma); deflection 5 w l⁴ / (384 E I) (Euler)."""
+    r = verify(tmp_path, RELEASED)
+    w = 1.35 * 1000 + 1.5 * 2000
+    M = w * 0.4**2 / 8
+    assert r["frame_stress"].load_case == "ULS"
+    assert r["frame_stress"].demand.m_as("Pa") == pytest.approx(M / (0.01 * 0.02**2 / 6), rel=1e-9)
+    E, I = 200e9, 0.01 * 0.02**3 / 12
+    assert r["frame_deflection"].demand.m_as("m") == pytest.approx(5 * w * 0.4**4 / (384 * E * I), rel=1e-9)
+    bad = RELEASED.replace("dead = 1.35", "deadd = 1.35")
+    with pytest.raises(DesignFileError, match=r"load_cases.ULS.beam.combination.deadd: not a load case of beam"):
+        verify(tmp_path, bad)
+    bad = RELEASED.replace('releases_end = "My"', 'releases_end = "Mq"')
+    with pytest.raises(DesignFileError, match=r"members\[0\].*releases_end.*'Mq'"):
+        verify(tmp_path, bad)
+
+
+def test_settlement_spring_and_tabulated_section_keys(tmp_path):
+    """A fixed-fixed member (tabulated section, Iy = b h³/12 of the 10 x 20 bar) whose end B settles 1 mm:
+    M = 6 E I Δ / l² at the ends (slope-deflection, hand calculation); sigma = M c / I."""
+    text = RELEASED.replace('members = [ { name = "b", start = "A", end = "B", releases_start = "My", '
+                            'releases_end = "My" } ]',
+                            'members = [ { name = "b", start = "A", end = "B", section = { kind = "properties", '
+                            'area = "200 mm**2", Iy = "6666.666666666667 mm**4", Iz = "1666.6666666666667 mm**4", '
+                            'J = "4577 mm**4", c_y = "5 mm", c_z = "10 mm" } } ]')
+    text = text.split("[load_cases.dead.beam]")[0] + """
+[load_cases.settle.beam]
+settlements = [ { at = "B", values = { z = "-1 mm" } } ]
+"""
+    r = verify(tmp_path, text)
+    E, I, L = 200e9, 0.01 * 0.02**3 / 12, 0.4
+    M = 6 * E * I * 1e-3 / L**2
+    sigma = M * 0.010 / I
+    tau = 12 * E * I * 1e-3 / L**3 / 200e-6  # V / A (no shear areas given)
+    assert r["frame_stress"].demand.m_as("Pa") == pytest.approx((sigma**2 + 3 * tau**2) ** 0.5, rel=1e-9)
