@@ -22,11 +22,18 @@ beam model). Every constructor returns a frozen :class:`Section` whose attribute
 =================  ==============================================================================
 
 Solid rectangles and round sections use closed forms (exact); the torsion constant of a rectangle
-is the exact series of Saint-Venant's solution. Hollow rectangles, I/T/L/C profiles and arbitrary
-polygons with holes are analysed with *sectionproperties* (Saint-Venant warping analysis by finite
-elements; geometric and plastic properties of a polygon are exact). Shear areas are evaluated at
-ν = 0 (:data:`NU_SHEAR`) in both paths: Cowper's coefficients then give the classical 5/6 for a
-rectangle, 6/7 for a solid circle and 1/2 for a thin tube, and sectionproperties agrees with them.
+is the exact series of Saint-Venant's solution. Hollow rectangles and I/T/L/C profiles (with their
+fillets) need no extra package: area, centroid, second moments and plastic moduli are exact integrals
+of the outline (Green's theorem; fillet arcs as 48 chords, area error ~3e-5), the torsion constant is
+the thin-walled sum of strips with the junction terms of El Darwish & Johnston (Roark Table 10.7;
+EN 10219-2 Annex B for the hollow rectangle), the shear centre the thin-walled one, and the shear
+areas Cowper's (I, box) or Jourawski's strip integral (T, L, C). Their agreement with
+sectionproperties' warping analysis is measured in ``tests/test_sections.py`` (J within 1-4 %,
+14 % for a T with fillets; IPE 200 J = 7.02 cm^4 against the catalogue's 6.98). Arbitrary polygons
+with holes are analysed with *sectionproperties* (the optional extra ``mechverify[sections]``;
+Saint-Venant warping analysis by finite elements). Shear areas are evaluated at ν = 0
+(:data:`NU_SHEAR`): Cowper's coefficients then give the classical 5/6 for a rectangle, 6/7 for a
+solid circle and 1/2 for a thin tube, and sectionproperties agrees with them.
 
 References
 ----------
@@ -36,6 +43,11 @@ References
    McGraw-Hill, 2012, Table 10.7 (torsion constants K of sections).
 3. G. R. Cowper, "The shear coefficient in Timoshenko's beam theory", J. Appl. Mech. 33 (1966) 335-340.
 4. R. van Leeuwen, *sectionproperties* 3 (https://github.com/robbievanleeuwen/section-properties).
+5. I. A. El Darwish, B. G. Johnston, "Torsion of structural shapes", J. Struct. Div. ASCE 91 (ST1), 1965
+   (the junction terms alpha D^4 that Roark Table 10.7 tabulates).
+6. W. D. Pilkey, *Formulas for Stress, Strain, and Structural Matrices*, 2nd ed., Wiley, 2005,
+   Sec. 2.8 (shear correction factors), Sec. 2.11 (shear centres of thin-walled sections).
+7. EN 10219-2:2006, Annex B (torsion constant It and modulus Ct of hollow sections).
 """
 
 from __future__ import annotations
@@ -478,7 +490,8 @@ def _strip(length: float, t: float, free_ends: int) -> float:
 
 
 def _tee_junction(tf: float, tw: float, r: float) -> float:
-    """``alpha D⁴`` of a T junction (web tw meeting a flange tf, fillets r): Roark Table 10.7 (I and T sections),
+    """``alpha D⁴`` of a T junction (web tw meeting a flange tf, fillets r): Roark Table 10.7 (I and T sections;
+    from El Darwish & Johnston 1965, ref. 5),
     ``alpha = (t/t1)(0.15 + 0.10 r/b)``, ``D = ((b + r)² + t_w (r + t_w/4)) / (2r + b)`` with b = tf."""
     t, t1 = min(tf, tw), max(tf, tw)
     alpha = t / t1 * (0.15 + 0.10 * r / tf)
