@@ -31,15 +31,22 @@ def run(args: argparse.Namespace) -> int:
         return 0
     name = args.check_name
     hits = [v for k, v in specs.items() if k == name or k.split(".", 1)[1] == name]
-    if not hits:  # a registered check's name or former name (mechverify.checks.registry), else UnknownNameError
-        from mechverify.checks.registry import explain_text
+    from mechverify.checks.registry import explain_text
+    from mechverify.errors import UnknownNameError
 
-        out.print(explain_text(name), markup=False, highlight=False)
-        return 0
+    try:  # the registry's text: title, class, explanation, formula, source, former names, Python function
+        text = explain_text(hits[0][1].name if hits else name)
+    except UnknownNameError:
+        if not hits:
+            raise
+        text = None
+    if text is not None:
+        out.print(text, markup=False, highlight=False)
     for ct, c in hits:
-        out.print(f"[bold]{ct.name}.{c.name}[/bold] — {c.title}")
-        out.print(c.explain or "(no explanation)")
-        if c.needs:
-            out.print(f"needs from a load case: {', '.join(c.needs)}")
-        out.print(f"default safety-factor class: {c.sf_kind}\n")
+        if text is None:
+            out.print(f"[bold]{ct.name}.{c.name}[/bold] — {c.title}")
+            out.print(c.explain or "(no explanation)")
+            out.print(f"default safety-factor class: {c.sf_kind}")
+        needs = f"; needs from a load case: {', '.join(n.replace('|', ' or ') for n in c.needs)}" if c.needs else ""
+        out.print(f"In design files: component type {ct.name}, key checks.{c.name}{needs}", markup=False)
     return 0
