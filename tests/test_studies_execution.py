@@ -101,3 +101,16 @@ def test_local_dask_cluster_equals_serial_byte_for_byte(serial_json):
         with dask_executor(cluster.scheduler_address, timeout=20) as executor:
             res = Study(LIFT, vary=VARY, samples=12, seed=7, batch_size=3).run(executor)
     assert res.to_json() == serial_json
+
+
+def test_workers_sized_by_memory(monkeypatch):
+    """With memory_per_worker, no more workers than the available memory holds (at least one)."""
+    from mechverify.errors import InputError
+
+    monkeypatch.setattr(ex, "available_memory", lambda: 5e9)
+    cores = ex.default_workers()
+    assert ex.default_workers("2 GB") == min(cores, 2)
+    assert ex.default_workers("8 GB") == 1
+    assert ex.default_workers("100 MB") == cores
+    with pytest.raises(InputError, match="memory size"):
+        ex.default_workers("2 kg")

@@ -27,6 +27,9 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                    help="Monte Carlo sampling: Latin hypercube (default), scrambled Sobol, pseudo-random")
     p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     p.add_argument("--workers", type=int, metavar="N", help="local worker processes (default: one per core)")
+    p.add_argument("--memory-per-worker", metavar="SIZE",
+                   help="peak memory of one sample, e.g. '2 GB' for an FEA model: fewer local workers when the "
+                        "available memory would not hold one per core")
     p.add_argument("--serial", action="store_true", help="run in this process (no worker processes)")
     p.add_argument("--scheduler", metavar="ADDRESS",
                    help="run on the Dask cluster at tcp://host:8786 (default: $DASK_SCHEDULER_ADDRESS if set)")
@@ -87,7 +90,8 @@ def run(args: argparse.Namespace) -> int:
         with dask_executor(scheduler, timeout=args.timeout) as executor:
             result = study.run(executor, progress=progress)
     else:
-        result = study.run("serial" if args.serial else None, workers=args.workers, progress=progress)
+        result = study.run("serial" if args.serial else None, workers=args.workers,
+                           memory_per_worker=args.memory_per_worker, progress=progress)
     text = result.summary()
     out.print(text.splitlines()[0] if args.quiet else text, markup=False, highlight=False, soft_wrap=True)
     if args.json_out:

@@ -91,11 +91,42 @@ def run_batch(doc: Mapping[str, Any], path: str | None, overrides: Sequence[Mapp
     return [evaluate(doc, path, ov) for ov in overrides]
 
 
-def default_workers() -> int:
+def available_memory() -> float | None:
+    """Memory available to new processes [bytes] (Linux: MemAvailable of /proc/meminfo), or None."""
     try:
-        return max(1, len(os.sched_getaffinity(0)))
+        with open("/proc/meminfo") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return float(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return None
+
+
+def default_workers(memory_per_worker: Any = None) -> int:
+    """One worker per core; with ``memory_per_worker`` (e.g. ``"2 GB"``, an FEA sample's peak) no more
+    than the available memory holds."""
+    try:
+        n = max(1, len(os.sched_getaffinity(0)))
     except AttributeError:  # not on Linux
-        return max(1, os.cpu_count() or 1)
+        n = max(1, os.cpu_count() or 1)
+    if memory_per_worker is not None:
+        from mechverify.errors import InputError
+        from mechverify.units import Q
+
+        try:
+            per = float(Q(memory_per_worker).to("byte").magnitude)
+        except MechverifyError as exc:
+            raise InputError(f"memory_per_worker: {exc}") from None
+        except Exception:  # (pint: not a memory size)
+            raise InputError(f"memory_per_worker: expected a memory size such as '2 GB', got "
+                             f"{memory_per_worker!r}") from None
+        if not per > 0:
+            raise InputError(f"memory_per_worker: must be positive, got {memory_per_worker!r}")
+        avail = available_memory()
+        if avail is not None:
+            n = max(1, min(n, int(avail // per)))
+    return n
 
 
 def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:

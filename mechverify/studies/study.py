@@ -374,16 +374,20 @@ class Study:
         return self.result_skeleton().reproduce(i, path)
 
     # ------------------------------------------------------------------ running
-    def run(self, executor: Any = None, *, workers: int | None = None, progress: bool | Any = False,
-            retries: int = 1) -> StudyResult:
+    def run(self, executor: Any = None, *, workers: int | None = None, memory_per_worker: Any = None,
+            progress: bool | Any = False, retries: int = 1) -> StudyResult:
         """Evaluate every sample. ``executor``: any :class:`concurrent.futures.Executor` (default: a local
-        process pool with one worker per core; ``"serial"``: in this process). ``progress``: True for a
-        rich progress bar on the console, or a callable taking the number of samples just finished."""
+        process pool with one worker per core, or fewer when ``memory_per_worker``, e.g. ``"2 GB"`` for an
+        FEA model, times the workers would exceed the available memory; ``"serial"``: in this process).
+        ``progress``: True for a rich progress bar on the console, or a callable taking the number of
+        samples just finished."""
+        if workers is not None and not (isinstance(workers, int) and workers >= 1):
+            raise InputError(f"workers: expected a positive integer, got {workers!r}")
         inputs = self.inputs()
         ovs = [self.overrides(x) for x in inputs]
         if executor == "serial":
             executor = execution.SerialExecutor()
-        n_workers = workers or execution.default_workers()
+        n_workers = workers or execution.default_workers(memory_per_worker)
         size = self.batch_size or max(1, min(50, math.ceil(len(ovs) / (4 * n_workers))))
         batches = [ovs[i:i + size] for i in range(0, len(ovs), size)]
         bar, on_done = _progress(progress, len(ovs))
