@@ -123,7 +123,9 @@ def test_cylinder_primitive_named_regions():
     """Round steel bar d = 10 mm, L = 40 mm cantilever, 100 N tip load: Timoshenko beam tip deflection
     P L^3 / (3 E I) + P L / (kappa G A), kappa = 6(1 + nu)/(7 + 6 nu) for a circle (Timoshenko & Gere,
     Mechanics of Materials, 4th ed., Table G-1 case 4; Cowper, J. Appl. Mech. 33 (1966) 335, Table 1).
-    The straight-sided mesh cuts the circle into a polygon of ~25 sides (I about 1.5 % low); 3 %."""
+    The straight-sided mesh cuts the circle into a polygon of ~25 sides (I about 1.5 % low: measured
+    +1.7 % deflection); gmsh's second-order mesh (curved elements, the default) follows the circle:
+    measured +0.20 %, asserted within 0.5 %."""
     pytest.importorskip("gmsh")
     m = mesh.cylinder("5 mm", "40 mm", "1.25 mm", axis="x")
     assert set(m.named) == {"start", "end", "side"}
@@ -133,7 +135,7 @@ def test_cylinder_primitive_named_regions():
     I, A, G = np.pi * d**4 / 64, np.pi * d**2 / 4, E / (2 * (1 + nu))
     kappa = 6 * (1 + nu) / (7 + 6 * nu)
     expect = P * L**3 / (3 * E * I) + P * L / (kappa * G * A)
-    assert res.max_displacement.value.m_as("m") == pytest.approx(expect, rel=0.03)
+    assert res.max_displacement.value.m_as("m") == pytest.approx(expect, rel=0.005)
 
 
 def test_bolt_holes_as_regions_and_step_import(tmp_path):
