@@ -49,7 +49,7 @@ def test_joint_and_group_run_every_check(tmp_path):
     rs = list(_load(tmp_path).verify())
     names = {(r.component, r.check) for r in rs}
     for comp in ("flange", "group"):
-        for chk in ("bolt_assembly_stress", "bolt_working_stress", "bolt_fatigue", "bolt_surface_pressure_head",
+        for chk in ("bolt_assembly_stress", "bolt_required_preload", "bolt_working_stress", "bolt_fatigue", "bolt_surface_pressure_head",
                     "bolt_surface_pressure_nut", "bolt_thread_stripping", "bolt_separation", "bolt_slip",
                     "bolt_tightening_torque"):
             assert (comp, chk) in names

@@ -64,6 +64,29 @@ def check_bolt_assembly_stress(joint: BoltedJoint, a: JointAnalysis, *, required
         load_case=load_case, details=_diagram(joint, a))
 
 
+@check("bolt_required_preload", title="Required assembly preload (VDI 2230 R4, R7)", sf_kind="limit",
+       source=ref(VDI, "R4, R5, R7; Eqs. (R4/1), (R7/1)"),
+       explain=("The assembly preload the joint needs, F_M,min,req = F_KR + (1 - Phi_n) F_A,max + F_Z + Delta F_Vth "
+                "(clamp load for slip or sealing, plate relief, embedding and thermal losses; R4), against the "
+                "smallest preload the tightening gives, F_M,min = F_M,max/alpha_A; with F_M,max = F_M,zul this is "
+                "VDI 2230's sizing criterion alpha_A F_M,min,req <= F_M,zul (R7)."))
+def check_bolt_required_preload(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float = 1.0,
+                                load_case: str = "") -> CheckResult:
+    """F_M,min,req (R4) against F_M,min from the tightening (R5/R7)."""
+    return CheckResult(
+        check="bolt_required_preload", component=joint.name, demand=_kN(a.F_M_req), capacity=_kN(a.F_M_min),
+        required_sf=required_sf, title=f"Required assembly preload, {joint.thread.designation} {joint.grade.name}",
+        formula=r"F_{M,min,erf} = F_{KR} + (1-\Phi_n)F_{A,max} + F_Z + \Delta F_{Vth} \le F_{M,min} = "
+                r"\frac{F_{M,max}}{\alpha_A}",
+        source=ref(VDI, "R4, R7"),
+        inputs={**_inputs(joint), "F_KR": _kN(max(a.F_KQ, a.F_K_req)), "F_A": _kN(a.F_A_max), "F_Z": _kN(a.F_Z),
+                "dF_Vth": _kN(a.dF_Vth), "F_M_zul": _kN(a.F_M_zul)},
+        notes=(f"F_KR = max(F_KQerf = {a.F_KQ / 1e3:.4g} kN, F_K,erf = {a.F_K_req / 1e3:.4g} kN)",
+               f"alpha_A F_M,min,req = {joint.alpha_A * a.F_M_req / 1e3:.4g} kN against F_M,zul = "
+               f"{a.F_M_zul / 1e3:.4g} kN"),
+        load_case=load_case, details=_diagram(joint, a))
+
+
 @check("bolt_working_stress", title="Bolt working stress", sf_kind="limit",
        source=ref(VDI, "R8, Eqs. (R8/1)-(R8/4)"),
        explain=("Von Mises stress of the bolt in service: the largest bolt force F_S,max = F_M,max + Phi_n F_A "

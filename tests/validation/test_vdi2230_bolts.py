@@ -164,3 +164,14 @@ def test_stripping_capacity_of_a_nut_hand():
     a = j.analyse("1 kN")
     assert a.stripping_capacity == pytest.approx(cap, rel=1e-9)
     assert a.stripping_demand == pytest.approx(800 * j.thread.As * 1e6, rel=1e-12)
+
+
+def test_required_assembly_preload_r4_hand():
+    """R4: F_M,min,req = F_KR + (1 - Phi_n) F_A,max + F_Z + Delta F_Vth (a loss counted, a gain not), F_KR the larger
+    of the slip clamp load F_Q/(q_F mu_T) and the required residual clamp load (hand calculation from the equation)."""
+    j = b.bolted_joint("j", "M10", "8.8", [("10 mm", "S235JR"), ("10 mm", "S235JR")], "45 mm", mu_T=0.15,
+                       F_K_req="500 N")
+    a = j.analyse("4 kN", F_Q="600 N", dT="-30 K")   # cooling: equal alphas, no thermal change
+    F_KR = max(600 / 0.15, 500)
+    assert a.F_M_req == pytest.approx(F_KR + (1 - a.Phi_n) * 4000 + a.F_Z + max(a.dF_Vth, 0))
+    assert a.F_KQ == pytest.approx(4000)

@@ -74,7 +74,6 @@ def _joint(p: Mapping[str, Any]) -> b.BoltedJoint:
 
 def _point(v: Any, unit: str, path: str) -> tuple[float, float]:
     from mechverify.design.adapters.plate_fea import parse_point  # plate_fea imports this module
-
     x, y = parse_point(v, unit, path)
     return to_si(x, "length", path), to_si(y, "length", path)
 
@@ -156,14 +155,14 @@ LOADS = (
     Field("transverse_force", "force", "transverse force F_Q on the joint (carried by friction)"),
     Field("temperature_change", "temperature", "uniform temperature change of bolt and parts from assembly (K)"),
 )
-CHECKS = (cb.check_bolt_assembly_stress, cb.check_bolt_working_stress, cb.check_bolt_fatigue,
-          cb.check_bolt_surface_pressure_head, cb.check_bolt_surface_pressure_nut, cb.check_bolt_thread_stripping,
-          cb.check_bolt_separation, cb.check_bolt_slip, cb.check_bolt_tightening_torque)
+CHECKS = (cb.check_bolt_assembly_stress, cb.check_bolt_required_preload, cb.check_bolt_working_stress,
+          cb.check_bolt_fatigue, cb.check_bolt_surface_pressure_head, cb.check_bolt_surface_pressure_nut,
+          cb.check_bolt_thread_stripping, cb.check_bolt_separation, cb.check_bolt_slip, cb.check_bolt_tightening_torque)
 _A = "axial_force|transverse_force|temperature_change"
 _GA = "axial_force|force_x|force_y|moment_x|moment_y|moment_z|temperature_change"
 # every load-dependent check runs in each case that loads the joint (a missing load counts as zero)
-NEEDS = {n: (_A,) for n in ("bolt_working_stress", "bolt_fatigue", "bolt_surface_pressure_head",
-                            "bolt_surface_pressure_nut", "bolt_separation", "bolt_slip")}
+NEEDS = {n: (_A,) for n in ("bolt_required_preload", "bolt_working_stress", "bolt_fatigue",
+                            "bolt_surface_pressure_head", "bolt_surface_pressure_nut", "bolt_separation", "bolt_slip")}
 GROUP_NEEDS = {n: (_GA,) for n in NEEDS}
 
 
