@@ -132,3 +132,25 @@ def test_sh_block_runs(code: str, design: str | None, workdir: Path):
         assert r.returncode in allowed, f"{cmd!r} exited {r.returncode}:\n{r.stderr[-3000:]}"
         assert "Traceback" not in r.stderr and "internal error" not in r.stderr, f"{cmd!r}:\n{r.stderr[-3000:]}"
         commit(workdir)
+
+
+def test_every_design_file_key_is_documented():
+    """Every key a user can write in a design file (the [design] and [requirements] keys, every field and
+    load of every component type) is named in docs/design-files.md: in backticks, as a table header, or
+    written in an example (`key = ...`). The check keys are kept current by the registry's own test (tests/test_registry.py)."""
+    from mechverify.design import REGISTRY, adapters  # noqa: F401
+    from mechverify.design.loader import DESIGN_KEYS, REQUIREMENT_FIELDS
+
+    text = (ROOT / "docs" / "design-files.md").read_text(encoding="utf-8")
+
+    def documented(key: str) -> bool:
+        return (f"`{key}`" in text or f".{key}]" in text  # `key`, a [table.key] header, or key = in an example
+                or re.search(rf"(^|[{{,`]\s*){re.escape(key)}\s*=", text, re.M) is not None)
+
+    missing = [f"design.{k}" for k in DESIGN_KEYS if not documented(k)]
+    missing += [f"requirements.{f.name}" for f in REQUIREMENT_FIELDS if not documented(f.name)]
+    for ct in REGISTRY.types.values():
+        if ct.name.startswith("test_"):  # conftest.py's test-only types
+            continue
+        missing += [f"{ct.name}.{f.name}" for f in (*ct.fields, *ct.loads) if not documented(f.name)]
+    assert not missing, f"not in docs/design-files.md: {missing}"
