@@ -13,6 +13,7 @@
 from __future__ import annotations
 
 import contextlib
+import glob
 import os
 import signal
 import stat
@@ -129,7 +130,7 @@ def _cleanup_on_sigterm() -> Iterator[None]:
 
 def _remove_stale(path: Path) -> None:
     """Remove ``.NAME.PID.*.tmp`` of ``path`` left by a process that no longer runs (killed by SIGKILL)."""
-    for t in path.parent.glob(f".{path.name}.*.tmp"):
+    for t in path.parent.glob(f".{glob.escape(path.name)}.*.tmp"):
         pid = t.name[len(path.name) + 2:].split(".", 1)[0]
         if not pid.isdigit() or int(pid) == os.getpid():
             continue
