@@ -13,7 +13,8 @@ demo would leave the working tree modified. The committed report is regenerated 
 ``python examples/lead_screw_lift/run.py``.
 
 The design as the document specifies it FAILS three checks (stepper torque at 540 rpm with the nut's highest
-friction, nut pv, screw bending in the horizontal posture): that is the finding, not an error of the demo,
+friction, nut pv, screw bending in the horizontal posture) and its 4 mm arm plate two more (stress and
+deflection, plate FEA): that is the finding, not an error of the demo,
 which exits 0 once the report is written (2 if the example cannot be found or is invalid). The comparison
 with every number of the document is in ``docs/examples/lead_screw_lift.md``.
 """
