@@ -108,7 +108,7 @@ def check_bolt_working_stress(joint: BoltedJoint, a: JointAnalysis, *, required_
 
 @check("bolt_fatigue", title="Bolt fatigue (thread endurance)", sf_kind="fatigue",
        source=ref(VDI, "R9, Eqs. (R9/1)-(R9/5)"),
-       explain=("Stress amplitude at the bolt's core area sigma_a = Phi_n (F_A,max - F_A,min)/(2 A_d3) against the "
+       explain=("Stress amplitude on the stress area sigma_a = Phi_n (F_A,max - F_A,min)/(2 A_S) against the "
                 "endurance limit of rolled threads: sigma_ASV = 0.85 (150/d + 45) MPa rolled before heat treatment, "
                 "(2 - F_Sm/F_0.2) sigma_ASV rolled after (VDI 2230 R9, N_D = 2e6); VDI asks S_D >= 1.2."))
 def check_bolt_fatigue(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float = 1.2,
@@ -119,9 +119,9 @@ def check_bolt_fatigue(joint: BoltedJoint, a: JointAnalysis, *, required_sf: flo
     return CheckResult(
         check="bolt_fatigue", component=joint.name, demand=_MPa(a.sigma_a), capacity=_MPa(a.sigma_AS),
         required_sf=required_sf, title=f"Bolt fatigue, {joint.thread.designation} (rolled {how} heat treatment)",
-        formula=(r"\sigma_a = \frac{\Phi_n (F_{A,max} - F_{A,min})}{2 A_{d3}} \le \sigma_{ASV} = "
+        formula=(r"\sigma_a = \frac{\Phi_n (F_{A,max} - F_{A,min})}{2 A_S} \le \sigma_{ASV} = "
                  r"0.85\left(\frac{150}{d} + 45\right)" if how == "before" else
-                 r"\sigma_a = \frac{\Phi_n (F_{A,max} - F_{A,min})}{2 A_{d3}} \le \sigma_{ASG} = "
+                 r"\sigma_a = \frac{\Phi_n (F_{A,max} - F_{A,min})}{2 A_S} \le \sigma_{ASG} = "
                  r"\left(2 - \frac{F_{Sm}}{F_{0.2}}\right)\sigma_{ASV}"),
         source=ref(VDI, "R9"),
         inputs={**_inputs(joint), "F_A_max": _kN(a.F_A_max), "F_A_min": _kN(a.F_A_min), "Phi_n": Q(a.Phi_n, "")},

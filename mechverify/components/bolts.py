@@ -938,9 +938,8 @@ class BoltedJoint:
         F_S_max = fmax + FSA + gain
         M_G = thread_torque.si(fmax, th.P, th.d2, self.mu_G[0])
         sig_B = working_stress.si(F_S_max, M_G, th.d0)
-        # fatigue (R9), on the core area A_d3
-        A_d3 = math.pi / 4 * th.d3**2
-        sig_a = Phin * (FA - FAmin) / (2 * A_d3)
+        # fatigue (R9/1): amplitude on the stress area A_S, to which sigma_ASV/ASG refer (VDI 2230:2015)
+        sig_a = Phin * (FA - FAmin) / (2 * th.As)
         F_Sm = fmax + Phin * (FA + FAmin) / 2
         F02 = th.As * g.Rp02
         sig_AS = endurance_rolled_after_ht.si(th.d, F_Sm, F02) if self.rolled_after_heat_treatment else \

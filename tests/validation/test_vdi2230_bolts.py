@@ -175,3 +175,12 @@ def test_required_assembly_preload_r4_hand():
     F_KR = max(600 / 0.15, 500)
     assert a.F_M_req == pytest.approx(F_KR + (1 - a.Phi_n) * 4000 + a.F_Z + max(a.dF_Vth, 0))
     assert a.F_KQ == pytest.approx(4000)
+
+
+def test_alternating_stress_r9_hand():
+    """R9/1: sigma_a = Phi_n (F_A,max - F_A,min)/(2 A_S), on the stress area to which sigma_ASV refers (hand
+    calculation from the equation)."""
+    j = b.bolted_joint("j", "M12", "10.9", [("15 mm", "S235JR"), ("15 mm", "S235JR")], "60 mm")
+    a = j.analyse("6 kN", F_A_min="1 kN")
+    assert a.sigma_a == pytest.approx(a.Phi_n * 5000 / (2 * j.thread.As))
+    assert a.sigma_AS == pytest.approx(0.85 * (150 / 12 + 45) * 1e6)
