@@ -223,3 +223,20 @@ def test_solid_stress_at_and_integration_points():
     assert res.error_estimate < 1e-6  # the exact solution is in the P2 space: nothing to recover
     with pytest.raises(InputError, match="outside the mesh"):
         res.stress_at([("150 mm", "0 mm", "0 mm")])
+
+
+def test_region_cutting_through_facets_warns_without_an_expectation():
+    """The issue's silent partial catch, with nothing stated: a box edge at x = 30 mm falls inside an element
+    edge (nodes at 25 and 33.3 mm), so the box catches whole edges only - warned; with nodes at 30 and
+    70 mm (10 cells) nothing is cut and nothing is warned. The end-face plane and a pressure pad aligned
+    with element edges in 3D give no warning; a pad edge at y = 10 mm between nodes at 6.7 and 13.3 mm does."""
+    cut = strip_model(12).region_reports()[0]
+    assert "cuts through 2 boundary facet(s)" in cut.warning
+    assert strip_model(10).region_reports()[0].warning is None
+    m = mesh.box(("100 mm", "20 mm", "20 mm"), (10, 3, 3))
+    for hi, warned in (("10 mm", True), ("13.3333333333 mm", False)):
+        model = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Plane(x="0 mm")),),
+                                 loads=(Pressure(Box(("40 mm", "0 mm", "20 mm"), ("60 mm", hi, "20 mm")), "1 MPa"),
+                                        Force(Plane(x="100 mm"), ("1 N", "0 N", "0 N"))))
+        reps = model.region_reports()
+        assert (reps[0].warning is not None) is warned and reps[1].warning is None

@@ -64,6 +64,50 @@ def compare_measure(item: str, caught: float, expected: float | None, unit: str)
             f"{expected * scale:.6g} {u}; the region misses (or over-reaches) part of the intended boundary")
 
 
+def straddle_warning(item: str, region: Region, facet_vertices: Any, normals: Any, caught: Any, points: Any,
+                     tol: float, samples: Any) -> str | None:
+    """A warning when ``region``'s boundary cuts through boundary facets of the surface it selects: an
+    uncaught facet that continues a caught one (shares a vertex, normal within 30°) and has an interior
+    sample point inside the region - the caught area then depends on where the mesh's nodes fall.
+
+    ``facet_vertices[k, nv]`` vertex indices, ``normals[k, d]`` unit outward normals, ``caught[k]`` mask,
+    ``points[d, n]`` coordinates, ``samples[s, nv]`` barycentric interior sample points of a facet.
+    """
+    import numpy as np
+
+    from mechverify.fea.regions import Named
+
+    if isinstance(region, Named) or not np.any(caught):
+        return None
+    n = points.shape[1]
+    vn = np.zeros((n, normals.shape[1]))
+    np.add.at(vn, facet_vertices[caught].ravel(), np.repeat(normals[caught], facet_vertices.shape[1], axis=0))
+    touched = np.linalg.norm(vn, axis=1) > 0
+    vn[touched] /= np.linalg.norm(vn[touched], axis=1)[:, None]
+    cand = np.flatnonzero(~caught & touched[facet_vertices].any(axis=1))
+    if cand.size == 0:
+        return None
+    fv = facet_vertices[cand]
+    same = (np.einsum("kvd,kd->kv", vn[fv], normals[cand]) > np.cos(np.radians(30))) & touched[fv]
+    cand, fv = cand[same.any(axis=1)], fv[same.any(axis=1)]
+    if cand.size == 0:
+        return None
+    X = np.einsum("sv,dkv->dks", samples, points[:, fv])  # d, k, s
+    inside = region.contains(X.reshape(points.shape[0], -1), tol).reshape(cand.size, -1).any(axis=1)
+    k = int(inside.sum())
+    if k == 0:
+        return None
+    return (f"WARNING: {item}: the region's boundary cuts through {k} boundary facet(s) of the surface it "
+            "selects, so it caught only the whole facets inside it and the caught size depends on the mesh; "
+            "align the region with element edges, name the surface in the mesh, or state expect_area/"
+            "expect_length")
+
+
+def _join(*warnings: str | None) -> str | None:
+    parts = [w for w in warnings if w]
+    return " ".join(parts) if parts else None
+
+
 def _expect(area: Any, length: Any) -> tuple[float | None, float | None]:
     a = None if area is None else to_si(area, "area", "expect_area")
     ln = None if length is None else to_si(length, "length", "expect_length")

@@ -40,8 +40,10 @@ from mechverify.fea.loads import (
     RegionReport,
     Support,
     Traction,
+    _join,
     compare_measure,
     pin_tractions,
+    straddle_warning,
 )
 from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
@@ -270,8 +272,8 @@ class PlaneModel:
             name = f"{type(ld).__name__} {k + 1} on {ld.region.describe()}"
             got = float(length.sum())
             expected = ld.expect_length if ld.expect_length is not None else self._known_length(ld.region)
-            out.append(RegionReport(name, int(length.size), got, "m", total, expected,
-                                    compare_measure(name, got, expected, "m")))
+            warn = _join(compare_measure(name, got, expected, "m"), self._straddle(name, ld.region))
+            out.append(RegionReport(name, int(length.size), got, "m", total, expected, warn))
         nodes_all, blen, _ = self._boundary
         for k, s in enumerate(self.supports):
             name = f"{type(s).__name__} {k + 1} on {s.region.describe()}"
@@ -287,6 +289,16 @@ class PlaneModel:
             out.append(RegionReport(name, int(nodes.size), got, "m", res, expected,
                                     compare_measure(name, got, expected, "m")))
         return tuple(out)
+
+    def _straddle(self, name: str, region: Region) -> str | None:
+        """:func:`~mechverify.fea.loads.straddle_warning` for an edge load's region."""
+        if isinstance(region, Named):
+            return None
+        nodes, _, normal = self._boundary
+        tol = 1e-6 * self.size
+        caught = np.all(region.contains(self.nodes, tol)[nodes[:, :2]], axis=1)
+        samples = np.array([[0.75, 0.25], [0.5, 0.5], [0.25, 0.75]])
+        return straddle_warning(name, region, nodes[:, :2], normal, caught, self.mesh.p, tol, samples)
 
     def _known_length(self, region: Region) -> float | None:
         if isinstance(region, Named):

@@ -43,8 +43,10 @@ from mechverify.fea.loads import (
     RegionReport,
     Support,
     Traction,
+    _join,
     compare_measure,
     pin_tractions,
+    straddle_warning,
 )
 from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
@@ -270,8 +272,9 @@ class SolidModel:
                 continue
             area = float(fc.area.sum())  # curved facets: the curved area
             expected = ld.expect_area if ld.expect_area is not None else self._known_area(ld.region)
+            warn = _join(compare_measure(name, area, expected, "m**2"), self._straddle(name, ld.region))
             out.append(RegionReport(name, len(fc.area), area, "m**2", tuple(f.reshape(-1, 3).sum(axis=0)), expected,
-                                    compare_measure(name, area, expected, "m**2")))
+                                    warn))
         bf, bnodes, barea, _ = self._boundary
         for k, s in enumerate(self.supports):
             name = f"{type(s).__name__} {k + 1} on {s.region.describe()}"
@@ -287,6 +290,16 @@ class SolidModel:
             out.append(RegionReport(name, int(nodes.size), area, "m**2", res, expected,
                                     compare_measure(name, area, expected, "m**2")))
         return tuple(out)
+
+    def _straddle(self, name: str, region: Region) -> str | None:
+        """:func:`~mechverify.fea.loads.straddle_warning` for a surface load's region."""
+        bf, nodes, _, normal = self._boundary
+        if isinstance(region, Named):
+            return None
+        tol = 1e-6 * self.mesh.size
+        caught = np.all(region.contains(self.nodes, tol)[nodes[:, :3]], axis=1)
+        samples = np.array([[1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
+        return straddle_warning(name, region, nodes[:, :3], normal, caught, self.mesh.mesh.p, tol, samples)
 
     def _known_area(self, region: Region) -> float | None:
         if isinstance(region, Named):
