@@ -155,3 +155,13 @@ settlements = [ { at = "B", values = { z = "-1 mm" } } ]
     sigma = M * 0.010 / I
     tau = 12 * E * I * 1e-3 / L**3 / 200e-6  # V / A (no shear areas given)
     assert r["frame_stress"].demand.m_as("Pa") == pytest.approx((sigma**2 + 3 * tau**2) ** 0.5, rel=1e-9)
+
+
+def test_the_documented_example_verifies(tmp_path):
+    """docs/design-files.md, 'Component type frame': the TOML example loads and verifies (ULS governs)."""
+    from pathlib import Path
+
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "design-files.md").read_text(encoding="utf-8")
+    block = doc[doc.index("## Component type `frame`"):].split("```toml\n", 1)[1].split("```", 1)[0]
+    r = verify(tmp_path, '[design]\nname = "doc"\n\n' + block)
+    assert r["frame_stress"].load_case == "ULS" and r["frame_stress"].passed
