@@ -186,3 +186,18 @@ def test_curved_tetrahedra_on_the_lame_ring():
         ccx = calculix.run_model(model)
         u = out["curved"][2].u
         assert np.abs(ccx.displacement - u).max() <= 2e-4 * np.abs(u).max()
+
+
+def test_inverted_curved_tetrahedron_is_a_named_error():
+    from dataclasses import replace
+
+    from mechverify.fea.isoparametric import InvertedElementError
+
+    model, _ = V.lame_solid(0.008)
+    m = model.mesh
+    bad = m.curved.copy()
+    ed = m.basis.element_dofs[:, 0]
+    # move the first element's mid-edge node (0,1) far beyond vertex 1: the mapping folds over
+    bad[:, ed[4]] = m.mesh.p[:, ed[1]] + 3.0 * (m.mesh.p[:, ed[1]] - m.mesh.p[:, ed[0]])
+    with pytest.raises(InvertedElementError, match="inverted"):
+        replace(model, mesh=replace(m, curved=bad)).solve()
