@@ -184,8 +184,8 @@ def check_bolt_surface_pressure_nut(joint: BoltedJoint, a: JointAnalysis, *, req
        source=ref(VDI, "R11, Sec. 5.5.5 (Alexander)"),
        explain=("The internal thread (nut or tapped part) must carry the bolt's breaking force R_m A_S: its "
                 "stripping force tau_BM A_SGM C1 C3 (Alexander's shear area, nut dilation C1 and thread bending C3, "
-                "tau_B = 0.6 R_m) over the load-bearing engaged length m_eff = m_ges - 2P, so that an overload "
-                "breaks the bolt, not the thread."))
+                "tau_B = 0.6 R_m for steel) over the load-bearing engaged length m_eff = m_ges - 2P, so that an "
+                "overload breaks the bolt, not the thread."))
 def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float = 1.0,
                                 load_case: str = "") -> CheckResult:
     """R_m A_S against the internal thread's stripping force (VDI 2230 R11)."""
@@ -200,7 +200,8 @@ def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, require
         inputs={**_inputs(joint), "m_ges": Q(joint.engagement * 1e3, "mm"),
                 "m_eff": Q(joint.effective_engagement * 1e3, "mm")},
         notes=("m_eff = m_ges - 2P: two non-bearing thread turns (VDI 2230:2015 m_zu)",
-               "tau_B = 0.6 R_m for the internal and external thread (VDI 2230 Table 5.5/5 ratio, assumed)",
+               "tau_B/R_m = 0.6 steel, 0.65 austenitic, 0.7 aluminium, 0.9 grey iron (VDI 2230 Table 5.5/5 as "
+               "reproduced in third-party code, not checked against the guideline)",
                "Alexander's C1, C3 as quoted from VDI 2230 Sec. 5.5.5.2 (not checked against a found source)"),
         load_case=load_case)
 

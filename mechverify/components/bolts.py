@@ -53,6 +53,10 @@ VDI = "VDI 2230 Part 1:2015"
 #: Young's modulus and thermal expansion of steel bolts (VDI 2230 uses E_S = 205 GPa at room temperature).
 E_STEEL_BOLT = 205e9
 ALPHA_STEEL = 11.5e-6
+#: Shear strength ratio tau_B/R_m by material category (VDI 2230 Table 5.5/5 as reproduced in third-party code,
+#: S. Vargas-Ortega's 'DVI bolt design tool'; not checked against the guideline): steel 0.60, austenitic cold-worked
+#: 0.65, grey cast iron 0.90, aluminium alloys 0.70, titanium 0.60.
+SHEAR_RATIO = {"steel": 0.60, "stainless steel": 0.65, "cast iron": 0.90, "aluminium": 0.70, "titanium": 0.60}
 #: Coefficients of thermal expansion [1/K] by material category, used when a clamped part gives none.
 THERMAL_EXPANSION = {"steel": 11.5e-6, "stainless steel": 16.0e-6, "aluminium": 23.4e-6, "copper alloy": 18.0e-6,
                      "cast iron": 10.5e-6}
@@ -655,6 +659,7 @@ class ClampedPart:
     Rm: float | None = None
     p_G: float | None = None
     yield_strength: float | None = None
+    shear_ratio: float = 0.6    # tau_B / R_m of the material (SHEAR_RATIO by category)
 
     @classmethod
     def of(cls, thickness: QuantityLike, material: Any, *, p_G: QuantityLike | None = None,
@@ -673,7 +678,7 @@ class ClampedPart:
         pg = to_si(p_G, "pressure", "p_G") if p_G is not None else limiting_surface_pressure(mat.name)
         return cls(t, to_si(mat.E, "pressure"), float(alpha), mat.name,
                    None if mat.ultimate_strength is None else to_si(mat.ultimate_strength, "pressure"), pg,
-                   None if cy is None else to_si(cy, "pressure"))
+                   None if cy is None else to_si(cy, "pressure"), SHEAR_RATIO.get(mat.category, 0.6))
 
     @property
     def limiting_pressure(self) -> float | None:
@@ -970,13 +975,14 @@ class BoltedJoint:
     def _stripping(self) -> tuple[float, float]:
         """(capacity, demand) of the internal thread: tau_BM A_SGM C1 C3 against R_m A_S of the bolt (R11)."""
         th, g = self.thread, self.grade
+        ratio_S = 0.65 if g.name.upper().startswith("A") else 0.60   # austenitic A2/A4 classes, else steel
         if self.internal_Rm is not None:
-            Rm_M = self.internal_Rm
+            Rm_M, ratio_M = self.internal_Rm, 0.6
         elif self.tapped is None:
-            Rm_M = g.Rm
+            Rm_M, ratio_M = g.Rm, ratio_S   # nut of the bolt's class
         else:
-            Rm_M = self.tapped.Rm or g.Rm
-        tau_BM, tau_BS = 0.6 * Rm_M, 0.6 * g.Rm
+            Rm_M, ratio_M = self.tapped.Rm or g.Rm, self.tapped.shear_ratio
+        tau_BM, tau_BS = ratio_M * Rm_M, ratio_S * g.Rm
         m = self.effective_engagement
         if m <= 0:
             return 0.0, g.Rm * th.As
