@@ -387,3 +387,13 @@ def test_a_cycle_of_component_fields_is_named(tmp_path):
     text = BASE.replace('area = "20 mm^2 * n / 2"', 'area = "b.area_out"')
     errs = _errors(tmp_path, text)
     assert errs["components"] in ("cycle a -> b -> a", "cycle b -> a -> b")
+
+
+def test_quantities_the_unit_parser_read_before_still_read_the_same(tmp_path):
+    """'450 * mm' and '5 N * m' were quantities before parameters existed; without a parameter of that name they
+    still are. With a parameter g, 'lifted * g' is the parameter (names resolve to parameters first)."""
+    text = BASE.replace('area = "20 mm^2 * n / 2"', 'area = "20 * mm^2"')
+    d = load(write(tmp_path, text))
+    assert d["a"]["area"].m_as("mm^2") == 20
+    errs = _errors(tmp_path, BASE.replace('area = "20 mm^2 * n / 2"', 'area = "20 * mmm^2"'))
+    assert "unknown name 'mmm'" in errs["components.a.area"]

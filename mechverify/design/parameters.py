@@ -154,10 +154,18 @@ def resolve_parameters(table: Any, add: AddError, trace: Trace) -> dict[str, Any
 
 
 def unknown_name(name: str, params: Mapping[str, Any], components: Mapping[str, Any] | None) -> str:
-    known = list(params) + ([f"{c}." for c in components] if components else [])
+    """``unknown name 'x'`` with the closest parameter or component, else the parameters there are (and a word
+    on units when the name is one: ``2 * g`` multiplies by a parameter g, ``2 g`` is two grams)."""
     hint = suggest(name, list(params) + list(components or {}), 1)
-    return (f"unknown name {name!r}" + (f"; did you mean {hint[0]!r}?" if hint else
-                                        f" (parameters: {', '.join(params) or 'none'})" if not known else ""))
+    msg = f"unknown name {name!r}" + (f"; did you mean {hint[0]!r}?" if hint else
+                                      f" (parameters: {', '.join(params) or 'none'})")
+    from mechverify.units import ureg
+
+    try:
+        ureg.parse_units(name)
+    except Exception:
+        return msg
+    return msg + f"; a unit is written right after its number (\"2 {name}\"), not multiplied"
 
 
 def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Mapping[str, Any]) -> Any:
@@ -178,6 +186,9 @@ def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Map
         elif n not in params:
             if n in ctx["trace"].invalid:
                 raise ExpressionError(f"{e.source!r}: parameter {n!r} is invalid (see parameters.{n})")
+            legacy = _plain_quantity(text, kind, e, params, comps)
+            if legacy is not None:
+                return legacy
             raise ExpressionError(f"{e.source!r}: " + unknown_name(n, params, comps))
     if any("." in n for n in e.names):
         return Deferred(e, kind, path, field_name)
@@ -185,6 +196,19 @@ def value_or_deferred(text: str, kind: str, path: str, field_name: str, ctx: Map
     v = _as_kind(v, kind, e.source, len(e._code) > 1)
     ctx["trace"].add(path, e.source, v, tuple(sorted(e.names)))
     return v
+
+
+def _plain_quantity(text: str, kind: str, e: Expression, params: Mapping[str, Any], comps: Any) -> Any:
+    """``"5 N * m"``, ``"450 * mm"``: read as before parameters existed (the quantity parser), when no name of
+    the text is a parameter or a component value; ``None`` otherwise or when that reading fails."""
+    if kind not in DIMENSIONS or any("." in n or n in params or n in comps for n in e.names):
+        return None
+    from mechverify.units import as_quantity
+
+    try:
+        return as_quantity(text, kind, "value")
+    except MechverifyError:
+        return None
 
 
 def _as_kind(v: Any, kind: str, source: str, computed: bool = True) -> Any:
