@@ -1,12 +1,8 @@
-"""``frame``: a 3D frame or grillage of straight members solved by :mod:`mechverify.fea.frame`.
+"""``frame``: a 3D frame of straight members (:mod:`mechverify.fea.frame`): parse, solve, call the checks.
 
-Members by their end points (node names or coordinates), each with a section (the component's default,
-its own table, or tabulated properties) and a material, optional end releases; supports (fixed, pinned,
-roller, spring, custom; one-way springs), hinges and two-node springs. Load cases give point loads, loads
-at a position along a member, uniform/partial/trapezoidal distributed loads, self-weight and support
-settlements; a load case with ``combination = {case = factor, ...}`` is the factored sum of other load
-cases. All the component's load cases and combinations are solved on one factorisation; each check runs
-per case and the governing one is reported (the envelope). Checks: :mod:`mechverify.checks.frames`.
+A load case with ``combination = {case = factor}`` is the factored sum of other cases; all cases and
+combinations of a frame are solved on one factorisation; checks (:mod:`mechverify.checks.frames`) run
+per case and the governing one is reported (the envelope). Keys: docs/design-files.md.
 """
 
 from __future__ import annotations
@@ -222,58 +218,50 @@ def _figures(c: FrameComponent, results: list[CheckResult]) -> list[tuple[str, A
     return [(caption, res.figure())]
 
 
-def _f(name: str, kind: str, doc: str, **kw: Any) -> Field:
-    return Field(name, kind, doc, **kw)
-
-
 FRAME = REGISTRY.register(ComponentType(
     name="frame",
-    doc="A 3D frame or grillage of straight members (beam FEA: axial, biaxial bending with Euler or Timoshenko "
-        "theory, torsion): members with end releases, supports (springs, one-way springs), hinges and two-node "
-        "springs; point, member, distributed (partial, trapezoidal), self-weight and settlement loads per load "
-        "case; load combinations as load cases.",
+    doc="A 3D frame or grillage of straight members (beam FEA, Euler or Timoshenko): members with end releases, "
+        "supports (springs, one-way), hinges, two-node springs; point, member, distributed (partial, trapezoidal), "
+        "self-weight and settlement loads; load combinations as load cases.",
     fields=(
-        _f("nodes", "table", "named points: NAME = [\"x\", \"y\", \"z\"] (lengths)"),
-        _f("members", "list", "members: {name, start, end (node names or [x, y, z]), section = {kind, ...} or "
-                              "{kind = \"properties\", area, Iy, Iz, J, Asy, Asz, c_y, c_z, Wt}, material, "
-                              "orientation = [x, y, z], theory, divisions, releases_start/releases_end = "
-                              "\"My,Mz\" (N, Vy, Vz, T, My, Mz)}", required=True, item="table"),
-        _f("supports", "list", "supports: {at, type = fixed|pinned|roller|spring|custom, direction (roller), hold = "
-                               "[\"x\", \"rz\", ...] (custom), springs = {z = \"2e5 N/m\"}, one_way = {z = \"+\"} "
-                               "(the spring only pushes along +z)}", required=True, item="table"),
-        _f("hinges", "list", "pin joints: {at, axis = x|y|z}: the member ends there turn freely about the axis "
-                             "(all but the first; the only one at a one-member node)", item="table"),
-        _f("springs", "list", "two-node springs: {name, start, end, axial = \"1e6 N/m\" (along the line) or "
-                              "stiffness = {x = ..., rz = ...} (coincident nodes)}", item="table"),
-        _f("material", "material", "default material of the members"),
-        _f("section", "choice", "default section kind of the members (dimensions as for a link)",
-           choices=(*SECTION_KINDS, *SECTION_ALIASES)),
-        *(_f(k, "length", f"default section: {k.replace('_', ' ')}") for k in SECTION_DIMENSIONS),
-        _f("theory", "choice", "beam theory", choices=fe.THEORIES, default="timoshenko"),
-        _f("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span"),
-        _f("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.01)"),
-        _f("span", "length", "span of a fractional deflection limit (default: the largest distance from a support to "
-                             "a member end)"),
-        _f("fatigue_life", "float", "required life in cycles for the fatigue check (default: infinite life)"),
-        _f("fatigue_loading", "choice", "fully_reversed (R = -1, amplitude = peak) or zero_to_max (R = 0, amplitude "
-                                        "= mean = peak/2)", choices=fc.FATIGUE_LOADINGS, default="zero_to_max"),
-        _f("fatigue_criterion", "choice", "mean-stress criterion for zero_to_max", choices=FATIGUE_CRITERIA,
-           default="goodman"),
-        _f("fatigue_kf", "float", "fatigue stress-concentration factor Kf applied to the beam stresses", default=1.0),
+        Field("nodes", "table", "named points: NAME = [\"x\", \"y\", \"z\"] (lengths)"),
+        Field("members", "list", "members: {name, start, end (node or [x, y, z]), section = {kind, ...} or {kind = "
+              "\"properties\", area, Iy, Iz, J, Asy, Asz, c_y, c_z, Wt}, material, orientation, theory, divisions, "
+              "releases_start/releases_end = \"My,Mz\" (N, Vy, Vz, T, My, Mz)}", required=True, item="table"),
+        Field("supports", "list", "supports: {at, type = fixed|pinned|roller|spring|custom, direction (roller), hold "
+              "(custom), springs = {z = \"2e5 N/m\"}, one_way = {z = \"+\"} (pushes along +z only)}", required=True,
+              item="table"),
+        Field("hinges", "list", "pin joints {at, axis = x|y|z}: member ends there (but the first) turn freely",
+              item="table"),
+        Field("springs", "list", "two-node springs: {name, start, end, axial = \"1e6 N/m\" or stiffness = {x = ..., "
+              "rz = ...} (coincident nodes)}", item="table"),
+        Field("material", "material", "default material of the members"),
+        Field("section", "choice", "default section kind of the members (dimensions as for a link)",
+              choices=(*SECTION_KINDS, *SECTION_ALIASES)),
+        *(Field(k, "length", f"default section: {k.replace('_', ' ')}") for k in SECTION_DIMENSIONS),
+        Field("theory", "choice", "beam theory", choices=fe.THEORIES, default="timoshenko"),
+        Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span"),
+        Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.01)"),
+        Field("span", "length", "span of a fractional deflection limit (default: largest support-to-end distance)"),
+        Field("fatigue_life", "float", "required life in cycles for the fatigue check (default: infinite life)"),
+        Field("fatigue_loading", "choice", "fully_reversed (R = -1, amplitude = peak) or zero_to_max (R = 0, "
+              "amplitude = mean = peak/2)", choices=fc.FATIGUE_LOADINGS, default="zero_to_max"),
+        Field("fatigue_criterion", "choice", "mean-stress criterion for zero_to_max", choices=FATIGUE_CRITERIA,
+              default="goodman"),
+        Field("fatigue_kf", "float", "fatigue stress-concentration factor Kf on the beam stresses", default=1.0),
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
-        _f("point_loads", "list", "point loads: {at (node or [x, y, z] on a member), force = [Fx, Fy, Fz], moment = "
-                                  "[Mx, My, Mz]} (global axes)", item="table"),
-        _f("member_loads", "list", "loads along a member: {member, position (from its start), force, moment, axes = "
-                                   "local|global (default local)}", item="table"),
-        _f("distributed_loads", "list", "loads per length: {member, load = [wx, wy, wz], axes = global|local, start, "
-                                        "end (partial), load_end (linear to this value at end)}", item="table"),
-        _f("self_weight", "bool", "add the members' weight rho A g (requirements.g, along -z)"),
-        _f("settlements", "list", "enforced support displacements: {at, values = {z = \"-5 mm\", ry = \"0.001 rad\"}} "
-                                  "(held motions only)", item="table"),
-        _f("combination", "table", "this load case is the factored sum of other load cases: {dead = 1.35, live = "
-                                   "1.5} (no loads of its own; solved on the same factorisation)"),
+        Field("point_loads", "list", "point loads: {at (node or [x, y, z] on a member), force, moment} (global)",
+              item="table"),
+        Field("member_loads", "list", "loads along a member: {member, position, force, moment, axes = local|global}",
+              item="table"),
+        Field("distributed_loads", "list", "loads per length: {member, load = [wx, wy, wz], axes = global|local, "
+              "start, end (partial), load_end (linear to it)}", item="table"),
+        Field("self_weight", "bool", "add the members' weight rho A g (requirements.g, along -z)"),
+        Field("settlements", "list", "enforced support displacements: {at, values = {z = \"-5 mm\"}} (held motions)",
+              item="table"),
+        Field("combination", "table", "this case is a factored sum of other cases: {dead = 1.35, live = 1.5}"),
     ),
     checks=(
         CheckSpec.of(fc.check_frame_stress, lambda c, loads, ctx: fc.check_frame_stress(
