@@ -216,10 +216,13 @@ class PlaneModel:
                 out.append((None, f))
                 continue
             nodes, length, normal = self._edges(ld.region)
-            if self.is_curved and not isinstance(ld, PinLoad):
+            if self.is_curved:
                 N, x, nw = self._edge_rule(nodes, normal)
                 ds = np.linalg.norm(nw, axis=2)  # k, q
-                if isinstance(ld, Force):
+                if isinstance(ld, PinLoad):  # the cosine distribution on the curved rim, point by point
+                    w = ds[:, :, None] * pin_tractions(ld.vector, ds.ravel() * t, (nw / ds[:, :, None]).reshape(-1, 2)
+                                                       ).reshape(nw.shape)
+                elif isinstance(ld, Force):
                     tr = np.broadcast_to(np.array(ld.vector[:2])[None, None, :] / (ds.sum() * t), nw.shape)
                     w = ds[:, :, None] * tr
                 elif isinstance(ld, Traction):

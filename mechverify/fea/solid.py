@@ -197,10 +197,13 @@ class SolidModel:
                 out.append((None, f))
                 continue
             fc = self.facets(ld.region)
-            if self.is_curved and not isinstance(ld, PinLoad):
+            if self.is_curved:
                 N, x, nw, fnodes = self._facet_rule(fc)
                 dA = np.linalg.norm(nw, axis=2)  # k, q
-                if isinstance(ld, Force):
+                if isinstance(ld, PinLoad):  # the cosine distribution on the curved wall, point by point
+                    w = dA[:, :, None] * pin_tractions(ld.vector, dA.ravel(), (nw / dA[:, :, None]).reshape(-1, 3)
+                                                       ).reshape(nw.shape)
+                elif isinstance(ld, Force):
                     w = dA[:, :, None] * (np.array(ld.vector, float) / dA.sum())[None, None, :]
                 elif isinstance(ld, Traction):
                     w = dA[:, :, None] * ld.evaluate(x.reshape(-1, 3).T).T.reshape(x.shape)
