@@ -202,7 +202,9 @@ def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, require
         notes=("m_eff = m_ges - 2P: two non-bearing thread turns (VDI 2230:2015 m_zu)",
                "tau_B/R_m = 0.6 steel, 0.65 austenitic, 0.7 aluminium, 0.9 grey iron (VDI 2230 Table 5.5/5 as "
                "reproduced in third-party code, not checked against the guideline)",
-               "Alexander's C1, C3 as quoted from VDI 2230 Sec. 5.5.5.2 (not checked against a found source)"),
+               "Alexander's C1, C3 as quoted from VDI 2230 Sec. 5.5.5.2 (corroborated by third-party code only)",
+               f"strength ratio R_S = {a.strength_ratio:.3g}"),
+        warnings=(("R_S < 0.4: outside Alexander's model (C3 taken at 0.4)",) if a.strength_ratio < 0.4 else ()),
         load_case=load_case)
 
 

@@ -609,8 +609,9 @@ def alexander_C1(s_over_d: float | None) -> float:
 
 def alexander_C3(R_S: float) -> float:
     """Thread-bending factor of the internal thread C3 = 0.728 + 1.769 R_S - 2.896 R_S^2 + 1.296 R_S^3 for
-    0.4 < R_S < 1, 0.897 for R_S >= 1 (R_S = internal/external thread shear strength ratio); C3 at 0.4 below.
-    Source: VDI 2230 Part 1:2015, Sec. 5.5.5.2 (Alexander 1977)."""
+    0.4 < R_S < 1, 0.897 for R_S >= 1 (R_S = internal/external thread shear strength ratio); below 0.4 (outside the
+    model) the value at 0.4 is used. Source: VDI 2230 Part 1:2015, Sec. 5.5.5.2 (Alexander 1977); C1 and C3 as
+    quoted, corroborated by a third-party code reproduction (S. Vargas-Ortega, 'DVI bolt design tool', VD_555)."""
     r = min(max(R_S, 0.4), 1.0)
     return 0.728 + 1.769 * r - 2.896 * r**2 + 1.296 * r**3
 
@@ -718,6 +719,7 @@ class JointAnalysis:
     M_A: float           # tightening torque to set (or given)
     torque_table: tuple[tuple[float, float, float], ...]  # (mu, F_M_zul, M_A) rows for mu_G = mu_K in the range
     notes: tuple[str, ...] = ()
+    strength_ratio: float = 1.0  # R_S of Alexander's stripping model (internal/external thread shear strength)
 
 
 @dataclass(frozen=True)
@@ -961,7 +963,7 @@ class BoltedJoint:
                                  f"{self.d_h_eff * 1e3:g} mm; give a washer's nut_bearing_diameter")
             p_nut = bearing_pressure.si(F_press, dw_nut, self.d_h_eff)
         # stripping (R11): internal thread against the bolt's breaking force
-        strip_cap, strip_dem = self._stripping()
+        strip_cap, strip_dem, R_S = self._stripping()
         # residual clamp load in service (R12)
         F_KR_min = fmin - FPA - FZ - max(dFth, 0.0)
         table = tuple((float(mu), self.F_M_zul(mu), self.F_M_zul(mu) * self.torque_factor(mu, mu))
@@ -970,10 +972,10 @@ class BoltedJoint:
             notes.append("sigma_ASV is given for d <= 40 mm; extrapolated")
         return JointAnalysis(dS, dP, PhiK, Phin, FA, FAmin, FQ, FZ, dFth, FKQ, self.F_K_req, fmin, fmax, FMzul, F_M_req,
                              FSA, FPA, sig_M, sig_B, sig_a, sig_AS, p_head, p_nut, strip_cap, strip_dem, F_KR_min, MA,
-                             table, tuple(notes))
+                             table, tuple(notes), R_S)
 
-    def _stripping(self) -> tuple[float, float]:
-        """(capacity, demand) of the internal thread: tau_BM A_SGM C1 C3 against R_m A_S of the bolt (R11)."""
+    def _stripping(self) -> tuple[float, float, float]:
+        """(capacity, demand, R_S) of the internal thread: tau_BM A_SGM C1 C3 against R_m A_S of the bolt (R11)."""
         th, g = self.thread, self.grade
         ratio_S = 0.65 if g.name.upper().startswith("A") else 0.60   # austenitic A2/A4 classes, else steel
         if self.internal_Rm is not None:
@@ -985,13 +987,13 @@ class BoltedJoint:
         tau_BM, tau_BS = ratio_M * Rm_M, ratio_S * g.Rm
         m = self.effective_engagement
         if m <= 0:
-            return 0.0, g.Rm * th.As
+            return 0.0, g.Rm * th.As, 1.0
         A_M = internal_thread_shear_area.si(th.d, th.P, m)
         A_S_ = external_thread_shear_area.si(th.d, th.P, m)
         R_S = tau_BM * A_M / (tau_BS * A_S_)
         C1 = alexander_C1(nut_dimensions(th)["s"] / th.d) if self.through else 1.0
         cap = tau_BM * A_M * C1 * alexander_C3(R_S)
-        return cap, g.Rm * th.As
+        return cap, g.Rm * th.As, R_S
 
     def with_(self, **changes: Any) -> BoltedJoint:
         return replace(self, **changes)
