@@ -48,7 +48,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
     "Frame": ("mechverify.fea.frame", "Frame"),
     "PlateModel": ("mechverify.components.plates", "PlateModel"),
     **{m: (f"mechverify.{m}", None) for m in ("units", "materials", "components", "checks", "design", "fea",
-                                               "mechanisms", "loads", "fatigue", "reports", "studies")},
+                                               "mechanisms", "motion", "fatigue", "reports", "studies")},
 }
 
 

@@ -1,7 +1,7 @@
 """The architecture, enforced: layer order of imports, no import cycles, one name per check, one bibliography.
 
 Layer order (docs/architecture.md; imports only go to the same or a lower layer):
-errors → units, references, fileio → materials, fatigue → components → mechanisms, loads → fea → checks
+errors → units, references, fileio → materials, fatigue → components → mechanisms, motion → fea → checks
 → design → studies → reports → cli, demo. The package root ``mechverify/__init__.py`` re-exports the
 public API and is exempt; no module may import it (``__version__`` excepted).
 """
@@ -26,7 +26,7 @@ LAYERS: dict[str, int] = {
     "units": 1, "references": 1, "fileio": 1,
     "materials": 2, "fatigue": 2,
     "components": 3,
-    "mechanisms": 4, "loads": 4, "motion": 4,
+    "mechanisms": 4, "motion": 4,
     "fea": 5,
     "checks": 6,
     "design": 7,

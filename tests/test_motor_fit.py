@@ -28,8 +28,8 @@ from mechverify.components.motors import StepperMotor, motor
 from mechverify.components.power_screw import LeadScrew
 from mechverify.components.transmissions import BeltDrive, DirectDrive, Drum, ScrewDrive
 from mechverify.errors import InputError, UnknownNameError
-from mechverify.loads.drive_train import DriveTrain, LinearLoad, RotaryLoad
-from mechverify.loads.profiles import dwell, sequence, trapezoidal
+from mechverify.motion.drive_train import DriveTrain, LinearLoad, RotaryLoad
+from mechverify.motion.profiles import dwell, sequence, trapezoidal
 from mechverify.units import Q
 
 
@@ -101,7 +101,7 @@ def test_002_gearhead_claim_and_003_gearmotor_stall_only():
     # 002 claims the NEMA 17 + 100:1 "can generate 40 N·m": the gearbox is rated 3 N·m continuous, 5 N·m momentary
     g = gearhead("PG100")
     tr = DriveTrain(None, (g,), RotaryLoad("0 kg*m**2", external_torque="40 N*m"))
-    from mechverify.loads.profiles import triangular
+    from mechverify.motion.profiles import triangular
     dem = tr.demand(triangular("10 deg", duration="2 s"))
     r = check_gearhead_intermittent_torque(dem)
     assert r.demand.m_as("N*m") == pytest.approx(40, rel=1e-9) and r.verdict.value == "fail"
@@ -178,7 +178,7 @@ def test_gearhead_ratio_from_stages():
 
 
 def triangular_1s():
-    from mechverify.loads.profiles import triangular
+    from mechverify.motion.profiles import triangular
     return triangular("1 rad", duration="1 s")
 
 

@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from mechverify.errors import InputError, UnitError
-from mechverify.loads.profiles import dwell, s_curve, sampled, sequence, trapezoidal, triangular
+from mechverify.motion.profiles import dwell, s_curve, sampled, sequence, trapezoidal, triangular
 from mechverify.units import Q
 
 pos = st.floats(min_value=1e-3, max_value=1e3, allow_nan=False)

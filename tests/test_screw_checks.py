@@ -11,11 +11,11 @@ import pytest
 
 from mechverify.checks.result import Verdict
 from mechverify.checks.screws import (
-    check_screw_critical_speed,
     check_holding_torque,
     check_nut_flank_pressure,
     check_nut_pv,
     check_screw_buckling,
+    check_screw_critical_speed,
     check_screw_strength,
     check_self_locking,
 )

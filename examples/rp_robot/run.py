@@ -35,8 +35,8 @@ from mechverify.components.motors import motor
 from mechverify.components.power_screw import LeadScrew, Nut
 from mechverify.components.threads import generic
 from mechverify.components.transmissions import ScrewDrive
-from mechverify.loads import profiles as pr
-from mechverify.loads.drive_train import DriveTrain, LinearLoad, TorqueDemand
+from mechverify.motion import profiles as pr
+from mechverify.motion.drive_train import DriveTrain, LinearLoad, TorqueDemand
 from mechverify.units import Q
 
 HERE = Path(__file__).resolve().parent

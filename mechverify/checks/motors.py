@@ -1,4 +1,4 @@
-"""Motor-fit checks: a :class:`~mechverify.loads.drive_train.TorqueDemand` against the motor,
+"""Motor-fit checks: a :class:`~mechverify.motion.drive_train.TorqueDemand` against the motor,
 gearhead and driver ratings, one check per limit, each naming the profile point that governs.
 
 * :func:`check_motor_peak_torque` — |T| at every point against the motor's intermittent limit at that
@@ -37,7 +37,7 @@ from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, ResultSet
 from mechverify.components.gearheads import Gearhead
 from mechverify.errors import InputError
-from mechverify.loads.drive_train import TorqueDemand, rms
+from mechverify.motion.drive_train import TorqueDemand, rms
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
 

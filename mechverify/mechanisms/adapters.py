@@ -1,17 +1,17 @@
 """Hand-offs from a pose sweep to the motor-fit checks (the link checks take MemberDemand fields directly).
 
 :func:`rotary_load` turns an actuator's governing static torque into a
-:class:`~mechverify.loads.drive_train.RotaryLoad` (constant external torque) so that a
-:class:`~mechverify.loads.drive_train.DriveTrain` and a motion profile give the
-:class:`~mechverify.loads.drive_train.TorqueDemand` that :mod:`mechverify.checks.motors` checks.
+:class:`~mechverify.motion.drive_train.RotaryLoad` (constant external torque) so that a
+:class:`~mechverify.motion.drive_train.DriveTrain` and a motion profile give the
+:class:`~mechverify.motion.drive_train.TorqueDemand` that :mod:`mechverify.checks.motors` checks.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from mechverify.loads.drive_train import RotaryLoad
 from mechverify.mechanisms.sweep import ActuatorDemand
+from mechverify.motion.drive_train import RotaryLoad
 
 
 def rotary_load(demand: ActuatorDemand, inertia: Any = "0 kg*m**2", name: str | None = None) -> RotaryLoad:

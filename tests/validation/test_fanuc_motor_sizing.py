@@ -46,8 +46,8 @@ from typing import Any
 import pytest
 
 from mechverify.components.transmissions import DirectDrive, Drum
-from mechverify.loads.drive_train import DriveTrain, LinearLoad
-from mechverify.loads.profiles import trapezoidal
+from mechverify.motion.drive_train import DriveTrain, LinearLoad
+from mechverify.motion.profiles import trapezoidal
 from mechverify.units import Q
 
 KGF_CM = 9.80665e-2  # N·m per kgf·cm (exact)

@@ -3,7 +3,7 @@
 A ``drive`` is the unit the motor-fit checks run on: one motor (catalogue name or inline data), an
 optional gearhead, transmission stages from the motor side (``screw`` naming a ``lead_screw``
 component, ``drum``, ``belt``, ``direct``) and a linear or rotary load moved along a profile. The
-torque demand comes from :meth:`mechverify.loads.drive_train.DriveTrain.demand`; the checks are
+torque demand comes from :meth:`mechverify.motion.drive_train.DriveTrain.demand`; the checks are
 those of :mod:`mechverify.checks.motors`, one design-file check each.
 
 Load cases: the motor-fit checks need no load-case data (the drive runs its own profile once). When
@@ -30,8 +30,8 @@ from mechverify.components.transmissions import BeltDrive, DirectDrive, Drum
 from mechverify.components.transmissions import ScrewDrive as ScrewStage
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, UnitError
-from mechverify.loads import profiles as pr
-from mechverify.loads.drive_train import DriveTrain, LinearLoad, RotaryLoad, TorqueDemand
+from mechverify.motion import profiles as pr
+from mechverify.motion.drive_train import DriveTrain, LinearLoad, RotaryLoad, TorqueDemand
 from mechverify.units import Q, as_quantity, to_si
 
 # ============================================================================ profiles

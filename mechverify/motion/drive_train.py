@@ -1,7 +1,7 @@
 """Load models and drive trains: the torque and speed a motion profile asks of the motor shaft.
 
 A load (linear: mass, incline, Coulomb and viscous friction, external force; rotary: inertia,
-gravity unbalance, friction, external torque) is moved along a :mod:`~mechverify.loads.profiles`
+gravity unbalance, friction, external torque) is moved along a :mod:`~mechverify.motion.profiles`
 profile through a chain of transmission stages (gearheads, belts, drums, screws). Walking the
 chain from the load to the motor, each stage converts speed and acceleration with its ratio,
 adds its own inertia, and converts effort with its efficiency in the direction power flows
@@ -31,7 +31,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError, UnitError
-from mechverify.loads.profiles import Profile, ProfileSamples, SampledProfile
+from mechverify.motion.profiles import Profile, ProfileSamples, SampledProfile
 from mechverify.units import Q, fmt, from_si, to_si
 
 G0 = 9.80665  # standard gravity [m/s²]
