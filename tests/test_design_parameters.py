@@ -397,3 +397,14 @@ def test_quantities_the_unit_parser_read_before_still_read_the_same(tmp_path):
     assert d["a"]["area"].m_as("mm^2") == 20
     errs = _errors(tmp_path, BASE.replace('area = "20 mm^2 * n / 2"', 'area = "20 * mmm^2"'))
     assert "unknown name 'mmm'" in errs["components.a.area"]
+
+
+@pytest.mark.parametrize("path", sorted((Path(__file__).resolve().parents[1] / "examples").glob("*/design*.toml")),
+                         ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_every_example_design_pickles(path):
+    """Designs go to worker processes (studies): each example round-trips through pickle (rebuilt from its data,
+    includes already merged: the rp_robot's clover profiles come along)."""
+    d = load(path)
+    d2 = pickle.loads(pickle.dumps(d))
+    assert list(d2.components) == list(d.components) and d2.files == d.files
+    assert list(d2.data.load_cases) == list(d.data.load_cases) and d2.parameters == d.parameters
