@@ -191,29 +191,44 @@ def from_gmsh_model(gmsh: Any) -> SolidMesh:
     m = MeshTet(*contiguous(p, orient(p, t)))
     curved = None
     if mids is not None:
-        curved = curved_nodes(m, coords, used, index[ntags.astype(np.int64)].reshape(-1, 4), mids)
+        curved = curved_nodes(m, coords, used, index[ntags.astype(np.int64)].reshape(-1, 4), mids,
+                              gmsh_edge_pairs(gmsh, 11))
     return SolidMesh(m, named, measures, curved)
 
 
-def curved_nodes(m: MeshTet, coords: np.ndarray, used: np.ndarray, corners: np.ndarray,
-                 mids: np.ndarray) -> np.ndarray:
-    """P2 node coordinates ``[3, n]`` of ``m`` (vertices, then scikit-fem's edges) with each edge's node
-    where gmsh's second-order mesh put it; gmsh's mid node of an element edge is matched to the vertex
-    pair whose straight midpoint is nearest (independent of gmsh's local edge numbering)."""
-    pairs = np.array([(0, 1), (1, 2), (0, 2), (0, 3), (1, 3), (2, 3)])
-    pm = (coords[:, corners[:, pairs[:, 0]]] + coords[:, corners[:, pairs[:, 1]]]) / 2  # 3, e, pair
-    d = np.linalg.norm(coords[:, mids][:, :, :, None] - pm[:, :, None, :], axis=0)  # e, mid, pair
-    which = np.argmin(d, axis=2)
-    rows = np.arange(corners.shape[0])[:, None]
-    a, b = corners[rows, pairs[which, 0]], corners[rows, pairs[which, 1]]
+def gmsh_edge_pairs(gmsh: Any, etype: int) -> np.ndarray:
+    """The corner pair ``[m, 2]`` of each mid-side node of a second-order gmsh element type, from the
+    reference coordinates gmsh reports for its nodes (``getElementProperties``)."""
+    _, dim, _, nn, local, nv = gmsh.model.mesh.getElementProperties(etype)
+    X = np.asarray(local, float).reshape(nn, dim)
+    pairs = []
+    for k in range(nv, nn):
+        for i in range(nv):
+            for j in range(i + 1, nv):
+                if np.allclose((X[i] + X[j]) / 2, X[k]):
+                    pairs.append((i, j))
+    if len(pairs) != nn - nv:
+        raise ModelError(f"gmsh element type {etype}: not a second-order simplex with mid-side nodes")
+    return np.array(pairs)
+
+
+def curved_nodes(m: MeshTet | Any, coords: np.ndarray, used: np.ndarray, corners: np.ndarray,
+                 mids: np.ndarray, pairs: np.ndarray) -> np.ndarray:
+    """P2 node coordinates ``[d, n]`` of ``m`` (vertices, then scikit-fem's edges - for triangles its
+    facets) with each edge's node where gmsh's second-order mesh put it. ``corners[e, nv]`` and
+    ``mids[e, m]`` are gmsh's element nodes (indices into ``coords``), ``pairs`` their corner pairs
+    (:func:`gmsh_edge_pairs`)."""
+    a, b = corners[:, pairs[:, 0]], corners[:, pairs[:, 1]]
     n = coords.shape[1]
     key, first = np.unique((np.minimum(a, b) * n + np.maximum(a, b)).ravel(), return_index=True)
-    e = np.sort(used[m.edges], axis=0)
+    edges = m.edges if isinstance(m, MeshTet) else m.facets
+    e = np.sort(used[edges], axis=0)
     want = e[0] * n + e[1]
     pos = np.minimum(np.searchsorted(key, want), key.size - 1)
     if not np.array_equal(key[pos], want):
         raise ModelError("gmsh's second-order mesh has edges without a mid-side node")
-    return np.hstack([m.p, coords[:, mids.ravel()[first][pos]]])
+    d = m.p.shape[0]
+    return np.hstack([m.p, coords[:d, mids.ravel()[first][pos]]])
 
 
 #: Vertices of the linear element of each dimension (point, line, triangle).
@@ -273,8 +288,34 @@ def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size
 
 def second_order(gmsh: Any) -> None:
     """Raise the current gmsh mesh to second order with the new nodes on the CAD geometry (curved
-    elements, :mod:`mechverify.fea.isoparametric`)."""
+    elements, :mod:`mechverify.fea.isoparametric`). Where that folds an element over (a coarse mesh on a
+    tight curve: scaled Jacobian ≤ 0), gmsh's high-order optimiser moves the interior nodes; if elements
+    stay inverted, :class:`~mechverify.fea.isoparametric.InvertedElementError` says where."""
+    from mechverify.fea.isoparametric import InvertedElementError
+
     gmsh.model.mesh.setOrder(2)
+
+    def inverted() -> tuple[int, list[float]]:
+        bad, where = 0, []
+        for etype in (11, 9) if gmsh.model.getDimension() == 3 else (9,):
+            tags, nodes = gmsh.model.mesh.getElementsByType(etype)
+            if not len(tags) or (etype == 9 and gmsh.model.getDimension() == 3):
+                continue
+            q = np.asarray(gmsh.model.mesh.getElementQualities(tags, "minSJ"))
+            bad += int(np.sum(q <= 0))
+            if bad and not where:
+                first = int(nodes.reshape(len(tags), -1)[int(np.argmin(q)), 0])
+                where = list(gmsh.model.mesh.getNode(first)[0])
+        return bad, where
+
+    if inverted()[0]:
+        gmsh.model.mesh.optimize("HighOrder")
+        bad, where = inverted()
+        if bad:
+            raise InvertedElementError(
+                f"{bad} curved elements stay inverted after gmsh's high-order optimisation, the first near "
+                f"{tuple(round(c * 1e3, 3) for c in where)} mm: the mesh is too coarse for the curvature there; "
+                "refine it at the curved surface (e.g. hole_mesh_size) or pass curved=False to the mesh builder")
 
 
 def gmsh_session(gmsh: Any, mesh_size: float) -> None:

@@ -164,8 +164,7 @@ def from_gmsh_model(gmsh: Any) -> NamedMeshTri:
     if not tris:
         raise ModelError("gmsh produced no triangles (is the geometry a closed surface, meshed in 2D?)")
     t = np.vstack(tris).T
-    xyz = coords.reshape(-1, 3).T[:2]
-    pair_mid = _mid_nodes(xyz, t.T, mids[0]) if mids and len(tris) == 1 else None
+    corners = t.T.copy()
     used = np.unique(t)
     remap = np.full(tags.size, -1, dtype=np.int64)
     remap[used] = np.arange(used.size)
@@ -175,30 +174,10 @@ def from_gmsh_model(gmsh: Any) -> NamedMeshTri:
     base = tri_mesh(p, orient_triangles(p, t))
     points = {k: np.unique(v) for k, v in named.items() if v.shape[1] == 1}
     curved = None
-    if pair_mid is not None:
-        keys, mid_xy = pair_mid
-        n = remap.size
-        f = np.sort(used[base.facets], axis=0)
-        want = f[0] * n + f[1]
-        pos = np.minimum(np.searchsorted(keys, want), keys.size - 1)
-        if not np.array_equal(keys[pos], want):
-            raise ModelError("gmsh's second-order mesh has edges without a mid-side node")
-        curved = np.hstack([base.p, mid_xy[:, pos]])
+    if mids and len(tris) == 1:
+        from mechverify.fea.mesh import curved_nodes, gmsh_edge_pairs
+
+        curved = curved_nodes(base, coords.reshape(-1, 3).T, used, corners, mids[0], gmsh_edge_pairs(gmsh, 9))
     m = NamedMeshTri(base.p, base.t, sort_t=False, named_points=points, measures=measures, curved=curved)
     curves = {k: _facets_of(m, v.T) for k, v in named.items() if v.shape[1] == 2}
     return m.with_boundaries(curves) if curves else m
-
-
-def _mid_nodes(xyz: np.ndarray, corners: np.ndarray, mids: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Sorted keys ``a * n + b`` (gmsh node indices a < b of each edge) and the coordinates ``[2, k]`` of the
-    mid-side node gmsh placed on each edge, matched to the vertex pair whose straight midpoint is nearest."""
-    pairs = np.array([(0, 1), (1, 2), (0, 2)])
-    pm = (xyz[:, corners[:, pairs[:, 0]]] + xyz[:, corners[:, pairs[:, 1]]]) / 2  # 2, e, pair
-    d = np.linalg.norm(xyz[:, mids][:, :, :, None] - pm[:, :, None, :], axis=0)  # e, mid, pair
-    which = np.argmin(d, axis=2)
-    a = corners[np.arange(corners.shape[0])[:, None], pairs[which, 0]]
-    b = corners[np.arange(corners.shape[0])[:, None], pairs[which, 1]]
-    n = xyz.shape[1]
-    key = (np.minimum(a, b) * n + np.maximum(a, b)).ravel()
-    key, first = np.unique(key, return_index=True)
-    return key, xyz[:, mids.ravel()[first]]
