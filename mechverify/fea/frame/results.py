@@ -20,7 +20,8 @@ from mechverify.fea.frame.model import NO_FIBRES, Load, LoadCombination, Where
 from mechverify.units import Q, QuantityLike, to_si
 
 if TYPE_CHECKING:
-    from mechverify.fea.frame.analysis import Frame, _Mesh
+    from mechverify.fea.frame.analysis import Frame
+    from mechverify.fea.frame.mesh import _Mesh
 
 _ROUND_KINDS = ("circle", "tube")
 #: Quantities with exact extremes per member: resultants (local axes), displacements (global).
