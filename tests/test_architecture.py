@@ -34,8 +34,6 @@ LAYERS: dict[str, int] = {
     "reports": 9,
     "cli": 10, "demo": 10,
 }
-#: Frame checks the issue-28 work moves into checks/frames.py; checked as soon as they are registered.
-PENDING = {"frame_stress", "frame_deflection", "frame_fatigue"}
 
 
 def _module_name(path: Path) -> str:
@@ -187,8 +185,6 @@ def test_every_component_type_check_is_registered_under_its_key():
     for ct in REGISTRY.types.values():
         if ct.name == "test_rod":  # the test-only type of conftest.py
             continue
-        if ct.name == "frame" and not PENDING & set(CHECKS):  # until issue 28 registers the frame checks
-            continue
         for spec in ct.checks:
             d = get_check(spec.name)
             assert d.name == spec.name, f"{ct.name}: check key {spec.name!r} is not a registered name"
@@ -205,8 +201,6 @@ def test_example_result_names_are_registered_check_names(path: str):
 
     d = load(path)
     for r in d.verify():
-        if r.check in PENDING and r.check not in CHECKS:
-            continue
         assert r.check in CHECKS, f"{r.component}: result {r.check!r} is not a registered check name"
         assert explain_text(r.check)
         ct = d.data.components[r.component].type
