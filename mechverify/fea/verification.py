@@ -72,7 +72,9 @@ def _mesh(build: Callable[[Any], None], h: float, h_fine: float, fine_curves: Ca
             gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
         gmsh.model.mesh.generate(2)
         if order == 2:
-            gmsh.model.mesh.setOrder(2)
+            from mechverify.fea.mesh import second_order
+
+            second_order(gmsh)
         return mesh2d.from_gmsh_model(gmsh)
     finally:
         gmsh.finalize()
