@@ -222,7 +222,10 @@ class Frame:
                     if ld.axes == "local":
                         Rm = mesh.R[mesh.member_elems[i][0]]
                         fv, mv = Rm.T @ fv, Rm.T @ mv
-                    k = mesh.index.find(p)
+                    els = mesh.member_elems[i]
+                    Lm = float(np.linalg.norm(self._d[i]))
+                    k = (int(mesh.elem_nodes[els[0], 0]) if s <= self.tol else int(mesh.elem_nodes[els[-1], 1])
+                         if s >= Lm - self.tol else mesh.index.find(p))  # an end: the member's own end node
                     assert k is not None
                 else:
                     k = self._node(mesh, ld.at)
