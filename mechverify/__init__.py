@@ -16,6 +16,7 @@ The documented entry points are attributes of this package, imported when first 
 from __future__ import annotations
 
 import importlib
+import importlib.util
 from typing import TYPE_CHECKING, Any
 
 from mechverify.errors import (
@@ -59,6 +60,8 @@ def __getattr__(name: str) -> Any:
         module, attr = _LAZY[name]
         mod = importlib.import_module(module)
         value = mod if attr is None else getattr(mod, attr)
+    elif not name.startswith("_") and importlib.util.find_spec(f"{__name__}.{name}") is not None:
+        value = importlib.import_module(f"{__name__}.{name}")  # any other sub-package or module
     else:
         raise AttributeError(f"module 'mechverify' has no attribute {name!r}")
     globals()[name] = value  # once imported, a plain attribute
@@ -78,6 +81,6 @@ def _version() -> str:
         return "0.0.0+source"
 
 
-__all__ = ["Q", "Quantity", "QuantityLike", "ureg", "load", "materials", "components", "checks", "fea",
-           "SolidModel", "PlaneModel", "Frame", "PlateModel", "MechverifyError", "UnitError", "InputError",
+__all__ = ["Q", "Quantity", "QuantityLike", "ureg", "load", "units", "design", "materials", "components", "checks",
+           "fea", "SolidModel", "PlaneModel", "Frame", "PlateModel", "MechverifyError", "UnitError", "InputError",
            "UnknownNameError", "ValidityError", "ModelError", "__version__"]
