@@ -462,6 +462,32 @@ def _transforms(R: np.ndarray) -> np.ndarray:
     return T
 
 
+def _node_order(A: sp.spmatrix, free: np.ndarray) -> np.ndarray:
+    """A fill-reducing order of the DOFs ``free`` of ``A``: minimum degree (SuperLU's MMD on Aᵀ + A) of the node
+    graph, each node's DOFs consecutive."""
+    node = free // 6
+    used, loc = np.unique(node, return_inverse=True)
+    C = A.tocoo()
+    n = len(used)
+    G = sp.csc_matrix((np.full(len(C.row), -1.0), (loc[C.row], loc[C.col])), shape=(n, n))
+    G = (G + G.T + sp.diags(np.full(n, 1.0 + 2.0 * np.max(np.abs(G).sum(axis=1))))).tocsc()
+    rank = spl.splu(G, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True}).perm_c
+    return np.argsort(rank[loc] * 6 + free % 6, kind="stable")
+
+
+@dataclass
+class _Factor:
+    """A factorisation of a permuted matrix; ``solve`` takes and returns the original order."""
+
+    lu: Any
+    p: np.ndarray
+
+    def solve(self, b: np.ndarray) -> np.ndarray:
+        x = np.empty_like(b, dtype=float)
+        x[self.p] = self.lu.solve(np.ascontiguousarray(b[self.p]))
+        return x
+
+
 @dataclass
 class _CaseData:
     f: np.ndarray
@@ -497,13 +523,17 @@ class _Solve:
     one_way: dict[int, tuple[float, int]]
     at: list[tuple[Support, int]]
 
-    def _factor(self, A: sp.spmatrix) -> Any:
+    def _factor(self, A: sp.spmatrix) -> _Factor:
+        """SuperLU of ``A`` (the free DOFs) in an order found on the node graph: the minimum-degree order
+        of the nodes, their six DOFs kept together (less fill and about half the time of ordering the DOFs)."""
         try:
-            return spl.splu(A.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                            options={"SymmetricMode": True})
+            p = _node_order(A, self.free)
+            lu = spl.splu(A.tocsr()[p][:, p].tocsc(), permc_spec="NATURAL", diag_pivot_thresh=0.0,
+                          options={"SymmetricMode": True})
         except RuntimeError as exc:
             raise ModelError(f"frame {self.frame.name!r}: the stiffness matrix is singular ({exc}); the model has a "
                              "mechanism") from None
+        return _Factor(lu, p)
 
     def _rhs(self, d: _CaseData) -> np.ndarray:
         us = np.array([d.presc.get(int(h), 0.0) for h in self.held])
