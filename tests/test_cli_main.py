@@ -196,3 +196,15 @@ def test_diff_outside_a_repository(tmp_path, capsys):
         else:
             os.environ["GIT_CEILING_DIRECTORIES"] = env_ceiling
     assert "not inside a git repository" in capsys.readouterr().err
+
+
+def test_demo_prints_every_design_of_its_report_and_one_verdict(tmp_path, capsys):
+    """`make demo`: the report holds design.toml and design_plates.toml; the console shows both tables and
+    one combined verdict (the design as specified fails: the finding, exit 0 once the report is written)."""
+    from mechverify.demo import main as demo
+
+    assert demo(["--no-pdf", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "design.toml" in out and "design_plates.toml" in out
+    assert out.count(" overall: 2 designs,") == 1 and "FAIL overall" in out
+    assert (tmp_path / "report.html").is_file()

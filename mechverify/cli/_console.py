@@ -69,8 +69,12 @@ def results_table(rs: Any) -> Table:
     for r in rs.sorted():
         c = COLOURS[r.verdict.value]
         fu = r.factored_utilisation
-        t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, fmt(r.demand),
-                  fmt(r.capacity), f"{fu:.3g}", f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
+        if any(n.startswith("Not verifiable") for n in r.notes):  # beyond the method's validity: no numbers
+            demand, capacity, shown = "-", "-", "n/a"
+        else:
+            demand, capacity, shown = fmt(r.demand), fmt(r.capacity), f"{fu:.3g}"
+        t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, demand, capacity,
+                  shown, f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
     return t
 
 
