@@ -154,7 +154,7 @@ def _strength(mat: Material, life: float | None, Se: Any, marin: dict | None,
 
 
 def _criterion_strength(criterion: str, st: _Strength, sigma_f: Any, gamma: Any) -> dict[str, Any]:
-    need = criteria._needs(criterion)
+    need = criteria.require_criterion(criterion)
     if need == "Sy" and st.Sy is None:
         raise InputError(f"the {criterion} criterion needs the yield strength, which the material lacks")
     if need == "sigma_f" and sigma_f is None:
@@ -229,9 +229,8 @@ def _prepare(material: Any, life: float | None, Kf: float, criterion: str, load_
         raise InputError(f"life: required cycles must be >= 1, got {life!r}")
     if not Kf >= 1:
         raise InputError(f"Kf: fatigue notch factor must be >= 1, got {Kf!r}")
-    criteria._needs(criterion)
-    if load_line not in criteria.LOAD_LINES:
-        criteria._check(0.0, load_line)
+    criteria.require_criterion(criterion)
+    criteria.require_load_line(load_line)
     return _material(material)
 
 

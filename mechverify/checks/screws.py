@@ -211,7 +211,7 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
         T = as_quantity(torque, "torque", "torque").to("N*m")
         notes.append(f"torque as given: {fmt(T, 'N*m')}")
     s = screw.stresses(f, T)
-    Sy = screw._mat("yield_strength").to("MPa")
+    Sy = screw.material_property("yield_strength").to("MPa")
     notes.append(f"axial {fmt(s.axial, 'MPa')}, torsion {fmt(s.torsion, 'MPa')} at d3 = {fmt(screw.thread.d3, 'mm')}")
     return CheckResult(
         check="screw_strength", component=screw.name, demand=s.von_mises, capacity=Sy, required_sf=required_sf,
@@ -245,8 +245,8 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
         formula=(r"P_{cr} = \frac{C\pi^2 E I}{l^2}" if b.regime == "euler" else
                  r"P_{cr} = A\left[S_y - \left(\frac{S_y l}{2\pi k}\right)^2\frac{1}{CE}\right]"),
         source=b.source,
-        inputs={"F": f, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw._mat("E"),
-                "yield_strength": screw._mat("yield_strength")},
+        inputs={"F": f, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
+                "yield_strength": screw.material_property("yield_strength")},
         notes=(f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
                + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
                f"{b.regime} regime: l/k = {b.slenderness:.4g}, transition (l/k)_1 = {b.transition_slenderness:.4g}",
@@ -278,8 +278,8 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
         title=f"Critical (whirling) speed of {screw.thread.designation}",
         formula=r"n_c = \frac{\lambda_1^2}{2\pi L^2}\sqrt{\frac{E I}{\rho A}},\quad \frac{I}{A} = \frac{d_3^2}{16}",
         source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
-        inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw._mat("E"),
-                "density": screw._mat("density")},
+        inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
+                "density": screw.material_property("density")},
         notes=(f"end case {screw.end_supports}: lambda_1 = {lam:.5g} (first bending mode of a uniform shaft)",
                "root section (d3); the nut's support is ignored, which is conservative"),
         load_case=load_case, details={"lambda_1": lam, "critical_speed_rad_s": nc.to("rad/s")},

@@ -94,7 +94,8 @@ def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end
     """
     y = _deflection(spring, F_max)
     y_cr = spring.critical_deflection(end)
-    notes = [f"end condition {end!r}, alpha = {spring._alpha(end):g} (Shigley Table 10-2; EN 13906-1 nu)"]
+    alpha = spring.end_condition_constant(end)
+    notes = [f"end condition {end!r}, alpha = {alpha:g} (Shigley Table 10-2; EN 13906-1 nu)"]
     if y_cr is None or y_cr > spring.solid_deflection:
         capacity = spring.solid_deflection
         notes.append(f"absolutely stable: L0 = {fmt(spring.free_length, 'mm')} <= critical free length "
@@ -106,8 +107,8 @@ def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end
         title="Spring buckling (critical deflection)",
         formula=r"y_{cr} = L_0 C_1' \left[1 - \sqrt{1 - C_2'/\lambda_{eff}^2}\right],\ \lambda_{eff} = \alpha L_0/D",
         source=f"{SHIGLEY}, Eqs. (10-10)..(10-13), Table 10-2; EN 13906-1:2013 Sec. 9",
-        inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N"), "E": Q(spring._si["E"], "Pa"),
-                "G": Q(spring._si["G"], "Pa")},
+        inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N"), "E": spring.elastic_modulus,
+                "G": spring.shear_modulus},
         notes=tuple(notes), load_case=load_case)
 
 
@@ -183,7 +184,7 @@ def check_spring_clash(spring: CompressionSpring, F_max: QuantityLike, *, method
 
 # --------------------------------------------------------------------------------------- extension springs
 def _ext_inputs(s: ExtensionSpring, F: pint.Quantity) -> dict[str, Any]:
-    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index, "Nb": s._si["Nb"],
+    return {"d": s.wire_diameter, "D": s.mean_diameter, "C": s.index, "Nb": s.body_coils,
             "Fi": s.initial_tension, "Sut": s.tensile_strength, "F": F}
 
 
@@ -215,7 +216,7 @@ def check_extension_body_stress(s: ExtensionSpring, F: QuantityLike, *, required
 def check_extension_hook_bending(s: ExtensionSpring, F: QuantityLike, *, required_sf: float = 1.0) -> CheckResult:
     """Bending and tension at hook section A against the Table 10-7 end-bending allowable."""
     Fq = Q(to_si(F, "force", "F"), "N")
-    notes = ["hook bend radius r1 = " + fmt(Q(s._si["r1"], "m").to("mm")) + " (default D/2: full loop)"]
+    notes = ["hook bend radius r1 = " + fmt(s.hook_bend_radius) + " (default D/2: full loop)"]
     if s.r2 is None:
         notes.append("hook torsion at B not checked: give hook_side_radius (r2)")
     return CheckResult(
@@ -224,7 +225,7 @@ def check_extension_hook_bending(s: ExtensionSpring, F: QuantityLike, *, require
         formula=r"\sigma_A = F \left[(K)_A \frac{16 D}{\pi d^3} + \frac{4}{\pi d^2}\right],\ "
                 r"(K)_A = \frac{4 C_1^2 - C_1 - 1}{4 C_1 (C_1 - 1)},\ C_1 = 2 r_1/d",
         source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r1": Q(s._si["r1"], "m").to("mm")}, notes=tuple(notes))
+        inputs={**_ext_inputs(s, Fq), "r1": s.hook_bend_radius}, notes=tuple(notes))
 
 
 @check("extension_hook_torsion", title='Extension spring hook torsion (B)', sf_kind="static",
@@ -242,12 +243,12 @@ def check_extension_hook_torsion(s: ExtensionSpring, F: QuantityLike, *, require
         capacity=s.allowable("end_torsion"), required_sf=required_sf, title="Extension spring hook torsion (B)",
         formula=r"\tau_B = (K)_B \frac{8 F D}{\pi d^3},\ (K)_B = \frac{4 C_2 - 1}{4 C_2 - 4},\ C_2 = 2 r_2/d",
         source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r2": Q(s._si["r2"], "m").to("mm")})]
+        inputs={**_ext_inputs(s, Fq), "r2": s.hook_side_radius})]
 
 
 # ----------------------------------------------------------------------------------------- torsion springs
 def _tor_inputs(s: TorsionSpring, M: pint.Quantity) -> dict[str, Any]:
-    return {"d": Q(s._si["d"], "m").to("mm"), "D": Q(s._si["D"], "m").to("mm"), "C": s.index,
+    return {"d": s.wire_diameter, "D": s.mean_diameter, "C": s.index,
             "Na": s.active_turns, "Sut": s.tensile_strength, "M": M.to("N*mm")}
 
 

@@ -603,6 +603,14 @@ class LeadScrew:
         return shaft_inertia(rho, self.thread.d2, self.length)
 
     # strength -----------------------------------------------------------
+    def material_property(self, prop: str) -> pint.Quantity:
+        """A property of the screw material (``"yield_strength"``, ``"E"``, ``"density"``, ...).
+
+        Raises:
+            InputError: the screw has no material, or the material lacks the property.
+        """
+        return self._mat(prop)
+
     def _mat(self, prop: str) -> pint.Quantity:
         if self.material is None:
             raise InputError(f"{self.name}: no material; give one to compute {prop.replace('_', ' ')}")

@@ -167,6 +167,16 @@ class CompressionSpring:
         return Q(self._si["D"], "m").to("mm")
 
     @property
+    def elastic_modulus(self) -> pint.Quantity:
+        """Young's modulus E of the wire used [GPa]."""
+        return Q(self._si["E"], "Pa").to("GPa")
+
+    @property
+    def shear_modulus(self) -> pint.Quantity:
+        """Shear modulus G of the wire used [GPa]."""
+        return Q(self._si["G"], "Pa").to("GPa")
+
+    @property
     def outside_diameter(self) -> pint.Quantity:
         return Q(self._si["D"] + self._si["d"], "m").to("mm")
 
@@ -340,6 +350,12 @@ class CompressionSpring:
         s = self._si
         E, G = s["E"], s["G"]
         return Q(math.pi * s["D"] / alpha * math.sqrt(2 * (E - G) / (2 * G + E)), "m").to("mm")
+
+    @staticmethod
+    def end_condition_constant(end: str | float) -> float:
+        """The end-condition constant alpha of Shigley Table 10-2 (EN 13906-1 nu) for ``end`` (a name of
+        Shigley Table 10-2 end condition or a positive number)."""
+        return CompressionSpring._alpha(end)
 
     @staticmethod
     def _alpha(end: str | float) -> float:

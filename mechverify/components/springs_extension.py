@@ -78,6 +78,31 @@ class ExtensionSpring:
         object.__setattr__(self, "_class", sf.spring_wire_class(mat, self.spring_class))
 
     @property
+    def wire_diameter(self) -> pint.Quantity:
+        """Wire diameter d [mm]."""
+        return Q(self._si["d"], "m").to("mm")
+
+    @property
+    def mean_diameter(self) -> pint.Quantity:
+        """Mean coil diameter D [mm]."""
+        return Q(self._si["D"], "m").to("mm")
+
+    @property
+    def body_coils(self) -> float:
+        """Body coils N_b [-]."""
+        return self._si["Nb"]
+
+    @property
+    def hook_bend_radius(self) -> pint.Quantity:
+        """Mean radius r1 of the hook bend at section A [mm] (default D/2, a full loop)."""
+        return Q(self._si["r1"], "m").to("mm")
+
+    @property
+    def hook_side_radius(self) -> pint.Quantity | None:
+        """Side-bend radius r2 at section B [mm], or ``None`` when not given."""
+        return None if self._si["r2"] is None else Q(self._si["r2"], "m").to("mm")
+
+    @property
     def index(self) -> float:
         return self._si["D"] / self._si["d"]
 

@@ -56,6 +56,16 @@ class TorsionSpring:
         object.__setattr__(self, "_class", sf.spring_wire_class(mat, self.spring_class))
 
     @property
+    def wire_diameter(self) -> pint.Quantity:
+        """Wire diameter d [mm]."""
+        return Q(self._si["d"], "m").to("mm")
+
+    @property
+    def mean_diameter(self) -> pint.Quantity:
+        """Mean coil diameter D [mm]."""
+        return Q(self._si["D"], "m").to("mm")
+
+    @property
     def index(self) -> float:
         return self._si["D"] / self._si["d"]
 

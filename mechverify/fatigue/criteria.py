@@ -220,6 +220,26 @@ def langer(sigma_a: Any, sigma_m: Any, Sy: Any, load_line: str = "proportional")
 
 
 # --------------------------------------------------------------------------------------------- dispatch
+def require_criterion(criterion: str) -> str | None:
+    """Validate a criterion name; the strength it needs besides S_e and S_ut/S_y (``"sigma_f"``, ...) or ``None``.
+
+    Raises:
+        UnknownNameError: not a key of :data:`CRITERIA`.
+    """
+    return _needs(criterion)
+
+
+def require_load_line(load_line: str) -> str:
+    """Validate a load-line name (a key of :data:`LOAD_LINES`) and return it.
+
+    Raises:
+        UnknownNameError: not a known load line.
+    """
+    if load_line not in LOAD_LINES:
+        raise UnknownNameError("load line", str(load_line), LOAD_LINES)
+    return load_line
+
+
 def _needs(criterion: str) -> str | None:
     if criterion not in CRITERIA:
         raise UnknownNameError("mean-stress criterion", str(criterion), CRITERIA)
@@ -280,4 +300,5 @@ def equivalent_amplitude(criterion: str, sigma_a: Any, sigma_m: Any, Sut: Any = 
 
 
 __all__ = ["LOAD_LINES", "CRITERIA", "goodman", "gerber", "asme_elliptic", "soderberg", "morrow", "walker",
-           "smith_watson_topper", "langer", "safety_factor", "equivalent_amplitude"]
+           "smith_watson_topper", "langer", "safety_factor", "equivalent_amplitude", "require_criterion",
+           "require_load_line"]
