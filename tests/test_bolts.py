@@ -60,6 +60,9 @@ def test_head_nut_hole_tables():
     assert b.nut_dimensions(m5)["m"] == pytest.approx(4.7e-3)
     assert b.nut_dimensions(m5)["dw"] == pytest.approx(6.9e-3)
     assert [b.clearance_hole(m5, f) for f in ("fine", "medium", "coarse")] == pytest.approx([5.3e-3, 5.5e-3, 5.8e-3])
+    # ISO 4014 grade A bearing face d_w min (printed table reproduced at scribd.com/document/367243871)
+    for size, dw in (("M8", 11.63), ("M14", 19.37), ("M24", 33.61)):
+        assert b.head_bearing_diameter(b.metric_thread(size), "hex") == pytest.approx(dw * 1e-3)
 
 
 def test_every_data_row_has_source_and_flag():
