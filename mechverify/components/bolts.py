@@ -42,6 +42,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import pint
 
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.units import Q, QuantityLike, as_quantity, fmt, si_function, to_si
@@ -326,6 +327,34 @@ def frustum_stiffness(E: float, d: float, D: float, t: float, alpha: float | Non
         raise InputError(f"frustum: the cone's small diameter D must exceed the hole diameter d (D={D:g}, d={d:g} m)")
     ta = math.tan(alpha)
     return math.pi * E * d * ta / math.log((2 * t * ta + D - d) * (D + d) / ((2 * t * ta + D + d) * (D - d)))
+
+
+def shigley_member_stiffness(parts: Sequence[tuple[QuantityLike, QuantityLike]], d: QuantityLike, d_w: QuantityLike,
+                             alpha: QuantityLike = "30 deg") -> pint.Quantity:
+    """Member stiffness of layered clamped parts by frusta: two cones of half-angle alpha grow from the bearing faces
+    (diameter d_w) to mid-grip; each cone is cut at the part interfaces into frusta of Eq. (8-19), each with its
+    part's modulus and the cone diameter at its start, and all frusta act in series, k_m = (sum 1/k_i)^-1 [N/m].
+    ``parts`` = [(thickness, E), ...] from the head. Source: Shigley 10th ed., Sec. 8-5, Eqs. (8-18), (8-19)/(8-20)
+    and Fig. 8-15 (the procedure of Ex. 8-3 and Probs. 8-22 ff.).
+    """
+    layers = [(to_si(t, "length", "thickness"), to_si(E, "pressure", "E")) for t, E in parts]
+    dd, dw = to_si(d, "length", "d"), to_si(d_w, "length", "d_w")
+    a = to_si(alpha, "angle", "alpha")
+    if not layers or any(t <= 0 for t, _ in layers):
+        raise InputError("shigley_member_stiffness: give parts as (thickness > 0, E)")
+    grip = sum(t for t, _ in layers)
+    half = grip / 2
+    flex = 0.0
+    for seq in (layers, layers[::-1]):          # the cone from the head, then from the nut face
+        x = 0.0                                 # distance from this cone's bearing face
+        for t, E in seq:
+            seg = min(t, half - x)
+            if seg <= 0:
+                break
+            D = dw + 2 * x * math.tan(a)
+            flex += 1.0 / frustum_stiffness.si(E, dd, D, seg, a)
+            x += seg
+    return Q(1.0 / flex, "N/m")
 
 
 @si_function(returns="force_per_length", E="pressure", d="length", l="length")
@@ -1151,7 +1180,8 @@ __all__ = [
     "nut_dimensions", "clearance_hole", "friction_class", "limiting_surface_pressure", "embedding_amount",
     "tightening_factor",
     "pitch_diameter", "minor_diameter", "stress_area", "shigley_bolt_stiffness", "frustum_stiffness",
-    "member_stiffness_equal", "WILEMAN", "wileman_member_stiffness", "joint_constant", "shigley_preload",
+    "member_stiffness_equal", "shigley_member_stiffness", "WILEMAN", "wileman_member_stiffness", "joint_constant",
+    "shigley_preload",
     "shigley_yielding_factor", "shigley_load_factor", "shigley_separation_factor", "bolt_goodman_strength",
     "bolt_gerber_strength", "bolt_proof_line_strength", "bolt_stress_components", "cylinder_resilience",
     "head_resilience", "engaged_thread_resilience", "cone_angle_tan", "plate_resilience", "load_factor",

@@ -176,3 +176,15 @@ def test_frusta_prob_8_23_and_a_slip_in_the_manual():
     assert 1 / sum(1 / k for k in (5316, 55620, 3887)) == pytest.approx(2158, abs=0.5)   # the printed sum
     assert 1 / sum(1 / k for k in ks) == pytest.approx(1963, abs=1)                      # hand, correct k2
     assert b.shigley_load_factor("600 MPa", "84.3 mm**2", 0.256, "8.48 kN", "37.9 kN") == pytest.approx(5.84, abs=0.005)
+
+
+def test_layered_member_stiffness_procedure():
+    """Shigley's frusta procedure (Sec. 8-5, Fig. 8-15) from the parts alone: [SM8-22] 20 mm steel on cast iron
+    (E = 100 GPa) with the 45 mm effective grip, d = 12, d_w = 18 mm gives the printed k_m = 1379 MN/m; [SM8-M10]
+    (E = 96 GPa, d = 10, d_w = 15 mm) the printed 1057 MN/m; two equal steel members equal Eq. (8-22)."""
+    km = b.shigley_member_stiffness([("20 mm", "207 GPa"), ("25 mm", "100 GPa")], "12 mm", "18 mm")
+    assert km.m_as("MN/m") == pytest.approx(1379, abs=1)
+    km = b.shigley_member_stiffness([("20 mm", "207 GPa"), ("25 mm", "96 GPa")], "10 mm", "15 mm")
+    assert km.m_as("MN/m") == pytest.approx(1057, abs=1)
+    km = b.shigley_member_stiffness([("20 mm", "207 GPa"), ("20 mm", "207 GPa")], "12 mm", "18 mm")
+    assert km.m_as("N/m") == pytest.approx(b.member_stiffness_equal("207 GPa", "12 mm", "40 mm").m_as("N/m"), rel=1e-4)
