@@ -206,3 +206,17 @@ def test_friction_classes_vdi_2230_table_a5():
     assert b.friction_class("e")[0] == 0.30
     with pytest.raises(UnknownNameError):
         b.friction_class("F")
+
+
+def test_shigley_constant_of_a_joint():
+    """BoltedJoint.shigley_constant: k_b by Eq. (8-17) over the grip (M12 x 60 hex bolt, 40 mm grip: shank
+    60 - 30 = 30 mm, thread 10 mm), k_m equal to Eq. (8-22) for two equal steel plates with d_w = 1.5 d (hand
+    calculation from the equations); the two methods' load factors are close for steel (C vs VDI Phi_K)."""
+    j = b.bolted_joint("j", "M12", "8.8", [("20 mm", "S235JR"), ("20 mm", "S235JR")], "60 mm", d_W="18 mm",
+                       E_S="210 GPa")
+    kb, km, C = j.shigley_constant()
+    Ad, At = math.pi / 4 * 12e-3**2, j.thread.As
+    assert kb == pytest.approx(Ad * At * 210e9 / (Ad * 10e-3 + At * 30e-3))
+    assert km == pytest.approx(b.member_stiffness_equal("210 GPa", "12 mm", "40 mm").m_as("N/m"), rel=1e-3)
+    assert C == pytest.approx(kb / (kb + km))
+    assert abs(C - j.analyse("1 kN").Phi_K) < 0.05

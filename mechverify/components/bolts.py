@@ -897,6 +897,19 @@ class BoltedJoint:
     def stiffness_parts(self) -> float:
         return 1.0 / self.delta_P
 
+    def shigley_constant(self) -> tuple[float, float, float]:
+        """(k_b, k_m, C) by Shigley's method for comparison with VDI's Phi_K: k_b of Eq. (8-17) over the grip, k_m of
+        the layered frusta from the bearing diameters (a tapped body adds d/2 to the grip, Table 8-7)."""
+        th = self.thread
+        layers = [(Q(p.thickness, "m"), Q(p.E, "Pa")) for p in self.parts]
+        if self.tapped is not None:
+            layers.append((Q(th.d / 2, "m"), Q(self.tapped.E, "Pa")))
+        grip = sum(t.m_as("m") for t, _ in layers)
+        l_d = min(self.grip_sections[0], grip)
+        kb = shigley_bolt_stiffness.si(math.pi / 4 * th.d**2, th.As, self.E_S, l_d, grip - l_d)
+        km = shigley_member_stiffness(layers, Q(th.d, "m"), Q(self.d_W_eff, "m")).m_as("N/m")
+        return kb, km, kb / (kb + km)
+
     @property
     def D_Km(self) -> float:
         """Effective diameter of the head friction moment D_Km = (d_W + d_h)/2 [m]."""
@@ -999,6 +1012,9 @@ class BoltedJoint:
                       for mu in _mu_grid(self.mu_G[0], self.mu_G[1]))
         if th.d > 0.040:
             notes.append("sigma_ASV is given for d <= 40 mm; extrapolated")
+        _, _, C = self.shigley_constant()
+        notes.append(f"load factor: VDI Phi_K = {PhiK:.3g} (n = 1), Phi_n = {Phin:.3g} (n = {self.n:g}); Shigley's "
+                     f"frusta give C = {C:.3g} (Sec. 8-7)")
         return JointAnalysis(dS, dP, PhiK, Phin, FA, FAmin, FQ, FZ, dFth, FKQ, self.F_K_req, fmin, fmax, FMzul, F_M_req,
                              FSA, FPA, sig_M, sig_B, sig_a, sig_AS, p_head, p_nut, strip_cap, strip_dem, F_KR_min, MA,
                              table, tuple(notes), R_S)
