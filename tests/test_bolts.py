@@ -220,3 +220,12 @@ def test_shigley_constant_of_a_joint():
     assert km == pytest.approx(b.member_stiffness_equal("210 GPa", "12 mm", "40 mm").m_as("N/m"), rel=1e-3)
     assert C == pytest.approx(kb / (kb + km))
     assert abs(C - j.analyse("1 kN").Phi_K) < 0.05
+
+
+def test_size_without_head_tables_needs_dimensions():
+    """A thread outside the head/nut/hole tables (M18) is an InputError naming what to give; with the bearing and
+    hole diameters given, a tapped joint is calculated."""
+    with pytest.raises(InputError, match="head_bearing_diameter"):
+        b.bolted_joint("j", "M18", "8.8", [("20 mm", "S235JR")], "60 mm")
+    j = b.bolted_joint("j", "M18", "8.8", [("20 mm", "S235JR")], "60 mm", d_W="25 mm", d_h="20 mm", tapped="S235JR")
+    assert j.analyse("10 kN").sigma_red_B > 0

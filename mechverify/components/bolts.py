@@ -192,8 +192,10 @@ def _size_row(d_mm: float) -> dict[str, Any]:
     for r in _load("bolts_iso.toml")["size"]:
         if abs(r["d"] - d_mm) < 1e-9:
             return r
-    sizes = [f"M{_mm(r['d'])}" for r in _load("bolts_iso.toml")["size"]]
-    raise UnknownNameError("size in the head/nut/hole tables", f"M{_mm(d_mm)}", sizes)
+    sizes = ", ".join(f"M{_mm(r['d'])}" for r in _load("bolts_iso.toml")["size"])
+    raise InputError(f"M{_mm(d_mm)} is not in the head, nut and clearance-hole tables ({sizes}); give "
+                     "head_bearing_diameter and hole_diameter (a through bolt also needs a tabulated nut: use a tapped "
+                     "joint or a tabulated size)")
 
 
 def head_bearing_diameter(thread: MetricThread, head: str) -> float:
