@@ -205,11 +205,9 @@ class Design:
                         errors.append((path + (f" [{case}]" if case else ""), str(exc)))
                         continue
                     for r in out if isinstance(out, list | tuple) else [out]:
-                        r = dataclasses.replace(r, component=entry.name, required_sf=sf,
-                                                load_case=case or r.load_case)
-                        derived = self.derived_notes(entry.name, r.load_case)
-                        if derived:
-                            r = dataclasses.replace(r, notes=(*r.notes, *derived))
+                        lc = case or r.load_case
+                        r = dataclasses.replace(r, component=entry.name, required_sf=sf, load_case=lc,
+                                                notes=(*r.notes, *self.derived_notes(entry.name, lc)))
                         found.setdefault(r.check, []).append(r)
                     if progress is not None:
                         progress()

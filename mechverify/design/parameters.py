@@ -61,8 +61,18 @@ def show(v: Any) -> str:
                      and v.dimensionality == _dimensionality(dim)]
             if len(kinds) == 1:
                 v = v.to(DIMENSIONS[kinds[0]][1])
+        m = v.magnitude
+        if isinstance(m, int | float) and not isinstance(m, bool):  # fmt's text, the unit's text cached
+            text = fmt(Quantity(float(m), "dimensionless"))
+            u = _unit_text(v.units)
+            return f"{text} {u}" if u else text
         return fmt(v)
     return f"{v:.6g}" if isinstance(v, float) else str(v)
+
+
+@functools.lru_cache(maxsize=256)
+def _unit_text(u: Any) -> str:
+    return f"{u:~P}"
 
 
 @functools.lru_cache(maxsize=64)
