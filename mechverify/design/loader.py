@@ -113,84 +113,104 @@ def _a(kind: str) -> str:
 
 
 def validate_value(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
-    """Check one value against its field; record an error and return ``None`` when it is bad."""
-    kind = f.kind
+    """Check one value against its field; record an error and return ``None`` when it is bad.
+
+    An expression (over ``[parameters]`` or component values) is read first; otherwise the validator of
+    the field's kind (:data:`_VALIDATORS`; a dimension name reads a quantity) checks the value.
+    """
     if isinstance(v, str) and (ctx.get("parameters") or ctx.get("component_names")):
         done, out = _expression_value(f, v, path, col, ctx)
         if done:
             return out
-    if kind in DIMENSIONS:
-        if isinstance(v, bool) or not isinstance(v, str | int | float):
-            col.add(path, f"expected {_a(kind)} as a string with units, got {_describe(v)}")
-            return None
-        if isinstance(v, int | float) and kind != "dimensionless":
-            col.add(path, f'expected {_a(kind)}, got the bare number {v!r}; write it with units, e.g. "{v} '
-                          f'{ {"length": "mm", "force": "N", "pressure": "MPa", "torque": "N*m"}.get(kind, "...")}"')
-            return None
-        try:
-            return as_quantity(v, kind, path)
-        except MechverifyError as exc:
-            msg = str(exc).split(": ", 1)[-1]
-            msg = msg.replace(f"got {v}", f"got {_describe(v)}") if isinstance(v, str) else msg
-            col.add(path, msg)
-            return None
-    if kind == "str":
-        if not isinstance(v, str):
-            col.add(path, f"expected a string, got {_describe(v)}")
-            return None
+    validator = _quantity if f.kind in DIMENSIONS else _VALIDATORS.get(f.kind)
+    if validator is None:
+        raise AssertionError(f.kind)
+    return validator(f, v, path, col, ctx)
+
+
+def _bad(col: _Collector, path: str, msg: str) -> None:
+    """Record an error; the validators return this (``None``) for a bad value."""
+    col.add(path, msg)
+
+
+def _quantity(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    kind = f.kind
+    if isinstance(v, bool) or not isinstance(v, str | int | float):
+        return _bad(col, path, f"expected {_a(kind)} as a string with units, got {_describe(v)}")
+    if isinstance(v, int | float) and kind != "dimensionless":
+        unit = {"length": "mm", "force": "N", "pressure": "MPa", "torque": "N*m"}.get(kind, "...")
+        return _bad(col, path, f'expected {_a(kind)}, got the bare number {v!r}; write it with units, '
+                               f'e.g. "{v} {unit}"')
+    try:
+        return as_quantity(v, kind, path)
+    except MechverifyError as exc:
+        msg = str(exc).split(": ", 1)[-1]
+        msg = msg.replace(f"got {v}", f"got {_describe(v)}") if isinstance(v, str) else msg
+        return _bad(col, path, msg)
+
+
+def _str(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    return v if isinstance(v, str) else _bad(col, path, f"expected a string, got {_describe(v)}")
+
+
+def _bool(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    return v if isinstance(v, bool) else _bad(col, path, f"expected true or false, got {_describe(v)}")
+
+
+def _number(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    ok = isinstance(v, int) if f.kind == "int" else isinstance(v, int | float)
+    if isinstance(v, bool) or not ok:
+        return _bad(col, path, f"expected {'an integer' if f.kind == 'int' else 'a number'}, got {_describe(v)}")
+    return v
+
+
+def _choice(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    if v in f.choices:
         return v
-    if kind == "bool":
-        if not isinstance(v, bool):
-            col.add(path, f"expected true or false, got {_describe(v)}")
-            return None
+    hint = suggest(str(v), f.choices, 1)
+    return _bad(col, path, f"expected one of {', '.join(repr(c) for c in f.choices)}, got {_describe(v)}"
+                           + (f"; did you mean {hint[0]!r}?" if hint else ""))
+
+
+def _material(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    if not isinstance(v, str):
+        return _bad(col, path, f"expected a material name, got {_describe(v)}")
+    try:
+        return ctx["materials"].get(v)
+    except MechverifyError as exc:
+        return _bad(col, path, str(exc))
+
+
+def _ref(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    names = ctx.get(f.ref, {})
+    if isinstance(v, str) and v in names:
         return v
-    if kind in ("int", "float"):
-        ok = isinstance(v, int) if kind == "int" else isinstance(v, int | float)
-        if isinstance(v, bool) or not ok:
-            col.add(path, f"expected {'an integer' if kind == 'int' else 'a number'}, got {_describe(v)}")
-            return None
-        return v
-    if kind == "choice":
-        if v not in f.choices:
-            hint = suggest(str(v), f.choices, 1)
-            col.add(path, f"expected one of {', '.join(repr(c) for c in f.choices)}, got {_describe(v)}"
-                          + (f"; did you mean {hint[0]!r}?" if hint else ""))
-            return None
-        return v
-    if kind == "material":
-        if not isinstance(v, str):
-            col.add(path, f"expected a material name, got {_describe(v)}")
-            return None
-        try:
-            return ctx["materials"].get(v)
-        except MechverifyError as exc:
-            col.add(path, str(exc))
-            return None
-    if kind == "ref":
-        names = ctx.get(f.ref, {})
-        if not isinstance(v, str) or v not in names:
-            hint = suggest(str(v), names, 1)
-            col.add(path, f"expected the name of an entry of [{f.ref}], got {_describe(v)}"
-                          + (f"; did you mean {hint[0]!r}?" if hint else f" (defined: {', '.join(names) or 'none'})"))
-            return None
-        return v
-    if kind == "list":
-        if not isinstance(v, list):
-            col.add(path, f"expected a list, got {_describe(v)}")
-            return None
-        item = Field(f.name, f.item or "str", choices=f.choices, ref=f.ref)
-        out = [validate_value(item, x, f"{path}[{i}]", col, ctx) for i, x in enumerate(v)]
-        return None if any(x is None for x in out) else out
-    if kind == "table":
-        if not isinstance(v, dict):
-            col.add(path, f"expected a table, got {_describe(v)}")
-            return None
-        try:
-            return substitute(v, path, ctx, skip=_NAME_KEYS)
-        except ExpressionError as exc:
-            col.add(path, str(exc))
-            return None
-    raise AssertionError(kind)
+    hint = suggest(str(v), names, 1)
+    return _bad(col, path, f"expected the name of an entry of [{f.ref}], got {_describe(v)}"
+                           + (f"; did you mean {hint[0]!r}?" if hint else f" (defined: {', '.join(names) or 'none'})"))
+
+
+def _list(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    if not isinstance(v, list):
+        return _bad(col, path, f"expected a list, got {_describe(v)}")
+    item = Field(f.name, f.item or "str", choices=f.choices, ref=f.ref)
+    out = [validate_value(item, x, f"{path}[{i}]", col, ctx) for i, x in enumerate(v)]
+    return None if any(x is None for x in out) else out
+
+
+def _table(f: Field, v: Any, path: str, col: _Collector, ctx: dict[str, Any]) -> Any:
+    if not isinstance(v, dict):
+        return _bad(col, path, f"expected a table, got {_describe(v)}")
+    try:
+        return substitute(v, path, ctx, skip=_NAME_KEYS)
+    except ExpressionError as exc:
+        return _bad(col, path, str(exc))
+
+
+#: The validator of each plain field kind (:data:`~mechverify.design.spec.PLAIN_KINDS`); dimension names
+#: use :func:`_quantity`.
+_VALIDATORS: dict[str, Any] = {"str": _str, "bool": _bool, "int": _number, "float": _number, "choice": _choice,
+                               "material": _material, "ref": _ref, "list": _list, "table": _table}
 
 
 #: Keys of inline tables that hold names, never expressions.
