@@ -125,6 +125,16 @@ def test_bad_axes_are_named_errors(vary, error, match):
 def test_zero_monte_carlo_samples():
     with pytest.raises(InputError, match="zero samples"):
         Study(LIFT, vary={"components.lift.mass": "normal:30 kg:1 kg"}, samples=0)
+    with pytest.raises(InputError, match="needs the number of samples"):
+        Study(LIFT, vary={"components.lift.mass": "normal:30 kg:1 kg"})
+
+
+def test_sweeps_and_distributions_do_not_mix_and_a_sweep_takes_no_sample_count():
+    with pytest.raises(InputError, match="not both"):
+        Study(LIFT, vary={"components.lift.mass": "normal:30 kg:1 kg", "parameters.g": "9 m/s^2:10 m/s^2:2"},
+              samples=4)
+    with pytest.raises(InputError, match=r"grid \(3 x 2\)"):
+        Study(LIFT, vary={"components.lift.mass": "1 kg:3 kg:3", "parameters.g": "9 m/s^2:10 m/s^2:2"}, samples=4)
 
 
 def test_bare_numbers_take_the_files_unit():

@@ -55,7 +55,7 @@ def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
     from mechverify.design.design import Design
     from mechverify.design.loader import parse
 
-    key = json.dumps([doc, path], sort_keys=True)
+    key = json.dumps([doc, path], sort_keys=True, default=str)
     with _BASE_LOCK:
         design = _BASE.get(key)
     if design is None:

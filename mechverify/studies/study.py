@@ -11,6 +11,7 @@ so a study's result is the same whatever executor runs it.
 
 from __future__ import annotations
 
+import copy
 import csv
 import io
 import json
@@ -51,10 +52,10 @@ def design_and_source(design: Any) -> tuple[dict[str, Any], str | None, Any]:
     if isinstance(design, str | Path):
         design = load(design)
     if isinstance(design, Design):
-        doc = json.loads(json.dumps(design.data.raw))  # a plain, independent copy
+        doc = copy.deepcopy(design.data.raw)  # an independent copy
         path = str(design.path) if design.path else None
     elif isinstance(design, Mapping):
-        doc, path, design = json.loads(json.dumps(dict(design))), None, None
+        doc, path, design = copy.deepcopy(dict(design)), None, None
     else:
         raise InputError(f"study: expected a Design, a design-file path or its TOML data, got {type(design).__name__}")
     if isinstance(doc.get("design"), dict) and "include" in doc["design"]:
@@ -319,6 +320,10 @@ class Study:
         if sweeps and len(sweeps) != len(self.axes):
             raise InputError("vary: give either sweep axes (START:STOP:N) or distributions, not both in one study")
         self.kind = "sweep" if sweeps else "monte_carlo"
+        if self.kind == "sweep" and samples is not None:
+            grid = " x ".join(str(int(a.args[2])) for a in sweeps)
+            raise InputError(f"samples: a sweep has as many samples as its grid ({grid}); the number of samples "
+                             "is for distributions (Monte Carlo)")
         if method not in METHODS:
             raise InputError(f"method: expected one of {', '.join(METHODS)}, got {method!r}")
         self.method = method if self.kind == "monte_carlo" else "grid"
