@@ -5,7 +5,10 @@ plane, meshed by gmsh with the element size graded down at holes (:func:`mesh_re
 scikit-fem ``MeshTri``. Supports and loads are those of the solids (:mod:`mechverify.fea.loads`)
 on 2D regions: ``Plane(x=...)`` is a line, ``Cylinder(center=(x, y), radius=r)`` a hole's rim.
 ``Force`` spreads a total force over the region's boundary length (a pin load on a hole), ``Pressure``
-acts normal to the boundary, ``Gravity`` defaults to -y.
+acts normal to the boundary, ``Traction`` is any field t(x), ``Gravity`` defaults to -y. A gmsh
+second-order mesh (:func:`mechverify.fea.mesh2d.from_gmsh_model`) gives curved (isoparametric)
+triangles and named curves and points (:class:`~mechverify.fea.regions.Named`). Each load and support
+reports what it caught (:meth:`PlaneModel.region_reports`, ``FieldResults.regions`` / ``warnings``).
 
 References
 ----------

@@ -10,7 +10,12 @@
 
 Loads and supports are declared on regions (:mod:`mechverify.fea.regions`); a model the supports
 leave free to move raises :class:`ModelError` naming the free motion. The reactions are checked to
-balance the applied loads (forces and moments) before results are returned.
+balance the applied loads (forces and moments) before results are returned. Each load and support
+reports what its region caught (:meth:`SolidModel.region_reports`, ``FieldResults.regions`` and
+``warnings``). On a gmsh second-order mesh (curved CAD: the default of :func:`mechverify.fea.mesh.cylinder`,
+``block_with_holes``, ``from_step``) the elements are curved (:mod:`mechverify.fea.isoparametric`).
+Nodal stresses are recovered by superconvergent patch recovery unless ``solve(recovery=...)`` says
+otherwise (:mod:`mechverify.fea.recovery`).
 
 References
 ----------
