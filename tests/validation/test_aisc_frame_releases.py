@@ -150,3 +150,20 @@ def test_unstable_and_ineffective_releases_are_named():
         beam([Support("A", "pinned"), Support("B")], hinges=[Hinge("A", "y")]).solve([UNIFORM])
     with pytest.raises(InputError, match=r"releases_end.*did you mean 'Mz'"):
         Member("A", "B", SEC, STEEL, "beam", releases_end="Mzz")
+
+
+def test_three_hinged_frame_with_a_hinge_at_the_apex():
+    """Two inclined rafters A-C, C-B on pinned supports with a Hinge about global y at the apex C (a three-hinged
+    frame, statically determinate): a load P at C gives V = P/2 at each support and the thrust H = P l / (4 h)
+    (moments about C of one half; hand calculation from statics); the moment at C is zero."""
+    P, span, h = 10e3, 6.0, 2.0
+    nodes = {"A": ["0 m", "0 m", "0 m"], "C": [f"{span / 2} m", "0 m", f"{h} m"], "B": [f"{span} m", "0 m", "0 m"]}
+    ms = [Member("A", "C", SEC, STEEL, "left"), Member("C", "B", SEC, STEEL, "right")]
+    hold = ("x", "y", "z", "rx")
+    fr = Frame(nodes, ms, [Support("A", "custom", hold=hold), Support("B", "custom", hold=hold)], [Hinge("C", "y")])
+    res = fr.solve([PointLoad("C", force=["0 N", "0 N", f"-{P} N"])])
+    H = P * span / (4 * h)
+    assert res.reactions["A"][0].m_as("N") == pytest.approx([H, 0, P / 2], rel=1e-9, abs=1e-6)
+    assert res.reactions["B"][0].m_as("N") == pytest.approx([-H, 0, P / 2], rel=1e-9, abs=1e-6)
+    assert res.diagram("left").My.m_as("N*m")[-1] == pytest.approx(0, abs=1e-6)
+    assert res.ranges("right")["My"].max.m_as("N*m") == pytest.approx(0, abs=1e-6)

@@ -424,13 +424,13 @@ class Frame:
             for dof, kv in springs.items():
                 diag[dof] += kv
             Ks = (K + sp.diags(diag)).tocsr()
-            self._check_releases(mesh, Ks, held)
-            free = np.setdiff1d(np.arange(mesh.ndof), held)
-            Kff = Ks[free][:, free]
-            Kfs = Ks[free][:, held]
             ow = np.zeros(mesh.ndof)
             for dof, (kv, _) in one_way.items():
                 ow[dof] = kv
+            self._check_releases(mesh, (Ks + sp.diags(ow)).tocsr(), held)
+            free = np.setdiff1d(np.arange(mesh.ndof), held)
+            Kff = Ks[free][:, free]
+            Kfs = Ks[free][:, held]
             self._mechanism(mesh, Kff + sp.diags(ow[free]), free)
             hs = set(held.tolist())
             data = {nm: self._case(mesh, lds, hs) for nm, lds in cases.items()}
