@@ -116,3 +116,11 @@ def test_node_lookup_scales_linearly():
     res = fr.solve([PointLoad(f"N{i}_1", force=["0 N", "0 N", "-10 N"]) for i in range(n + 1)])
     assert time.perf_counter() - t0 < 5.0
     assert sum(r[0].m_as("N")[2] for r in res.reactions.values()) == pytest.approx(10 * (n + 1), rel=1e-12)
+
+
+def test_loads_outside_their_member_are_named_errors():
+    fr = fixed_fixed()
+    with pytest.raises(InputError, match="start 2000 mm is not before the member's end"):
+        fr.solve([DistributedLoad("beam", ["0 N/m", "0 N/m", "-1 N/m"], start="2 m")])
+    with pytest.raises(InputError, match="3000 mm lies beyond the member's end"):
+        fr.solve([DistributedLoad("beam", ["0 N/m", "0 N/m", "-1 N/m"], end="3 m")])

@@ -155,6 +155,10 @@ def build_mesh(fr: Frame, loads: Sequence[Load]) -> _Mesh:
             splits[i].append(min(max(s / lengths[i], 0.0), 1.0))
         elif isinstance(ld, DistributedLoad):
             i = fr._member(ld.member)
+            sa = 0.0 if ld.start is None else to_si(ld.start, "length", "start")
+            if sa >= lengths[i] - tol:
+                raise InputError(f"distributed load on {ld.member}: start {sa * 1e3:.4g} mm is not before the "
+                                 f"member's end (length {lengths[i] * 1e3:.4g} mm)")
             for v in (ld.start, ld.end):
                 if v is not None:
                     s = to_si(v, "length", "position")

@@ -343,20 +343,21 @@ class Spring:
     name: str = ""
 
     def __post_init__(self) -> None:
+        what = f"spring {self.name}" if self.name else "spring"
         if (self.axial is None) == (not self.stiffness):
-            raise InputError(f"spring {self.name}: give axial (a stiffness along the line) or stiffness = "
+            raise InputError(f"{what}: give axial (a stiffness along the line) or stiffness = "
                              "{component: value}, one of the two")
         if self.axial is not None:
-            k = to_si(self.axial, "force_per_length", f"spring {self.name}: axial")
+            k = to_si(self.axial, "force_per_length", f"{what}: axial")
             if not k > 0:
-                raise InputError(f"spring {self.name}: axial stiffness must be positive, got {self.axial!r}")
+                raise InputError(f"{what}: axial stiffness must be positive, got {self.axial!r}")
             object.__setattr__(self, "axial", k)
         comps: dict[str, float] = {}
         for key, v in dict(self.stiffness).items():
-            i = _dof(key, f"spring {self.name}: stiffness")
-            val = _dof_value(i, v, f"spring {self.name}: stiffness.{DOF_NAMES[i]}", "stiffness")
+            i = _dof(key, f"{what}: stiffness")
+            val = _dof_value(i, v, f"{what}: stiffness.{DOF_NAMES[i]}", "stiffness")
             if not val > 0:
-                raise InputError(f"spring {self.name}: stiffness.{DOF_NAMES[i]} must be positive, got {v!r}")
+                raise InputError(f"{what}: stiffness.{DOF_NAMES[i]} must be positive, got {v!r}")
             comps[DOF_NAMES[i]] = val
         object.__setattr__(self, "stiffness", comps)
 
