@@ -9,6 +9,7 @@ not a printed value.
 
 from __future__ import annotations
 
+import json
 import math
 import tomllib
 from pathlib import Path
@@ -309,3 +310,34 @@ def test_explore_sliders_reverify_the_design():
     assert len(explore(d).sliders) == sum(1 for v in d.parameters.values() if hasattr(v, "magnitude"))
     e.update({"parameters.lifted_load": -5.0})  # invalid: the message instead of the table
     assert "<pre" in e.html
+
+
+PLATE = {
+    "design": {"name": "plate"},
+    "materials": {"al": {"base": "Inventor Aluminum 6061", "E": "70 GPa", "nu": 0.3}},
+    "components": {"p": {"type": "plate_fea", "width": "400 mm", "height": "200 mm", "thickness": "4 mm",
+                         "material": "al", "supports": [{"edges": "all", "type": "pinned"}], "mesh_size": "10 mm",
+                         "deflection_limit": "0.5 mm"}},
+    "load_cases": {"q": {"p": {"pressure": "10 kPa"}}},
+}
+
+
+def test_size_thinnest_plate_against_roark_table_11_4_case_1a():
+    """Thinnest simply supported 400 x 200 mm plate under 10 kPa whose deflection stays within 0.5 mm.
+
+    Book value: Roark's Formulas for Stress and Strain, 7th ed., Table 11.4 case 1a, a/b = 2.0: alpha = 0.1110
+    (printed), y_max = alpha q b^4 / (E t^3). Hand calculation from it (not printed): with u·SF = SF y/y_lim = 1,
+    t = (SF alpha q b^4 / (E y_lim))^(1/3) = 3.70 mm for SF = 1. The FEA reproduces Roark's deflection within 1 %
+    at this mesh (tests/test_design_plate_fea.py), so the limit agrees within 1/3 % (t ~ y^(1/3)) plus the mesh's
+    change with the thickness."""
+    from mechverify.design import adapters  # noqa: F401  (registers plate_fea)
+    from mechverify.design.design import Design
+    from mechverify.design.loader import parse
+
+    base = Design(parse(json.loads(json.dumps(PLATE))))
+    sf = next(r for r in base.verify() if r.check == "plate_deflection_fea").required_sf
+    t_hand = (sf * 0.1110 * 1e4 * 0.2**4 / (70e9 * 0.5e-3)) ** (1 / 3) * 1e3
+    assert t_hand == pytest.approx(3.70 * sf ** (1 / 3), abs=0.01)
+    r = size(PLATE, "components.p.thickness", until="plate_deflection_fea", bounds=("2 mm", "8 mm"), scan=3)
+    assert r.unit == "mm" and r.limit == pytest.approx(t_hand, rel=0.01)
+    assert r.today_fu < 1 and r.margin < 0  # 4 mm passes; the limit lies below it
