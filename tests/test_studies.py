@@ -205,6 +205,13 @@ def test_wilson_interval_hand_calculations():
     # k = 0: the upper bound is z^2/(n + z^2) in closed form (hand calculation: 0.16113 for n = 20)
     assert wilson_interval(0, 20) == (0.0, pytest.approx(z * z / (20 + z * z), rel=1e-12))
     assert wilson_interval(0, 20)[1] == pytest.approx(0.16113, abs=1e-5)
+    # an independent implementation: SciPy's binomtest(...).proportion_ci(method="wilson") (no published table
+    # value was found with the search tool; Newcombe 1998 Table II could not be read)
+    from scipy.stats import binomtest
+
+    for k, n in ((81, 263), (15, 148), (0, 20), (1, 29), (29, 29)):
+        ci = binomtest(k, n).proportion_ci(confidence_level=0.95, method="wilson")
+        assert wilson_interval(k, n) == (pytest.approx(ci.low, abs=1e-12), pytest.approx(ci.high, abs=1e-12))
     with pytest.raises(InputError):
         wilson_interval(3, 0)
 
