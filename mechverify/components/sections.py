@@ -27,7 +27,7 @@ fillets) need no extra package: area, centroid, second moments and plastic modul
 of the outline (Green's theorem; fillet arcs as 48 chords, area error ~3e-5), the torsion constant is
 the thin-walled sum of strips with the junction terms of El Darwish & Johnston (Roark Table 10.7;
 EN 10219-2 Annex B for the hollow rectangle), the shear centre the thin-walled one, and the shear
-areas Cowper's (I, box) or Jourawski's strip integral (T, L, C). Their agreement with
+areas Cowper's (I, box), the thin-walled shear flow's (T, C) or Jourawski's strip integral (L). Their agreement with
 sectionproperties' warping analysis is measured in ``tests/test_sections.py`` (J within 1-4 %,
 14 % for a T with fillets; IPE 200 J = 7.02 cm^4 against the catalogue's 6.98). Arbitrary polygons
 with holes are analysed with *sectionproperties* (the optional extra ``mechverify[sections]``;
@@ -477,6 +477,34 @@ def _shear_area(rings: Sequence[np.ndarray], axis: int, I: float, centroid: floa
     return I * I / total if total > 0 else 0.0
 
 
+def _thin_shear_area(paths: Sequence[Sequence[tuple[tuple[float, float], tuple[float, float], float]]],
+                     axis: int) -> float:
+    """Shear area of a thin-walled open section for a shear force along ``axis`` (0: y, 1: z), from its shear
+    flow: ``As = I² / ∫ Q(s)² / t ds`` with ``Q(s) = ∫ t (u - u_c) ds`` from a free end (Pilkey Sec. 2.8, the
+    shear correction factor of thin-walled sections). ``paths`` are chains of mid-line segments
+    ``(start, end, t)``, each starting at a free end; chains meet at one junction or run free end to free
+    end. Valid for shear along an axis of symmetry or normal to it (T, C); I, centroid and Q are mid-line
+    (thin-walled) values, so fillets are not counted.
+    """
+    g, w = np.polynomial.legendre.leggauss(4)  # Q is quadratic along a segment: Q² / t integrated exactly
+    segs = [seg for path in paths for seg in path]
+    A = sum(t * math.dist(p0, p1) for p0, p1, t in segs)
+    c = sum(t * math.dist(p0, p1) * (p0[axis] + p1[axis]) / 2 for p0, p1, t in segs) / A
+    I = sum(t * math.dist(p0, p1) * ((p0[axis] - c) ** 2 + (p0[axis] - c) * (p1[axis] - c) + (p1[axis] - c) ** 2) / 3
+            for p0, p1, t in segs)
+    total = 0.0
+    for path in paths:
+        q0 = 0.0
+        for p0, p1, t in path:
+            L = math.dist(p0, p1)
+            a, b = p0[axis] - c, p1[axis] - c
+            sg = (g + 1) / 2 * L
+            Q = q0 + t * (a * sg + (b - a) * sg * sg / (2 * L))
+            total += float((Q * Q / t * w).sum() * L / 2)
+            q0 += t * L * (a + b) / 2
+    return I * I / total if total > 0 else 0.0
+
+
 def _strip(length: float, t: float, free_ends: int) -> float:
     """Torsion constant of a rectangular strip ``length x t`` with 0, 1 or 2 free short ends (Roark Table 10.7:
     ``K1 = a b³ [1/3 - 0.21 (b/a)(1 - b⁴/(12 a⁴))]`` for two free ends, 0.105 and 192 for one, 1/3 for none)."""
@@ -531,8 +559,8 @@ def _thin_walled(kind: str, dims: Mapping[str, float], rings: list[np.ndarray], 
                  shear_areas: tuple[float, float] | None = None) -> Section:
     """Section from its outline (exact polygon integrals) and the torsion/shear-centre formulas of its kind.
 
-    Shear areas: ``shear_areas`` (y, z) where the kind has a published coefficient, else Jourawski's
-    strip integral :func:`_shear_area`.
+    Shear areas: ``shear_areas`` (y, z) where the kind has its own (Cowper's coefficients, the thin-walled
+    shear flow), else Jourawski's strip integral :func:`_shear_area`.
     """
     A, Sy, Sz, Iyy0, Izz0, Iyz0 = _moments(rings)
     if A <= 0:
@@ -640,8 +668,12 @@ def t_section(height: QuantityLike, width: QuantityLike, web_thickness: Quantity
                       (yl, h - tf, r)])
     J = _strip(b, tf, 2) + _strip(h - tf, tw, 1) + _tee_junction(tf, tw, r)
     dims = {"height": h, "width": b, "web_thickness": tw, "flange_thickness": tf, **({"root_radius": r} if r else {})}
+    zf = h - tf / 2  # flange mid-line; the web mid-line is y = b/2
+    paths = [[((0.0, zf), (b / 2, zf), tf)], [((b, zf), (b / 2, zf), tf)], [((b / 2, 0.0), (b / 2, zf), tw)]]
+    shear = (_thin_shear_area(paths, 0), _thin_shear_area(paths, 1))
     return _thin_walled("t_section", dims, [ring], J, J / max(tf, tw, _tee_diameter(tf, tw, r)), (b / 2, h - tf / 2),
-                        f"{ref('roark8', 'Table 10.7 (T-section)')}; {ref('pilkey_formulas', 'Sec. 2.11')}")
+                        f"{ref('roark8', 'Table 10.7 (T-section)')}; {ref('pilkey_formulas', 'Sec. 2.8, 2.11')}",
+                        shear)
 
 
 def l_section(height: QuantityLike, width: QuantityLike, thickness: QuantityLike, root_radius: QuantityLike = "0 mm",
@@ -685,8 +717,12 @@ def c_section(height: QuantityLike, width: QuantityLike, web_thickness: Quantity
     bp, hp = b - tw / 2, h - tf
     e = 3 * bp**2 * tf / (6 * bp * tf + hp * tw)
     dims = {"height": h, "width": b, "web_thickness": tw, "flange_thickness": tf, **({"root_radius": r} if r else {})}
+    yw, zb, zt = tw / 2, tf / 2, h - tf / 2  # mid-lines of the web and the flanges
+    paths = [[((b, zt), (yw, zt), tf), ((yw, zt), (yw, zb), tw), ((yw, zb), (b, zb), tf)]]
+    shear = (_thin_shear_area(paths, 0), _thin_shear_area(paths, 1))
     return _thin_walled("c_section", dims, [ring], J, J / max(tf, tw, _corner_diameter(tf, tw, r)), (tw / 2 - e, h / 2),
-                        f"{ref('roark8', 'Table 10.7 (L corner)')}; {ref('pilkey_formulas', 'Sec. 2.11')}")
+                        f"{ref('roark8', 'Table 10.7 (L corner)')}; {ref('pilkey_formulas', 'Sec. 2.8, 2.11')}",
+                        shear)
 
 
 def _points(pts: Any, name: str, unit: str | None) -> np.ndarray:
