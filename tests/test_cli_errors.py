@@ -136,6 +136,8 @@ def test_design_without_components(tmp_path, capsys):
     p.write_text('[design]\nname = "empty"\n')
     code, _, err = run(capsys, p)
     assert code == 2 and "no components" in err
+    assert main(["diff", str(p), str(p)]) == 2
+    assert "no components" in capsys.readouterr().err
 
 
 def test_negative_bearing_life_at_its_key(tmp_path, capsys):

@@ -73,6 +73,8 @@ def run(args: argparse.Namespace) -> int:
             db = load(base, args.allow_outside_includes)
             dh = load(head, args.allow_outside_includes)
             check_output_paths({"--json": args.json_out}, list(dh.files) + [head])
+            if not dh.data.components:
+                raise Invalid(f"{head}: the design has no components, so there is nothing to compare")
             rb, rh = db.verify(), dh.verify()
         except MechverifyError as exc:
             raise Invalid(str(exc)) from None
