@@ -67,8 +67,11 @@ def test_unknown_check_suggests(scratch):
     assert "zz_screw_thing" in e.value.suggestions
 
 
-def test_sf_kinds_match_the_design_defaults():
-    assert set(registry.SF_KINDS) == set(DEFAULT_SAFETY_FACTORS)
+def test_safety_factor_classes_have_one_source():
+    """The design files' classes are the registry's (one dict, not a copy), and each has a positive default."""
+    assert DEFAULT_SAFETY_FACTORS is registry.DEFAULT_SAFETY_FACTORS
+    assert registry.SF_KINDS == tuple(DEFAULT_SAFETY_FACTORS)
+    assert all(v > 0 for v in DEFAULT_SAFETY_FACTORS.values())
 
 
 def test_checkspec_of_takes_identity_from_registry(scratch):

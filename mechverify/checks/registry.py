@@ -28,10 +28,23 @@ from typing import Any
 from mechverify.errors import UnknownNameError
 from mechverify.references import keys_in
 
-#: The safety-factor classes a check may name (``[requirements.safety_factors]`` of a design file).
-#: Kept equal to :data:`mechverify.design.spec.DEFAULT_SAFETY_FACTORS` (a test compares them).
-SF_KINDS = ("static", "spring", "buckling", "fatigue", "self_locking", "motor", "bearing", "deflection",
-            "speed", "limit", "pressure")
+#: The safety-factor classes a check may name, with their defaults (a design file's
+#: ``[requirements.safety_factors]`` may set them).
+DEFAULT_SAFETY_FACTORS: dict[str, float] = {
+    "static": 2.0,
+    "spring": 1.2,  # Shigley 10th ed. Sec. 10-7: springs are designed for n_s >= 1.2 at solid
+    "buckling": 3.0,
+    "fatigue": 1.5,
+    "self_locking": 1.0,
+    "motor": 1.5,
+    "bearing": 1.0,
+    "deflection": 1.0,
+    "speed": 1.25,
+    "limit": 1.0,  # hard limits that already contain their margin (guidelines, ratings with margin)
+    "pressure": 1.0,
+}
+#: The class names.
+SF_KINDS = tuple(DEFAULT_SAFETY_FACTORS)
 
 _NAME = re.compile(r"^[a-z][a-z0-9_]*$")
 _ALIAS = re.compile(r"^[a-z][a-z0-9_]*(\.[a-z][a-z0-9_]*)?$")

@@ -13,6 +13,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
+from mechverify.checks.registry import DEFAULT_SAFETY_FACTORS  # noqa: F401  (the design's safety-factor classes)
 from mechverify.units import DIMENSIONS
 
 #: Field kinds besides the dimension names of :data:`mechverify.units.DIMENSIONS`.
@@ -172,18 +173,3 @@ class Registry:
 
 
 REGISTRY = Registry()
-
-#: Safety-factor classes a design's ``[requirements.safety_factors]`` may set, with defaults.
-DEFAULT_SAFETY_FACTORS: dict[str, float] = {
-    "static": 2.0,
-    "spring": 1.2,  # Shigley 10th ed. Sec. 10-7: springs are designed for n_s >= 1.2 at solid
-    "buckling": 3.0,
-    "fatigue": 1.5,
-    "self_locking": 1.0,
-    "motor": 1.5,
-    "bearing": 1.0,
-    "deflection": 1.0,
-    "speed": 1.25,
-    "limit": 1.0,  # hard limits that already contain their margin (guidelines, ratings with margin)
-    "pressure": 1.0,
-}
