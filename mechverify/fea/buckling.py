@@ -1,0 +1,137 @@
+"""Linear (eigenvalue) buckling of solids and plane models: the load factors ``μ`` at which
+``(K + μ K_G) φ = 0``, with ``K_G`` the geometric (initial-stress) stiffness of the static stress state
+under the model's loads.
+
+    >>> from mechverify.fea import buckling, mesh, solid
+    >>> from mechverify.fea.loads import Fixed, Force
+    >>> from mechverify.fea.regions import Plane
+    >>> col = solid.SolidModel(mesh.box(("200 mm", "10 mm", "10 mm"), (10, 1, 1)), "Structural Steel",
+    ...     supports=(Fixed(Plane(x="0 mm")),), loads=(Force(Plane(x="200 mm"), ("-1 kN", "0 N", "0 N")),))
+    >>> round(float(buckling.buckling(col, 1).factors[0]), 1)   # Euler fixed-free: π²EI/(4L²)/P = 10.3
+    10.4
+
+- :func:`geometric_stiffness` - ``K_G,ab = ∫ (∇N_a · σ · ∇N_b) dV · I`` (ref. 1, sec. 6.6; ref. 2, ch. 13), the
+  stress from the linear static solution at the points of a degree-4 rule.
+- :func:`buckling` - one static solve on the factorisation of ``K``, then the largest eigenvalues
+  ``θ = 1/μ`` of ``-K_G φ = θ K φ`` by ARPACK's Lanczos iteration with that same factorisation
+  (ref. 3, mode 2). Only positive factors (the loads as given, not reversed) are returned, ascending.
+  The factors multiply *all* loads of the model; a factor below 1 means the structure buckles before
+  the loads are reached.
+
+References
+----------
+1. Bathe, Finite Element Procedures, 2nd ed., 2014, sec. 6.8.2 (linearized buckling analysis).
+2. Zienkiewicz, Taylor & Fox, The Finite Element Method for Solid and Structural Mechanics, 7th ed.,
+   2014, ch. 10 (initial-stress matrix).
+3. Lehoucq, Sorensen & Yang, ARPACK Users' Guide, SIAM 1998, sec. 3.2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spl
+
+from mechverify.errors import InputError, ModelError
+from mechverify.fea import assembly as asm
+from mechverify.fea import isoparametric as iso
+from mechverify.fea.modal import _parts, _pattern, stiffness_matrix
+
+
+def integration_stress(model: Any, u: np.ndarray, order: int = 4) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(σ[e, q, dim, dim], gradients[e, q, nb, dim], weights[e, q])`` of displacement ``u`` at a degree-``order``
+    rule (in-plane stresses of a plane model; weights include the thickness)."""
+    dim, ed, t, (lam, mu) = _parts(model)
+    _, W, _, dN = iso.reference(dim, order)
+    det, g = iso.geometry(model.nodes, ed, dN)
+    ue = np.asarray(u).reshape(-1, dim)[ed.T]  # e, a, j
+    grad = np.einsum("eqai,eaj->eqji", g, ue, optimize=True)
+    eps = 0.5 * (grad + grad.transpose(0, 1, 3, 2))
+    return asm.hooke(eps, lam, mu), g, det * W[None, :] * t
+
+
+def geometric_stiffness(model: Any, u: np.ndarray) -> sp.bsr_matrix:
+    """The geometric stiffness ``K_G`` [N/m] of the stress state of displacement ``u[dim*n]`` (ref. 1, 2)."""
+    dim, ed, _, _ = _parts(model)
+    sig, g, w = integration_stress(model, u)
+    s = np.einsum("eqai,eqij,eqbj,eq->abe", g, sig, g, w, optimize=True)
+    nb, ne = s.shape[0], s.shape[2]
+    blocks = np.zeros((nb * nb, ne, dim * dim))
+    for i in range(dim):
+        blocks[:, :, i * dim + i] = s.reshape(nb * nb, ne)
+    return asm.assemble_blocks(blocks, _pattern(model, dim, ed), dim)
+
+
+@dataclass(frozen=True, eq=False)
+class BucklingResults:
+    """Buckling load factors ``factors[k]`` (ascending, multiplying all loads of the model), the mode shapes
+    ``shapes[k, n, 3]`` (largest component 1) and the node coordinates ``points[n, 3]`` [m]."""
+
+    factors: np.ndarray
+    shapes: np.ndarray
+    points: np.ndarray
+    unknowns: int
+
+    @property
+    def first_factor(self) -> float:
+        """The lowest positive buckling load factor."""
+        return float(self.factors[0])
+
+
+def buckling(model: Any, n_modes: int = 1) -> BucklingResults:
+    """The ``n_modes`` lowest positive buckling load factors of ``model`` under its loads (see module doc).
+
+    The model needs supports that prevent every rigid motion (the free one is named) and loads that
+    compress something; a model whose loads cause no compressive stress is a :class:`ModelError`.
+    """
+    n_modes = int(n_modes)
+    dim = 2 if hasattr(model, "plane") else 3
+    if not model.loads:
+        raise InputError("buckling needs loads: the factors multiply the model's loads")
+    from mechverify.fea.modal import free_dofs
+
+    free = free_dofs(model)
+    if not model.supports:
+        raise ModelError("buckling needs supports; the model has none")
+    if n_modes < 1 or n_modes >= free.size // 2:
+        raise InputError(f"n_modes: between 1 and {free.size // 2 - 1} for this model ({free.size} free DOFs), "
+                         f"got {n_modes}")
+    K = stiffness_matrix(model).tocsr()
+    Kf = K[free][:, free].tocsc()
+    try:
+        lu = spl.splu(Kf, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
+    except RuntimeError as exc:
+        raise ModelError(f"the stiffness matrix is singular ({exc}); the model has a mechanism") from None
+    f = model.load_vector()
+    u = np.zeros(K.shape[0])
+    u[free] = lu.solve(f[free])
+    G = geometric_stiffness(model, u).tocsr()
+    Gf = -G[free][:, free].tocsc()
+    op = spl.LinearOperator(Kf.shape, matvec=lu.solve, dtype=float)
+    k = min(max(2 * n_modes, n_modes + 4), free.size - 2)
+    v0 = np.random.default_rng(0).standard_normal(free.size)
+    try:
+        theta, V = spl.eigsh(Gf, k=k, M=Kf, Minv=op, which="LA", v0=v0, tol=1e-10, maxiter=max(300, 20 * k))
+    except spl.ArpackNoConvergence as exc:  # e.g. every θ negative: the largest are a dense cluster at 0
+        theta, V = exc.eigenvalues, exc.eigenvectors
+        if np.sum(theta > 0) < n_modes and np.any(theta > 0):
+            raise ModelError(f"the buckling eigenvalue iteration did not converge ({exc})") from None
+    pos = theta > 1e-12 * np.max(np.abs(theta)) if theta.size else np.zeros(0, bool)
+    if not np.any(pos):
+        raise ModelError("the loads cause no buckling: the load state has no compression that can destabilise "
+                         "the model (all buckling factors are negative: reversed loads would buckle it)")
+    theta, V = theta[pos], V[:, pos]
+    order = np.argsort(-theta)[:n_modes]
+    mu, V = 1.0 / theta[order], V[:, order]
+    n = model.nodes.shape[1]
+    full = np.zeros((n * dim, len(mu)))
+    full[free] = V
+    full /= np.max(np.abs(full), axis=0)[None, :]
+    shapes = np.zeros((len(mu), n, 3))
+    shapes[:, :, :dim] = full.T.reshape(len(mu), n, dim)
+    pts = np.zeros((n, 3))
+    pts[:, :dim] = model.nodes.T
+    return BucklingResults(mu, shapes, pts, int(free.size))
