@@ -1,0 +1,139 @@
+"""Checks of solid and plane FEA studies: stress, deflection, natural frequency, buckling.
+
+- ``solid_stress`` - the largest nodal von Mises stress (recovered, :mod:`mechverify.fea.recovery`)
+  against the yield strength.
+- ``solid_deflection`` - the largest displacement against a limit.
+- ``natural_frequency`` - the first elastic natural frequency above a required minimum, or every
+  computed frequency outside an excitation band widened by a margin.
+- ``buckling_load_factor`` - the lowest linear buckling load factor against the required safety factor.
+
+Each returns a :class:`CheckResult` that passes while demand <= capacity / required_sf; the results of
+the FEA layer (``FieldResults``, ``ModalResults``, ``BucklingResults``) are passed in, so importing the
+checks does not import the FEA layer.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from mechverify.checks.members import deflection_check
+from mechverify.checks.registry import check
+from mechverify.checks.result import CheckResult
+from mechverify.errors import InputError
+from mechverify.references import ref
+from mechverify.units import Q, QuantityLike, to_si
+
+if TYPE_CHECKING:
+    from mechverify.fea.buckling import BucklingResults
+    from mechverify.fea.modal import ModalResults
+    from mechverify.fea.results import FieldResults
+
+FEA_SOURCE = ref("zienkiewicz_taylor_zhu", "ch. 6 (3D elasticity, quadratic tetrahedra)")
+MODAL_SOURCE = (f"{ref('zienkiewicz_taylor_zhu', 'sec. 16.2 (consistent mass, eigenproblem)')}; verified against "
+                f"{ref('blevins', 'Table 8-1')} and CalculiX *FREQUENCY")
+BUCKLE_SOURCE = (f"linearized buckling with the initial-stress matrix; verified against "
+                 f"{ref('timoshenko_gere_stability', 'sec. 2.1')} and CalculiX *BUCKLE")
+
+
+def _where(res: Any, node: int) -> str:
+    x = res.points[node] * 1e3
+    return f"at node {node}, ({x[0]:.4g}, {x[1]:.4g}, {x[2]:.4g}) mm"
+
+
+@check("solid_stress", title="Solid FEA von Mises stress", sf_kind="static",
+       source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}",
+       explain=("Largest von Mises stress of the solid (or plane) FEA field, nodal stresses recovered by "
+                "superconvergent patch recovery, against the material's yield strength. The notes give the "
+                "location and the Zienkiewicz-Zhu estimate of the discretisation error."))
+def check_solid_stress(res: FieldResults, *, component: str = "", required_sf: float = 1.0, load_case: str = "",
+                       notes: Sequence[str] = (), warnings: Sequence[str] = ()) -> CheckResult:
+    """The largest von Mises stress of ``res`` against the yield strength."""
+    mx = res.max_von_mises
+    sy = res.material.require("yield_strength").to("MPa")
+    extra = [f"governing {_where(res, int(mx.node))}"]
+    if res.error_estimate is not None:
+        extra.append(f"Zienkiewicz-Zhu relative energy-norm error estimate {100 * float(res.error_estimate):.3g} %")
+    return CheckResult(
+        check="solid_stress", component=component, demand=mx.value.to("MPa"), capacity=sy, required_sf=required_sf,
+        title="Solid FEA von Mises stress", formula=r"\sigma_{vM,max} \le S_y",
+        source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}", inputs={"Sy": sy},
+        notes=(*extra, *notes), warnings=(*res.warnings, *warnings), load_case=load_case,
+        details={"node": int(mx.node), "location": Q(res.points[int(mx.node)], "m").to("mm")})
+
+
+@check("solid_deflection", title="Solid FEA deflection", sf_kind="deflection", source=FEA_SOURCE,
+       explain="Largest displacement magnitude of the solid (or plane) FEA field against the limit of the design file.")
+def check_solid_deflection(res: FieldResults, limit: Any, *, span: QuantityLike | None = None, component: str = "",
+                           required_sf: float = 1.0, load_case: str = "") -> CheckResult:
+    """The largest displacement of ``res`` against ``limit`` (a length, ``"L/250"`` of ``span``, or a fraction)."""
+    mx = res.max_displacement
+    r = deflection_check(mx.value, limit, span=span, component=component, load_case=load_case, source=FEA_SOURCE)
+    return CheckResult(
+        check="solid_deflection", component=component, demand=r.demand, capacity=r.capacity, required_sf=required_sf,
+        title="Solid FEA deflection", formula=r.formula, source=FEA_SOURCE, inputs=r.inputs,
+        notes=(*r.notes, f"governing {_where(res, int(mx.node))}"), warnings=res.warnings, load_case=load_case)
+
+
+@check("natural_frequency", title="Natural frequency", sf_kind="limit", source=MODAL_SOURCE,
+       explain=("First elastic natural frequency of the FEA model (consistent mass, shift-invert Lanczos) against "
+                "the required minimum; or, with an excitation band, every computed frequency must lie below the "
+                "band's lower edge / (1 + margin) or above its upper edge x (1 + margin)."))
+def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None = None,
+                            band: tuple[QuantityLike, QuantityLike] | None = None, margin: float = 0.15,
+                            component: str = "", required_sf: float = 1.0, load_case: str = "") -> CheckResult:
+    """``minimum``: the first elastic frequency must reach it (demand = minimum, capacity = first frequency).
+    ``band`` (lo, hi): no computed frequency within [lo/(1+margin), hi·(1+margin)]; the governing mode is the
+    one nearest that interval (demand and capacity are its frequency and the interval edge, oriented so the
+    check passes when the mode lies outside)."""
+    if (minimum is None) == (band is None):
+        raise InputError("natural_frequency: give either minimum or band (lo, hi)")
+    f = res.frequencies.m_as("Hz")[res.rigid_body_modes:]
+    if f.size == 0:
+        raise InputError("natural_frequency: the modal results hold no elastic mode; compute more modes")
+    notes = ["frequencies " + ", ".join(f"{x:.4g}" for x in f) + " Hz",
+             f"{res.rigid_body_modes} rigid-body modes (free body)" if res.rigid_body_modes else "",
+             f"effective mass of the modes computed: {np.round(100 * res.effective_mass_fraction().sum(axis=0), 1)} "
+             "% of the total (x, y, z)"]
+    warnings: list[str] = []
+    if minimum is not None:
+        fmin = to_si(minimum, "frequency", "minimum")
+        demand, capacity, mode = fmin, float(f[0]), 1
+        formula = r"f_1 \ge f_{req}"
+    else:
+        lo, hi = (to_si(b, "frequency", "band") for b in band)
+        if not 0 <= lo <= hi:
+            raise InputError(f"natural_frequency: band must be (lo, hi) with 0 <= lo <= hi, got {band!r}")
+        below, above = lo / (1 + margin), hi * (1 + margin)
+        util = np.where(f <= np.sqrt(below * above), f / max(below, 1e-300), above / f)
+        k = int(np.argmax(util))
+        mode = k + 1
+        demand, capacity = (f[k], below) if f[k] <= np.sqrt(below * above) else (above, f[k])
+        formula = r"f_i \le f_{lo}/(1+m)\ \text{or}\ f_i \ge f_{hi}(1+m)"
+        if f[-1] < above:
+            warnings.append(f"the highest computed frequency ({f[-1]:.4g} Hz) is below the band's upper edge with "
+                            f"margin ({above:.4g} Hz): compute more modes to see whether one lies in the band")
+    return CheckResult(
+        check="natural_frequency", component=component, demand=Q(demand, "Hz"), capacity=Q(capacity, "Hz"),
+        required_sf=required_sf, title="Natural frequency", formula=formula, source=MODAL_SOURCE,
+        inputs={"margin": margin}, notes=tuple(n for n in notes if n) + (f"governing mode {mode}",),
+        warnings=tuple(warnings), load_case=load_case,
+        details={"frequencies": Q(f, "Hz")})
+
+
+@check("buckling_load_factor", title="Buckling load factor (FEA)", sf_kind="buckling", source=BUCKLE_SOURCE,
+       explain=("Lowest linear (eigenvalue) buckling load factor of the FEA model under its loads, the geometric "
+                "stiffness from the static stress state, against the required buckling safety factor. Linear "
+                "buckling ignores imperfections and plasticity: it is an upper bound for real columns and shells."))
+def check_buckling_load_factor(res: BucklingResults, *, component: str = "", required_sf: float = 1.0,
+                               load_case: str = "") -> CheckResult:
+    """Demand 1 (the loads as applied), capacity the lowest buckling factor."""
+    mu = float(res.factors[0])
+    return CheckResult(
+        check="buckling_load_factor", component=component, demand=Q(1.0, ""), capacity=Q(mu, ""),
+        required_sf=required_sf, title="Buckling load factor (FEA)", formula=r"\lambda_{cr} \ge SF",
+        source=BUCKLE_SOURCE, inputs={"lambda_cr": mu},
+        notes=("factors " + ", ".join(f"{x:.4g}" for x in res.factors),
+               "linear buckling: no imperfections or plasticity (an upper bound)"), load_case=load_case)
