@@ -191,6 +191,13 @@ def _pmg_cg(A: sp.csr_matrix, b: np.ndarray, points: np.ndarray, free: np.ndarra
     Smoothed aggregation on the P2 matrix itself coarsens far too fast (each node couples to ~60
     others), so the P2 -> P1 step comes first (p-multigrid, ref. 1 and Saad ch. 13).
     """
+    return pcg(A, b, pmg_preconditioner(A, points, free, dim, prolongation), rtol)
+
+
+def pmg_preconditioner(A: sp.csr_matrix, points: np.ndarray, free: np.ndarray, dim: int,
+                       prolongation: sp.csr_matrix) -> Callable[[np.ndarray], np.ndarray]:
+    """The p-multigrid V-cycle of :func:`_pmg_cg` as a function ``r -> z`` (built once, reusable for many
+    right-hand sides)."""
     import pyamg
     from pyamg.relaxation.relaxation import gauss_seidel
 
@@ -215,7 +222,7 @@ def _pmg_cg(A: sp.csr_matrix, b: np.ndarray, points: np.ndarray, free: np.ndarra
         gauss_seidel(A, x, r, iterations=1, sweep="backward")
         return x
 
-    return pcg(A, b, apply, rtol)
+    return apply
 
 
 def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np.ndarray], rtol: float,

@@ -353,12 +353,14 @@ class SolidModel:
 
     # -- solve --------------------------------------------------------------------------------
     def solve(self, method: str = "auto", progress: bool | None = None,
-              recovery: str = rc.DEFAULT_METHOD) -> FieldResults:
+              recovery: str = rc.DEFAULT_METHOD, factorization: Any = None) -> FieldResults:
         """Assemble, check the supports, solve, recover stresses, check equilibrium.
 
         ``method``: ``"auto"`` (direct below ~12k unknowns, AMG-CG above), ``"direct"`` or ``"amg"``.
         ``recovery``: how nodal stresses are recovered (:data:`mechverify.fea.recovery.METHODS`).
         ``progress``: show a status line (default: for models above :data:`PROGRESS_DOFS`).
+        ``factorization``: a :class:`mechverify.fea.study.SharedSolve` of this mesh, material and supports
+        (many load cases on one factorisation: :func:`mechverify.fea.study.solve_cases`).
         """
         mat = self.material
         E, nu = mat.E.m_as("Pa"), mat.nu.m_as("")
@@ -370,19 +372,26 @@ class SolidModel:
             t0 = time.perf_counter()
             step(f"assembling {m.nelements} quadratic tetrahedra ({self.mesh.n_dofs} DOF)")
             pattern = asm.block_pattern(b.element_dofs, b.N)
-            if self.is_curved:
+            if factorization is not None:
+                K = factorization.K
+                _, measure = asm.barycentric_gradients(m.p, m.t)
+            elif self.is_curved:
                 from mechverify.fea import isoparametric as iso
 
                 blocks, measure = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu)
             else:
                 blocks = asm.elasticity_blocks(m.p, m.t, lam, mu)
                 _, measure = asm.barycentric_gradients(m.p, m.t)
-            K = asm.assemble_blocks(blocks, pattern, 3)
+            if factorization is None:
+                K = asm.assemble_blocks(blocks, pattern, 3)
             f = self._load_vector(measure)
             held = self._held()
             timings["assembly"] = time.perf_counter() - t0
-            P = p1_prolongation(m.nvertices, m.edges, 3)
-            u, info = solve(K, f, held, self.nodes, method=method, progress=step, prolongation=P)
+            if factorization is not None:
+                u, info = factorization.solve(f, held)
+            else:
+                P = p1_prolongation(m.nvertices, m.edges, 3)
+                u, info = solve(K, f, held, self.nodes, method=method, progress=step, prolongation=P)
             timings["solve"] = info.seconds
             t1 = time.perf_counter()
             step("recovering stresses")

@@ -1,0 +1,225 @@
+"""Solid studies at any size: many load cases on one factorisation, a memory estimate before meshing,
+and a two-mesh convergence check of the governing result.
+
+- :class:`SharedSolve` / :func:`solve_cases` - the load cases of one mesh, material and supports solved on
+  one sparse LU factorisation (small and mid-size models) or one multigrid hierarchy reused by CG for
+  every case (large 3D models): the marginal cost of a case is a pair of triangular solves (or one CG run),
+  not a new factorisation (``benchmarks/fea_load_cases.py`` measures it).
+- :func:`estimate_dofs`, :func:`require_memory` - the unknowns of a P2 tetrahedral mesh of a volume at an
+  element size (measured on gmsh meshes: about 40 V/h³, a structured box 29 V/h³) and the memory the static
+  solver needs (about :data:`BYTES_PER_DOF` per unknown, measured in the FEA benchmark); a mesh that would not
+  fit is refused *before* meshing, with the estimate and the smallest element size that fits.
+- :func:`step_volume` - the volume of the solids of a STEP file (gmsh/OpenCASCADE), to estimate first.
+- :func:`two_mesh_check` - the change of a peak result between a mesh and a refined one, and the refinement
+  needed for a tolerance assuming the observed change shrinks as h^p (Richardson; ref. 1).
+
+References
+----------
+1. Roache, Verification and Validation in Computational Science and Engineering, Hermosa 1998, ch. 5
+   (Richardson extrapolation, grid convergence).
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import scipy.sparse as sp
+import scipy.sparse.linalg as spl
+
+from mechverify.errors import InputError, ModelError
+from mechverify.fea.linsolve import (
+    ITERATIVE_THRESHOLD_3D,
+    SolveInfo,
+    check_supported,
+    p1_prolongation,
+    pcg,
+    pmg_preconditioner,
+)
+
+#: Memory of the static solver per unknown [bytes] (FEA benchmark: 4.3 kB per DOF at 200k-830k DOF).
+BYTES_PER_DOF = 4300.0
+#: P2 unknowns per V/h³ of a gmsh tetrahedral mesh (measured: 39 on a 100x60x20 mm block with a hole at h = 5 mm).
+DOFS_PER_VOLUME = 40.0
+#: Share of the available memory a solve may take.
+MEMORY_SHARE = 0.8
+
+
+@dataclass(eq=False)
+class SharedSolve:
+    """One factorisation (or one multigrid hierarchy) of ``K`` with the supports' held DOFs, reused for every
+    load vector given to :meth:`solve`."""
+
+    K: sp.spmatrix
+    held: np.ndarray
+    method: str
+    _apply: Callable[[np.ndarray], np.ndarray]
+    _Kff: sp.csr_matrix
+    _free: np.ndarray
+    setup_seconds: float
+    rtol: float = 1e-10
+
+    @classmethod
+    def of(cls, model: Any, method: str = "auto") -> SharedSolve:
+        """Assemble and factor the stiffness of ``model`` (a SolidModel or PlaneModel) once."""
+        from mechverify.fea.modal import stiffness_matrix
+
+        t0 = time.perf_counter()
+        K = stiffness_matrix(model).tocsr()
+        held = np.unique(model.held_dofs())
+        check_supported(model.nodes, held)
+        mask = np.ones(K.shape[0], bool)
+        mask[held] = False
+        free = np.flatnonzero(mask)
+        Kff = K[free][:, free].tocsr()
+        dim = model.nodes.shape[0]
+        if method == "auto":
+            method = "amg" if dim == 3 and free.size > ITERATIVE_THRESHOLD_3D else "direct"
+        if method == "direct":
+            try:
+                lu = spl.splu(Kff.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                              options={"SymmetricMode": True})
+            except RuntimeError as exc:
+                raise ModelError(f"the stiffness matrix is singular ({exc}); the model has a mechanism") from None
+            apply = lu.solve
+        elif method == "amg":
+            m = model.mesh.mesh
+            P = p1_prolongation(m.nvertices, m.edges, 3)
+            apply = pmg_preconditioner(Kff, model.nodes, free, 3, P)
+        else:
+            raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
+        return cls(K, held, method, apply, Kff, free, time.perf_counter() - t0)
+
+    def solve(self, f: np.ndarray, held: np.ndarray | None = None) -> tuple[np.ndarray, SolveInfo]:
+        """``u`` with ``K u = f`` at the free DOFs, zero at the held ones, and how it was solved."""
+        if held is not None and not np.array_equal(np.unique(held), self.held):
+            raise ModelError("this load case holds other DOFs than the shared factorisation: the supports differ")
+        t0 = time.perf_counter()
+        rhs = f[self._free]
+        if self.method == "direct":
+            x, iters = self._apply(rhs), 0
+        else:
+            x, iters = pcg(self._Kff, rhs, self._apply, self.rtol)
+        u = np.zeros(self.K.shape[0])
+        u[self._free] = x
+        res = float(np.linalg.norm(self._Kff @ x - rhs) / max(np.linalg.norm(rhs), 1e-300))
+        return u, SolveInfo(f"{self.method} (shared)", int(self._free.size), iters, res, time.perf_counter() - t0)
+
+
+def solve_cases(model: Any, load_cases: Sequence[Sequence[Any]], method: str = "auto", **kw: Any) -> list[Any]:
+    """``FieldResults`` of ``model`` (a SolidModel) under each tuple of loads in ``load_cases``, all solved on one
+    factorisation of the stiffness (:class:`SharedSolve`); the supports, mesh and material are the model's."""
+    if not load_cases:
+        raise InputError("load_cases: give at least one tuple of loads")
+    shared = SharedSolve.of(model, method)
+    return [replace(model, loads=tuple(loads)).solve(factorization=shared, **kw) for loads in load_cases]
+
+
+# ----------------------------------------------------------------------------------------------- memory
+def available_memory() -> float:
+    """Memory available to a new computation [bytes] (``MemAvailable`` of /proc/meminfo, else physical memory)."""
+    try:
+        for line in Path("/proc/meminfo").read_text().splitlines():
+            if line.startswith("MemAvailable:"):
+                return float(line.split()[1]) * 1024.0
+    except OSError:
+        pass
+    import os
+
+    return float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+
+
+def estimate_dofs(volume: float, mesh_size: float) -> int:
+    """Estimated P2 unknowns of a tetrahedral mesh of ``volume`` [m³] at element size ``mesh_size`` [m]."""
+    return int(DOFS_PER_VOLUME * volume / mesh_size**3)
+
+
+def require_memory(volume: float, mesh_size: float, what: str, memory: float | None = None) -> int:
+    """The estimated unknowns; a :class:`ModelError` with the estimate and the smallest element size that fits
+    when the solve would need more than :data:`MEMORY_SHARE` of the available memory."""
+    n = estimate_dofs(volume, mesh_size)
+    avail = (available_memory() if memory is None else memory) * MEMORY_SHARE
+    need = n * BYTES_PER_DOF
+    if need > avail:
+        n_max = avail / BYTES_PER_DOF
+        h_min = (DOFS_PER_VOLUME * volume / n_max) ** (1 / 3)
+        raise ModelError(f"{what}: a mesh of {mesh_size * 1e3:.4g} mm elements would have about {n:,} unknowns and "
+                         f"need about {need / 1e9:.3g} GB, more than the {avail / 1e9:.3g} GB available; the "
+                         f"largest mesh that fits has about {int(n_max):,} unknowns "
+                         f"(mesh_size >= {h_min * 1e3:.3g} mm)")
+    return n
+
+
+def step_volume(path: str | Path) -> float:
+    """Total volume [m³] of the solids in a STEP file, read by gmsh/OpenCASCADE without meshing; a
+    :class:`ModelError` naming the file and gmsh's reason when gmsh cannot read it."""
+    from mechverify.fea.mesh import import_gmsh
+
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"STEP file {str(path)!r} does not exist")
+    gmsh = import_gmsh()
+    gmsh.initialize(interruptible=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+        try:
+            ents = gmsh.model.occ.importShapes(str(path))
+        except Exception as exc:
+            raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
+        gmsh.model.occ.synchronize()
+        vols = [t for d, t in ents if d == 3]
+        if not vols:
+            raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+        return float(sum(gmsh.model.occ.getMass(3, t) for t in vols))
+    finally:
+        gmsh.finalize()
+
+
+# ----------------------------------------------------------------------------------------------- convergence
+@dataclass(frozen=True)
+class ConvergenceCheck:
+    """The peak of a result on a mesh (``coarse``, element size ``h``) and on a refined one (``fine``, ``h/r``)."""
+
+    coarse: float
+    fine: float
+    ratio: float  # refinement ratio r = h_coarse / h_fine
+    order: float  # assumed convergence order p of the peak
+    tolerance: float
+
+    @property
+    def change(self) -> float:
+        """Relative change of the peak between the meshes, |fine - coarse| / |fine|."""
+        return abs(self.fine - self.coarse) / max(abs(self.fine), 1e-300)
+
+    @property
+    def estimated_error(self) -> float:
+        """Richardson estimate of the fine mesh's relative error: change / (r^p - 1) (Roache ch. 5)."""
+        return self.change / (self.ratio**self.order - 1)
+
+    @property
+    def refinement_needed(self) -> float:
+        """Factor by which the element size must shrink so that the change between successive meshes falls
+        under the tolerance, the change scaling as h^p (1 when it already is)."""
+        return float(max(1.0, (self.change / self.tolerance) ** (1 / self.order)))
+
+    @property
+    def warning(self) -> str | None:
+        if self.change <= self.tolerance:
+            return None
+        return (f"mesh convergence: the peak changed by {100 * self.change:.3g} % between element sizes h and "
+                f"h/{self.ratio:.3g} (tolerance {100 * self.tolerance:.3g} %); estimated error of the finer mesh "
+                f"{100 * self.estimated_error:.3g} %: refine the elements at the peak by about "
+                f"{self.refinement_needed:.2g}x more")
+
+
+def two_mesh_check(coarse: float, fine: float, ratio: float = 2.0, order: float = 2.0,
+                   tolerance: float = 0.05) -> ConvergenceCheck:
+    """Compare a peak result on two meshes (element sizes h and h/``ratio``); ``order`` 2 suits P2 stresses."""
+    if not ratio > 1:
+        raise InputError(f"ratio: the refined mesh must be finer (ratio > 1), got {ratio}")
+    return ConvergenceCheck(float(coarse), float(fine), float(ratio), float(order), float(tolerance))
