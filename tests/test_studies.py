@@ -191,6 +191,8 @@ def test_invalid_sample_is_recorded_and_the_study_goes_on():
     res = Study(LIFT, vary={"components.lift.mass": "-10 kg:10 kg:2"}).run("serial")
     bad, good = res.samples
     assert bad["status"] == "error" and "mass" in bad["message"] and bad["verdict"] == "error"
+    assert bad["max_fu"] is None and bad["governing"] == "" and json.loads(res.to_json())["samples"][0]["checks"] == {}
+    assert res.to_csv().splitlines()[1].split(",")[5] == ""  # no u·SF for the invalid sample
     assert good["status"] == "ok" and good["checks"]
 
 

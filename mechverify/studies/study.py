@@ -71,7 +71,8 @@ class StudyResult:
 
     ``samples[i]``: ``{"index", "inputs": {path: value}, "status": "ok"|"error", "message",
     "checks": {"component.check": {"u", "required_sf", "fu", "verdict"}}, "verdict", "governing",
-    "max_fu"}``. Values are in the unit of each parameter in the design file (``axes``).
+    "max_fu"}``; ``fu``/``max_fu`` null: unbounded (zero capacity), or for an invalid sample none. Values
+    are in the unit of each parameter in the design file (``axes``).
     """
 
     kind: str  # "sweep" or "monte_carlo"
@@ -189,7 +190,7 @@ class StudyResult:
                     *[f"{c} fu" for c in checks], *[f"{c} verdict" for c in checks], "message"])
         for s in self.samples:
             row = [s["index"], *[repr(s["inputs"][n]) for n in self.names], s["status"], s["verdict"], s["governing"],
-                   _full(s["max_fu"])]
+                   _full(s["max_fu"]) if s["status"] == "ok" else ""]
             row += [_full(s["checks"].get(c, {}).get("fu", math.nan)) for c in checks]
             row += [s["checks"].get(c, {}).get("verdict", "") for c in checks]
             w.writerow([*row, s["message"]])
@@ -294,9 +295,10 @@ def _finish(record: dict[str, Any], index: int, inputs: dict[str, float]) -> dic
         verdict = "warn"
     else:
         verdict = "pass"
+    # null in JSON: an unbounded u·SF of a valid sample, or no u·SF at all for an invalid one (see its status)
+    out_fu = None if (not checks or math.isinf(max_fu)) else max_fu
     return {"index": index, "inputs": inputs, "status": record["status"], "message": record["message"],
-            "verdict": verdict, "governing": gov, "max_fu": None if not math.isfinite(max_fu) else max_fu,
-            "checks": checks}
+            "verdict": verdict, "governing": gov, "max_fu": out_fu, "checks": checks}
 
 
 class Study:
