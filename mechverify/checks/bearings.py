@@ -11,9 +11,13 @@ from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.components.bearings import (
     BallBearing,
+    DutyCycleLoad,
+    Lubrication,
     PlainBushing,
+    basic_rating_life,
     equivalent_static_load,
     life_hours,
+    modified_rating_life,
     reliability_factor,
 )
 from mechverify.references import ref
@@ -47,11 +51,18 @@ def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
                 'life.'))
 def check_bearing_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
                        required_life: QuantityLike, *, reliability: float = 0.9,
-                 load_case: str = "") -> CheckResult:
-    """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours."""
+                       duty_cycle: DutyCycleLoad | None = None, load_case: str = "") -> CheckResult:
+    """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours.
+
+    With ``duty_cycle`` its equivalent load and mean speed replace those of (Fr, Fa, speed).
+    """
     eq = b.equivalent_load(Fr, Fa)
     a1 = reliability_factor(reliability)
-    L = b.rating_life(Fr, Fa, reliability)
+    if duty_cycle is not None:
+        speed = duty_cycle.mean_speed if duty_cycle.mean_speed is not None else speed
+        L = a1 * basic_rating_life(b.C, duty_cycle.P)
+    else:
+        L = b.rating_life(Fr, Fa, reliability)
     Lh = life_hours(L, speed)
     req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
     return CheckResult(
@@ -62,11 +73,16 @@ def check_bearing_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed
         inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"),
                 "n": Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm"), "C": b.C, "C0": b.C0,
                 "f0": b.f0, "reliability": reliability},
-        notes=(f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} (f0·Fa/C0 = {eq.relative_axial_load:.3g}, "
-               f"e = {eq.e:.3g})", f"a1 = {a1:.3g} for reliability {reliability:g}",
-               "basic rating life only: no aISO/aSKF factor for lubrication or contamination"),
+        notes=((f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} (f0·Fa/C0 = {eq.relative_axial_load:.3g}, "
+                f"e = {eq.e:.3g})") if duty_cycle is None else
+               (f"duty cycle: P = (sum f_i P_i^3)^(1/3) = {fmt(duty_cycle.P.to('N'))} over revolution shares "
+                + ", ".join(f"{f:.3g}" for f in duty_cycle.shares)
+                + f"; mean speed {fmt(Q(to_si(speed, 'angular_velocity'), 'rad/s').to('rpm'))}"),
+               f"a1 = {a1:.3g} for reliability {reliability:g}",
+               "basic rating life only: no aISO/aSKF factor for lubrication or contamination "
+               "(see bearing_modified_life)"),
         warnings=_axial_warning(b, Fa), load_case=load_case,
-        details={"P": eq.P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L})
+        details={"P": eq.P if duty_cycle is None else duty_cycle.P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L})
 
 
 @check("bearing_static_safety", title="Bearing static safety (s0)", sf_kind="bearing",
@@ -107,6 +123,55 @@ def check_bearing_speed(b: BallBearing, speed: QuantityLike, *, load_case: str =
         check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
         title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
         notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case)
+
+
+ISO281_MOD = ref("iso281", "Sec. 9 (L_nm = a1 a_ISO L10; nu1, kappa, a_ISO for radial ball bearings), Table 13 (e_C)")
+
+
+@check("bearing_modified_life", title="Bearing modified rating life (ISO 281 a_ISO)", sf_kind="bearing",
+       source=ISO281_MOD,
+       explain=("L_nmh = a1 a_ISO (C/P)^3 10^6/(60 n) against the required life: a_ISO from the viscosity ratio "
+                "kappa = nu/nu1 (nu the lubricant's viscosity at the operating temperature, from its 40/100 degC "
+                "values by ASTM D341; nu1 the ISO 281 rated viscosity for the speed and mean diameter), the "
+                "contamination factor e_C (ISO 281 Table 13) and the fatigue load limit Pu (catalogue), capped at 50 "
+                "(ISO 281:2007 Sec. 9). P is the governing case's equivalent load, or a duty cycle's."))
+def check_bearing_modified_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
+                                required_life: QuantityLike, lubrication: Lubrication, *,
+                                reliability: float = 0.9, duty_cycle: DutyCycleLoad | None = None,
+                                load_case: str = "") -> CheckResult:
+    """Modified rating life L_nmh = a1·a_ISO·L10 in hours against the required life (ISO 281 Sec. 9).
+
+    With ``duty_cycle`` its equivalent load and mean speed replace (Fr, Fa, speed); ``Fr``/``Fa`` are
+    then only used for the axial-load warning.
+    """
+    notes: list[str] = []
+    if duty_cycle is not None:
+        P = duty_cycle.P
+        n = duty_cycle.mean_speed if duty_cycle.mean_speed is not None else speed
+        notes.append(f"duty cycle: P = (sum f_i P_i^3)^(1/3) = {fmt(P.to('N'))} over revolution shares "
+                     + ", ".join(f"{f:.3g}" for f in duty_cycle.shares))
+    else:
+        eq = b.equivalent_load(Fr, Fa)
+        P, n = eq.P, speed
+        notes.append(f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))}")
+    m = modified_rating_life(b, P, n, lubrication, reliability)
+    Lh = life_hours(m.L_rev, n)
+    req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
+    notes += [f"nu = {fmt(m.nu)} at operating temperature, nu1 = {fmt(m.nu1)} (ISO 281 rated viscosity, d_m = "
+              f"{fmt((b.d + b.D).to('mm') / 2)}), kappa = {m.kappa:.3g}",
+              f"e_C = {m.eC:g}, e_C·Pu/P = {m.eC * float((m.Pu / m.P).m_as('')):.3g}, a_ISO = {m.a_iso:.3g}, "
+              f"a1 = {m.a1:.3g}",
+              "ISO 281 a_ISO; SKF's a_SKF and rated-viscosity diagram differ from it (SKF's nu1 is lower)"]
+    return CheckResult(
+        check="bearing_modified_life", component=b.designation, demand=req, capacity=Lh,
+        title="Bearing modified rating life (ISO 281 a_ISO)",
+        formula=r"L_{nmh} = a_1 a_{ISO} \left(\frac{C}{P}\right)^3 \frac{10^6}{60 n}",
+        source=ISO281_MOD,
+        inputs={"P": m.P, "n": Q(to_si(n, "angular_velocity", "speed"), "rad/s").to("rpm"), "C": b.C, "Pu": b.Pu,
+                "nu": m.nu, "reliability": reliability},
+        notes=tuple(notes), warnings=(*m.warnings, *_axial_warning(b, Fa)), load_case=load_case,
+        details={"kappa": m.kappa, "a_iso": m.a_iso, "a1": m.a1, "eC": m.eC, "nu1": m.nu1, "L10h": life_hours(
+            m.L10_rev, n)})
 
 
 def _bushing_inputs(bush: PlainBushing, F: Any, v: Any) -> dict[str, Any]:
@@ -161,5 +226,6 @@ def check_bushing_pv(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "")
         inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case)
 
 
-__all__ = ["check_bearing_life", "check_bearing_static_safety", "check_bearing_speed", "check_bushing_pressure",
+__all__ = ["check_bearing_life", "check_bearing_modified_life", "check_bearing_static_safety", "check_bearing_speed",
+           "check_bushing_pressure",
            "check_bushing_velocity", "check_bushing_pv"]

@@ -16,6 +16,18 @@ References
     0.5 C0 otherwise), static safety factor guideline s0 >= 1 (normal, rotating ball bearings).
 [4] Budynas & Nisbett, Shigley's Mechanical Engineering Design, 10th ed., 2015, Sec. 12-15
     (boundary-lubricated bearings: pressure P = F/(DL), velocity V, the PV limit).
+[7] Mott, Machine Elements in Mechanical Design, 4th ed., Eq. (14-11) (mean effective load
+    F_m = (sum F_i^p N_i / N)^(1/p)) and Example Problem 14-6; NSK, "Average of fluctuating load"
+    (N_i from speed and time: F_m = (sum F_i^p n_i t_i / sum n_i t_i)^(1/p), n_m = sum n_i t_i / sum t_i).
+[5] ISO 281:2007 Sec. 9 (modified rating life L_nm = a1 a_ISO L10): rated viscosity
+    nu1 = 45000 n^-0.83 dm^-0.5 (n < 1000 r/min), 4500 n^-0.5 dm^-0.5 (n >= 1000 r/min); viscosity ratio
+    kappa = nu/nu1; a_ISO for radial ball bearings
+    a_ISO = 0.1 [1 - (2.5671 - c/kappa^e)^0.83 (e_C C_u/P)^(1/3)]^-9.3 with (c, e) = (2.2649, 0.054381)
+    for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1, (1.9987, 0.071739) for 1 <= kappa <= 4;
+    a_ISO <= 50; kappa > 4 taken as 4; kappa < 0.1 outside the method; Table 13 (e_C guideline values).
+    Constants cross-read from two independent public transcriptions (not from the standard itself).
+[6] ASTM D341, viscosity-temperature relation log log(nu + 0.7) = A - B log T (T in K), fitted through
+    the lubricant's viscosities at 40 and 100 degC; ISO 3448 (the VG grade is nu at 40 degC, mm^2/s).
 """
 
 from __future__ import annotations
@@ -31,7 +43,7 @@ from typing import Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError, UnknownNameError, ValidityError
+from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityError
 from mechverify.materials import database as _materials
 from mechverify.materials.material import Material
 from mechverify.units import Q, QuantityLike, fmt, from_si, si_function, to_si
@@ -267,6 +279,243 @@ def equivalent_static_load(Fr: QuantityLike, Fa: QuantityLike = "0 N") -> pint.Q
     return Q(max(t["X0"] * fr + t["Y0"] * fa, fr), "N")
 
 
+# ------------------------------------------------------------------- ISO 281 modified rating life
+def _nu_mm2s(value: QuantityLike, name: str) -> float:
+    """A kinematic viscosity in mm²/s (cSt)."""
+    q = Q(value) if isinstance(value, str) else value
+    if not isinstance(q, pint.Quantity):
+        raise InputError(f"{name}: give a kinematic viscosity with its unit, e.g. '68 mm^2/s'")
+    try:
+        return float(q.to("mm**2/s").magnitude)
+    except pint.DimensionalityError as exc:
+        raise UnitError(f"{name}: expected a kinematic viscosity (mm^2/s, cSt), got {value!r}") from exc
+
+
+def rated_viscosity(speed: QuantityLike, dm: QuantityLike) -> pint.Quantity:
+    """Rated (reference) kinematic viscosity nu1 [m²/s] for speed n and mean diameter d_m ([5] Sec. 9.3.3).
+
+    nu1 = 45000·n^-0.83·d_m^-0.5 for n < 1000 r/min, 4500·n^-0.5·d_m^-0.5 for n >= 1000 r/min
+    (nu1 in mm²/s, n in r/min, d_m in mm). Speed must be positive.
+    """
+    n = abs(to_si(speed, "angular_velocity", "speed")) * 60 / (2 * math.pi)
+    d = to_si(dm, "length", "dm") * 1e3
+    if n <= 0 or d <= 0:
+        raise InputError("rated viscosity: speed and mean diameter must be positive")
+    nu1 = 45000.0 * n**-0.83 * d**-0.5 if n < 1000 else 4500.0 * n**-0.5 * d**-0.5
+    return Q(nu1, "mm**2/s")
+
+
+#: temperatures outside which the viscosity-temperature line is not used [degC]
+VISCOSITY_T_RANGE = (-20.0, 150.0)
+
+
+def viscosity_at_temperature(nu40: QuantityLike, nu100: QuantityLike, temperature: QuantityLike) -> pint.Quantity:
+    """Kinematic viscosity at ``temperature`` from the viscosities at 40 and 100 °C ([6] ASTM D341).
+
+    log10 log10(nu + 0.7) = A − B·log10 T (nu in mm²/s, T in K), A and B through the two given points.
+    Valid for nu >= 2 mm²/s; outside −20..150 °C :class:`ValidityError` (the oil's pour point and
+    oxidation limit, not the formula, bound it; ask the lubricant's maker there).
+    """
+    v40, v100 = _nu_mm2s(nu40, "viscosity_40"), _nu_mm2s(nu100, "viscosity_100")
+    T = _celsius(temperature, "operating_temperature")
+    if not v40 > v100 >= 2.0:
+        raise InputError(f"viscosity at 40 degC ({v40:g} mm²/s) must exceed that at 100 degC ({v100:g} mm²/s), "
+                         "which must be at least 2 mm²/s")
+    lo, hi = VISCOSITY_T_RANGE
+    if not lo <= T <= hi:
+        raise ValidityError(f"operating temperature {T:g} degC outside {lo:g}..{hi:g} degC: no lubricant viscosity "
+                            "is estimated there; give the operating viscosity directly")
+    x1, x2, x = math.log10(313.15), math.log10(373.15), math.log10(T + 273.15)
+    y1, y2 = (math.log10(math.log10(v + 0.7)) for v in (v40, v100))
+    y = y1 + (y2 - y1) * (x - x1) / (x2 - x1)
+    return Q(10 ** (10**y) - 0.7, "mm**2/s")
+
+
+def _celsius(value: QuantityLike, name: str) -> float:
+    if isinstance(value, (int, float)):
+        raise InputError(f"{name}: give a temperature with its unit, e.g. '70 degC'")
+    q = Q(value) if isinstance(value, str) else value
+    try:
+        return float(q.to("degC").magnitude)
+    except (pint.DimensionalityError, AttributeError) as exc:
+        raise InputError(f"{name}: expected a temperature such as '70 degC', got {value!r}") from exc
+
+
+def iso_vg_viscosity(grade: int | float) -> pint.Quantity:
+    """Mid-point kinematic viscosity at 40 °C of an ISO 3448 viscosity grade (VG 68 -> 68 mm²/s)."""
+    grades = (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200)
+    if grade not in grades:
+        raise InputError(f"ISO VG {grade!r} is not an ISO 3448 grade ({', '.join(map(str, grades))})")
+    return Q(float(grade), "mm**2/s")
+
+
+#: ISO 281 Table 13: guideline e_C ranges (low, high) for d_m < 100 mm and d_m >= 100 mm [5]
+CONTAMINATION_LEVELS: dict[str, tuple[tuple[float, float], tuple[float, float]]] = {
+    "extreme_cleanliness": ((1.0, 1.0), (1.0, 1.0)),
+    "high_cleanliness": ((0.6, 0.8), (0.8, 0.9)),
+    "normal_cleanliness": ((0.5, 0.6), (0.6, 0.8)),
+    "slight_contamination": ((0.3, 0.5), (0.4, 0.6)),
+    "typical_contamination": ((0.1, 0.3), (0.2, 0.4)),
+    "severe_contamination": ((0.0, 0.1), (0.0, 0.1)),
+    "very_severe_contamination": ((0.0, 0.0), (0.0, 0.0)),
+}
+
+
+def contamination_factor(level: str | float, dm: QuantityLike) -> float:
+    """e_C: a number in [0, 1], or an ISO 281 Table 13 level name, whose range's LOWER end is used
+    (conservative; the table gives ranges, e.g. normal cleanliness 0.6..0.5 for d_m < 100 mm) [5]."""
+    if isinstance(level, (int, float)) and not isinstance(level, bool):
+        if not 0 <= level <= 1:
+            raise InputError(f"contamination factor e_C must lie in 0..1, got {level:g}")
+        return float(level)
+    key = str(level).strip().lower().replace(" ", "_").replace("-", "_")
+    if key not in CONTAMINATION_LEVELS:
+        raise UnknownNameError("contamination level", str(level), list(CONTAMINATION_LEVELS))
+    small, large = CONTAMINATION_LEVELS[key]
+    return (small if to_si(dm, "length", "dm") < 0.1 else large)[0]
+
+
+#: ISO 281 a_ISO limits [5]
+KAPPA_MIN, KAPPA_MAX, A_ISO_MAX = 0.1, 4.0, 50.0
+
+
+def a_iso_ball(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, ...]]:
+    """Life modification factor a_ISO of a radial ball bearing and the warnings raised ([5] Sec. 9.3).
+
+    a_ISO = 0.1·[1 − (2.5671 − c/κ^e)^0.83·(e_C·C_u/P)^(1/3)]^−9.3, capped at 50. κ above 4 is taken as 4
+    and κ below 0.1 as 0.1 (ISO 281: the method does not apply below 0.1), each with a warning.
+    """
+    k, x = float(kappa), float(eC_Cu_over_P)
+    if not k > 0 or x < 0:
+        raise InputError(f"a_ISO needs kappa > 0 and e_C*Cu/P >= 0 (got {k:g}, {x:g})")
+    warnings: list[str] = []
+    if k > KAPPA_MAX:
+        warnings.append(f"viscosity ratio kappa = {k:.3g} > 4: taken as 4 (ISO 281 Sec. 9.3)")
+        k = KAPPA_MAX
+    elif k < KAPPA_MIN:
+        warnings.append(f"viscosity ratio kappa = {k:.3g} < 0.1: outside ISO 281's a_ISO method, clipped to 0.1 "
+                        "(the lubricant film is inadequate; a_ISO is then an optimistic estimate)")
+        k = KAPPA_MIN
+    c, e = (2.2649, 0.054381) if k < 0.4 else (1.9987, 0.19087) if k < 1 else (1.9987, 0.071739)
+    bracket = 1 - (2.5671 - c / k**e) ** 0.83 * x ** (1 / 3)
+    a = A_ISO_MAX if bracket <= 0 else min(0.1 * bracket**-9.3, A_ISO_MAX)
+    if a >= A_ISO_MAX:
+        warnings.append("a_ISO reached its cap of 50 (ISO 281 Sec. 9.3)")
+    return a, tuple(warnings)
+
+
+@dataclass(frozen=True)
+class Lubrication:
+    """The lubricant: ``viscosity`` at the operating temperature directly, or ``viscosity_40`` (or
+    ``iso_vg``) and ``viscosity_100`` with the ``operating_temperature`` ([6]); and the contamination
+    (an e_C value or an ISO 281 Table 13 level name)."""
+
+    viscosity: QuantityLike | None = None
+    viscosity_40: QuantityLike | None = None
+    viscosity_100: QuantityLike | None = None
+    iso_vg: int | None = None
+    operating_temperature: QuantityLike | None = None
+    contamination: str | float = "normal_cleanliness"
+
+    def operating_viscosity(self) -> pint.Quantity:
+        if self.viscosity is not None:
+            v = _nu_mm2s(self.viscosity, "viscosity")
+            if not v > 0:
+                raise InputError("viscosity must be positive")
+            return Q(v, "mm**2/s")
+        v40 = self.viscosity_40 if self.viscosity_40 is not None else (
+            iso_vg_viscosity(self.iso_vg) if self.iso_vg is not None else None)
+        missing = [n for n, v in (("viscosity_40 or iso_vg", v40), ("viscosity_100", self.viscosity_100),
+                                  ("operating_temperature", self.operating_temperature)) if v is None]
+        if missing:
+            raise InputError("lubrication: give the operating viscosity, or " + ", ".join(missing)
+                             + " (ISO 3448 fixes only the 40 degC value; the 100 degC value is on the oil's datasheet)")
+        return viscosity_at_temperature(v40, self.viscosity_100, self.operating_temperature)  # type: ignore[arg-type]
+
+
+@dataclass(frozen=True)
+class ModifiedLife:
+    """ISO 281 modified rating life and its factors."""
+
+    L_rev: pint.Quantity  # L_nm [revolutions]
+    L10_rev: pint.Quantity
+    a1: float
+    a_iso: float
+    kappa: float
+    nu: pint.Quantity
+    nu1: pint.Quantity
+    eC: float
+    Pu: pint.Quantity
+    P: pint.Quantity
+    warnings: tuple[str, ...] = ()
+
+
+def mean_diameter(b: BallBearing) -> pint.Quantity:
+    """d_m = (d + D)/2, the ISO 281 mean diameter (for the pitch diameter D_pw)."""
+    return ((b.d + b.D) / 2).to("mm")
+
+
+def modified_rating_life(b: BallBearing, P: QuantityLike, speed: QuantityLike, lubrication: Lubrication,
+                         reliability: float = 0.9) -> ModifiedLife:
+    """L_nm = a1·a_ISO·(C/P)³ [revolutions] with κ = ν/ν1(n, d_m) and e_C·C_u/P ([5] Sec. 9).
+
+    C_u is the catalogue fatigue load limit P_u. ``P`` is the equivalent dynamic load (of the
+    governing case or of a duty cycle, :func:`duty_cycle_load`).
+    """
+    p = to_si(P, "force", "P")
+    dm = mean_diameter(b)
+    nu = lubrication.operating_viscosity()
+    nu1 = rated_viscosity(speed, dm).to("mm**2/s")
+    kappa = float((nu / nu1).m_as(""))
+    eC = contamination_factor(lubrication.contamination, dm)
+    ratio = eC * to_si(b.Pu, "force") / p if p > 0 else 0.0
+    a_iso, warns = a_iso_ball(kappa, ratio)
+    a1 = reliability_factor(reliability)
+    L10 = basic_rating_life(b.C, Q(p, "N"))
+    return ModifiedLife(L_rev=(a1 * a_iso * L10).to("revolution"), L10_rev=L10, a1=a1, a_iso=a_iso, kappa=kappa,
+                        nu=nu, nu1=nu1, eC=eC, Pu=b.Pu, P=Q(p, "N"), warnings=warns)
+
+
+# ----------------------------------------------------------------------------------- duty cycles
+@dataclass(frozen=True)
+class DutyCycleLoad:
+    """Equivalent load of a duty cycle and the cycle's mean speed."""
+
+    P: pint.Quantity
+    shares: tuple[float, ...]  # normalised revolution shares
+    mean_speed: pint.Quantity | None
+
+
+def duty_cycle_load(loads: list[QuantityLike], shares: list[float], *, speeds: list[QuantityLike] | None = None,
+                    exponent: float = 3.0) -> DutyCycleLoad:
+    """P = (Σ P_i^p·N_i / Σ N_i)^(1/p) over load cases i with revolution counts N_i ([7] Eq. 14-11).
+
+    ``shares`` are time shares when ``speeds`` are given (revolutions N_i ∝ t_i·n_i), otherwise
+    revolution shares. They need not sum to 1, but must be >= 0 with a positive total. The mean
+    speed (Σ t_i n_i / Σ t_i) is returned when the speeds are given, to express the life in hours.
+    """
+    if len(loads) != len(shares) or not loads:
+        raise InputError(f"duty cycle: {len(loads)} loads and {len(shares)} shares; give one share per load case")
+    w = np.asarray([float(s) for s in shares])
+    if np.any(~np.isfinite(w)) or np.any(w < 0) or not w.sum() > 0:
+        raise InputError(f"duty cycle shares must be >= 0 with a positive total, got {list(shares)}")
+    P = np.asarray([to_si(x, "force", f"load[{i}]") for i, x in enumerate(loads)])
+    if np.any(P < 0):
+        raise InputError("duty cycle loads must be >= 0")
+    mean = None
+    if speeds is not None:
+        if len(speeds) != len(loads):
+            raise InputError("duty cycle: give one speed per load case")
+        n = np.abs(np.asarray([to_si(x, "angular_velocity", f"speed[{i}]") for i, x in enumerate(speeds)]))
+        mean = Q(float((w * n).sum() / w.sum()), "rad/s").to("rpm")
+        w = w * n
+        if not w.sum() > 0:
+            raise InputError("duty cycle: no case turns (every speed with a share is zero)")
+    f = w / w.sum()
+    Peq = float((f * P**exponent).sum() ** (1 / exponent))
+    return DutyCycleLoad(P=Q(Peq, "N"), shares=tuple(float(x) for x in f), mean_speed=mean)
+
+
 # ------------------------------------------------------------------------------------ plain bushings
 @si_function(returns="pressure", F="force", d="length", length="length")
 def bushing_pressure(F: float, d: float, length: float) -> float:
@@ -334,4 +583,6 @@ class PlainBushing:
 
 __all__ = ["BallBearing", "EquivalentLoad", "PlainBushing", "bearing", "bearing_names", "bearing_catalogue",
            "iso281_factors", "equivalent_dynamic_load", "basic_rating_life", "life_hours", "reliability_factor",
-           "equivalent_static_load", "bushing_pressure", "sliding_speed"]
+           "equivalent_static_load", "bushing_pressure", "sliding_speed", "rated_viscosity", "viscosity_at_temperature",
+           "iso_vg_viscosity", "contamination_factor", "a_iso_ball", "Lubrication", "ModifiedLife", "mean_diameter",
+           "modified_rating_life", "DutyCycleLoad", "duty_cycle_load", "CONTAMINATION_LEVELS"]

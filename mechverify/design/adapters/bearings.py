@@ -8,8 +8,17 @@ from typing import Any
 import pint
 
 from mechverify.checks import bearings as bc
-from mechverify.checks.result import CheckResult
-from mechverify.components.bearings import BallBearing, PlainBushing, bearing, reliability_factor, sliding_speed
+from mechverify.components.bearings import (
+    CONTAMINATION_LEVELS,
+    BallBearing,
+    DutyCycleLoad,
+    Lubrication,
+    PlainBushing,
+    bearing,
+    duty_cycle_load,
+    reliability_factor,
+    sliding_speed,
+)
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError
@@ -23,6 +32,37 @@ class BearingInstallation:
     bearing: BallBearing
     required_life: pint.Quantity | None = None
     reliability: float = 0.9
+    lubrication: Lubrication | None = None
+    duty_cycle: dict[str, float] | None = None
+
+
+_LUB_KEYS = ("viscosity", "viscosity_40", "viscosity_100", "iso_vg", "operating_temperature")
+
+
+def _lubrication(p: dict[str, Any]) -> Lubrication | None:
+    if not any(k in p for k in _LUB_KEYS):
+        return None
+    cont: str | float = p.get("contamination", "normal_cleanliness")
+    if "contamination_factor" in p:
+        cont = float(p["contamination_factor"])
+    lub = Lubrication(**{k: p[k] for k in _LUB_KEYS if k in p}, contamination=cont)
+    lub.operating_viscosity()  # bad or missing lubricant data is reported at build time
+    return lub
+
+
+def _duty_cycle(p: dict[str, Any]) -> dict[str, float] | None:
+    dc = p.get("duty_cycle")
+    if dc is None:
+        return None
+    if not isinstance(dc, dict) or not dc:
+        raise InputError("duty_cycle: give a table of load case = time share, e.g. { run = 0.7, start = 0.3 }")
+    try:
+        shares = {str(k): float(v) for k, v in dc.items()}
+    except (TypeError, ValueError) as exc:
+        raise InputError(f"duty_cycle: shares must be numbers, got {dc!r}") from exc
+    if any(not (v >= 0) for v in shares.values()) or not sum(shares.values()) > 0:
+        raise InputError(f"duty_cycle: shares must be >= 0 with a positive total, got {shares}")
+    return shares
 
 
 def _build_bearing(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallation:
@@ -35,7 +75,7 @@ def _build_bearing(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallatio
         raise InputError(f"reliability must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {R:g}")
     if "required_life" in p and p["required_life"].magnitude <= 0:
         raise InputError(f"required_life must be positive, got {fmt(p['required_life'])}")
-    return BearingInstallation(b, p.get("required_life"), R)
+    return BearingInstallation(b, p.get("required_life"), R, _lubrication(p), _duty_cycle(p))
 
 
 def _forces(loads: dict[str, Any]) -> tuple[pint.Quantity, pint.Quantity]:
@@ -46,10 +86,54 @@ def _forces(loads: dict[str, Any]) -> tuple[pint.Quantity, pint.Quantity]:
     return Fr.to("N"), Fa.to("N")
 
 
-def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
+def _cycle(inst: BearingInstallation, ctx: Any) -> DutyCycleLoad | None:
+    """The duty cycle's equivalent load over its load cases (time shares, speeds from each case)."""
+    if inst.duty_cycle is None:
+        return None
+    cases = ctx.design.data.load_cases
+    P, shares, speeds = [], [], []
+    for case, share in inst.duty_cycle.items():
+        loads = cases.get(case, {}).get(ctx.component)
+        if loads is None or "speed" not in loads:
+            raise InputError(f"duty_cycle: load case {case!r} gives no loads (with a speed) for {ctx.component!r}; "
+                             f"cases: {', '.join(cases)}")
+        P.append(inst.bearing.equivalent_load(*_forces(loads)).P)
+        shares.append(share)
+        speeds.append(loads["speed"])
+    return duty_cycle_load(P, shares, speeds=speeds)
+
+
+def _first_cycle_case(inst: BearingInstallation, ctx: Any) -> bool:
+    """With a duty cycle the life is one result for the whole cycle: reported once, in its first case."""
+    return inst.duty_cycle is None or ctx.load_case == next(iter(inst.duty_cycle))
+
+
+def _required(inst: BearingInstallation, ctx: Any) -> Any:
+    return inst.required_life if inst.required_life is not None else ctx.requirements["bearing_life"]
+
+
+def _modified(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> Any:
+    if inst.lubrication is None:
+        if ctx.design.data.components[ctx.component].checks.get("bearing_modified_life", {}).get("enabled"):
+            raise InputError("bearing_modified_life needs the lubricant: give viscosity (at the operating "
+                             "temperature), or viscosity_40 or iso_vg with viscosity_100 and operating_temperature; "
+                             "and contamination (ISO 281 Table 13 level) or contamination_factor")
+        return []
+    if not _first_cycle_case(inst, ctx):
+        return []
     Fr, Fa = _forces(loads)
-    required = inst.required_life if inst.required_life is not None else ctx.requirements["bearing_life"]
-    r = bc.check_bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability)
+    dc = _cycle(inst, ctx)
+    return bc.check_bearing_modified_life(inst.bearing, Fr, Fa, loads["speed"], _required(inst, ctx),
+                                          inst.lubrication, reliability=inst.reliability, duty_cycle=dc)
+
+
+def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> Any:
+    if not _first_cycle_case(inst, ctx):
+        return []
+    Fr, Fa = _forces(loads)
+    required = _required(inst, ctx)
+    r = bc.check_bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability,
+                              duty_cycle=_cycle(inst, ctx))
     source = "component's required_life" if inst.required_life is not None else "requirements.bearing_life"
     return dataclasses.replace(r, notes=(*r.notes, f"required life from the {source}"),
                                details={**r.details, "a1": reliability_factor(inst.reliability)})
@@ -68,6 +152,17 @@ BALL = REGISTRY.register(ComponentType(
         Field("static_load_rating", "force", "C0, instead of the catalogue's"),
         Field("limiting_speed", "angular_velocity", "limiting speed, instead of the catalogue's (e.g. the lower "
                                                     "one of a contact-sealed variant)"),
+        Field("viscosity", "str", "lubricant (grease base oil) kinematic viscosity at the operating temperature, "
+                                  "e.g. '20 mm^2/s' (enables bearing_modified_life)"),
+        Field("viscosity_40", "str", "lubricant viscosity at 40 degC, e.g. '68 mm^2/s'"),
+        Field("iso_vg", "int", "ISO 3448 viscosity grade (its 40 degC viscosity), instead of viscosity_40"),
+        Field("viscosity_100", "str", "lubricant viscosity at 100 degC (oil datasheet), with viscosity_40 or iso_vg"),
+        Field("operating_temperature", "str", "bearing operating temperature, e.g. '70 degC' (-20..150 degC)"),
+        Field("contamination", "choice", "ISO 281 Table 13 contamination level (its lower e_C is used)",
+              default="normal_cleanliness", choices=tuple(CONTAMINATION_LEVELS)),
+        Field("contamination_factor", "float", "e_C (0..1), instead of the contamination level"),
+        Field("duty_cycle", "table", "load case = time share, e.g. { run = 0.7, start = 0.3 }: the life is taken "
+                                     "over the cycle, P = (sum P_i^3 n_i t_i / sum n_i t_i)^(1/3)"),
     ),
     build=lambda p, ctx: _build_bearing(p, ctx),
     loads=(
@@ -77,6 +172,7 @@ BALL = REGISTRY.register(ComponentType(
     ),
     checks=(
         CheckSpec.of(bc.check_bearing_life, _life, needs=("radial_force|axial_force", "speed")),
+        CheckSpec.of(bc.check_bearing_modified_life, _modified, needs=("radial_force|axial_force", "speed")),
         CheckSpec.of(bc.check_bearing_static_safety, lambda c, loads, ctx: bc.check_bearing_static_safety(
             c.bearing, *_forces(loads), required_s0=ctx.required_sf), needs=("radial_force|axial_force",)),
         CheckSpec.of(bc.check_bearing_speed, lambda c, loads, ctx: bc.check_bearing_speed(c.bearing, loads["speed"]),
