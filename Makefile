@@ -1,5 +1,6 @@
 # make demo  : set up .venv and verify the bundled lead-screw lift example, writing its report
 # make test  : set up .venv and run the whole test suite (lint included)
+# make docs  : the API reference from the docstrings (Sphinx) into build/api
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -7,7 +8,7 @@ STAMP  := $(VENV)/.installed-stamp
 BASE_STAMP := $(VENV)/.installed-base-stamp
 export MPLBACKEND := Agg
 
-.PHONY: demo test lint sysdeps bench clean
+.PHONY: demo test lint sysdeps bench clean docs
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -20,7 +21,7 @@ $(BASE_STAMP): pyproject.toml | $(BIN)/python
 	touch $@
 
 $(STAMP): $(BASE_STAMP)
-	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster,explore]'
+	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster,explore,docs]'
 	touch $@
 
 sysdeps:
@@ -37,6 +38,10 @@ test: $(STAMP) sysdeps lint
 
 bench: $(STAMP) sysdeps
 	$(BIN)/python benchmarks/run.py
+
+# docs: the API reference from the docstrings into build/api (warnings are errors)
+docs: $(STAMP)
+	$(BIN)/python -m sphinx -b html -q -W --keep-going docs/api build/api
 
 clean:
 	rm -rf $(VENV) build *.egg-info .pytest_cache .ruff_cache
