@@ -30,7 +30,7 @@ from typing import Any
 from mechverify.errors import InputError, ValidityError
 from mechverify.fatigue import notch
 from mechverify.materials.material import Material
-from mechverify.units import QuantityLike, to_si
+from mechverify.units import Q, QuantityLike, to_si
 
 G_STANDARD = 9.80665
 DATA = Path(__file__).with_name("data") / "shafts.toml"
@@ -331,8 +331,9 @@ class Shaft:
         if f.kind == "shoulder":
             small, large = self.step_at(f.x)  # type: ignore[misc]
             try:
-                kt = notch.kt_shoulder_fillet(large.diameter, small.diameter, f.radius, "bending").m
-                kts = notch.kt_shoulder_fillet(large.diameter, small.diameter, f.radius, "torsion").m
+                D_, d_, r_ = (Q(v, "m") for v in (large.diameter, small.diameter, f.radius))
+                kt = notch.kt_shoulder_fillet(D_, d_, r_, "bending").m
+                kts = notch.kt_shoulder_fillet(D_, d_, r_, "torsion").m
                 return kt, kts, "Peterson 3rd ed. Charts 3.4/3.12 fits"
             except ValidityError as exc:
                 row = t71["shoulder_sharp" if f.radius / small.diameter < 0.06 else "shoulder_well_rounded"]
@@ -347,7 +348,7 @@ class Shaft:
         if f.kind == "groove":
             if f.radius > 0:
                 try:
-                    kt = notch.kt_groove(d, d - 2 * f.depth, f.radius, "bending").m
+                    kt = notch.kt_groove(Q(d, "m"), Q(d - 2 * f.depth, "m"), Q(f.radius, "m"), "bending").m
                     row = t71["retaining_ring_groove"]
                     return kt, min(kt, row["torsion"]), "Peterson 3rd ed. U-groove fit (bending); Kts <= Table 7-1"
                 except ValidityError:

@@ -1,0 +1,286 @@
+"""Checks of shafts (Shigley 10th ed. Ch. 7): fatigue at every feature and at the section of largest moment by
+the distortion-energy criteria (DE-Goodman, DE-Gerber, DE-ASME-elliptic, DE-Soderberg), first-cycle yield,
+slope at the bearings, deflection at gears, critical speed, and key shear and crushing.
+
+Each check takes the :class:`~mechverify.components.shafts.Shaft` and its
+:class:`~mechverify.fea.shafts.ShaftAnalysis`; :func:`section_stresses` gives the stresses at every section
+(feature or max-moment section), which the fatigue and yield checks and the report figure share.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from mechverify.checks.registry import check
+from mechverify.checks.result import CheckResult
+from mechverify.components import shafts as s
+from mechverify.errors import InputError
+from mechverify.fatigue import criteria, notch
+from mechverify.fatigue.endurance import corrected_endurance_limit
+from mechverify.fea.shafts import CriticalSpeed, ShaftAnalysis
+from mechverify.references import ref
+from mechverify.units import Q
+
+CRITERIA = ("goodman", "gerber", "asme_elliptic", "soderberg")
+_EQ = {"goodman": "Eq. 7-7", "gerber": "Eq. 7-9", "asme_elliptic": "Eq. 7-11", "soderberg": "Eq. 7-13"}
+
+
+@dataclass(frozen=True)
+class SectionStress:
+    """Stresses and fatigue factors at one section of the shaft (SI)."""
+
+    name: str
+    x: float
+    d: float
+    Kt: float
+    Kts: float
+    Kf: float
+    Kfs: float
+    kt_source: str
+    M: float
+    T: float
+    N: float
+    sigma_a: float  # von Mises alternating (Eq. 7-5 form with axial in the mean)
+    sigma_m: float
+    sigma_max: float  # Eq. 7-15
+    Se: float
+    factors: dict[str, float]
+
+    def n(self, criterion: str, Sut: float, Sy: float) -> float:
+        """Fatigue safety factor by a DE criterion (proportional load line), Shigley Eqs. 7-7..7-14."""
+        if self.sigma_a <= 0:
+            return math.inf if self.sigma_m <= 0 else (Sut if criterion in ("goodman", "gerber") else Sy) / self.sigma_m
+        fn = {"goodman": criteria.goodman, "gerber": criteria.gerber, "asme_elliptic": criteria.asme_elliptic,
+              "soderberg": criteria.soderberg}[criterion]
+        S = Sut if criterion in ("goodman", "gerber") else Sy
+        return float(fn(Q(self.sigma_a, "Pa"), Q(self.sigma_m, "Pa"), Q(self.Se, "Pa"), Q(S, "Pa")))
+
+
+def de_stresses(Ma: float, Mm: float, Ta: float, Tm: float, D: float, Kf: float, Kfs: float, *, bore: float = 0.0,
+                N: float = 0.0) -> tuple[float, float, float]:
+    """(sigma_a', sigma_m', sigma'_max) [Pa] of a round section, Shigley 10th ed. Eqs. 7-5, 7-6, 7-15:
+    ``sigma_a' = sqrt((Kf 32 Ma/(pi d^3))^2 + 3 (Kfs 16 Ta/(pi d^3))^2)``, the same with the mean values
+    (plus a steady axial stress Kf N/A), and the peak ``sqrt((sigma_a + sigma_m)^2 + 3 (tau_a + tau_m)^2)``;
+    hollow sections use W = pi (D^4 - d^4)/(32 D)."""
+    W, Wt = s.section_moduli(D, bore)
+    A = math.pi / 4 * (D**2 - bore**2)
+    sa, sm = Kf * Ma / W, Kf * Mm / W + Kf * N / A
+    ta, tm = Kfs * Ta / Wt, Kfs * Tm / Wt
+    return math.hypot(sa, math.sqrt(3) * ta), math.hypot(sm, math.sqrt(3) * tm), \
+        math.hypot(sa + sm, math.sqrt(3) * (ta + tm))
+
+
+def _section(shaft: s.Shaft, a: ShaftAnalysis, name: str, x: float, D: float, bore: float, Kt: float, Kts: float,
+             r: float, src: str) -> SectionStress:
+    Sut = shaft.material.require("ultimate_strength").m_as("Pa")
+    Kf = notch.neuber_kf(Kt, Q(r, "m"), Q(Sut, "Pa"), "bending").m if Kt > 1 and r > 0 else Kt
+    Kfs = notch.neuber_kf(Kts, Q(r, "m"), Q(Sut, "Pa"), "torsion").m if Kts > 1 and r > 0 else Kts
+    v = a.at(x)
+    M, T, N = v["M"], v["T"], max(v["N"], 0.0)
+    Ma, Mm = (M, 0.0) if shaft.rotating else (0.0, M)
+    Ta, Tm = shaft.torque_alternating_fraction * T, T
+    sa, sm, smax = de_stresses(Ma, Mm, Ta, Tm, D, Kf, Kfs, bore=bore, N=N)
+    el = corrected_endurance_limit(Q(Sut, "Pa"), finish=shaft.finish, d=Q(D, "m"), loading="bending",
+                                   reliability=shaft.reliability)
+    return SectionStress(name, x, D, Kt, Kts, Kf, Kfs, src, M, T, N, sa, sm, smax, el.Se.m_as("Pa"),
+                         el.factors.as_dict())
+
+
+def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
+    """Stresses at every feature (Kt from :meth:`Shaft.stress_concentration`, Kf/Kfs by Neuber, Shigley Eqs.
+    6-32..6-35) and at the section of the largest moment (Kt = 1 unless a feature sits there)."""
+    out = []
+    for f in shaft.features:
+        Kt, Kts, src = shaft.stress_concentration(f)
+        D, bore = shaft.net_diameter(f)
+        out.append(_section(shaft, a, f.name or f"{f.kind}@{f.x * 1e3:g}", f.x, D, bore, Kt, Kts,
+                            shaft.notch_radius(f), src))
+    xm, _ = a.max_moment()
+    if not any(abs(f.x - xm) < 1e-9 for f in shaft.features):
+        seg = shaft.segment_at(xm)
+        out.append(_section(shaft, a, f"max moment@{xm * 1e3:.4g}", xm, seg.diameter, seg.bore, 1.0, 1.0, 0.0,
+                            "plain section"))
+    return out
+
+
+def _strengths(shaft: s.Shaft) -> tuple[float, float]:
+    return shaft.material.require("ultimate_strength").m_as("Pa"), shaft.material.require("yield_strength").m_as("Pa")
+
+
+def _MPa(v: float) -> object:
+    return Q(v / 1e6, "MPa")
+
+
+@check("shaft_fatigue", title="Shaft fatigue (distortion energy)", sf_kind="fatigue",
+       source=ref("shigley10", "Sec. 7-4, Eqs. 7-7 to 7-14; Eqs. 6-18, 6-32 to 6-35"),
+       explain=("At every feature (shoulder fillet, keyseat, groove, ...) and at the section of largest bending "
+                "moment: von Mises alternating and mean stresses sigma_a' = sqrt((Kf 32 Ma/pi d^3)^2 + "
+                "3 (Kfs 16 Ta/pi d^3)^2) and sigma_m' likewise (a rotating shaft turns the bending moment into a "
+                "fully reversed stress, the torque is steady), Kf and Kfs from Kt by Neuber's notch sensitivity, "
+                "the Marin-corrected endurance limit Se; the safety factor by the chosen criterion (DE-Goodman by "
+                "default, or DE-Gerber, DE-ASME-elliptic, DE-Soderberg), reported at the governing section."))
+def check_shaft_fatigue(shaft: s.Shaft, a: ShaftAnalysis, *, criterion: str = "goodman", required_sf: float = 1.5,
+                        load_case: str = "") -> CheckResult:
+    """Lowest fatigue safety factor over the sections, Shigley Eqs. 7-7 to 7-14."""
+    if criterion not in CRITERIA:
+        raise InputError(f"criterion must be one of {CRITERIA}, got {criterion!r}")
+    Sut, Sy = _strengths(shaft)
+    secs = section_stresses(shaft, a)
+    ns = [sec.n(criterion, Sut, Sy) for sec in secs]
+    k = min(range(len(secs)), key=lambda i: ns[i])
+    g, n = secs[k], ns[k]
+    demand = g.sigma_a if g.sigma_a > 0 else g.sigma_m
+    return CheckResult(
+        check="shaft_fatigue", component=shaft.name, demand=_MPa(demand),
+        capacity=_MPa(demand * n if math.isfinite(n) else 1e12), required_sf=required_sf,
+        title=f"Shaft fatigue, DE-{criterion.replace('_', '-')}, at {g.name}",
+        formula=r"\frac{1}{n} = \frac{\sigma_a'}{S_e} + \frac{\sigma_m'}{S_{ut}}" if criterion == "goodman" else "",
+        source=ref("shigley10", f"Sec. 7-4, {_EQ[criterion]}"),
+        inputs={"d": Q(g.d * 1e3, "mm"), "M": Q(g.M, "N*m"), "T": Q(g.T, "N*m"), "Kt": Q(g.Kt, ""),
+                "Kts": Q(g.Kts, ""), "Kf": Q(g.Kf, ""), "Kfs": Q(g.Kfs, ""), "Se": _MPa(g.Se), "Sut": _MPa(Sut),
+                "Sy": _MPa(Sy), "sigma_a'": _MPa(g.sigma_a), "sigma_m'": _MPa(g.sigma_m)},
+        notes=(f"Kt source: {g.kt_source}",
+               "Marin factors: " + ", ".join(f"{k}={v:.3f}" for k, v in g.factors.items())),
+        load_case=load_case,
+        details={"sections": [{"name": sec.name, "x": sec.x, "n": ns[i], "Kf": sec.Kf, "Kfs": sec.Kfs}
+                              for i, sec in enumerate(secs)], "criterion": criterion})
+
+
+@check("shaft_static_yield", title="Shaft first-cycle yield (von Mises, peak loads)", sf_kind="static",
+       source=ref("shigley10", "Sec. 7-4, Eqs. 7-15, 7-16"),
+       explain=("The von Mises peak stress sigma'_max = sqrt((sigma_m + sigma_a)^2 + 3 (tau_m + tau_a)^2) with the "
+                "fatigue stress-concentration factors, at every feature and at the largest-moment section, against "
+                "the yield strength: n_y = Sy / sigma'_max (Shigley Eqs. 7-15, 7-16)."))
+def check_shaft_static_yield(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: float = 2.0,
+                             load_case: str = "") -> CheckResult:
+    """Largest sigma'_max against Sy (Shigley Eqs. 7-15, 7-16)."""
+    _, Sy = _strengths(shaft)
+    secs = section_stresses(shaft, a)
+    g = max(secs, key=lambda v: v.sigma_max)
+    return CheckResult(
+        check="shaft_static_yield", component=shaft.name, demand=_MPa(g.sigma_max), capacity=_MPa(Sy),
+        required_sf=required_sf, title=f"Shaft yield at {g.name}",
+        formula=r"\sigma'_{max} = \sqrt{(\sigma_m + \sigma_a)^2 + 3(\tau_m + \tau_a)^2} \le S_y",
+        source=ref("shigley10", "Eqs. 7-15, 7-16"),
+        inputs={"d": Q(g.d * 1e3, "mm"), "M": Q(g.M, "N*m"), "T": Q(g.T, "N*m"), "Kf": Q(g.Kf, ""),
+                "Kfs": Q(g.Kfs, "")}, load_case=load_case,
+        details={"sections": [{"name": v.name, "x": v.x, "n": Sy / v.sigma_max if v.sigma_max else math.inf}
+                              for v in secs]})
+
+
+@check("shaft_bearing_slope", title="Shaft slope at the bearings", sf_kind="deflection",
+       source=ref("shigley10", "Sec. 7-5, Table 7-2"),
+       explain=("The resultant slope of the shaft at each bearing (frame FEA, Timoshenko elements) against the upper "
+                "value of the typical maximum slope of its bearing type (Shigley Table 7-2: deep-groove ball "
+                "0.001-0.003 rad, cylindrical roller 0.0008-0.0012, tapered roller 0.0005-0.0012, self-aligning "
+                "0.026-0.052); the governing bearing is reported."))
+def check_shaft_bearing_slope(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: float = 1.0,
+                              load_case: str = "") -> CheckResult:
+    """Slope / allowance, governing bearing."""
+    ratios = []
+    for sup in shaft.supports:
+        allow = s.slope_allowance(sup.bearing)[1]
+        ratios.append((a.slopes[sup.name] / allow, sup, allow))
+    u, sup, allow = max(ratios, key=lambda t: t[0])
+    return CheckResult(
+        check="shaft_bearing_slope", component=shaft.name, demand=Q(a.slopes[sup.name], "rad"),
+        capacity=Q(allow, "rad"), required_sf=required_sf, title=f"Shaft slope at bearing {sup.name} ({sup.bearing})",
+        source=ref("shigley10", "Table 7-2"), inputs={"bearing": sup.bearing}, load_case=load_case,
+        notes=("Table 7-2 values are typed from the book and flagged unverified in components/data/shafts.toml",),
+        details={"slopes": {k: v for k, v in a.slopes.items()}})
+
+
+@check("shaft_gear_deflection", title="Shaft deflection at the gears", sf_kind="deflection",
+       source=ref("shigley10", "Sec. 7-5, Table 7-2"),
+       explain=("The resultant transverse deflection at each spur or helical gear against Shigley Table 7-2's "
+                "typical maximum by diametral pitch (0.010 in for P <= 10, 0.005 in for 11-19, 0.003 in for "
+                "20-50; P = 25.4/m for a module m in mm)."))
+def check_shaft_gear_deflection(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: float = 1.0,
+                                load_case: str = "") -> list[CheckResult]:
+    """Deflection / allowance at each gear with a module."""
+    out = []
+    for ld in shaft.loads:
+        if ld.kind != "gear" or not ld.module > 0:
+            continue
+        P = 0.0254 / ld.module
+        allow = s.gear_deflection_allowance(P)
+        y = a.at(ld.x)["deflection"]
+        out.append(CheckResult(
+            check="shaft_gear_deflection", component=shaft.name, demand=Q(y * 1e3, "mm"),
+            capacity=Q(allow * 1e3, "mm"), required_sf=required_sf, title=f"Shaft deflection at gear {ld.name}",
+            source=ref("shigley10", "Table 7-2"), inputs={"module": Q(ld.module * 1e3, "mm"), "P": Q(P, "1/in")},
+            load_case=load_case))
+    return out
+
+
+@check("shaft_critical_speed", title="Shaft first critical speed", sf_kind="speed",
+       source=ref("shigley10", "Sec. 7-6, Eqs. 7-23, 7-24"),
+       explain=("The operating speed against the first lateral critical speed from lumped masses (the shaft in "
+                "pieces and the mounted masses): the lower of Rayleigh's estimate (Eq. 7-23, static deflections "
+                "under the weights) and Dunkerley's (Eq. 7-24, influence coefficients), both from the frame model; "
+                "the margin omega_c/omega is asked to exceed the speed safety factor (Shigley suggests 2)."))
+def check_shaft_critical_speed(shaft: s.Shaft, cs: CriticalSpeed, *, required_sf: float = 1.25,
+                               load_case: str = "") -> CheckResult:
+    """Operating speed against min(Rayleigh, Dunkerley)."""
+    wc = min(cs.rayleigh, cs.dunkerley)
+    rpm = 60 / (2 * math.pi)
+    return CheckResult(
+        check="shaft_critical_speed", component=shaft.name, demand=Q(shaft.speed * rpm, "rpm"),
+        capacity=Q(wc * rpm, "rpm"), required_sf=required_sf, title="Shaft first critical speed",
+        formula=r"\omega_1 = \sqrt{\frac{g\sum w_i y_i}{\sum w_i y_i^2}},\quad "
+                r"\frac{1}{\omega_1^2} = \sum \frac{1}{\omega_{ii}^2}",
+        source=ref("shigley10", "Eqs. 7-23, 7-24"),
+        inputs={"Rayleigh": Q(cs.rayleigh * rpm, "rpm"), "Dunkerley": Q(cs.dunkerley * rpm, "rpm"),
+                "masses": len(cs.masses)}, load_case=load_case)
+
+
+def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, float, float, float, float]]:
+    out = []
+    for f in shaft.features:
+        if f.kind != "keyseat":
+            continue
+        d = shaft.segment_at(f.x).diameter
+        std = s.din6885_key(d)
+        b = f.width or std["b"]
+        t1 = f.depth or std["t1"]
+        h = std["h"] if not f.width else std["h"] * b / std["b"]
+        if not f.length > 0:
+            raise InputError(f"shaft {shaft.name}: keyseat {f.name}: give the key length for the key checks")
+        tau, p = s.key_stresses(a.at(f.x)["T"], d, b, h, t1, f.length)
+        out.append((f, d, b, h, tau, p))
+    return out
+
+
+@check("shaft_key_shear", title="Parallel key shear", sf_kind="static",
+       source=ref("shigley10", "Sec. 7-7, Ex. 7-6") + "; " + ref("din6885"),
+       explain=("The force F = 2T/d at the shaft surface shears the key over its width times length, tau = F/(b l), "
+                "against the shear yield strength 0.577 Sy of the key material (distortion energy, Shigley Sec. "
+                "7-7); key sizes from DIN 6885-1 when not given."))
+def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float | None = None,
+                          required_sf: float = 2.0, load_case: str = "") -> list[CheckResult]:
+    """tau = 2T/(d b l) against 0.577 Sy per keyseat."""
+    Sy = key_yield or _strengths(shaft)[1]
+    return [CheckResult(check="shaft_key_shear", component=shaft.name, demand=_MPa(tau), capacity=_MPa(0.577 * Sy),
+                        required_sf=required_sf, title=f"Key shear at {f.name or 'keyseat'}",
+                        source=ref("shigley10", "Sec. 7-7"),
+                        inputs={"d": Q(d * 1e3, "mm"), "b": Q(b * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
+                        load_case=load_case)
+            for f, d, b, h, tau, p in _keys(shaft, a)]
+
+
+@check("shaft_key_crushing", title="Parallel key crushing (bearing)", sf_kind="static",
+       source=ref("shigley10", "Sec. 7-7, Ex. 7-6") + "; " + ref("din6885"),
+       explain=("The force F = 2T/d bears on the part of the key standing in the hub, height h - t1, over its "
+                "length: p = F/((h - t1) l) against the yield strength Sy of the key material (Shigley Ex. 7-6 "
+                "compares the bearing stress with Sy); DIN 6885-1 sizes when not given."))
+def check_shaft_key_crushing(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float | None = None,
+                             required_sf: float = 2.0, load_case: str = "") -> list[CheckResult]:
+    """p = 2T/(d (h - t1) l) against Sy per keyseat."""
+    Sy = key_yield or _strengths(shaft)[1]
+    return [CheckResult(check="shaft_key_crushing", component=shaft.name, demand=_MPa(p), capacity=_MPa(Sy),
+                        required_sf=required_sf, title=f"Key crushing at {f.name or 'keyseat'}",
+                        source=ref("shigley10", "Sec. 7-7"),
+                        inputs={"d": Q(d * 1e3, "mm"), "h": Q(h * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
+                        load_case=load_case)
+            for f, d, b, h, tau, p in _keys(shaft, a)]

@@ -1,0 +1,117 @@
+"""Shaft model, analysis and checks: closed-form beam cases, gear and belt forces, named errors.
+
+Sources: Shigley 10th ed. Table A-9 (beam cases 5 and 10: simply supported with a centre/intermediate load,
+overhang), Eq. 13-36 (gear force components), Sec. 17-2 (belt tensions); hand calculations, not printed values.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from mechverify.checks import shafts as cs
+from mechverify.components.shafts import (
+    Feature,
+    Segment,
+    Shaft,
+    Support,
+    belt_tensions,
+    force_load,
+    gear_load,
+    key_stresses,
+)
+from mechverify.errors import InputError, ModelError
+from mechverify.fea.shafts import analyse, critical_speed
+from mechverify.materials.database import get
+
+M = get("AISI 1045 CD")
+E = M.require("E").m_as("Pa")
+
+
+def _ss(P: float = 1000.0, a: float = 0.4, L: float = 1.0, d: float = 0.05, **kw: object) -> Shaft:
+    return Shaft("t", (Segment(L, d),), M, (Support("A", 0.0), Support("B", L)), (force_load("P", a, (0, 0, -P)),),
+                 **kw)  # type: ignore[arg-type]
+
+
+def test_simply_supported_intermediate_load_table_a9_case_6() -> None:
+    """Table A-9-6: R1 = P b/l, M_max = P a b/l, end slope theta_A = P a b (l + b)/(6 E I l) (Euler; the
+    Timoshenko shear deflection does not change the end slopes of this case)."""
+    a = analyse(_ss())
+    I = math.pi * 0.05**4 / 64
+    assert a.reactions["A"].radial == pytest.approx(600.0)
+    assert a.reactions["B"].radial == pytest.approx(400.0)
+    assert a.max_moment() == pytest.approx((0.4, 240.0))
+    assert a.slopes["A"] == pytest.approx(1000 * 0.4 * 0.6 * 1.6 / (6 * E * I), rel=1e-6)
+
+
+def test_overhang_reactions_and_three_bearings() -> None:
+    """Overhang (Table A-9-10): load P at x = l + a on supports at 0 and l: R1 = -P a/l, R2 = P (l + a)/l.
+    Three equal-span bearings with a uniform... here a centre-span load on a two-span continuous beam gives the
+    middle reaction 11/16 P (three-moment equation, hand calculation)."""
+    sh = Shaft("o", (Segment(1.2, 0.05),), M, (Support("A", 0.0), Support("B", 1.0)), (force_load("P", 1.2, (0, 0, -1e3)),))
+    a = analyse(sh)
+    assert a.reactions["A"].force[2] == pytest.approx(-200.0)
+    assert a.reactions["B"].force[2] == pytest.approx(1200.0)
+    sh3 = Shaft("c", (Segment(2.0, 0.05),), M, (Support("A", 0.0), Support("B", 1.0), Support("C", 2.0)),
+                (force_load("P", 0.5, (0, 0, -1e3)),))
+    r = analyse(sh3).reactions
+    # Euler value 11/16 P; Timoshenko shear flexibility shifts it by < 0.5 % for this slender shaft
+    assert r["B"].force[2] == pytest.approx(1e3 * 11 / 16, rel=5e-3)
+
+
+def test_gear_forces_eq_13_36() -> None:
+    """Spur gear, T = 100 N m, d = 0.2 m, phi = 20 deg: Wt = 1000 N, Wr = 364.0 N; helical psi = 30 deg:
+    Wr = Wt tan(20)/cos(30) = 420.3 N, Wa = Wt tan(30) = 577.4 N. Mesh point on +y: tangential along +z."""
+    g = gear_load("g", 0.1, 0.2, 100.0, angle=0.0)
+    assert g.force[2] == pytest.approx(1000.0)
+    assert g.force[1] == pytest.approx(-1000 * math.tan(math.radians(20)))
+    h = gear_load("h", 0.1, 0.2, 100.0, helix_angle=30.0, angle=0.0)
+    assert h.force[1] == pytest.approx(-1000 * math.tan(math.radians(20)) / math.cos(math.radians(30)))
+    assert h.force[0] == pytest.approx(1000 * math.tan(math.radians(30)))
+    assert h.moment[2] == pytest.approx(-0.1 * h.force[0])
+
+
+def test_belt_tensions() -> None:
+    """T1 - T2 = 2T/D, T1/T2 = 3: T = 150 N m, D = 0.3 m -> T1 - T2 = 1000, T2 = 500, T1 = 1500 N."""
+    assert belt_tensions(150.0, 0.3, 3.0) == pytest.approx((1500.0, 500.0))
+
+
+def test_key_stresses_hand() -> None:
+    """T = 200 N m, d = 40 mm -> F = 10 kN; b = 12, h = 8, t1 = 5, l = 40 mm: tau = 20.8 MPa, p = 83.3 MPa."""
+    tau, p = key_stresses(200.0, 0.04, 0.012, 0.008, 0.005, 0.04)
+    assert tau == pytest.approx(10e3 / (0.012 * 0.04))
+    assert p == pytest.approx(10e3 / (0.003 * 0.04))
+
+
+def test_named_errors() -> None:
+    seg = (Segment(0.5, 0.04), Segment(0.5, 0.05))
+    sup = (Support("A", 0.0), Support("B", 1.0))
+    with pytest.raises(InputError, match="larger than the step height"):
+        Shaft("f", seg, M, sup, features=(Feature("shoulder", 0.5, radius=0.006),))
+    with pytest.raises(InputError, match="not less than the radius"):
+        Shaft("k", seg, M, sup, features=(Feature("keyseat", 0.2, depth=0.02),))
+    with pytest.raises(InputError, match="outside the shaft"):
+        Shaft("l", seg, M, sup, loads=(force_load("P", 1.5, (0, 0, -1.0)),))
+    with pytest.raises(InputError, match="do not balance"):
+        Shaft("t", seg, M, sup, loads=(force_load("P", 0.5, torque=10.0),))
+    with pytest.raises(ModelError, match="free rotation"):
+        analyse(Shaft("s", seg, M, (Support("A", 0.0),), loads=(force_load("P", 0.5, (0, 0, -1.0)),)))
+
+
+def test_checks_run_and_criteria_order() -> None:
+    """Soderberg is the most conservative and Gerber the least of the DE criteria (Shigley Sec. 7-4)."""
+    sh = Shaft("c", (Segment(0.3, 0.03), Segment(0.4, 0.04), Segment(0.3, 0.03)), M,
+               (Support("A", 0.15), Support("B", 0.85)),
+               (force_load("P", 0.5, (0, 0, -2000.0), mass=5.0), force_load("in", 0.0, torque=100.0),
+                force_load("out", 1.0, torque=-100.0)),
+               (Feature("shoulder", 0.3, radius=0.002, name="sh"),
+                Feature("keyseat", 0.05, keyseat="profile", length=0.04, name="key")), speed=150.0)
+    a = analyse(sh)
+    n = {c: cs.check_shaft_fatigue(sh, a, criterion=c).safety_factor for c in cs.CRITERIA}
+    assert n["soderberg"] < n["goodman"] < n["asme_elliptic"]
+    assert n["goodman"] < n["gerber"]
+    assert cs.check_shaft_static_yield(sh, a).safety_factor > 1
+    assert cs.check_shaft_bearing_slope(sh, a).demand.m > 0
+    assert cs.check_shaft_critical_speed(sh, critical_speed(sh)).capacity.m > 0
+    assert len(cs.check_shaft_key_shear(sh, a)) == 1
