@@ -515,7 +515,8 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     materials = _materials(doc, col, pctx)
     templates = doc.get("templates", {}) if isinstance(doc.get("templates", {}), dict) else {}
     ctx: dict[str, Any] = {"materials": materials, "requirements": requirements, **pctx,
-                           "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {}}
+                           "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {},
+                           "path": path}  # the design file (adapters resolve relative file names against it)
     profiles = _typed_section(doc, "profiles", col, ctx, templates)
     ctx["profiles"] = profiles
     _build(profiles, "profiles", col, ctx)

@@ -1,0 +1,85 @@
+"""The solid_fea design-file type (mechverify/design/adapters/solid_fea.py): parse and call, named errors.
+
+Numbers: a cantilever block 200 x 10 x 10 mm fixed at x = 0 with 100 N down at the free end: the tip deflection
+PL³/3EI = 1.6 mm (hand calculation from Euler-Bernoulli beam theory, Shigley 10th ed. Table A-9 case 1, not
+a printed value); the first frequency 203.8 Hz (tests/validation/test_blevins_cantilever_modes.py).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import mechverify
+from mechverify.errors import MechverifyError
+
+BASE = """
+[design]
+name = "solid test"
+
+[components.bar]
+type = "solid_fea"
+box = "200, 10, 10"
+material = "Structural Steel"
+mesh_size = "5 mm"
+supports = [{{ named = "xmin" }}]
+deflection_limit = "2 mm"
+min_frequency = "150 Hz"
+modes = 2
+{extra}
+
+[load_cases.tip.bar]
+forces = [{{ {region}, force = "0, 0, -100" }}]
+[load_cases.tip2.bar]
+forces = [{{ plane = "x = 200", force = "0, 0, -50 N" }}]
+"""
+
+
+def _load(tmp_path: Path, extra: str = "", region: str = 'named = "xmax"'):
+    f = tmp_path / "d.toml"
+    f.write_text(BASE.format(extra=extra, region=region))
+    return mechverify.load(f)
+
+
+def test_box_cantilever_checks(tmp_path):
+    res = _load(tmp_path).verify()
+    by = {r.check: r for r in res}
+    assert by["solid_deflection"].demand.m_as("mm") == pytest.approx(1.6, rel=0.03)
+    assert by["solid_deflection"].load_case == "tip"  # the larger of the two cases governs
+    assert by["natural_frequency"].capacity.m_as("Hz") == pytest.approx(203.8, rel=0.03)
+    # root bending stress M/Z = 100·0.2 / (0.01³/6) = 120 MPa (hand calculation); the clamp adds a little
+    assert by["solid_stress"].demand.m_as("MPa") == pytest.approx(120, rel=0.1)
+    # both load cases were solved on one factorisation
+    d = _load(tmp_path)
+    d.verify()
+    assert len(d["bar"].solved) == 2 and all("(shared)" in r.info.method for r in d["bar"].solved.values())
+
+
+def test_unknown_face_lists_the_names(tmp_path):
+    with pytest.raises(MechverifyError, match=r"'xmaxx'.*valid regions: xmax, xmin, ymax, ymin, zmax, zmin"):
+        _load(tmp_path, region='named = "xmaxx"').verify()
+
+
+def test_too_large_mesh_is_refused_with_estimate(tmp_path):
+    d = tmp_path / "d.toml"
+    d.write_text(BASE.format(extra="", region='named = "xmax"').replace('box = "200, 10, 10"', 'box = "2000, 2000, 2000"'))
+    with pytest.raises(MechverifyError, match=r"unknowns.*mesh_size >="):
+        mechverify.load(d).verify()
+
+
+def test_geometry_must_be_one(tmp_path):
+    with pytest.raises(MechverifyError, match="exactly one geometry"):
+        _load(tmp_path, extra='stl = "part.stl"')
+    with pytest.raises(MechverifyError, match="does not exist"):
+        f = tmp_path / "e.toml"
+        f.write_text(BASE.format(extra="", region='named = "xmax"').replace('box = "200, 10, 10"', 'step = "no.step"'))
+        mechverify.load(f)
+
+
+def test_example_bracket_runs():
+    pytest.importorskip("gmsh")
+    path = Path(__file__).parents[1] / "examples" / "solid_bracket" / "design.toml"
+    res = mechverify.load(path).verify()
+    assert {r.check for r in res} == {"solid_stress", "solid_deflection", "natural_frequency", "buckling_load_factor"}
+    assert all(r.verdict == "pass" for r in res)
