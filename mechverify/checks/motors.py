@@ -36,6 +36,7 @@ import numpy as np
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, ResultSet
 from mechverify.components.gearheads import Gearhead
+from mechverify.components.motors import ALPHA_CU, thermal_data, winding_temperature_cycle
 from mechverify.errors import InputError
 from mechverify.motion.drive_train import TorqueDemand, rms
 from mechverify.references import ref
@@ -330,6 +331,113 @@ def check_driver_current(demand: TorqueDemand, max_current: QuantityLike, motor:
         source=_SRC_MAXON, load_case=_case(demand, i))
 
 
+def _celsius(value: QuantityLike, name: str) -> float:
+    q = Q(value) if isinstance(value, str) else value
+    try:
+        return float(q.to("degC").magnitude)
+    except Exception as exc:  # pint raises several types for a wrong or unitless value
+        raise InputError(f"{name}: expected a temperature such as '25 degC', got {value!r}") from exc
+
+
+@check("motor_winding_temperature", title="Motor winding temperature over the duty cycle", sf_kind="limit",
+       source=ref("maxon", "'maxon DC motor: Key information', thermal data and R(T) with alpha_Cu = 0.0039/K"),
+       explain=("Peak winding temperature over the thermally periodic duty cycle against the motor's max. winding "
+                "temperature: a two-node network (winding-housing R_th1, tau_w; housing-ambient R_th2, tau_s) "
+                "heated by I^2 R(T), I = |T|/k_t + I_0, R(T) = R_25 (1 + 0.0039 (T - 25 degC)), the cycle repeated "
+                "until periodic (solved exactly). Class limit: the maker's limit already is the rating. DC motors "
+                "with thermal data only; steppers need the maker's temperature-rise data."))
+def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
+                                    ambient_temperature: QuantityLike = "25 degC",
+                                    component: str | None = None) -> CheckResult:
+    """Peak winding temperature of the periodic duty cycle against the max. winding temperature [1].
+
+    Demand and capacity are temperature rises above ambient (so that the utilisation is the share of
+    the allowed rise used); the temperatures themselves are in the notes and details.
+    """
+    m = _motor(demand, motor)
+    Rth1, Rth2, tw, ts, Tmax = thermal_data(m)
+    Ta = _celsius(ambient_temperature, "ambient_temperature")
+    if not Tmax > Ta:
+        raise InputError(f"{m.name}: ambient {Ta:g} degC is not below the max. winding temperature {Tmax:g} degC")
+    current = m.current_si(demand.motor_torque)
+    R25 = float(m.terminal_resistance.m_as("ohm"))
+    th = winding_temperature_cycle(demand.t, current, R25, Rth1, Rth2, tw, ts, ambient=Ta)
+    Irms = rms(demand.t, current, demand.cycle_time)
+    return CheckResult(
+        check="motor_winding_temperature", component=component or m.name,
+        demand=Q(th.peak_winding - Ta, "delta_degC"), capacity=Q(Tmax - Ta, "delta_degC"),
+        title="Motor winding temperature over the duty cycle",
+        formula=r"C_w \dot T_w = I^2 R_{25}(1+\alpha(T_w-25)) - \frac{T_w-T_h}{R_{th1}},\ "
+                r"C_s \dot T_h = \frac{T_w-T_h}{R_{th1}} - \frac{T_h-T_U}{R_{th2}}",
+        source=_SRC_MAXON,
+        inputs={"R_th1": m.thermal_resistance_winding_housing, "R_th2": m.thermal_resistance_housing_ambient,
+                "tau_w": m.thermal_time_constant_winding, "tau_s": m.thermal_time_constant_motor,
+                "ambient": Q(Ta, "degC"), "R_25": m.terminal_resistance},
+        notes=(f"peak winding temperature {th.peak_winding:.1f} degC (max. {Tmax:g} degC) at ambient {Ta:g} degC; "
+               f"housing {float(np.max(th.housing)):.1f} degC", f"RMS current {Irms:.3g} A, mean Joule loss "
+               f"{th.steady_mean_power:.3g} W over the periodic cycle (alpha_Cu = {ALPHA_CU}/K)",
+               "the duty cycle repeats without pause beyond the given cycle time; iron and friction losses "
+               "are not in the model (I_0 heats the winding as current)"),
+        load_case=f"whole cycle (peak at {_case(demand, th.peak_index)})",
+        details={"time": Q(th.t, "s"), "winding_temperature": Q(th.winding, "degC"),
+                 "housing_temperature": Q(th.housing, "degC")})
+
+
+@check("drive_regeneration", title="Bus voltage rise from regeneration", sf_kind="limit",
+       source=f"{_SRC_MAXON}; capacitor energy E = C (U^2 - U0^2)/2",
+       explain=("Energy a DC motor returns while braking or lowering (generating: T·omega < 0), P = -T·omega - I^2 R, "
+                "integrated over each braking interval; the supply's capacitance C absorbs it, U = sqrt(U0^2 + 2E/C), "
+                "against the driver's overvoltage limit. The braking-resistor energy and mean power needed when it "
+                "does not fit are in the notes. Conservative: friction and driver losses are not subtracted."))
+def check_drive_regeneration(demand: TorqueDemand, supply_voltage: QuantityLike, capacitance: QuantityLike,
+                             overvoltage_limit: QuantityLike, motor: Any = None, *,
+                             component: str | None = None) -> CheckResult:
+    """Bus voltage after the largest braking interval against the driver's overvoltage limit."""
+    m = _motor(demand, motor)
+    if m.kind != "dc":
+        raise InputError(f"{m.name}: the regeneration check needs a DC motor's k_t and R")
+    U0 = to_si(supply_voltage, "voltage", "supply_voltage")
+    Ulim = to_si(overvoltage_limit, "voltage", "overvoltage_limit")
+    Cq = Q(capacitance) if isinstance(capacitance, str) else capacitance
+    try:
+        C = float(Cq.to("F").magnitude)
+    except Exception as exc:
+        raise InputError(f"capacitance: expected a capacitance such as '1000 uF', got {capacitance!r}") from exc
+    if not (C > 0 and U0 > 0 and Ulim > U0):
+        raise InputError("regeneration: capacitance and supply voltage must be positive and the overvoltage limit "
+                         "above the supply voltage")
+    T, w, t = demand.motor_torque, demand.motor_speed, demand.t
+    kt, R = float(m.torque_constant.m_as("N*m/A")), float(m.terminal_resistance.m_as("ohm"))
+    P = np.clip(-T * w - (T / kt) ** 2 * R, 0.0, None)  # power back to the bus [W]
+    # energy of each contiguous generating interval (trapezoids between samples)
+    seg = 0.5 * (P[1:] + P[:-1]) * np.diff(t)
+    events, cur, worst_end = [], 0.0, 0
+    for j, e in enumerate(seg):
+        if e > 0:
+            cur += e
+        elif cur > 0:
+            events.append((cur, j))
+            cur = 0.0
+    if cur > 0:
+        events.append((cur, len(seg)))
+    E, worst_end = max(events, default=(0.0, 0))
+    U = float(np.sqrt(U0**2 + 2 * E / C))
+    absorb = 0.5 * C * (Ulim**2 - U0**2)
+    excess = sum(max(0.0, e - absorb) for e, _ in events)
+    notes = [f"largest braking interval returns {E:.4g} J; the capacitance absorbs {absorb:.4g} J up to the limit",
+             f"peak regenerated power {float(np.max(P)):.4g} W"]
+    if excess > 0:
+        notes.append(f"braking resistor (or shunt) needed: {excess:.4g} J per cycle above what C absorbs, mean "
+                     f"{excess / demand.cycle_time:.4g} W, peak {float(np.max(P)):.4g} W")
+    return CheckResult(
+        check="drive_regeneration", component=component or m.name, demand=Q(U, "V"), capacity=Q(Ulim, "V"),
+        title="Bus voltage rise from regeneration", formula=r"U = \sqrt{U_0^2 + 2E/C} \le U_{max}",
+        source=f"{_SRC_MAXON}; capacitor energy E = C (U^2 - U0^2)/2",
+        inputs={"U0": Q(U0, "V"), "C": Q(C * 1e6, "uF"), "U_max": Q(Ulim, "V")}, notes=tuple(notes),
+        load_case=_case(demand, min(worst_end, len(t) - 1)),
+        details={"time": Q(t, "s"), "regenerated_power": Q(P, "W")})
+
+
 def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver_current: Any = None,
                      margin: float | None = None, max_inertia_ratio: float | None = None) -> ResultSet:
     """Every motor-fit check that the data allow, as a :class:`ResultSet`.
@@ -364,6 +472,6 @@ def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver
 
 __all__ = ["check_motor_peak_torque", "check_motor_rms_torque", "check_motor_max_speed",
            "check_gearhead_continuous_torque", "check_gearhead_intermittent_torque", "check_gearhead_input_speed",
-           "check_inertia_ratio",
+           "check_inertia_ratio", "check_motor_winding_temperature", "check_drive_regeneration",
            "check_motor_supply_voltage", "check_driver_current", "motor_fit_checks", "STEPPER_MARGIN",
            "INERTIA_RATIO_LIMIT"]

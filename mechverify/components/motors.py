@@ -21,6 +21,12 @@ References
 2. maxon support article "Motor constants" (k_n and k_M inverse of each other in SI units).
 3. Oriental Motor, *Technical Reference: Motor Sizing Calculations*: a stepper's required torque
    is compared with its pull-out torque at the operating speed with a safety factor of 1.5-2.
+4. maxon motor ag, *maxon DC motor: Key information* (thermal data): thermal resistances
+   winding-housing R_th1 and housing-ambient R_th2, thermal time constants of the winding τ_w and
+   of the motor τ_s, max. winding temperature; winding resistance rises with temperature,
+   R(T) = R_25·(1 + α_Cu·(T − 25 °C)), α_Cu = 0.0039 K⁻¹; steady state T_W − T_U = (R_th1 + R_th2)·R(T_W)·I².
+   The two-node network (capacities C_w = τ_w/R_th1, C_s = τ_s/R_th2) is the lumped model those data
+   describe; maxon's own duty-cycle formulas are not transcribed here.
 """
 
 from __future__ import annotations
@@ -115,6 +121,8 @@ class DCMotor:
     thermal_resistance_housing_ambient: Any = None
     thermal_resistance_winding_housing: Any = None
     max_winding_temperature: Any = None
+    thermal_time_constant_winding: Any = None
+    thermal_time_constant_motor: Any = None
     datasheet_tolerance: float = 0.05
     source: str = ""
     notes: tuple[str, ...] = ()
@@ -129,7 +137,8 @@ class DCMotor:
                 "terminal_inductance": "inductance", "torque_constant": "torque_constant",
                 "speed_constant": "speed_constant", "mechanical_time_constant": "time", "rotor_inertia": "inertia",
                 "max_speed": "angular_velocity", "thermal_resistance_housing_ambient": "thermal_resistance",
-                "thermal_resistance_winding_housing": "thermal_resistance", "max_winding_temperature": "temperature"}
+                "thermal_resistance_winding_housing": "thermal_resistance", "max_winding_temperature": "temperature",
+                "thermal_time_constant_winding": "time", "thermal_time_constant_motor": "time"}
         for f, d in dims.items():
             allow_zero = f in ("no_load_current",)
             positive = f != "max_winding_temperature"
@@ -494,6 +503,131 @@ class GearMotor:
 
 Motor = DCMotor | StepperMotor | HobbyServo | GearMotor
 
+
+# ============================================================================ thermal model
+#: temperature coefficient of copper resistance [1/K] ([4])
+ALPHA_CU = 0.0039
+#: the temperature at which datasheet resistances are given [°C] ([4])
+T_REF = 25.0
+THERMAL_FIELDS = ("thermal_resistance_winding_housing", "thermal_resistance_housing_ambient",
+                  "thermal_time_constant_winding", "thermal_time_constant_motor", "max_winding_temperature")
+
+
+@dataclass(frozen=True)
+class ThermalResult:
+    """Thermally periodic winding and housing temperatures over one duty cycle [°C]."""
+
+    t: np.ndarray
+    winding: np.ndarray
+    housing: np.ndarray
+    peak_winding: float
+    peak_index: int
+    steady_mean_power: float  # mean Joule loss over the periodic cycle [W]
+
+
+def thermal_data(m: Any) -> tuple[float, float, float, float, float]:
+    """(R_th1 [K/W], R_th2 [K/W], τ_w [s], τ_s [s], T_max [°C]) of a DC motor, or :class:`InputError`
+    naming the missing fields (and, for a stepper, saying the check is not available)."""
+    if getattr(m, "kind", "") == "stepper":
+        raise InputError(f"{m.name}: winding temperature not available for steppers without the maker's "
+                         "temperature-rise data (a stepper draws its rated current whatever the torque)")
+    if getattr(m, "kind", "") != "dc":
+        raise InputError(f"{getattr(m, 'name', m)}: the winding-temperature model needs a DC motor's resistance and "
+                         f"thermal data ({', '.join(THERMAL_FIELDS)})")
+    missing = [f for f in THERMAL_FIELDS if getattr(m, f) is None]
+    if missing:
+        raise InputError(f"motor {m.name!r}: no thermal data for the winding-temperature check; give "
+                         + ", ".join(missing) + " (maxon datasheet lines 'thermal resistance housing-ambient', "
+                         "'winding-housing', 'thermal time constant winding', 'motor', 'max. winding temperature')")
+    return (_si(m.thermal_resistance_winding_housing), _si(m.thermal_resistance_housing_ambient),
+            _si(m.thermal_time_constant_winding), _si(m.thermal_time_constant_motor),
+            _si(m.max_winding_temperature) - 273.15)
+
+
+def steady_winding_temperature(R25: float, current: float, Rth1: float, Rth2: float, ambient: float = 25.0,
+                               alpha: float = ALPHA_CU) -> float:
+    """Steady winding temperature [°C] at constant current I [A] ([4]):
+    T_W = (T_U + R_th·R_25·I²·(1 − α·25 °C)) / (1 − α·R_th·R_25·I²), R_th = R_th1 + R_th2.
+    Thermal runaway (denominator <= 0) raises :class:`ValidityError`."""
+    from mechverify.errors import ValidityError
+    k = (Rth1 + Rth2) * R25 * current**2
+    den = 1 - alpha * k
+    if den <= 0:
+        raise ValidityError(f"thermal runaway at {current:g} A: the winding's loss rises faster with temperature "
+                            "than the motor can shed it")
+    return (ambient + k * (1 - alpha * T_REF)) / den
+
+
+def winding_temperature_cycle(t: Any, current: Any, R25: float, Rth1: float, Rth2: float, tau_w: float,
+                              tau_s: float, ambient: float = 25.0, alpha: float = ALPHA_CU) -> ThermalResult:
+    """Two-node thermal model over one duty cycle repeated until periodic ([4]); SI floats/arrays.
+
+    C_w dT_w/dt = I²·R_25·(1 + α(T_w − 25)) − (T_w − T_h)/R_th1,
+    C_s dT_h/dt = (T_w − T_h)/R_th1 − (T_h − T_U)/R_th2, with C_w = τ_w/R_th1, C_s = τ_s/R_th2.
+    ``current`` at the times ``t`` (one cycle; I² is taken as the mean of its two ends on each interval).
+    The system is linear in the temperatures, so each interval is stepped exactly with a matrix
+    exponential and the periodic state x* = Φx* + ψ is solved directly (the limit of repeating the cycle,
+    without the thousands of cycles a long motor time constant would take). Thermal runaway (no periodic
+    state: spectral radius of Φ >= 1) raises :class:`ValidityError`.
+    """
+    from scipy.linalg import expm
+
+    from mechverify.errors import ValidityError
+    t = np.asarray(t, float)
+    i2 = np.asarray(current, float) ** 2
+    if t.ndim != 1 or t.shape != i2.shape or len(t) < 2 or np.any(np.diff(t) < 0):
+        raise InputError("thermal model: times must increase and match the currents")
+    if min(Rth1, Rth2, tau_w, tau_s, R25) <= 0:
+        raise InputError("thermal model: resistances and time constants must be positive")
+    Cw, Cs = tau_w / Rth1, tau_s / Rth2
+    steps = []
+    cache: dict[tuple[float, float], np.ndarray] = {}  # equal intervals at equal current share one exponential
+    Phi, psi = np.eye(2), np.zeros(2)
+    for j in range(len(t) - 1):
+        dt = float(t[j + 1] - t[j])
+        k = float(0.5 * (i2[j] + i2[j + 1]) * R25)
+        E = cache.get((dt, k))
+        if E is None:
+            M = np.array([[(k * alpha - 1 / Rth1) / Cw, 1 / (Rth1 * Cw), k * (1 - alpha * T_REF) / Cw],
+                          [1 / (Rth1 * Cs), -(1 / Rth1 + 1 / Rth2) / Cs, ambient / (Rth2 * Cs)],
+                          [0.0, 0.0, 0.0]])
+            E = cache[(dt, k)] = expm(M * dt) if dt > 0 else np.eye(3)
+        steps.append(E)
+        Phi, psi = E[:2, :2] @ Phi, E[:2, :2] @ psi + E[:2, 2]
+    if np.max(np.abs(np.linalg.eigvals(Phi))) >= 1 - 1e-15:
+        raise ValidityError("thermal runaway: no thermally periodic state for this duty cycle (the winding's loss "
+                            "rises faster with temperature than the motor sheds it)")
+    x = np.linalg.solve(np.eye(2) - Phi, psi)
+    out = np.empty((len(t), 2))
+    out[0] = x
+    for j, E in enumerate(steps):
+        x = E[:2, :2] @ x + E[:2, 2]
+        out[j + 1] = x
+    w = out[:, 0]
+    i = int(np.argmax(w))
+    span = t[-1] - t[0]
+    p = i2 * R25 * (1 + alpha * (w - T_REF))
+    mean_p = float(np.trapezoid(p, t) / span) if span > 0 else float(p[0])
+    return ThermalResult(t=t, winding=w, housing=out[:, 1], peak_winding=float(w[i]), peak_index=i,
+                         steady_mean_power=mean_p)
+
+
+def max_efficiency(no_load_current: float, stall_current: float) -> float:
+    """Maximum efficiency η_max = (1 − √(I_0/I_A))² of a DC motor ([1]; I_0 no-load, I_A stall current)."""
+    if not 0 <= no_load_current < stall_current:
+        raise InputError("max efficiency: need 0 <= I0 < I_A")
+    return (1 - math.sqrt(no_load_current / stall_current)) ** 2
+
+
+def operating_efficiency(m: DCMotor, torque: Any, speed: Any) -> np.ndarray:
+    """Efficiency at operating points η = P_mech/P_el = |ω·M| / (U·I), motoring quadrant, with I = |M|/k_t + I_0
+    and U = R·I + |ω|/k_n ([1]); 0 where no power is delivered. Arrays in SI."""
+    M, w = np.abs(np.asarray(torque, float)), np.abs(np.asarray(speed, float))
+    I = m.current_si(M)
+    U = m.voltage_si(M, w)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(U * I > 0, M * w / (U * I), 0.0)
+
 # ============================================================================ catalogue
 _TYPES: dict[str, type] = {"dc": DCMotor, "stepper": StepperMotor, "servo": HobbyServo, "gearmotor": GearMotor}
 
@@ -543,4 +677,5 @@ def motor_names() -> list[str]:
 
 
 __all__ = ["DCMotor", "StepperMotor", "HobbyServo", "GearMotor", "Motor", "motor", "motor_names",
-           "motor_from_dict"]
+           "motor_from_dict", "ALPHA_CU", "THERMAL_FIELDS", "ThermalResult", "thermal_data",
+           "steady_winding_temperature", "winding_temperature_cycle", "max_efficiency", "operating_efficiency"]
