@@ -81,6 +81,8 @@ def _section(shaft: s.Shaft, a: ShaftAnalysis, name: str, x: float, D: float, bo
     Ma, Mm = (M, 0.0) if shaft.rotating else (0.0, M)
     Ta, Tm = shaft.torque_alternating_fraction * T, T
     sa, sm, smax = de_stresses(Ma, Mm, Ta, Tm, D, Kf, Kfs, bore=bore, N=N)
+    if sa < 1e-9 * max(sm, smax):  # round-off of a section the loads do not bend
+        sa = 0.0
     el = corrected_endurance_limit(Q(Sut, "Pa"), finish=shaft.finish, d=Q(D, "m"), loading="bending",
                                    reliability=shaft.reliability)
     return SectionStress(name, x, D, Kt, Kts, Kf, Kfs, src, M, T, N, sa, sm, smax, el.Se.m_as("Pa"),
@@ -102,6 +104,17 @@ def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
         out.append(_section(shaft, a, f"max moment@{xm * 1e3:.4g}", xm, seg.diameter, seg.bore, 1.0, 1.0, 0.0,
                             "plain section"))
     return out
+
+
+def layout(shaft: s.Shaft, a: ShaftAnalysis) -> dict[str, object]:
+    """What the report figure needs (SI floats): segments, features, supports, loads and the diagrams."""
+    b = shaft.boundaries
+    return {"segments": [(b[i], b[i + 1], g.diameter, g.bore) for i, g in enumerate(shaft.segments)],
+            "features": [(f.x, f.kind, f.name) for f in shaft.features],
+            "supports": [(sp.x, sp.name) for sp in shaft.supports],
+            "loads": [(ld.x, ld.kind, ld.name) for ld in shaft.loads],
+            "x": a.x.tolist(), "My": a.My.tolist(), "Mz": a.Mz.tolist(), "M": a.M.tolist(), "T": a.T.tolist(),
+            "deflection": a.deflection.tolist()}
 
 
 def _strengths(shaft: s.Shaft) -> tuple[float, float]:
@@ -144,7 +157,7 @@ def check_shaft_fatigue(shaft: s.Shaft, a: ShaftAnalysis, *, criterion: str = "g
                "Marin factors: " + ", ".join(f"{k}={v:.3f}" for k, v in g.factors.items())),
         load_case=load_case,
         details={"sections": [{"name": sec.name, "x": sec.x, "n": ns[i], "Kf": sec.Kf, "Kfs": sec.Kfs}
-                              for i, sec in enumerate(secs)], "criterion": criterion})
+                              for i, sec in enumerate(secs)], "criterion": criterion, **layout(shaft, a)})
 
 
 @check("shaft_static_yield", title="Shaft first-cycle yield (von Mises, peak loads)", sf_kind="static",
