@@ -17,9 +17,14 @@ from scipy.integrate import solve_ivp
 
 from mechverify.checks.motors import check_drive_regeneration, check_motor_winding_temperature
 from mechverify.components.motors import (
+    StepperMotor,
+    microstep_incremental_torque,
     motor,
     operating_efficiency,
     steady_winding_temperature,
+    stepper_datasheet_relations,
+    stepper_datasheet_warnings,
+    stepper_resolution,
     winding_temperature_cycle,
 )
 from mechverify.components.transmissions import DirectDrive
@@ -146,3 +151,32 @@ def test_regeneration_hand_calculation():
         check_drive_regeneration(d, "6 V", "1000 uF", "5 V")
     with pytest.raises(InputError, match="DC motor"):
         check_drive_regeneration(_hold_demand(motor("stepper 004")), "24 V", "1000 uF", "30 V")
+
+
+# ------------------------------------------------------------------------------ steppers
+def test_stepper_datasheet_u_equals_i_r():
+    """SureStep STP-42D3018 as transcribed in reference project 000: 8.8 V, 0.64 A, 11.6 ohm; hand calculation
+    0.64*11.6 = 7.42 V, so the transcribed 8.8 V is +18.5 % off (reported, not raised: the catalogue row
+    stays usable)."""
+    m = motor("STP-42D3018")
+    rel = stepper_datasheet_relations(m)["rated voltage = rated current * phase resistance"]
+    assert rel[1] == pytest.approx(0.64 * 11.6)
+    w = stepper_datasheet_warnings(m)
+    assert len(w) == 1 and "+18.5 %" in w[0]
+    ok = StepperMotor("x", step_angle="1.8 deg", holding_torque="0.5 N*m", rated_current="1 A",
+                      phase_resistance="3 ohm", rated_voltage="3.05 V")
+    assert stepper_datasheet_warnings(ok) == ()
+
+
+def test_microstep_torque_and_resolution():
+    """sin(90 deg/mu): 70.71 %, 38.27 %, 19.51 %, 9.80 %, 4.91 % for mu = 2..32 (the table of the Micromo /
+    MachineDesign article, read here from a forum copy of it). Resolution: 1.8 deg / (16 * 5) = 0.0225 deg;
+    through a 2 mm lead screw 0.0225/360 * 2 mm = 0.125 um (hand calculation)."""
+    for mu, pct in ((1, 100.0), (2, 70.71), (4, 38.27), (8, 19.51), (16, 9.80), (32, 4.91)):
+        assert microstep_incremental_torque("1 N*m", mu).m_as("N*m") * 100 == pytest.approx(pct, abs=0.006)
+    assert stepper_resolution("1.8 deg", microsteps=16, ratio=5).m_as("deg") == pytest.approx(0.0225)
+    assert stepper_resolution("1.8 deg", microsteps=16, ratio=5, lead="2 mm").m_as("um") == pytest.approx(0.125)
+    with pytest.raises(InputError):
+        microstep_incremental_torque("1 N*m", 0)
+    with pytest.raises(InputError):
+        stepper_resolution("1.8 deg", ratio=0)

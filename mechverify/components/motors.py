@@ -27,6 +27,8 @@ References
    R(T) = R_25·(1 + α_Cu·(T − 25 °C)), α_Cu = 0.0039 K⁻¹; steady state T_W − T_U = (R_th1 + R_th2)·R(T_W)·I².
    The two-node network (capacities C_w = τ_w/R_th1, C_s = τ_s/R_th2) is the lumped model those data
    describe; maxon's own duty-cycle formulas are not transcribed here.
+5. Micromo / MachineDesign, "Microstepping myths and realities": the incremental torque of one
+   microstep of a two-phase stepper, T_inc = T_H·sin(90°/μ) (μ microsteps per full step).
 """
 
 from __future__ import annotations
@@ -612,6 +614,56 @@ def winding_temperature_cycle(t: Any, current: Any, R25: float, Rth1: float, Rth
                          steady_mean_power=mean_p)
 
 
+# ============================================================================ stepper datasheet and resolution
+def stepper_datasheet_relations(m: StepperMotor) -> dict[str, tuple[float, float]]:
+    """Redundant stepper datasheet values as (datasheet, implied) pairs, SI: U = I·R per phase (for a
+    voltage-rated winding), and the pull-out curve's low-speed end not above the holding torque."""
+    out: dict[str, tuple[float, float]] = {}
+    U, I, R = _si(m.rated_voltage), _si(m.rated_current), _si(m.phase_resistance)
+    if U and I and R:
+        out["rated voltage = rated current * phase resistance"] = (U, I * R)
+    if m.has_curve:
+        out["holding torque >= pull-out torque at the lowest speed"] = (_si(m.holding_torque),
+                                                                        float(m.pullout_torques.magnitude[0]))
+    return out
+
+
+def stepper_datasheet_warnings(m: StepperMotor, tolerance: float = 0.05) -> tuple[str, ...]:
+    """The relations of :func:`stepper_datasheet_relations` that the datasheet breaks (beyond ``tolerance``)."""
+    out = []
+    for rel, (given, implied) in stepper_datasheet_relations(m).items():
+        if rel.startswith("holding"):
+            if given < implied * (1 - 1e-9):
+                out.append(f"{m.name}: {rel}: holding {given:.4g} N*m < pull-out {implied:.4g} N*m")
+        elif abs(given - implied) > tolerance * abs(implied):
+            out.append(f"{m.name}: {rel}: datasheet {given:.4g}, implied {implied:.4g} (SI), off by "
+                       f"{100 * (given / implied - 1):+.1f} % (a value from another winding or connection?)")
+    return tuple(out)
+
+
+def microstep_incremental_torque(holding_torque: QuantityLike, microsteps: int) -> pint.Quantity:
+    """Torque that one microstep can move against: T_inc = T_H·sin(90°/μ) ([5]); μ >= 1 an integer."""
+    if not isinstance(microsteps, int) or isinstance(microsteps, bool) or microsteps < 1:
+        raise InputError(f"microsteps must be a whole number >= 1, got {microsteps!r}")
+    return from_si(to_si(holding_torque, "torque", "holding_torque") * math.sin(math.pi / (2 * microsteps)),
+                   "torque")
+
+
+def stepper_resolution(step_angle: QuantityLike, *, microsteps: int = 1, ratio: float = 1.0,
+                       lead: QuantityLike | None = None) -> pint.Quantity:
+    """Output increment of one (micro)step: step angle / (μ·ratio), and × lead/(2π) through a screw of ``lead``
+    (an angle without a screw, a length with one). ``ratio`` is the gear reduction (input turns per output turn)."""
+    a = to_si(step_angle, "angle", "step_angle")
+    if not a > 0 or not float(ratio) > 0:
+        raise InputError("step angle and ratio must be positive")
+    if not isinstance(microsteps, int) or microsteps < 1:
+        raise InputError(f"microsteps must be a whole number >= 1, got {microsteps!r}")
+    out = a / (microsteps * float(ratio))
+    if lead is None:
+        return from_si(out, "angle").to("deg")
+    return from_si(out / (2 * math.pi) * to_si(lead, "length", "lead"), "length").to("mm")
+
+
 def max_efficiency(no_load_current: float, stall_current: float) -> float:
     """Maximum efficiency η_max = (1 − √(I_0/I_A))² of a DC motor ([1]; I_0 no-load, I_A stall current)."""
     if not 0 <= no_load_current < stall_current:
@@ -678,4 +730,6 @@ def motor_names() -> list[str]:
 
 __all__ = ["DCMotor", "StepperMotor", "HobbyServo", "GearMotor", "Motor", "motor", "motor_names",
            "motor_from_dict", "ALPHA_CU", "THERMAL_FIELDS", "ThermalResult", "thermal_data",
-           "steady_winding_temperature", "winding_temperature_cycle", "max_efficiency", "operating_efficiency"]
+           "steady_winding_temperature", "winding_temperature_cycle", "max_efficiency", "operating_efficiency",
+           "stepper_datasheet_relations", "stepper_datasheet_warnings", "microstep_incremental_torque",
+           "stepper_resolution"]
