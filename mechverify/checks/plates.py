@@ -167,7 +167,7 @@ def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component
         inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
                 "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": plate.material.require("E").to("GPa"),
                 "nu": plate.material.require("nu")},
-        notes=tuple(all_notes), warnings=(*model.warnings(), *_singular_warning(model, res, node)),
+        notes=tuple(all_notes), warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings),
         load_case=load_case, details={"location": Q(xy, "m").to("mm"), "node": node})
 
 
@@ -190,7 +190,7 @@ def check_plate_deflection_fea(model: pl.PlateModel, res: FieldResults, limit: A
                          f"{nearest_feature(model, res.points[k, :2])}",
                "span for a fractional limit: the 'span' field, else the shorter side of the plate's bounding box",
                *notes, *_load_notes(model, res)),
-        details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
+        warnings=(*r.warnings, *res.warnings), details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
 
 
 __all__ = ["check_plate_stress_roark", "check_plate_deflection_roark", "check_plate_stress_fea",
