@@ -201,3 +201,15 @@ def test_design_modified_life_skipped_without_lubricant_and_errors(tmp_path):
         _load(tmp_path, "duty_cycle = { run = 1, stop = 1 }").verify()
     with pytest.raises(DesignFileError, match="viscosity_100"):
         _load(tmp_path, 'iso_vg = 68\noperating_temperature = "70 degC"')
+
+
+def test_select_bearing_smallest_meeting_life():
+    """Fr = 1 kN, 1000 r/min, 5000 h, d >= 20 mm: required C = 1 kN * (5000*60*1000/1e6)^(1/3) = 6.69 kN (hand
+    calculation); of the d >= 20 mm rows only 61804/61805 fall short (4.03, 4.36 kN), and the 6004
+    (D = 42 mm, C = 9.95 kN, catalogue row not verified) is the smallest that passes."""
+    from mechverify.components.bearings import select_bearing
+    found = select_bearing("1 kN", "0 N", "1000 rpm", "5000 h", min_bore="20 mm")
+    assert found[0].designation == "6004"
+    assert {b.designation for b in found} == {"6004", "6005", "6204", "6205"}
+    assert select_bearing("1 kN", "0 N", "1000 rpm", "5000 h", series="62", min_bore="20 mm")[0].designation == "6204"
+    assert select_bearing("50 kN", "0 N", "1000 rpm", "5000 h") == []

@@ -18,9 +18,11 @@ from scipy.integrate import solve_ivp
 from mechverify.checks.motors import check_drive_regeneration, check_motor_winding_temperature
 from mechverify.components.motors import (
     StepperMotor,
+    inertia_matching_ratio,
     microstep_incremental_torque,
     motor,
     operating_efficiency,
+    optimal_ratio,
     steady_winding_temperature,
     stepper_datasheet_relations,
     stepper_datasheet_warnings,
@@ -180,3 +182,21 @@ def test_microstep_torque_and_resolution():
         microstep_incremental_torque("1 N*m", 0)
     with pytest.raises(InputError):
         stepper_resolution("1.8 deg", ratio=0)
+
+
+def test_inertia_matching_and_optimal_ratio():
+    """Pure inertia: T_m = (J_M i + J_L/i) alpha_out is least at i = sqrt(J_L/J_M) (hand derivation):
+    J_L = 0.01, J_M = 1e-4 kg m^2 -> i = 10. With a constant output torque T_L added the RMS of the cycle
+    (accelerate then hold, equal times) is minimised numerically and must beat the ratios next to it."""
+    assert inertia_matching_ratio("0.01 kg*m**2", "1e-4 kg*m**2") == pytest.approx(10.0)
+    JM, JL, a = 1e-4, 0.01, 50.0
+    i, T = optimal_ratio(lambda r: (JM * r + JL / r) * a, 1.0, 100.0)
+    assert i == pytest.approx(10.0, rel=1e-5) and T == pytest.approx(2 * math.sqrt(JM * JL) * a, rel=1e-9)
+
+    def cycle_rms(r, TL=2.0):
+        return math.sqrt(0.5 * ((JM * r + JL / r) * a + TL / r) ** 2 + 0.5 * (TL / r) ** 2)
+
+    i2, T2 = optimal_ratio(cycle_rms, 1.0, 1000.0)
+    assert T2 <= cycle_rms(i2 * 1.01) and T2 <= cycle_rms(i2 / 1.01) and i2 > 10
+    with pytest.raises(InputError):
+        inertia_matching_ratio("0 kg*m**2", "1e-4 kg*m**2")

@@ -476,6 +476,36 @@ def modified_rating_life(b: BallBearing, P: QuantityLike, speed: QuantityLike, l
                         nu=nu, nu1=nu1, eC=eC, Pu=b.Pu, P=Q(p, "N"), warnings=warns)
 
 
+def select_bearing(Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike, required_life: QuantityLike, *,
+                   required_s0: float = 1.0, reliability: float = 0.9, min_bore: QuantityLike | None = None,
+                   series: str | None = None, lubrication: Lubrication | None = None) -> list[BallBearing]:
+    """Catalogue bearings that meet the life (L10h, or L_nmh with ``lubrication``), the static safety s0 and the
+    limiting speed for the loads, smallest first (by outside diameter, then width): ``[0]`` is the selection.
+
+    ``series`` keeps designations starting with it ("62", "60"); ``min_bore`` keeps d >= it.
+    """
+    req_h = to_si(required_life, "time", "required_life") / 3600
+    n = abs(to_si(speed, "angular_velocity", "speed"))
+    dmin = to_si(min_bore, "length", "min_bore") if min_bore is not None else 0.0
+    out = []
+    for b in bearing_catalogue():
+        if (series and not b.designation.startswith(series)) or to_si(b.d, "length") < dmin - 1e-12:
+            continue
+        if n > to_si(b.limiting_speed, "angular_velocity") or b.static_safety(Fr, Fa) < required_s0:
+            continue
+        try:
+            P = b.equivalent_load(Fr, Fa).P
+        except ValidityError:
+            continue
+        if lubrication is not None:
+            L = modified_rating_life(b, P, speed, lubrication, reliability).L_rev
+        else:
+            L = reliability_factor(reliability) * basic_rating_life(b.C, P)
+        if life_hours(L, speed).m_as("hour") >= req_h:
+            out.append(b)
+    return sorted(out, key=lambda b: (b.D.m_as("mm"), b.B.m_as("mm"), b.d.m_as("mm")))
+
+
 # ----------------------------------------------------------------------------------- duty cycles
 @dataclass(frozen=True)
 class DutyCycleLoad:
@@ -585,4 +615,4 @@ __all__ = ["BallBearing", "EquivalentLoad", "PlainBushing", "bearing", "bearing_
            "iso281_factors", "equivalent_dynamic_load", "basic_rating_life", "life_hours", "reliability_factor",
            "equivalent_static_load", "bushing_pressure", "sliding_speed", "rated_viscosity", "viscosity_at_temperature",
            "iso_vg_viscosity", "contamination_factor", "a_iso_ball", "Lubrication", "ModifiedLife", "mean_diameter",
-           "modified_rating_life", "DutyCycleLoad", "duty_cycle_load", "CONTAMINATION_LEVELS"]
+           "modified_rating_life", "DutyCycleLoad", "duty_cycle_load", "CONTAMINATION_LEVELS", "select_bearing"]

@@ -664,6 +664,26 @@ def stepper_resolution(step_angle: QuantityLike, *, microsteps: int = 1, ratio: 
     return from_si(out / (2 * math.pi) * to_si(lead, "length", "lead"), "length").to("mm")
 
 
+def inertia_matching_ratio(load_inertia: QuantityLike, rotor_inertia: QuantityLike) -> float:
+    """Gear ratio i = √(J_L/J_M) that minimises the motor torque J_M·i·α + J_L·α/i of accelerating a pure
+    inertia J_L (at the output) with a rotor J_M: d/di = 0 (hand derivation; the inertia-matching rule)."""
+    JL, JM = to_si(load_inertia, "inertia", "load_inertia"), to_si(rotor_inertia, "inertia", "rotor_inertia")
+    if not (JL > 0 and JM > 0):
+        raise InputError("inertia matching: both inertias must be positive")
+    return math.sqrt(JL / JM)
+
+
+def optimal_ratio(rms_torque_of_ratio: Any, low: float, high: float) -> tuple[float, float]:
+    """(ratio, RMS motor torque) minimising ``rms_torque_of_ratio(i)`` [N·m] over low <= i <= high (bounded
+    scalar search; the caller builds the drive train and profile demand for each ratio)."""
+    from scipy.optimize import minimize_scalar
+    if not 0 < low < high:
+        raise InputError("optimal ratio: need 0 < low < high")
+    res = minimize_scalar(lambda x: float(rms_torque_of_ratio(math.exp(x))), bounds=(math.log(low), math.log(high)),
+                          method="bounded", options={"xatol": 1e-8})
+    return math.exp(res.x), float(res.fun)
+
+
 def max_efficiency(no_load_current: float, stall_current: float) -> float:
     """Maximum efficiency η_max = (1 − √(I_0/I_A))² of a DC motor ([1]; I_0 no-load, I_A stall current)."""
     if not 0 <= no_load_current < stall_current:
@@ -732,4 +752,4 @@ __all__ = ["DCMotor", "StepperMotor", "HobbyServo", "GearMotor", "Motor", "motor
            "motor_from_dict", "ALPHA_CU", "THERMAL_FIELDS", "ThermalResult", "thermal_data",
            "steady_winding_temperature", "winding_temperature_cycle", "max_efficiency", "operating_efficiency",
            "stepper_datasheet_relations", "stepper_datasheet_warnings", "microstep_incremental_torque",
-           "stepper_resolution"]
+           "stepper_resolution", "inertia_matching_ratio", "optimal_ratio"]
