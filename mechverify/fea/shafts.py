@@ -115,7 +115,7 @@ def _stations(shaft: Shaft, extra: list[float] = ()) -> list[float]:  # type: ig
     return out
 
 
-def _frame(shaft: Shaft, stations: list[float]) -> Any:
+def _frame(shaft: Shaft, stations: list[float], theory: str = "timoshenko") -> Any:
     from mechverify.fea.frame import Frame
 
     members = []
@@ -140,7 +140,7 @@ def _frame(shaft: Shaft, stations: list[float]) -> Any:
             sups.append(Support(Q([s.x, 0, 0], "m"), kind="custom", hold=tuple(hold), springs=springs))
         else:
             sups.append(Support(Q([s.x, 0, 0], "m"), kind="spring", springs=springs))
-    return Frame(None, members, sups, name=shaft.name)
+    return Frame(None, members, sups, theory=theory, name=shaft.name)
 
 
 def _point_loads(shaft: Shaft, loads: Any = None) -> list[PointLoad]:
@@ -153,16 +153,17 @@ def _wrap(shaft: Shaft, exc: Exception) -> Exception:
     return type(exc)(f"shaft {shaft.name}: {exc}")
 
 
-def analyse(shaft: Shaft) -> ShaftAnalysis:
+def analyse(shaft: Shaft, theory: str = "timoshenko") -> ShaftAnalysis:
     """Static analysis of the shaft under its loads (weights of given masses included; the shaft's own weight
-    is neglected, as in Shigley's examples).
+    is neglected, as in Shigley's examples). ``theory``: "timoshenko" (default) or "euler" (for comparisons
+    with Euler-Bernoulli hand calculations).
 
     Raises:
         InputError: the bearings do not hold the shaft (the frame names the free motion).
     """
     st = _stations(shaft)
     try:
-        fr = _frame(shaft, st)
+        fr = _frame(shaft, st, theory)
         res = fr.solve(_point_loads(shaft), name="shaft")
     except (InputError, ModelError) as exc:  # the frame names the free motion of an unsupported shaft
         raise _wrap(shaft, exc) from None
@@ -217,7 +218,7 @@ def lumped_masses(shaft: Shaft) -> list[tuple[float, float]]:
     return out
 
 
-def critical_speed(shaft: Shaft) -> CriticalSpeed:
+def critical_speed(shaft: Shaft, theory: str = "timoshenko") -> CriticalSpeed:
     """First lateral critical speed from the lumped masses: Rayleigh with the static deflections under all
     the weights (taken along -z; an overhung mass deflecting upwards counts with |y|, as Shigley advises by
     reversing its weight), Dunkerley with the self-influence coefficients delta_ii (unit force at each mass),
@@ -237,7 +238,7 @@ def critical_speed(shaft: Shaft) -> CriticalSpeed:
     for i, (x, _) in enumerate(lm):
         cases[f"unit{i}"] = _point_loads(shaft, [ShaftLoad("u", x, (0.0, 0.0, -1.0))])
     try:
-        fa = _frame(shaft, st).analyse(cases)
+        fa = _frame(shaft, st, theory).analyse(cases)
     except (InputError, ModelError) as exc:
         raise _wrap(shaft, exc) from None
     y = [abs(float(fa["weights"].displacement(Q([x, 0, 0], "m")).m_as("m")[2])) for x, _ in lm]

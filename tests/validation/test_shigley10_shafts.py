@@ -106,3 +106,71 @@ def test_single_mass_rayleigh_equals_dunkerley_equals_sqrt_k_over_m() -> None:
     cs = critical_speed(sh)
     assert cs.rayleigh == pytest.approx(math.sqrt(k / 20.0), rel=0.005)
     assert cs.dunkerley == pytest.approx(cs.rayleigh, rel=1e-9)
+
+
+def _inch_shaft(masses: tuple[tuple[float, float], ...], d_in: float = 1.0, L_in: float = 31.0) -> Shaft:
+    inch, lbf = 0.0254, 4.4482216
+    m = get("AISI 1045 CD").with_(E=Q(30e6, "psi"))
+    return Shaft("ex75", (Segment(L_in * inch, d_in * inch),), m, (Support("A", 0.0), Support("B", L_in * inch)),
+                 tuple(force_load(f"w{i}", x * inch, mass=w * lbf / 9.80665) for i, (x, w) in enumerate(masses)),
+                 shaft_mass=False)
+
+
+def test_example_7_5_equivalent_centre_loads() -> None:
+    """Shigley Ex. 7-5 (printed on p. 386 of the 9th ed. reproduction found by the search tool; the 10th ed. has
+    the same example): 1 in steel shaft, 31 in span, gears of 35 lbf at 7 in and 55 lbf at 20 in; printed
+    I = 0.04909 in^4, 6 E I l = 0.2739e9 lbf in^3 and the equivalent centre loads of Eq. 7-33,
+    w_1c = w_1 delta_11/delta_cc = 17.1 lbf, w_2c = 46.1 lbf. The code's influence coefficients (frame FEA,
+    Euler-Bernoulli as in the book) reproduce the printed 3-digit values."""
+    inch, lbf = 0.0254, 4.4482216
+
+    def delta(x_in: float) -> float:  # self-influence at x [m/N] from the code (critical_speed's unit cases)
+        return critical_speed(_inch_shaft(((x_in, 1.0),)), theory="euler").influence[0]
+
+    d11, d22, dcc = delta(7.0), delta(20.0), delta(15.5)
+    assert 35 * d11 / dcc == pytest.approx(17.1, abs=0.05)
+    assert 55 * d22 / dcc == pytest.approx(46.1, abs=0.05)
+    # the printed stiffness product, converted: 6 E I l [lbf in^3]
+    assert 6 * 30e6 * math.pi / 64 * 31 == pytest.approx(0.2739e9, rel=5e-4)
+    # Eq. 7-24 (Table A-9-6) by hand for delta_11 [in/lbf] against the code
+    b, x, L = 24.0, 7.0, 31.0  # unit load at a = 7 in, b = l - a
+    d11_hand = b * x * (L**2 - b**2 - x**2) / (6 * 30e6 * math.pi / 64 * L)
+    assert d11 == pytest.approx(d11_hand * inch / lbf, rel=1e-6)
+
+
+def test_example_7_5_rayleigh_and_dunkerley_hand_calculation() -> None:
+    """Ex. 7-5 parts (b) and (d) as hand calculations from Eqs. 7-23, 7-24 and 7-32 (the printed omegas were not
+    found): influence coefficients by Table A-9-6, y_i = sum w_j delta_ij, omega = sqrt(g sum w y / sum w y^2),
+    1/omega^2 = sum w_i delta_ii / g. The code (Euler) must agree to 1e-6."""
+    E, I, L, g = 30e6, math.pi / 64, 31.0, 9.80665 / 0.0254  # psi, in^4, in, in/s^2
+    xs, ws = (7.0, 20.0), (35.0, 55.0)
+
+    def dij(xi: float, aj: float) -> float:
+        bj = L - aj
+        if xi <= aj:
+            return bj * xi * (L**2 - bj**2 - xi**2) / (6 * E * I * L)
+        return aj * (L - xi) * (2 * L * xi - aj**2 - xi**2) / (6 * E * I * L)
+
+    y = [sum(w * dij(xi, xj) for xj, w in zip(xs, ws, strict=True)) for xi in xs]
+    w_ray = math.sqrt(g * sum(w * yi for w, yi in zip(ws, y, strict=True))
+                      / sum(w * yi**2 for w, yi in zip(ws, y, strict=True)))
+    w_dun = 1 / math.sqrt(sum(w * dij(x, x) / g for x, w in zip(xs, ws, strict=True)))
+    cs = critical_speed(_inch_shaft(tuple(zip(xs, ws, strict=True))), theory="euler")
+    assert cs.rayleigh == pytest.approx(w_ray, rel=1e-6)
+    assert cs.dunkerley == pytest.approx(w_dun, rel=1e-6)
+
+
+def test_stepped_shaft_midspan_deflection_moment_area() -> None:
+    """Stepped shaft, I at the outer quarters and 2I in the middle half, load W at mid-span: delta_C =
+    3 W L^3/(256 E I) by the moment-area method (printed formula of Ugural, Mechanical Design, Question 9.6, as
+    reproduced on holooly.com; W = 400 N, L = 1 m, I = 0.3e-6 m^4, E = 200 GPa -> 0.0781 mm). The frame FEA
+    (Euler) reproduces it; the Timoshenko result is larger by the shear deflection (< 2 %)."""
+    W, L, I, E = 400.0, 1.0, 0.3e-6, 200e9
+    d1 = (64 * I / math.pi) ** 0.25
+    d2 = (64 * 2 * I / math.pi) ** 0.25
+    m = get("AISI 1045 CD").with_(E=Q(200, "GPa"))
+    sh = Shaft("u96", (Segment(L / 4, d1), Segment(L / 2, d2), Segment(L / 4, d1)), m,
+               (Support("A", 0.0), Support("B", L)), (force_load("W", L / 2, (0, 0, -W)),))
+    dc = 3 * W * L**3 / (256 * E * I)
+    assert analyse(sh, theory="euler").at(L / 2)["deflection"] == pytest.approx(dc, rel=1e-9)
+    assert 1.0 < analyse(sh).at(L / 2)["deflection"] / dc < 1.02
