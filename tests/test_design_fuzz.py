@@ -164,7 +164,7 @@ PARTS = '[materials.steel2]\nbase = "Structural Steel"\n'
 
 #: output-path candidates: inputs, a link to an input, a FIFO, a folder, missing folders, devices, fresh files
 PATHS = ["design.toml", "parts.toml", "link.toml", "dangling.json", "fifo", "sub", "sub/r.json", "nope/r.json",
-         "r.json", "r.xml", "r2.json", "r.html", "/dev/null", "/proc/r.json", ""]
+         "r.json", "r.xml", "r2.json", "r.html", "null", "/proc/r.json", ""]
 OPTIONS = ["--json", "--junit", "--report", "-o", "--output", "--fail-on", "-q", "--quiet", "--force",
            "--base-ref", "--allow-outside-includes", "--no-allow-outside-includes", "--bogus"]
 
@@ -206,7 +206,19 @@ def rig(tmp_path_factory):
     (folder / "dangling.json").symlink_to(folder / "nowhere.json")
     os.mkfifo(folder / "fifo")
     (folder / "sub").mkdir()
+    _device_or_fifo(folder / "null")
     return folder
+
+
+def _device_or_fifo(path):
+    """A character device like /dev/null made in the temp folder (root), else a FIFO: a regression in the
+    output-path guard then replaces this node, never the system's /dev/null."""
+    import stat
+
+    try:
+        os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+    except (PermissionError, OSError):
+        os.mkfifo(path)
 
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow,
