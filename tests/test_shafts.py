@@ -115,3 +115,63 @@ def test_checks_run_and_criteria_order() -> None:
     assert cs.check_shaft_bearing_slope(sh, a).demand.m > 0
     assert cs.check_shaft_critical_speed(sh, critical_speed(sh)).capacity.m > 0
     assert len(cs.check_shaft_key_shear(sh, a)) == 1
+
+
+def _design(tmp_path, extra: str = "", features: str = "", bearing_load: str = "reaction_A_radial"):  # type: ignore[no-untyped-def]
+    import mechverify.design
+
+    text = f'''
+[design]
+name = "t"
+[components.s]
+type = "shaft"
+material = "AISI 1045 CD"
+speed = "100 rpm"
+segments = [{{ length = "100 mm", diameter = "20 mm" }}, {{ length = "300 mm", diameter = "25 mm" }}]
+supports = [{{ at = "50 mm" }}, {{ at = "380 mm" }}]
+features = [{features}]
+elements = [{{ kind = "coupling", at = "20 mm", torque_share = 1 }},
+            {{ kind = "gear", at = "250 mm", pitch_diameter = "100 mm", module = "2 mm", torque_share = -1 }}]
+{extra}
+[components.b]
+type = "ball_bearing"
+model = "6204"
+[load_cases.run.s]
+torque = "20 N*m"
+[load_cases.run.b]
+radial_force = "s.{bearing_load}"
+speed = "100 rpm"
+'''
+    p = tmp_path / "d.toml"
+    p.write_text(text)
+    return mechverify.design.load(p)
+
+
+def test_design_file_gear_shaft_reaction_flows_to_the_bearing(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """Spur gear T = 20 N m on d = 100 mm: Wt = 400 N, Wr = 145.6 N (mesh at +z: Wt along -y, Wr along -z);
+    supports at 50 and 380 mm, gear at 250 mm: R_A = W (380 - 250)/330 with W = sqrt(400^2 + 145.6^2) = 425.7 N
+    -> 167.7 N (statics, hand calculation); the bearing's static check reads it through the connection."""
+    res = {(r.component, r.check): r for r in _design(tmp_path).verify()}
+    W = math.hypot(400.0, 400.0 * math.tan(math.radians(20)))
+    assert res[("b", "bearing_static_safety")].demand.m_as("N") == pytest.approx(W * 130 / 330, rel=1e-6)
+    assert ("s", "shaft_gear_deflection") in res
+
+
+def test_design_file_named_errors(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    """A fillet larger than the step and an output of a support the shaft does not have are named errors."""
+    from mechverify.errors import MechverifyError
+
+    with pytest.raises(MechverifyError, match="larger than the step height"):
+        _design(tmp_path, features='{ kind = "shoulder", at = "100 mm", radius = "5 mm" }').verify()
+    with pytest.raises(MechverifyError, match="reaction_C"):
+        _design(tmp_path, bearing_load="reaction_C_radial").verify()
+
+
+def test_report_figure_draws() -> None:
+    """The shaft_fatigue figure (layout, M/T, deflection, n bars) is produced from the result details."""
+    from mechverify.reports.plots.shafts import shaft_figure
+
+    sh = Shaft("f", (Segment(0.3, 0.03), Segment(0.4, 0.04)), M, (Support("A", 0.05), Support("B", 0.65)),
+               (force_load("P", 0.4, (0, 0, -2000.0)),), (Feature("shoulder", 0.3, radius=0.002, name="sh"),))
+    fig = shaft_figure(cs.check_shaft_fatigue(sh, analyse(sh)))
+    assert len(fig.axes) == 4

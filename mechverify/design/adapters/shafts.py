@@ -55,18 +55,24 @@ class ShaftDesign:
         for i, t in enumerate(p["supports"]):
             path = f"supports[{i}]"
             t = inline_table(t, path, SUP_KEYS, ("at",))
-            sups.append(s.Support(t.get("name", LETTERS[i] if i < len(LETTERS) else f"S{i + 1}"),
-                                  _si(t, "at", "length", path), t.get("kind", "pinned"),
-                                  _si(t, "stiffness", "force_per_length", path), bool(t.get("locating", i == 0)),
-                                  t.get("bearing", "deep_groove_ball")))
+            try:
+                sups.append(s.Support(t.get("name", LETTERS[i] if i < len(LETTERS) else f"S{i + 1}"),
+                                      _si(t, "at", "length", path), t.get("kind", "pinned"),
+                                      _si(t, "stiffness", "force_per_length", path), bool(t.get("locating", i == 0)),
+                                      t.get("bearing", "deep_groove_ball")))
+            except InputError as exc:
+                raise InputError(f"{path}: {exc}") from None
         feats = []
         for i, t in enumerate(p.get("features") or []):
             path = f"features[{i}]"
             t = inline_table(t, path, FEAT_KEYS, ("kind", "at"))
-            feats.append(s.Feature(t["kind"], _si(t, "at", "length", path), _si(t, "radius", "length", path),
-                                   _si(t, "depth", "length", path), _si(t, "width", "length", path),
-                                   _si(t, "length", "length", path), t.get("keyseat", "profile"), t.get("Kt"),
-                                   t.get("Kts"), t.get("name", f"{t['kind']}{i + 1}")))
+            try:
+                feats.append(s.Feature(t["kind"], _si(t, "at", "length", path), _si(t, "radius", "length", path),
+                                       _si(t, "depth", "length", path), _si(t, "width", "length", path),
+                                       _si(t, "length", "length", path), t.get("keyseat", "profile"), t.get("Kt"),
+                                       t.get("Kts"), t.get("name", f"{t['kind']}{i + 1}")))
+            except InputError as exc:
+                raise InputError(f"{path}: {exc}") from None
         loads = [self._element(i, t, torque) for i, t in enumerate(p.get("elements") or [])]
         return s.Shaft(self.name, tuple(segs), material(p["material"]), tuple(sups), tuple(loads), tuple(feats),
                        finish=p["finish"], reliability=float(p["reliability"]),
