@@ -175,3 +175,15 @@ def test_report_figure_draws() -> None:
                (force_load("P", 0.4, (0, 0, -2000.0)),), (Feature("shoulder", 0.3, radius=0.002, name="sh"),))
     fig = shaft_figure(cs.check_shaft_fatigue(sh, analyse(sh)))
     assert len(fig.axes) == 4
+
+
+def test_ansi_square_key_table_7_6() -> None:
+    """Shigley Table 7-6 (printed rows, checked against the 9th-ed. reproduction): a 1 7/16 in shaft (over 1 3/8
+    to 1 3/4 in) takes a 3/8 in square key with a 3/16 in keyway depth; DIN 6885-1 for 40 mm: 12 x 8, t1 = 5 mm."""
+    from mechverify.components.shafts import standard_key
+
+    k = standard_key(1.4375 * 0.0254, "ansi")
+    assert (k["b"], k["h"], k["t1"]) == pytest.approx((0.375 * 0.0254, 0.375 * 0.0254, 0.1875 * 0.0254))
+    assert standard_key(0.040) == pytest.approx({"b": 0.012, "h": 0.008, "t1": 0.005})
+    with pytest.raises(InputError):
+        standard_key(0.04, "iso")

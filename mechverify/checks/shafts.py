@@ -254,7 +254,7 @@ def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, floa
         if f.kind != "keyseat":
             continue
         d = shaft.segment_at(f.x).diameter
-        std = s.din6885_key(d)
+        std = s.standard_key(d, shaft.key_standard)
         b = f.width or std["b"]
         t1 = f.depth or std["t1"]
         h = std["h"] if not f.width else std["h"] * b / std["b"]

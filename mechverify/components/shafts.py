@@ -236,6 +236,7 @@ class Shaft:
     rotating: bool = True
     torque_alternating_fraction: float = 0.0
     shaft_mass: bool = True  # the shaft's own mass in the critical speed
+    key_standard: str = "din6885"  # or "ansi" (Shigley Table 7-6 square keys)
     notes: tuple[str, ...] = field(default=())
 
     def __post_init__(self) -> None:
@@ -417,6 +418,24 @@ def din6885_key(d: float) -> dict[str, float]:
     raise ValidityError(f"DIN 6885-1 table covers shaft diameters 10..110 mm, got {dm:g} mm")
 
 
+def ansi_square_key(d: float) -> dict[str, float]:
+    """Inch square key for shaft diameter d [m] (Shigley 10th ed. Table 7-6): {b, h, t1} [m] (t1 the keyway depth)."""
+    di = d / 0.0254
+    for row in data()["ansi_square_keys"]["rows"]:
+        if row["d_min"] < di <= row["d_max"] + 1e-9:
+            return {"b": row["w"] * 0.0254, "h": row["h"] * 0.0254, "t1": row["depth"] * 0.0254}
+    raise ValidityError(f"Table 7-6 square keys cover shaft diameters 5/16..3 1/4 in, got {di:.4g} in")
+
+
+def standard_key(d: float, standard: str = "din6885") -> dict[str, float]:
+    """The parallel key of a standard ("din6885" or "ansi") for shaft diameter d [m]: {b, h, t1} [m]."""
+    if standard == "din6885":
+        return din6885_key(d)
+    if standard == "ansi":
+        return ansi_square_key(d)
+    raise InputError(f"key standard must be 'din6885' or 'ansi', got {standard!r}")
+
+
 def key_stresses(torque: float, d: float, b: float, h: float, t1: float, length: float) -> tuple[float, float]:
     """(shear tau = F/(b l), crushing p = F/((h - t1) l)) [Pa] of a parallel key with F = 2T/d at the shaft
     surface (Shigley 10th ed. Sec. 7-7, Ex. 7-6: shear on b l, bearing on the hub-side height; DIN 6885
@@ -446,4 +465,5 @@ def gear_deflection_allowance(diametral_pitch: float) -> float:
 
 __all__ = ["Segment", "Feature", "Support", "ShaftLoad", "Shaft", "gear_load", "pulley_load", "force_load",
            "belt_tensions", "section_moduli", "critical_speed_uniform", "rayleigh_critical_speed",
-           "dunkerley_critical_speed", "din6885_key", "key_stresses", "slope_allowance", "gear_deflection_allowance"]
+           "dunkerley_critical_speed", "din6885_key", "ansi_square_key", "standard_key",
+           "key_stresses", "slope_allowance", "gear_deflection_allowance"]

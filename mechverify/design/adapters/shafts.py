@@ -78,7 +78,7 @@ class ShaftDesign:
                        finish=p["finish"], reliability=float(p["reliability"]),
                        speed=to_si(p["speed"], "angular_velocity", "speed") if p.get("speed") else 0.0,
                        rotating=p["rotating"], torque_alternating_fraction=float(p["torque_alternating_fraction"]),
-                       shaft_mass=p["shaft_mass"])
+                       shaft_mass=p["shaft_mass"], key_standard=p["key_standard"])
 
     @staticmethod
     def _element(i: int, t: Any, torque: float) -> s.ShaftLoad:
@@ -167,6 +167,8 @@ SHAFT = REGISTRY.register(ComponentType(
         Field("rotating", "bool", "the shaft turns under the loads (bending fully reversed)", default=True),
         Field("torque_alternating_fraction", "float", "alternating torque as a fraction of the steady", default=0.0),
         Field("shaft_mass", "bool", "include the shaft's own mass in the critical speed", default=True),
+        Field("key_standard", "choice", "parallel-key sizes when a keyseat gives none: DIN 6885-1 or Shigley "
+              "Table 7-6 (inch square keys)", default="din6885", choices=("din6885", "ansi")),
         Field("fatigue_criterion", "choice", "DE criterion of shaft_fatigue", default="goodman",
               choices=cs.CRITERIA),
     ),
