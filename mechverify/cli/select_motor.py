@@ -1,0 +1,134 @@
+"""``mechverify select-motor DESIGN --drive NAME``: rank catalogue motor × gearhead combinations for a drive.
+
+Every combination of a catalogue motor (``components/data/motors.toml``) with no gearhead or a catalogue
+gearhead replaces the drive's ``motor``/``gearhead`` and runs every check of the drive over its profile and
+load cases. Those that pass all of them are ranked by margin (the smallest capacity/(demand·SF) of the
+drive's checks, highest first); when none passes, the three nearest are shown with the check that fails.
+Servos and gear-motors are tried without a gearhead (they are sold as one unit).
+"""
+
+from __future__ import annotations
+
+import argparse
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+ORDER = 15
+
+
+def add_parser(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("select-motor", help="rank catalogue motor and gearhead combinations for a drive",
+                       description="Try every catalogue motor with no gearhead and with every catalogue gearhead "
+                                   "on the drive NAME of DESIGN; list the combinations that pass every drive check, "
+                                   "by margin (exit 0), or the three nearest with the failing check (exit 1).")
+    p.add_argument("design", type=Path, metavar="DESIGN", help="design file (TOML)")
+    p.add_argument("--drive", required=True, metavar="NAME", help="the drive component to size")
+    p.add_argument("--top", type=int, default=10, metavar="N", help="show the N best passing combinations")
+    p.add_argument("--motor", action="append", default=None, metavar="NAME",
+                   help="only these catalogue motors (repeatable; default: all)")
+    p.add_argument("--gearhead", action="append", default=None, metavar="NAME",
+                   help="only these catalogue gearheads (repeatable; 'none' for none; default: none and all)")
+    from mechverify.cli._common import add_allow_outside
+    add_allow_outside(p)
+    p.set_defaults(run=run)
+
+
+@dataclass(frozen=True)
+class Combination:
+    """One motor × gearhead tried on the drive."""
+
+    motor: str
+    gearhead: str | None
+    passed: bool
+    margin: float  # min over the drive's checks of capacity / (demand * SF); inf when nothing loads it
+    governing: str  # the check with the least margin
+    error: str = ""  # why the combination could not be evaluated
+
+
+def combinations(design: Any, drive: str, motors: list[str] | None = None,
+                 gearheads: list[str | None] | None = None) -> list[Combination]:
+    """Evaluate every combination on ``drive`` of ``design`` (a :class:`~mechverify.design.Design`)."""
+    import copy
+    import math
+
+    from mechverify.components.gearheads import gearhead_names
+    from mechverify.components.motors import motor, motor_names
+    from mechverify.design.design import _rebuild
+    from mechverify.errors import InputError, MechverifyError, UnknownNameError
+
+    comps = design.data.components
+    if drive not in comps:
+        raise UnknownNameError("component", drive, list(comps))
+    if comps[drive].type.name != "drive":
+        raise InputError(f"component {drive!r} is a {comps[drive].type.name}, not a drive")
+    motors = motor_names() if motors is None else [motor(m).name for m in motors]
+    if gearheads is None:
+        gearheads = [None, *gearhead_names()]
+    out = []
+    for mname in motors:
+        kind = motor(mname).kind
+        for g in gearheads if kind in ("dc", "stepper") else [None]:
+            doc = copy.deepcopy(design.data.raw)
+            entry = doc["components"][drive]
+            entry.pop("motor_data", None)
+            entry.pop("gearhead_data", None)
+            entry["motor"] = mname
+            if g is None:
+                entry.pop("gearhead", None)
+            else:
+                entry["gearhead"] = g
+            try:
+                d = _rebuild(doc, design.data.path, list(design.data.files), {})
+                rs = [r for r in d.verify() if r.component == drive]
+            except MechverifyError as exc:
+                reason = str(exc).strip().splitlines()[-1].strip()[:160]
+                out.append(Combination(mname, g, False, -math.inf, "", reason))
+                continue
+            if not rs:
+                out.append(Combination(mname, g, False, -math.inf, "", "no drive check ran"))
+                continue
+            worst = max(rs, key=lambda r: r.factored_utilisation)
+            u = worst.factored_utilisation
+            out.append(Combination(mname, g, all(r.verdict.value != "fail" for r in rs),
+                                   math.inf if u == 0 else 1.0 / u, worst.check))
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from rich.table import Table
+
+    from mechverify.cli import Invalid
+    from mechverify.cli._common import load_designs
+    from mechverify.cli._console import out
+    from mechverify.errors import MechverifyError
+
+    (design,) = load_designs([args.design], args.allow_outside_includes)
+    if args.top < 1:
+        raise Invalid("--top: give a positive number")
+    gh = None if args.gearhead is None else [None if g.lower() == "none" else g for g in args.gearhead]
+    try:
+        found = combinations(design, args.drive, args.motor, gh)
+    except MechverifyError as exc:
+        raise Invalid(str(exc)) from exc
+    passing = sorted((c for c in found if c.passed), key=lambda c: -c.margin)
+    if passing:
+        t = Table(title=f"{args.drive}: {len(passing)} of {len(found)} combinations pass every check",
+                  title_justify="left")
+        rows = passing[:args.top]
+    else:
+        t = Table(title=f"{args.drive}: no combination of {len(found)} passes; the three nearest",
+                  title_justify="left")
+        rows = sorted((c for c in found if not c.error), key=lambda c: -c.margin)[:3]
+    for col in ("motor", "gearhead", "margin", "governing check" if passing else "failing check"):
+        t.add_column(col)
+    for c in rows:
+        t.add_row(c.motor, c.gearhead or "-", f"{c.margin:.3g}", c.governing)
+    out.print(t)
+    skipped = [c for c in found if c.error]
+    if skipped:
+        out.print(f"{len(skipped)} combinations could not be evaluated (e.g. {skipped[0].motor} + "
+                  f"{skipped[0].gearhead or 'no gearhead'}: {skipped[0].error})")
+    out.print("ranked by margin (the smallest capacity/(demand·SF) of the drive's checks); the catalogues have no "
+              "mass or price fields to rank by")
+    return 0 if passing else 1
