@@ -60,6 +60,7 @@ class CheckResult:
     warnings: tuple[str, ...] = ()  # validity concerns; any makes the verdict at least "warn"
     load_case: str = ""  # governing load case or operating point
     details: Mapping[str, Any] = field(default_factory=dict)  # data for plots (quantities, arrays)
+    substituted: str = ""  # LaTeX: the formula with its inputs substituted (with units) = the result; see tex()
 
     def __post_init__(self) -> None:
         for name in ("demand", "capacity"):
@@ -136,6 +137,7 @@ class CheckResult:
             "warnings": list(self.warnings),
             "load_case": self.load_case,
             "details": {k: _encode(v) for k, v in self.details.items()},
+            "substituted": self.substituted,
         }
 
     @classmethod
@@ -147,6 +149,7 @@ class CheckResult:
             source=d.get("source", ""), inputs={k: _decode(v) for k, v in d.get("inputs", {}).items()},
             notes=tuple(d.get("notes", ())), warnings=tuple(d.get("warnings", ())),
             load_case=d.get("load_case", ""), details={k: _decode(v) for k, v in d.get("details", {}).items()},
+            substituted=d.get("substituted", ""),
         )
 
     def summary(self) -> str:
@@ -242,6 +245,29 @@ class ResultSet:
                                                   "SF req.", "verdict", "case"))
         return (f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
                 f"<p>Overall: <b style='color:{colour[self.verdict.value]}'>{self.verdict.value}</b></p>")
+
+
+def tex(q: Any, unit: str | None = None, digits: int = 4) -> str:
+    """A quantity (or number) as LaTeX for :attr:`CheckResult.substituted`: ``tex(Q(350, "N")) ->
+    '350\\,\\mathrm{N}'``, ``tex(Q(1.5e5, "Pa"), "MPa") -> '0.15\\,\\mathrm{MPa}'``; ``digits``
+    significant digits, ``a\\times10^{n}`` outside 1e-3..1e6. The units are pint's short names with
+    ``\\cdot`` and ``^{n}``, so the substituted line reads back as a unit-aware expression."""
+    if isinstance(q, Quantity):
+        if unit:
+            q = q.to(unit)
+        m, u = float(q.magnitude), f"{q.units:~C}"
+    else:
+        m, u = float(q), ""
+    text = f"{m:.{digits}g}"
+    if "e" in text:
+        mant, exp = text.split("e")
+        text = rf"{mant}\times10^{{{int(exp)}}}"
+    if not u:
+        return text
+    import re
+
+    u = re.sub(r"\*\*(-?\d+)", r"^{\1}", u).replace("*", r"\cdot ")
+    return rf"{text}\,\mathrm{{{u}}}"
 
 
 def _finite_or_none(x: float) -> float | None:

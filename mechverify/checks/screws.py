@@ -18,7 +18,7 @@ from __future__ import annotations
 from typing import Any
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.components.power_screw import (
     LeadScrew,
     Nut,
@@ -148,6 +148,8 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
         formula=r"p = \frac{F}{\pi d_2 H_1 n},\quad n = \frac{m}{P}",
         source=f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure); {SHIGLEY_SCREWS} (bearing stress)",
         inputs={"F": f, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
+        substituted=(rf"p = \frac{{{tex(f, 'N')}}}{{\pi\cdot {tex(th.d2, 'mm')}\cdot {tex(H1, 'mm')}\cdot {tex(n)}}}"
+                     rf" = {tex(p, 'MPa')}"),
         notes=(f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
                "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"),
         load_case=load_case, details={"engaged_threads": Q(n, "")},
@@ -182,6 +184,7 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Quanti
         source=(f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); polymer-bearing pv rating "
                 "(nut maker's datasheet)"),
         inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
+        substituted=(rf"pv = {tex(p, 'MPa')}\cdot {tex(v, 'm/s')} = {tex(pv, 'MPa*m/s')}"),
         notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
                f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}"),
         load_case=load_case, details={"pressure": p, "sliding_speed": v},
@@ -220,9 +223,16 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
                 r" \le S_y",
         source=f"{SHIGLEY_SCREWS} (body stresses), Eq. 5-15 (von Mises)",
         inputs={"F": f, "torque": T, "d3": screw.thread.d3, "yield_strength": Sy},
+        substituted=_strength_substituted(f, T, screw.thread.d3, s.von_mises),
         notes=tuple(notes), load_case=load_case,
         details={"axial": s.axial, "torsion": s.torsion},
     )
+
+
+def _strength_substituted(f: Any, T: Any, d3: Any, vm: Any) -> str:
+    F, t, d = tex(f, "N"), tex(T, "N*mm"), tex(d3, "mm")
+    return (rf"\sigma' = \sqrt{{\left(\frac{{4\cdot {F}}}{{\pi\cdot ({d})^{{2}}}}\right)^{{2}} + 3\cdot "
+            rf"\left(\frac{{16\cdot {t}}}{{\pi\cdot ({d})^{{3}}}}\right)^{{2}}}} = {tex(vm, 'MPa')}")
 
 
 @check("screw_buckling", title="Screw buckling", sf_kind="buckling",
@@ -247,6 +257,8 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
         source=b.source,
         inputs={"F": f, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "yield_strength": screw.material_property("yield_strength")},
+        substituted=_buckling_substituted(b, L, screw.thread.d3, screw.material_property("E"),
+                                          screw.material_property("yield_strength")),
         notes=(f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
                + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
                f"{b.regime} regime: l/k = {b.slenderness:.4g}, transition (l/k)_1 = {b.transition_slenderness:.4g}",
@@ -255,6 +267,15 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
         details={"regime": b.regime, "C": b.C, "slenderness": b.slenderness,
                  "critical_stress": b.critical_stress.to("MPa")},
     )
+
+
+def _buckling_substituted(b: Any, L: Any, d3: Any, E: Any, Sy: Any) -> str:
+    l, d, e, sy = tex(L, "mm"), tex(d3, "mm"), tex(E, "MPa"), tex(Sy, "MPa")
+    if b.regime == "euler":  # I = pi d3^4 / 64
+        return (rf"P_{{cr}} = \frac{{{tex(b.C)}\cdot \pi^{{2}}\cdot {e}\cdot \pi\cdot ({d})^{{4}}/64}}{{({l})^{{2}}}}"
+                rf" = {tex(b.critical_load, 'N')}")
+    return (rf"P_{{cr}} = \frac{{\pi\cdot ({d})^{{2}}}}{{4}}\cdot \left({sy} - \left(\frac{{{sy}\cdot {l}}}"  # k = d3/4
+            rf"{{2\cdot \pi\cdot ({d})/4}}\right)^{{2}}\cdot \frac{{1}}{{{tex(b.C)}\cdot {e}}}\right) = {tex(b.critical_load, 'N')}")
 
 
 @check("screw_critical_speed", title="Critical (whirling) speed", sf_kind="speed",
@@ -280,6 +301,10 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
         source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
         inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "density": screw.material_property("density")},
+        substituted=(rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}\cdot \sqrt{{\frac{{"
+                     rf"{tex(screw.material_property('E'), 'MPa')}\cdot ({tex(screw.thread.d3, 'mm')})^{{2}}}}{{16\cdot "
+                     rf"{tex(screw.material_property('density'), 'kg/m**3')}}}}} = {tex(Q(nc.m_as('rpm') / 60, '1/s'))}"
+                     rf" = {tex(nc, 'rpm')}"),  # revolutions per second (pint reads 1/s as rad/s, so both printed)
         notes=(f"end case {screw.end_supports}: lambda_1 = {lam:.5g} (first bending mode of a uniform shaft)",
                "root section (d3); the nut's support is ignored, which is conservative"),
         load_case=load_case, details={"lambda_1": lam, "critical_speed_rad_s": nc.to("rad/s")},

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import datetime as _dt
+import math
 import platform
 import re
 import subprocess
@@ -22,7 +23,7 @@ from mechverify.materials.material import PROPERTY_DIMENSIONS
 from mechverify.references import bibliography, keys_in
 from mechverify.reports.mathtext import formula_html
 from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
-from mechverify.units import fmt
+from mechverify.reports.numbers import number, quantity
 
 _PACKAGES = ("numpy", "scipy", "scikit-fem", "pint", "matplotlib", "jinja2", "weasyprint", "meshio", "trimesh")
 
@@ -33,7 +34,7 @@ def _anchor(*parts: str) -> str:
 
 def _value(v: Any) -> str:
     if isinstance(v, pint.Quantity):
-        return fmt(v)
+        return quantity(v)
     if isinstance(v, Material):
         return v.name
     if isinstance(v, dict):  # an inline table (e.g. motor_data): one "key = value" per line
@@ -44,8 +45,24 @@ def _value(v: Any) -> str:
                              else _value(x) for x in v)
         return ", ".join(_value(x) for x in v)
     if isinstance(v, float):
-        return f"{v:.4g}"
-    return str(v)
+        return number(v, 4)
+    return _truncate(str(v))
+
+
+TEXT_LIMIT = 4000  # characters of a free text (description, note, value) shown before it is cut
+FILE_LIMIT = 200_000  # characters of an input file shown in the appendix
+
+
+def _truncate(text: str, limit: int = TEXT_LIMIT) -> str:
+    """``text``, or its first ``limit`` characters and a note saying how much was left out."""
+    if len(text) <= limit:
+        return text
+    return f"{text[:limit]} … [truncated: {len(text) - limit:,} more characters not shown]"
+
+
+def not_verifiable(r: CheckResult) -> str:
+    """The reason when the check could not be evaluated (beyond its method's validity), else ``""``."""
+    return next((n for n in r.notes if n.startswith("Not verifiable")), "")
 
 
 def _git_commit(path: Path | None) -> str:
@@ -63,23 +80,49 @@ def _git_commit(path: Path | None) -> str:
         return ""
 
 
-def _check_view(r: CheckResult) -> dict[str, Any]:
+BAR_MAX = 2.0  # the summary bars' shared scale ends at u·SF = 2 (larger values: a full bar and "▶")
+
+
+def bar_scale(results: list[CheckResult]) -> float:
+    """One scale for every bar of a summary: up to the largest finite u·SF, at least 1.25, at most 2."""
+    finite = [r.factored_utilisation for r in results if math.isfinite(r.factored_utilisation)]
+    return min(BAR_MAX, max([1.25, *finite]))
+
+
+def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True) -> dict[str, Any]:
     fu = r.factored_utilisation
-    scale = max(1.25, fu)
-    return {
+    na = not_verifiable(r)
+    view = {
         "anchor": _anchor(r.component, r.check), "component": r.component, "title": r.title or r.check,
-        "verdict": r.verdict.value, "demand": fmt(r.demand), "capacity": fmt(r.capacity),
-        "u": f"{r.utilisation:.3g}", "fu": f"{fu:.3g}", "sf": f"{r.required_sf:g}",
-        "achieved_sf": "∞" if r.utilisation == 0 else f"{r.safety_factor:.3g}",
-        "bar": f"{min(fu, scale) / scale * 100:.1f}", "limit": f"{100 / scale:.1f}",
-        "load_case": r.load_case, "formula": Markup(formula_html(r.formula)),
-        "inputs": [(k, _value(v)) for k, v in r.inputs.items()], "notes": list(r.notes),
-        "warnings": list(r.warnings), "source": r.source, "figure": figure_for(r),
+        "verdict": r.verdict.value, "na": _truncate(na), "demand": "n/a" if na else quantity(r.demand),
+        "capacity": "n/a" if na else quantity(r.capacity),
+        "u": "n/a" if na else number(r.utilisation), "fu": "n/a" if na else number(fu),
+        "sf": f"{r.required_sf:g}", "achieved_sf": "n/a" if na else number(r.safety_factor),
+        "bar": f"{0 if na else min(fu, scale) / scale * 100:.1f}", "over": fu > scale and not na,
+        "limit": f"{100 / scale:.1f}", "load_case": r.load_case, "detail": detail,
     }
+    if detail:  # the expensive parts (typeset formulas, figures) only for checks shown in detail
+        view.update({
+            "formula": Markup(formula_html(r.formula)),
+            "substituted": Markup(formula_html(substituted_latex(r))) if substituted_latex(r) else "",
+            "inputs": _inputs_view(r),
+            "notes": [_truncate(n) for n in r.notes if n != na], "warnings": [_truncate(w) for w in r.warnings],
+            "source": r.source, "figure": None if na else figure_for(r),
+        })
+    return view
+
+
+def substituted_latex(r: CheckResult) -> str:
+    """The check's formula with its inputs substituted (LaTeX), when the check function gave one."""
+    return getattr(r, "substituted", "") or ""
+
+
+def _inputs_view(r: CheckResult) -> list[tuple[str, str]]:
+    return [(k, _value(v)) for k, v in r.inputs.items()]
 
 
 def _material_view(m: Material) -> dict[str, Any]:
-    props = [{"name": p, "value": fmt(getattr(m, p)), "source": m.source_of(p)}
+    props = [{"name": p, "value": quantity(getattr(m, p)), "source": m.source_of(p)}
              for p in PROPERTY_DIMENSIONS if getattr(m, p) is not None]
     if m.sn_curve is not None:
         props.append({"name": "S-N curve", "value": f"{len(m.sn_curve.cycles)} points, R = {m.sn_curve.stress_ratio:g}",
@@ -87,17 +130,21 @@ def _material_view(m: Material) -> dict[str, Any]:
     return {"name": m.name, "props": props}
 
 
-def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
+def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[str, Any]:
     from mechverify.design.outputs import file_hashes
 
     ordered = rs.sorted()
-    views = {id(r): _check_view(r) for r in ordered}  # each figure and formula rendered once
+    scale = bar_scale(list(ordered))
+    shown = {id(r) for r in ordered if detail == "all" or r.verdict.value != "pass"}
+    views = {id(r): _check_view(r, scale, id(r) in shown) for r in ordered}  # each figure rendered once
     by_comp: dict[str, list[CheckResult]] = {}
     for r in ordered:
         by_comp.setdefault(r.component, []).append(r)
     comps, mats = [], {}
     entries = getattr(design, "data", None)
     for name, entry in (entries.components.items() if entries else []):
+        if detail != "all" and not any(id(r) in shown for r in by_comp.get(name, [])):
+            continue  # a component whose checks all pass: in the summary only
         params = []
         for k, v in entry.params.items():
             src = v.source if isinstance(v, Material) and v.source else "design file"
@@ -115,19 +162,24 @@ def _design_view(design: Any, rs: ResultSet) -> dict[str, Any]:
                       "params": params, "figures": figures, "checks": [views[id(r)] for r in by_comp.get(name, [])]})
     for name in by_comp:  # results for components not declared in a design file (Python API)
         if not any(c["name"] == name for c in comps):
+            if detail != "all" and not any(id(r) in shown for r in by_comp[name]):
+                continue
             comps.append({"name": name, "anchor": _anchor(name), "type": "", "doc": "", "params": [], "figures": [],
                           "checks": [views[id(r)] for r in by_comp[name]]})
+    for c in comps:  # in a component's detail, only the checks shown in detail
+        c["checks"] = [v for v in c["checks"] if v["detail"]]
     files = list(getattr(design, "files", []) or [])
     inputs = []
     for f in files:
         try:
-            inputs.append({"name": f.name, "text": f.read_text(encoding="utf-8")})
+            inputs.append({"name": f.name, "text": _truncate(f.read_text(encoding="utf-8"), FILE_LIMIT)})
         except OSError:
             pass
     counts = {v: sum(r.verdict.value == v for r in rs) for v in ("pass", "warn", "fail")}
     return {
         "name": getattr(design, "name", rs.name) or rs.name, "revision": getattr(design, "revision", ""),
-        "description": getattr(getattr(design, "data", None), "description", ""),
+        "description": _truncate(getattr(getattr(design, "data", None), "description", "") or ""),
+        "detail": detail, "n_detailed": len(shown), "bar_scale": f"{scale:g}",
         "verdict": rs.verdict.value, "counts": counts, "hashes": file_hashes(files),
         "commit": _git_commit(getattr(design, "path", None)),
         "results": [views[id(r)] for r in ordered],
@@ -165,15 +217,24 @@ def _software() -> list[tuple[str, str]]:
     return out
 
 
-def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None) -> str:
-    """The complete self-contained HTML report of one or more verified designs."""
+DETAIL = ("problems", "all")
+
+
+def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None, detail: str = "problems") -> str:
+    """The complete self-contained HTML report of one or more verified designs.
+
+    ``detail="problems"`` (default): the summary lists every check; the per-component detail (formulas,
+    inputs, figures) covers the failing and warning checks. ``detail="all"``: every check in detail.
+    """
+    if detail not in DETAIL:
+        raise InputError(f"report detail: expected one of {', '.join(DETAIL)}, got {detail!r}")
     from mechverify import __version__
 
     tpl_dir = resources.files("mechverify.reports").joinpath("templates")
     env = jinja2.Environment(autoescape=jinja2.select_autoescape(["html", "j2"]), trim_blocks=True,
                              lstrip_blocks=True, undefined=jinja2.StrictUndefined)
     template = env.from_string(tpl_dir.joinpath("report.html.j2").read_text(encoding="utf-8"))
-    designs = [_design_view(d, rs) for d, rs in runs]
+    designs = [_design_view(d, rs, detail) for d, rs in runs]
     return template.render(
         title=" / ".join(d["name"] for d in designs) or "design review", designs=designs, version=__version__,
         date=date or _dt.date.today().isoformat(), software=_software(),
@@ -181,13 +242,13 @@ def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None) -> s
     )
 
 
-def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path) -> Path:
-    """Write ``path`` (.html or .pdf) atomically; return it."""
+def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path, detail: str = "problems") -> Path:
+    """Write ``path`` (.html or .pdf) atomically; return it. ``detail``: see :func:`render_html`."""
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".html", ".htm", ".pdf"):
         raise InputError(f"report: expected a .html or .pdf file name, got {str(path)!r}")
-    text = render_html(runs)
+    text = render_html(runs, detail=detail)
     if suffix != ".pdf":
         return atomic_write(path, text)
 

@@ -72,11 +72,38 @@ def svg_data_uri(fig: Any) -> str:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    _fit_print(fig)
     buf = io.BytesIO()
     with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "mechverify", "font.family": "DejaVu Sans"}):
         fig.savefig(buf, format="svg", metadata={"Date": None})
     plt.close(fig)
     return "data:image/svg+xml;base64," + base64.b64encode(buf.getvalue()).decode()
+
+
+PRINT_WIDTH_IN = 6.9  # the A4 report's content width (180 mm = 7.09 in) less a small margin
+MIN_FONT_PT = 7.0  # smallest text size at print size
+
+
+def _fit_print(fig: Any) -> None:
+    """Readable when printed: no wider than the page's content box (so it is not scaled down) and no
+    text below 7 pt. Constrained layout re-flows the axes after the change."""
+    from matplotlib.text import Text
+
+    w, h = fig.get_size_inches()
+    if w > PRINT_WIDTH_IN:
+        fig.set_size_inches(PRINT_WIDTH_IN, h * PRINT_WIDTH_IN / w)
+    for t in fig.findobj(Text):
+        if t.get_text() and t.get_fontsize() < MIN_FONT_PT:
+            t.set_fontsize(MIN_FONT_PT)
+    for ax in fig.axes:  # tick labels are created lazily: set their size through the axis
+        for axis in (ax.xaxis, ax.yaxis):
+            for lab in axis.get_ticklabels(which="both"):
+                if lab.get_fontsize() < MIN_FONT_PT:
+                    axis.set_tick_params(labelsize=MIN_FONT_PT, which="both")
+                    break
+
+
+CHART_ROWS = 40  # the summary chart shows at most this many checks (the worst), so it fits one page
 
 
 def figure_for(result: CheckResult) -> str | None:
@@ -92,12 +119,14 @@ def figure_for(result: CheckResult) -> str | None:
 def utilisation_chart(results: list[CheckResult]) -> str:
     """Horizontal bars of factored utilisation per check, coloured by verdict, with the limit line."""
     colours = {"pass": "#2da44e", "warn": "#bf8700", "fail": "#cf222e"}
-    rs = sorted(results, key=lambda r: r.factored_utilisation)
-    fig, ax = new_figure(6.5, 0.28 * max(len(rs), 3) + 0.8)
+    rs = sorted(results, key=lambda r: r.factored_utilisation)[-CHART_ROWS:]
+    fig, ax = new_figure(6.5, 0.2 * max(len(rs), 3) + 0.8)
     vals = [min(r.factored_utilisation, 2.0) for r in rs]
     ax.barh(range(len(rs)), vals, color=[colours[r.verdict.value] for r in rs])
     ax.set_yticks(range(len(rs)), [f"{r.component}: {r.title or r.check}" for r in rs], fontsize=7)
     ax.axvline(1.0, color="k", lw=1)
     ax.set_xlim(0, max(1.2, max(vals, default=1) * 1.05))
-    ax.set_xlabel("utilisation × required SF (fail above 1)")
+    more = len(results) - len(rs)
+    ax.set_xlabel("utilisation × required SF (fail above 1)"
+                  + (f"; the {len(rs)} highest of {len(results)} checks" if more > 0 else ""))
     return svg_data_uri(fig)
