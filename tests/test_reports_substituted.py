@@ -64,14 +64,14 @@ def evaluate(line: str):
     parts = line.split(" = ")
     assert len(parts) >= 3, line
     env = {"Q": Q, "pi": math.pi}
-    return eval(latex_to_python(parts[1]), env), eval(latex_to_python(parts[2]), env)  # noqa: S307
+    return eval(latex_to_python(parts[1]), env), eval(latex_to_python(parts[2]), env)
 
 
 def test_tex_reads_back_with_units():
     """tex() output parses back to the same quantity (4 significant digits)."""
     for q, unit in ((Q(350, "N"), None), (Q(1.5e5, "Pa"), "MPa"), (Q(2.07e11, "Pa"), None), (Q(3.25, "N*m"), None),
                     (Q(7850, "kg/m**3"), None)):
-        back = eval(latex_to_python(tex(q, unit)), {"Q": Q})  # noqa: S307
+        back = eval(latex_to_python(tex(q, unit)), {"Q": Q})
         assert back.m_as(q.units) == pytest.approx(q.magnitude, rel=5e-4)
 
 

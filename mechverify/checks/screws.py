@@ -275,7 +275,8 @@ def _buckling_substituted(b: Any, L: Any, d3: Any, E: Any, Sy: Any) -> str:
         return (rf"P_{{cr}} = \frac{{{tex(b.C)}\cdot \pi^{{2}}\cdot {e}\cdot \pi\cdot ({d})^{{4}}/64}}{{({l})^{{2}}}}"
                 rf" = {tex(b.critical_load, 'N')}")
     return (rf"P_{{cr}} = \frac{{\pi\cdot ({d})^{{2}}}}{{4}}\cdot \left({sy} - \left(\frac{{{sy}\cdot {l}}}"  # k = d3/4
-            rf"{{2\cdot \pi\cdot ({d})/4}}\right)^{{2}}\cdot \frac{{1}}{{{tex(b.C)}\cdot {e}}}\right) = {tex(b.critical_load, 'N')}")
+            rf"{{2\cdot \pi\cdot ({d})/4}}\right)^{{2}}\cdot \frac{{1}}{{{tex(b.C)}\cdot {e}}}\right)"
+            rf" = {tex(b.critical_load, 'N')}")
 
 
 @check("screw_critical_speed", title="Critical (whirling) speed", sf_kind="speed",
@@ -301,8 +302,10 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
         source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
         inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "density": screw.material_property("density")},
-        substituted=(rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}\cdot \sqrt{{\frac{{"
-                     rf"{tex(screw.material_property('E'), 'MPa')}\cdot ({tex(screw.thread.d3, 'mm')})^{{2}}}}{{16\cdot "
+        substituted=(rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}"
+                     rf"\cdot \sqrt{{\frac{{"
+                     rf"{tex(screw.material_property('E'), 'MPa')}\cdot ({tex(screw.thread.d3, 'mm')})^{{2}}}}"
+                     rf"{{16\cdot "
                      rf"{tex(screw.material_property('density'), 'kg/m**3')}}}}} = {tex(Q(nc.m_as('rpm') / 60, '1/s'))}"
                      rf" = {tex(nc, 'rpm')}"),  # revolutions per second (pint reads 1/s as rad/s, so both printed)
         notes=(f"end case {screw.end_supports}: lambda_1 = {lam:.5g} (first bending mode of a uniform shaft)",

@@ -22,8 +22,8 @@ from mechverify.materials import Material
 from mechverify.materials.material import PROPERTY_DIMENSIONS
 from mechverify.references import bibliography, keys_in
 from mechverify.reports.mathtext import formula_html
-from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
 from mechverify.reports.numbers import number, quantity
+from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
 
 _PACKAGES = ("numpy", "scipy", "scikit-fem", "pint", "matplotlib", "jinja2", "weasyprint", "meshio", "trimesh")
 
