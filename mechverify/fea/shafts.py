@@ -90,9 +90,12 @@ class ShaftAnalysis:
                 "deflection": float(self.deflection[i].max())}
 
     def max_moment(self) -> tuple[float, float]:
-        """(x, M) of the largest resultant bending moment (exact: the frame includes stationary points)."""
-        k = int(np.argmax(self.M))
-        return float(self.x[k]), float(self.M[k])
+        """(x, M) of the largest resultant bending moment (exact: the frame includes stationary points); of a flat
+        maximum, the point with the largest torque."""
+        M = self.M
+        near = np.flatnonzero(M >= M.max() * (1 - 1e-9))  # a flat maximum: the point with the most torque
+        k = int(near[np.argmax(np.abs(self.T[near]))])
+        return float(self.x[k]), float(M[k])
 
     def slope_at(self, x: float) -> float:
         """Resultant slope [rad] at a node position x."""

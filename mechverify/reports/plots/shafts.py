@@ -32,7 +32,7 @@ def draw_shaft(ax: Any, d: dict[str, Any]) -> None:
                     arrowprops={"arrowstyle": "->", "color": "#cf222e"})
     L = d["segments"][-1][1] * 1e3
     ax.set_xlim(-0.03 * L, 1.03 * L)
-    ax.set_ylim(-Dmax * 1.2, Dmax * 1.5)
+    ax.plot([0, 0], [-Dmax * 1.2, Dmax * 1.5], alpha=0)  # room for the labels (equal aspect adjusts the limits)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_ylabel("D [mm]")
 
