@@ -122,9 +122,12 @@ def test_critical_load_with_shear_and_reduced_length():
 
 
 def test_tilt_past_buckling_is_a_named_error_with_the_range():
-    """1 kg head (11.06 N on top): the linear model stops before 40 deg; the error names the reachable range."""
-    with pytest.raises(UnreachableTiltError, match="reachable: 0 to"):
-        CableSpine(spring(), weight="11.06 N").at_tilt("40 deg")
+    """A weight above the spine's critical load (about 14.2 N): no tilt is reachable, a named error. With the
+    1 kg head an 89 deg tilt is out of reach of the small-deflection model: named error with the range."""
+    with pytest.raises(UnreachableTiltError, match="alone buckles the spine"):
+        CableSpine(spring(), weight="15 N").at_tilt("10 deg")
+    with pytest.raises(UnreachableTiltError, match="reachable: 0 to|stops growing"):
+        CableSpine(spring(), weight="11.06 N").at_tilt("89 deg", "linear")
 
 
 def test_inverse_kinematics_one_cable_in_the_tilt_plane():

@@ -266,13 +266,12 @@ class CableSpine:
     def elastica_state(self, tension: QuantityLike, guess: Sequence[float] | None = None) -> SpineState:
         """Large-deflection equilibrium for a pulling-cable tension T (shooting on the elastica)."""
         T = tension if isinstance(tension, float) else to_si(tension, "force", "tension")
-        s = self._si
         if guess is None:
             lin = self.linear_state(T)
             guess = [lin.lateral, lin.height, lin.tilt]
         x, _info, ier, msg = fsolve(lambda g: self._shoot(T, g)[0], list(guess), xtol=1e-12, full_output=True)
         res, st = self._shoot(T, x)
-        if ier != 1 or float(np.max(np.abs(res))) > 1e-9 * max(1.0, s["L0"]):
+        if float(np.max(np.abs(res))) > 1e-10:
             raise SpineBucklingError(f"{self.name}: no large-deflection equilibrium found for T = {T:.4g} N ({msg})")
         return st
 
@@ -284,8 +283,12 @@ class CableSpine:
             raise InputError(f"{self.name}: method must be 'linear' or 'elastica', got {method!r}")
         if target < 0:
             raise InputError(f"{self.name}: tilt must be >= 0 (the pan gives the direction)")
-        if target == 0:
-            return self.linear_state(0.0)
+        if target == 0 or self._si["W"] >= self.critical_load():
+            try:
+                return self.linear_state(0.0)
+            except SpineBucklingError as exc:
+                raise UnreachableTiltError(f"{self.name}: the weight {self._si['W']:.4g} N alone buckles the spine "
+                                           f"(P_cr = {self.critical_load():.4g} N); reachable: no tilt") from exc
         guess: list[float] | None = None
 
         def state(T: float) -> SpineState:
@@ -298,11 +301,18 @@ class CableSpine:
             guess = [st.lateral, st.height, st.tilt]
             return st
 
-        T_lo, T_hi, last = 0.0, 0.05, None
-        while True:  # march up in tension (continuation) until the tilt is passed or the spine gives way
+        T_lo, step, last = 0.0, 0.05, None
+        while True:  # march up in tension (continuation), halving the step where no equilibrium is found
+            T_hi = T_lo + step
             try:
                 st = state(T_hi)
             except SpineBucklingError as exc:
+                if step > 1e-7 * max(1.0, T_lo):
+                    step *= 0.5
+                    if last is not None:
+                        guess = ([last.length, last.cable_angle, last.lowering] if method == "linear"
+                                 else [last.lateral, last.height, last.tilt])
+                    continue
                 raise UnreachableTiltError(
                     f"{self.name}: tilt {math.degrees(target):.4g} deg is not reached before the spine buckles "
                     f"(reachable: 0 to {math.degrees(last.tilt) if last else 0:.4g} deg, at T = "
@@ -313,7 +323,7 @@ class CableSpine:
                 raise UnreachableTiltError(f"{self.name}: the tilt stops growing at {math.degrees(last.tilt):.4g} "
                                            f"deg (T = {last.tension:.4g} N); {math.degrees(target):.4g} deg is "
                                            f"out of reach")
-            last, T_lo, T_hi = st, T_hi, T_hi * 1.25
+            last, T_lo, step = st, T_hi, min(step * 1.5, 0.25 * T_hi + 0.05)
         if last is not None:
             guess = ([last.length, last.cable_angle, last.lowering] if method == "linear"
                      else [last.lateral, last.height, last.tilt])
