@@ -59,7 +59,7 @@ def _bar(u: float, width: int = 10) -> str:
 
 def results_table(rs: Any) -> Table:
     """The table of one :class:`~mechverify.checks.ResultSet`, worst first."""
-    from mechverify.units import fmt
+    from mechverify.reports.numbers import number, quantity
 
     t = Table(title=rs.name, title_justify="left", show_lines=False)
     for col, just in (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
@@ -72,7 +72,7 @@ def results_table(rs: Any) -> Table:
         if any(n.startswith("Not verifiable") for n in r.notes):  # beyond the method's validity: no numbers
             demand, capacity, shown = "-", "-", "n/a"
         else:
-            demand, capacity, shown = fmt(r.demand), fmt(r.capacity), f"{fu:.3g}"
+            demand, capacity, shown = quantity(r.demand), quantity(r.capacity), number(fu)
         t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, demand, capacity,
                   shown, f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
     return t

@@ -18,6 +18,12 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", dest="json_out", type=Path, metavar="PATH", help="write the results as JSON")
     p.add_argument("--junit", type=Path, metavar="PATH", help="write JUnit XML for CI")
     p.add_argument("--report", type=Path, metavar="PATH", help="write an HTML or PDF report (.html/.pdf)")
+    p.add_argument("--detail", choices=("problems", "all"), default="problems",
+                   help="report detail (formulas, inputs, figures) for failing and warning checks (default) or all")
+    p.add_argument("--markdown", type=Path, metavar="PATH",
+                   help="write a Markdown summary (verdict, table of failing and warning checks) for a pull request")
+    p.add_argument("--github-step-summary", action="store_true",
+                   help="append the Markdown summary to $GITHUB_STEP_SUMMARY (GitHub Actions)")
     p.add_argument("--fail-on", default="fail", metavar="{fail,warn}",
                    help="exit 1 on 'fail' (default) or also on 'warn'")
     p.add_argument("--quiet", "-q", action="store_true", help="print only the verdicts")
@@ -33,7 +39,15 @@ def run(args: argparse.Namespace) -> int:
         raise Invalid(f"--fail-on: expected 'fail' or 'warn', got {args.fail_on!r}")
     if args.report is not None and args.report.suffix.lower() not in (".html", ".htm", ".pdf"):
         raise Invalid(f"--report: expected a .html or .pdf file name, got {str(args.report)!r}")
-    outputs = {"--json": args.json_out, "--junit": args.junit, "--report": args.report}
+    outputs = {"--json": args.json_out, "--junit": args.junit, "--report": args.report, "--markdown": args.markdown}
+    if args.github_step_summary:
+        from mechverify.errors import InputError
+        from mechverify.reports.markdown import step_summary_path
+
+        try:
+            step_summary_path()
+        except InputError as exc:
+            raise Invalid(str(exc)) from None
     check_output_paths(outputs, args.designs)  # before loading: nothing is read or written yet
     designs = load_designs(args.designs, args.allow_outside_includes)
     check_output_paths(outputs, input_files(designs, args.designs))  # the includes too
@@ -60,7 +74,15 @@ def run(args: argparse.Namespace) -> int:
     if args.report:
         from mechverify.reports import write_report
 
-        write_report(runs, args.report)
+        write_report(runs, args.report, detail=args.detail)
+    if args.markdown or args.github_step_summary:
+        from mechverify.reports.markdown import append_step_summary, check_markdown
+
+        md = check_markdown(runs)
+        if args.markdown:
+            write(args.markdown, md)
+        if args.github_step_summary:
+            append_step_summary(md)
     worst = max((rs.verdict for _, rs in runs), key=lambda v: v.rank, default=Verdict.PASS)
     for _, rs in runs:
         if not args.quiet:

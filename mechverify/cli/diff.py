@@ -21,6 +21,9 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     p.add_argument("head", type=Path, nargs="?", metavar="HEAD", help="the later design file")
     p.add_argument("--base-ref", metavar="REF", help="read BASE from this git ref (same path)")
     p.add_argument("--json", dest="json_out", type=Path, metavar="PATH", help="write the changes as JSON")
+    p.add_argument("--markdown", type=Path, metavar="PATH", help="write the changes as a Markdown table")
+    p.add_argument("--github-step-summary", action="store_true",
+                   help="append the Markdown table of changes to $GITHUB_STEP_SUMMARY (GitHub Actions)")
     add_allow_outside(p)
     p.set_defaults(run=run)
 
@@ -61,7 +64,16 @@ def run(args: argparse.Namespace) -> int:
         head = base
     elif head is None:
         raise Invalid("diff: give two design files, or one with --base-ref REF")
-    check_output_paths({"--json": args.json_out}, [args.base, head])
+    outputs = {"--json": args.json_out, "--markdown": args.markdown}
+    check_output_paths(outputs, [args.base, head])
+    if args.github_step_summary:
+        from mechverify.errors import InputError
+        from mechverify.reports.markdown import step_summary_path
+
+        try:
+            step_summary_path()
+        except InputError as exc:
+            raise Invalid(str(exc)) from None
 
     from mechverify.design import load
     from mechverify.errors import MechverifyError
@@ -72,7 +84,7 @@ def run(args: argparse.Namespace) -> int:
         try:
             db = load(base, args.allow_outside_includes)
             dh = load(head, args.allow_outside_includes)
-            check_output_paths({"--json": args.json_out}, list(dh.files) + [head])
+            check_output_paths(outputs, list(dh.files) + [head])
             if not dh.data.components:
                 raise Invalid(f"{head}: the design has no components, so there is nothing to compare")
             rb, rh = db.verify(), dh.verify()
@@ -112,4 +124,12 @@ def run(args: argparse.Namespace) -> int:
              "base": c.base.to_dict() if c.base else None, "head": c.head.to_dict() if c.head else None}
             for c in changes if c.status != "same"]}
         write(args.json_out, to_json(doc))
+    if args.markdown or args.github_step_summary:
+        from mechverify.reports.markdown import append_step_summary, diff_markdown
+
+        md = diff_markdown(changes, rb.name, rh.name)
+        if args.markdown:
+            write(args.markdown, md)
+        if args.github_step_summary:
+            append_step_summary(md)
     return 1 if lost else 0
