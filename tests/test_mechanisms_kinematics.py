@@ -101,7 +101,7 @@ def test_lever_arm_geometry_is_parallelograms():
 
 def test_lever_arm_reach_and_branch_errors():
     with pytest.raises(UnreachablePoseError, match=r"out of reach.*50 to 350 mm"):
-        ARM.inverse((Q(400, "mm"), Q(0, "mm"), Q(0, "mm")), "0 deg")
+        ARM.inverse((Q(401, "mm"), Q(0, "mm"), Q(0, "mm")), "0 deg")  # 400 mm is on the boundary: reachable
     with pytest.raises(UnreachablePoseError):
         ARM.inverse((Q(60, "mm"), Q(0, "mm"), Q(0, "mm")), "0 deg")  # B 10 mm from O: inside the dead zone
     with pytest.raises(InputError, match="elbow_branch"):

@@ -62,11 +62,15 @@ def _sign(ch: str, what: str) -> float:
     return 1.0 if ch == "+" else -1.0
 
 
+_CLOSE_TOL = 1e-9  # relative tolerance of a closure on the workspace boundary (acos/sqrt argument clamped)
+
+
 def _circle_intersection(c1: np.ndarray, r1: float, c2: np.ndarray, r2: float, side: float, what: str) -> np.ndarray:
     """The intersection of two circles on the left (side=+1) or right (-1) of the line c1 -> c2."""
     dvec = c2 - c1
     d = float(np.hypot(*dvec))
-    if d == 0 or d > r1 + r2 or d < abs(r1 - r2):
+    tol = _CLOSE_TOL * (r1 + r2)  # a point on the workspace boundary closes (round-off, not a reach error)
+    if d == 0 or d > r1 + r2 + tol or d < abs(r1 - r2) - tol:
         raise UnreachablePoseError(
             f"{what}: cannot close, the centres are {d * 1e3:.4g} mm apart but the links reach only "
             f"{abs(r1 - r2) * 1e3:.4g} to {(r1 + r2) * 1e3:.4g} mm")

@@ -146,7 +146,7 @@ class LeverArm:
             theta, u = _wrap(theta + math.pi), -u
         Bu, Bz = u - d * math.cos(ps), z - d * math.sin(ps)
         t = math.hypot(Bu, Bz)
-        if t > b + c or t < abs(b - c):
+        if t > (b + c) * (1 + 1e-9) or t < abs(b - c) - 1e-9 * (b + c):  # boundary points close (round-off)
             raise UnreachablePoseError(
                 f"{self.name}: tool point out of reach: the wrist pivot B would be {t * 1e3:.4g} mm from the "
                 f"shoulder axis, but OA = {b * 1e3:.4g} mm and AB = {c * 1e3:.4g} mm reach only "
