@@ -38,6 +38,7 @@ _KINDS: list[tuple[str, str, str, bool, int]] = [
     ("current", "A", "A", True, 3),
     ("temperature", "K", "K", False, 3),
     ("frequency", "Hz", "Hz", True, 3),
+    ("pv", "MPa*m/s", "MPa·m/s", False, 3),  # plain-bearing and nut pv rating
 ]
 
 _PREFIX = {-12: "p", -9: "n", -6: "µ", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
@@ -131,7 +132,9 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
             mant, e3 = _engineering(m, d)
             return f"{mant} {_PREFIX.get(e3, '')}s" if e3 in _PREFIX else f"{number(m, d)} s"
         return f"{number(m, d)} s"
-    if name == "stress":
+    if name == "stress":  # moduli in GPa, stresses in MPa, small pressures in Pa
+        if abs(m) >= 1e10:
+            return f"{number(m / 1e9, d)} GPa"
         return f"{number(m / 1e6, d)} MPa" if abs(m) >= 1e5 or m == 0 else f"{number(m, d)} Pa"
     if name == "temperature":
         return f"{number(float(q.m_as('degC')), d)} °C"
