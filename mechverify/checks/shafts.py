@@ -23,6 +23,13 @@ from mechverify.references import ref
 from mechverify.units import Q
 
 CRITERIA = ("goodman", "gerber", "asme_elliptic", "soderberg")
+_FORMULA = {
+    "goodman": r"\frac{1}{n} = \frac{\sigma_a'}{S_e} + \frac{\sigma_m'}{S_{ut}}",
+    "gerber": r"\frac{n\sigma_a'}{S_e} + \left(\frac{n\sigma_m'}{S_{ut}}\right)^2 = 1",
+    "asme_elliptic": r"\left(\frac{n\sigma_a'}{S_e}\right)^2 + \left(\frac{n\sigma_m'}{S_y}\right)^2 = 1",
+    "soderberg": r"\frac{1}{n} = \frac{\sigma_a'}{S_e} + \frac{\sigma_m'}{S_y}",
+}
+_DE = r",\ \sigma_a' = \sqrt{\left(\frac{32K_fM_a}{\pi d^3}\right)^2 + 3\left(\frac{16K_{fs}T_a}{\pi d^3}\right)^2}"
 _EQ = {"goodman": "Eq. 7-7", "gerber": "Eq. 7-9", "asme_elliptic": "Eq. 7-11", "soderberg": "Eq. 7-13"}
 
 
@@ -148,7 +155,7 @@ def check_shaft_fatigue(shaft: s.Shaft, a: ShaftAnalysis, *, criterion: str = "g
         check="shaft_fatigue", component=shaft.name, demand=_MPa(demand),
         capacity=_MPa(demand * n if math.isfinite(n) else 1e12), required_sf=required_sf,
         title=f"Shaft fatigue, DE-{criterion.replace('_', '-')}, at {g.name}",
-        formula=r"\frac{1}{n} = \frac{\sigma_a'}{S_e} + \frac{\sigma_m'}{S_{ut}}" if criterion == "goodman" else "",
+        formula=_FORMULA[criterion] + _DE,
         source=ref("shigley10", f"Sec. 7-4, {_EQ[criterion]}"),
         inputs={"d": Q(g.d * 1e3, "mm"), "M": Q(g.M, "N*m"), "T": Q(g.T, "N*m"), "Kt": Q(g.Kt, ""),
                 "Kts": Q(g.Kts, ""), "Kf": Q(g.Kf, ""), "Kfs": Q(g.Kfs, ""), "Se": _MPa(g.Se), "Sut": _MPa(Sut),
@@ -199,6 +206,7 @@ def check_shaft_bearing_slope(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: 
     return CheckResult(
         check="shaft_bearing_slope", component=shaft.name, demand=Q(a.slopes[sup.name], "rad"),
         capacity=Q(allow, "rad"), required_sf=required_sf, title=f"Shaft slope at bearing {sup.name} ({sup.bearing})",
+        formula=r"\theta = \sqrt{\theta_y^2 + \theta_z^2} \le \theta_{allow}\ \mathrm{(Table\ 7\text{-}2)}",
         source=ref("shigley10", "Table 7-2"), inputs={"bearing": sup.bearing}, load_case=load_case,
         notes=("Table 7-2 values are typed from the book and flagged unverified in components/data/shafts.toml",),
         details={"slopes": {k: v for k, v in a.slopes.items()}})
@@ -222,6 +230,7 @@ def check_shaft_gear_deflection(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf
         out.append(CheckResult(
             check="shaft_gear_deflection", component=shaft.name, demand=Q(y * 1e3, "mm"),
             capacity=Q(allow * 1e3, "mm"), required_sf=required_sf, title=f"Shaft deflection at gear {ld.name}",
+            formula=r"y = \sqrt{y_y^2 + y_z^2} \le y_{allow}(P)",
             source=ref("shigley10", "Table 7-2"), inputs={"module": Q(ld.module * 1e3, "mm"), "P": Q(P, "1/in")},
             load_case=load_case))
     return out
@@ -276,6 +285,7 @@ def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float 
     Sy = key_yield or _strengths(shaft)[1]
     return [CheckResult(check="shaft_key_shear", component=shaft.name, demand=_MPa(tau), capacity=_MPa(0.577 * Sy),
                         required_sf=required_sf, title=f"Key shear at {f.name or 'keyseat'}",
+                        formula=r"\tau = \frac{2T}{d\,b\,l} \le 0.577\,S_y",
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "b": Q(b * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
                         load_case=load_case)
@@ -293,6 +303,7 @@ def check_shaft_key_crushing(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: flo
     Sy = key_yield or _strengths(shaft)[1]
     return [CheckResult(check="shaft_key_crushing", component=shaft.name, demand=_MPa(p), capacity=_MPa(Sy),
                         required_sf=required_sf, title=f"Key crushing at {f.name or 'keyseat'}",
+                        formula=r"p = \frac{2T}{d\,(h - t_1)\,l} \le S_y",
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "h": Q(h * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
                         load_case=load_case)
