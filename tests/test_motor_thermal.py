@@ -101,10 +101,10 @@ def _hold_demand(m, force="2 N", cycle="20 s"):
 def test_check_winding_temperature_and_named_errors():
     d = _hold_demand(M6T, "8 N")
     r = check_motor_winding_temperature(d)
-    assert r.check == "motor_winding_temperature" and r.capacity.m_as("delta_degC") == pytest.approx(75)
+    assert r.check == "motor_winding_temperature" and r.capacity.m_as("") == 1.0
     I = M6T.current_si(d.motor_torque)
     th = winding_temperature_cycle(d.t, I, 1.47, 6.5, 17.6, 8.0, 300.0)
-    assert r.demand.m_as("delta_degC") == pytest.approx(th.peak_winding - 25, rel=1e-12)
+    assert r.demand.m_as("") == pytest.approx((th.peak_winding - 25) / 75, rel=1e-12)
     hot = check_motor_winding_temperature(d, ambient_temperature="60 degC")
     assert hot.utilisation > r.utilisation
     with pytest.raises(InputError, match="thermal_time_constant_winding"):
@@ -200,3 +200,49 @@ def test_inertia_matching_and_optimal_ratio():
     assert T2 <= cycle_rms(i2 * 1.01) and T2 <= cycle_rms(i2 / 1.01) and i2 > 10
     with pytest.raises(InputError):
         inertia_matching_ratio("0 kg*m**2", "1e-4 kg*m**2")
+
+
+# ------------------------------------------------------------------------------ design files
+_DRIVE = """
+[design]
+name = "thermal"
+[profiles.move]
+type = "trapezoidal"
+distance = "10 rad"
+max_velocity = "20 rad/s"
+acceleration = "200 rad/s^2"
+[components.d]
+type = "drive"
+motor_data = {{ type = "dc", name = "m6", nominal_voltage = "6 V", no_load_current = "52.9 mA", nominal_torque = "10.3 mN*m", terminal_resistance = "1.47 ohm", torque_constant = "8.91 mN*m/A", rotor_inertia = "2.68 g*cm^2", thermal_resistance_housing_ambient = "17.6 K/W", thermal_resistance_winding_housing = "6.5 K/W", max_winding_temperature = "100 degC"{extra_motor} }}
+inertia = "1e-6 kg*m^2"
+external_torque = "8 mN*m"
+profile = "move"
+cycle_time = "20 s"
+supply_voltage = "6 V"
+{extra}
+"""
+
+
+def _drive_design(tmp_path, extra="", extra_motor=', thermal_time_constant_winding = "8 s", '
+                  'thermal_time_constant_motor = "300 s"'):
+    from mechverify.design import load
+    p = tmp_path / "d.toml"
+    p.write_text(_DRIVE.format(extra=extra, extra_motor=extra_motor))
+    return load(p)
+
+
+def test_design_drive_thermal_and_regeneration(tmp_path):
+    """The design-file drive runs motor_winding_temperature when the motor has thermal data and
+    drive_regeneration with bus_capacitance and overvoltage_limit; the numbers are the API's."""
+    from mechverify.design import DesignFileError
+    d = _drive_design(tmp_path, 'bus_capacitance = "1000 uF"\novervoltage_limit = "7 V"\nambient_temperature = "40 degC"')
+    rs = d.verify()
+    th = rs.get("d", "motor_winding_temperature")
+    assert th.inputs["ambient"].m_as("degC") == 40
+    assert rs.get("d", "drive_regeneration").capacity.m_as("V") == 7
+    no_data = _drive_design(tmp_path, extra_motor="").verify()
+    assert not [r for r in no_data if r.check in ("motor_winding_temperature", "drive_regeneration")]
+    with pytest.raises(DesignFileError, match="thermal_time_constant_winding"):
+        _drive_design(tmp_path, "checks = { motor_winding_temperature = true }", extra_motor="").verify()
+    with pytest.raises(DesignFileError, match="bus_capacitance"):
+        _drive_design(tmp_path, 'bus_capacitance = "7 V"\novervoltage_limit = "7 V"')

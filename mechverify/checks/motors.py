@@ -351,8 +351,10 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
                                     component: str | None = None) -> CheckResult:
     """Peak winding temperature of the periodic duty cycle against the max. winding temperature [1].
 
-    Demand and capacity are temperature rises above ambient (so that the utilisation is the share of
-    the allowed rise used); the temperatures themselves are in the notes and details.
+    The demand is the winding's rise above ambient as a share of the allowed rise (T_peak − T_U)/(T_max − T_U),
+    the capacity 1, so that a required SF applies to the rise, not to a temperature on an arbitrary scale;
+    the temperatures themselves are in the notes and details. (Reported as a ratio because the report's
+    number formatter shows every temperature as an absolute °C value.)
     """
     m = _motor(demand, motor)
     Rth1, Rth2, tw, ts, Tmax = thermal_data(m)
@@ -365,7 +367,7 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
     Irms = rms(demand.t, current, demand.cycle_time)
     return CheckResult(
         check="motor_winding_temperature", component=component or m.name,
-        demand=Q(th.peak_winding - Ta, "delta_degC"), capacity=Q(Tmax - Ta, "delta_degC"),
+        demand=Q((th.peak_winding - Ta) / (Tmax - Ta)), capacity=Q(1.0),
         title="Motor winding temperature over the duty cycle",
         formula=r"C_w \dot T_w = I^2 R_{25}(1+\alpha(T_w-25)) - \frac{T_w-T_h}{R_{th1}},\ "
                 r"C_s \dot T_h = \frac{T_w-T_h}{R_{th1}} - \frac{T_h-T_U}{R_{th2}}",
@@ -373,7 +375,8 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
         inputs={"R_th1": m.thermal_resistance_winding_housing, "R_th2": m.thermal_resistance_housing_ambient,
                 "tau_w": m.thermal_time_constant_winding, "tau_s": m.thermal_time_constant_motor,
                 "ambient": Q(Ta, "degC"), "R_25": m.terminal_resistance},
-        notes=(f"peak winding temperature {th.peak_winding:.1f} degC (max. {Tmax:g} degC) at ambient {Ta:g} degC; "
+        notes=(f"rise {th.peak_winding - Ta:.1f} K of the allowed {Tmax - Ta:.1f} K: peak winding temperature "
+               f"{th.peak_winding:.1f} degC (max. {Tmax:g} degC) at ambient {Ta:g} degC; "
                f"housing {float(np.max(th.housing)):.1f} degC", f"RMS current {Irms:.3g} A, mean Joule loss "
                f"{th.steady_mean_power:.3g} W over the periodic cycle (alpha_Cu = {ALPHA_CU}/K)",
                "the duty cycle repeats without pause beyond the given cycle time; iron and friction losses "
@@ -434,7 +437,7 @@ def check_drive_regeneration(demand: TorqueDemand, supply_voltage: QuantityLike,
         title="Bus voltage rise from regeneration", formula=r"U = \sqrt{U_0^2 + 2E/C} \le U_{max}",
         source=f"{_SRC_MAXON}; capacitor energy E = C (U^2 - U0^2)/2",
         inputs={"U0": Q(U0, "V"), "C": Q(C * 1e6, "uF"), "U_max": Q(Ulim, "V")}, notes=tuple(notes),
-        load_case=_case(demand, min(worst_end, len(t) - 1)),
+        load_case=_case(demand, min(worst_end, len(t) - 1)) if events else "no braking in the cycle",
         details={"time": Q(t, "s"), "regenerated_power": Q(P, "W")})
 
 

@@ -25,7 +25,7 @@ import numpy as np
 from mechverify.checks import motors as mc
 from mechverify.checks.result import CheckResult
 from mechverify.components.gearheads import Gearhead, gearhead, gearhead_from_dict
-from mechverify.components.motors import motor, motor_from_dict
+from mechverify.components.motors import THERMAL_FIELDS, motor, motor_from_dict
 from mechverify.components.transmissions import BeltDrive, DirectDrive, Drum
 from mechverify.components.transmissions import ScrewDrive as ScrewStage
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
@@ -305,7 +305,12 @@ class Drive:
     supply_voltage: Any = None
     driver_current: Any = None
     inertia_ratio_limit: float | None = None
+    ambient_temperature: str | None = None
+    bus_capacitance: str | None = None
+    overvoltage_limit: Any = None
     reported: dict[str, Any] = dataclasses.field(default_factory=dict, compare=False, repr=False)
+    #: the last demands computed, (design, result): the 9 motor checks of one verify share them
+    memo: list[Any] = dataclasses.field(default_factory=list, compare=False, repr=False)
 
     def make_load(self, case: Mapping[str, Any]) -> LinearLoad | RotaryLoad:
         """The load with a load case's replacements: mass/inertia/external/gravity replaced, payload added,
@@ -341,7 +346,19 @@ class Drive:
         return [(lab, DriveTrain(self.motor, tuple(st), load, name=self.name)) for lab, st in combos]
 
     def demands(self, ctx: Any) -> list[tuple[str, Any, list[tuple[str, TorqueDemand]]]]:
-        """(load case, profile, [(variant, demand)]) for every case that names the drive, or its own profile once."""
+        """(load case, profile, [(variant, demand)]) for every case that names the drive, or its own profile once.
+
+        Computed once per design (every motor check of a verify asks for the same demands).
+        """
+        design = getattr(ctx, "design", None) if ctx is not None else None
+        if design is not None and self.memo and self.memo[0] is design:
+            return self.memo[1]
+        out = self._demands(ctx)
+        if design is not None:
+            self.memo[:] = [design, out]
+        return out
+
+    def _demands(self, ctx: Any) -> list[tuple[str, Any, list[tuple[str, TorqueDemand]]]]:
         cases = []
         if ctx is not None and getattr(ctx, "design", None) is not None:
             for case, comps in ctx.design.data.load_cases.items():
@@ -387,8 +404,16 @@ def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
     if errors:
         raise InputError("; ".join(errors))
     load = {k: p[k] for k in (*LINEAR_KEYS, *ROTARY_KEYS) if k in p}
+    for key, unit in (("ambient_temperature", "degC"), ("bus_capacitance", "F")):
+        if key in p:
+            try:
+                Q(p[key]).to(unit)
+            except Exception:  # pint raises several types for text that is not such a quantity
+                raise InputError(f"{key}: expected a value in {unit} units, got {p[key]!r}") from None
     d = Drive(p["_name"], m, g, tuple(tuple(s) for s in stages), load, kind, p["profile"],
-              p.get("cycle_time"), p.get("supply_voltage"), p.get("driver_current"), limit)
+              p.get("cycle_time"), p.get("supply_voltage"), p.get("driver_current"), limit,
+              ambient_temperature=p.get("ambient_temperature"), bus_capacitance=p.get("bus_capacitance"),
+              overvoltage_limit=p.get("overvoltage_limit"))
     # validate the chain (linear/rotary) and the own profile now, so the errors carry the drive's key path
     tr = d.trains()[0][1]
     prof = ctx.get("profile_objects", {}).get(p["profile"])
@@ -549,6 +574,23 @@ def _current(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | 
     return _or_none(lambda: mc.check_driver_current(dem, d.driver_current))
 
 
+def _thermal(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
+    """The winding temperature: DC motors with thermal data; asked for explicitly without them, the named error."""
+    entry = ctx.design.data.components.get(ctx.component) if getattr(ctx, "design", None) is not None else None
+    asked = entry is not None and entry.checks.get("motor_winding_temperature", {}).get("enabled") is True
+    if not asked and (d.motor.kind != "dc" or any(getattr(d.motor, f) is None for f in THERMAL_FIELDS)):
+        return None
+    return mc.check_motor_winding_temperature(dem, ambient_temperature=d.ambient_temperature or "25 degC")
+
+
+def _regen(d: Drive, dem: TorqueDemand, ctx: Any, prof: Any) -> CheckResult | None:
+    if d.bus_capacitance is None or d.overvoltage_limit is None or d.motor.kind != "dc":
+        return None
+    if d.supply_voltage is None:
+        raise InputError("drive_regeneration needs supply_voltage (the bus voltage before braking)")
+    return mc.check_drive_regeneration(dem, d.supply_voltage, d.bus_capacitance, d.overvoltage_limit)
+
+
 DRIVE = REGISTRY.register(ComponentType(
     name="drive",
     doc="A motor (catalogue name or inline data) with an optional gearhead and transmission stages moving a linear "
@@ -575,6 +617,9 @@ DRIVE = REGISTRY.register(ComponentType(
         Field("supply_voltage", "voltage", "DC motors: supply (driver output) voltage"),
         Field("driver_current", "current", "maximum current of the driver"),
         Field("inertia_ratio_limit", "float", "allowed load-to-rotor inertia ratio (default 10)"),
+        Field("ambient_temperature", "str", "motor ambient temperature (motor_winding_temperature; default '25 degC')"),
+        Field("bus_capacitance", "str", "supply/driver bus capacitance for drive_regeneration, e.g. '2200 uF'"),
+        Field("overvoltage_limit", "voltage", "driver's overvoltage limit for drive_regeneration"),
     ),
     build=lambda p, ctx: _build_drive(p, ctx),
     loads=(
@@ -599,5 +644,7 @@ DRIVE = REGISTRY.register(ComponentType(
         CheckSpec.of(mc.check_inertia_ratio, _drive_check(_inertia)),
         CheckSpec.of(mc.check_motor_supply_voltage, _drive_check(_voltage)),
         CheckSpec.of(mc.check_driver_current, _drive_check(_current)),
+        CheckSpec.of(mc.check_motor_winding_temperature, _drive_check(_thermal)),
+        CheckSpec.of(mc.check_drive_regeneration, _drive_check(_regen)),
     ),
 ))
