@@ -187,3 +187,34 @@ def test_ansi_square_key_table_7_6() -> None:
     assert standard_key(0.040) == pytest.approx({"b": 0.012, "h": 0.008, "t1": 0.005})
     with pytest.raises(InputError):
         standard_key(0.04, "iso")
+
+
+def test_helical_gear_axial_force_goes_to_the_locating_bearing() -> None:
+    """Helical gear, T = 100 N m, d = 0.2 m, psi = 20 deg: Wa = Wt tan(psi) = 364.0 N, carried by the locating
+    bearing alone (the floating one holds no axial motion); statics with the moment Wa d/2 of the axial force:
+    radial reactions in the gear's mesh plane change by +-Wa (d/2)/l (hand calculation)."""
+    g = gear_load("g", 0.3, 0.2, 100.0, helix_angle=20.0, angle=90.0)
+    sh = Shaft("h", (Segment(0.6, 0.04),), M, (Support("A", 0.0, locating=True), Support("B", 0.6)),
+               (g, force_load("in", 0.6, torque=-100.0)))
+    r = analyse(sh).reactions
+    Wa = 1000.0 * math.tan(math.radians(20))
+    assert r["A"].axial == pytest.approx(Wa)
+    assert r["B"].axial == pytest.approx(0.0, abs=1e-9)
+    # mesh point at +z: radial force -Wr along z, tangential -Wt along y; the axial force at z = +r makes
+    # My = r Fa about y; z-reactions: R_Az = Wr/2 + My/l, R_Bz = Wr/2 - My/l
+    Wr = 1000.0 * math.tan(math.radians(20)) / math.cos(math.radians(20))
+    assert r["A"].force[2] + r["B"].force[2] == pytest.approx(Wr)
+    assert abs(r["A"].force[2] - r["B"].force[2]) == pytest.approx(2 * 0.1 * Wa / 0.6)
+
+
+def test_spring_bearing_adds_its_compliance() -> None:
+    """Two radial springs k under a centre load P on a statically determinate shaft: the reactions are P/2 and the
+    centre deflection is P L^3/(48 E I) (Euler) + (P/2)/k (rigid-body sag of the bearings), hand calculation."""
+    k, P, L, d = 2e7, 1000.0, 1.0, 0.05
+    sh = Shaft("k", (Segment(L, d),), M, (Support("A", 0.0, kind="spring", stiffness=k, locating=True),
+                                         Support("B", L, kind="spring", stiffness=k)),
+               (force_load("P", L / 2, (0, 0, -P)),))
+    a = analyse(sh, theory="euler")
+    I = math.pi * d**4 / 64
+    assert a.reactions["A"].radial == pytest.approx(P / 2)
+    assert a.at(L / 2)["deflection"] == pytest.approx(P * L**3 / (48 * E * I) + P / 2 / k, rel=1e-9)
