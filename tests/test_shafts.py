@@ -218,3 +218,20 @@ def test_spring_bearing_adds_its_compliance() -> None:
     I = math.pi * d**4 / 64
     assert a.reactions["A"].radial == pytest.approx(P / 2)
     assert a.at(L / 2)["deflection"] == pytest.approx(P * L**3 / (48 * E * I) + P / 2 / k, rel=1e-9)
+
+
+def test_cantilever_on_a_fixed_support_and_non_rotating_fatigue() -> None:
+    """One fixed support (an overhung stub): reaction P, wall moment P L, tip deflection P L^3/(3 E I) (Table A-9-1,
+    Euler). Non-rotating with steady loads: the bending stress is a mean stress, sigma_a' = 0, so DE-Goodman gives
+    n = Sut/sigma_m' (hand calculation)."""
+    P, L, d = 500.0, 0.2, 0.03
+    sh = Shaft("c", (Segment(L, d),), M, (Support("A", 0.0, kind="fixed"),), (force_load("P", L, (0, 0, -P)),),
+               rotating=False)
+    a = analyse(sh, theory="euler")
+    I = math.pi * d**4 / 64
+    assert a.reactions["A"].radial == pytest.approx(P)
+    assert a.max_moment() == pytest.approx((0.0, P * L))
+    assert a.at(L)["deflection"] == pytest.approx(P * L**3 / (3 * E * I), rel=1e-9)
+    r = cs.check_shaft_fatigue(sh, a)
+    Sut = M.require("ultimate_strength").m_as("Pa")
+    assert r.safety_factor == pytest.approx(Sut / (32 * P * L / (math.pi * d**3)), rel=1e-9)
