@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.components import shafts as s
 from mechverify.errors import InputError
 from mechverify.fatigue import criteria, notch
@@ -257,7 +257,7 @@ def check_shaft_critical_speed(shaft: s.Shaft, cs: CriticalSpeed, *, required_sf
                 "masses": len(cs.masses)}, load_case=load_case)
 
 
-def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, float, float, float, float]]:
+def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, float, float, float, float, float, float]]:
     out = []
     for f in shaft.features:
         if f.kind != "keyseat":
@@ -269,8 +269,9 @@ def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, floa
         h = std["h"] if not f.width else std["h"] * b / std["b"]
         if not f.length > 0:
             raise InputError(f"shaft {shaft.name}: keyseat {f.name}: give the key length for the key checks")
-        tau, p = s.key_stresses(a.at(f.x)["T"], d, b, h, t1, f.length)
-        out.append((f, d, b, h, tau, p))
+        T = a.at(f.x)["T"]
+        tau, p = s.key_stresses(T, d, b, h, t1, f.length)
+        out.append((f, d, b, h, tau, p, T, t1))
     return out
 
 
@@ -286,10 +287,13 @@ def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float 
     return [CheckResult(check="shaft_key_shear", component=shaft.name, demand=_MPa(tau), capacity=_MPa(0.577 * Sy),
                         required_sf=required_sf, title=f"Key shear at {f.name or 'keyseat'}",
                         formula=r"\tau = \frac{2T}{d\,b\,l} \le 0.577\,S_y",
+                        substituted=(rf"\tau = \frac{{2\cdot {tex(Q(T, 'N*m'))}}}{{{tex(Q(d * 1e3, 'mm'))}\cdot "
+                                     rf"{tex(Q(b * 1e3, 'mm'))}\cdot {tex(Q(f.length * 1e3, 'mm'))}}} = "
+                                     rf"{tex(Q(tau / 1e6, 'MPa'))}"),
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "b": Q(b * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
                         load_case=load_case)
-            for f, d, b, h, tau, p in _keys(shaft, a)]
+            for f, d, b, h, tau, p, T, t1 in _keys(shaft, a)]
 
 
 @check("shaft_key_crushing", title="Parallel key crushing (bearing)", sf_kind="static",
@@ -304,7 +308,10 @@ def check_shaft_key_crushing(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: flo
     return [CheckResult(check="shaft_key_crushing", component=shaft.name, demand=_MPa(p), capacity=_MPa(Sy),
                         required_sf=required_sf, title=f"Key crushing at {f.name or 'keyseat'}",
                         formula=r"p = \frac{2T}{d\,(h - t_1)\,l} \le S_y",
+                        substituted=(rf"p = \frac{{2\cdot {tex(Q(T, 'N*m'))}}}{{{tex(Q(d * 1e3, 'mm'))}\cdot "
+                                     rf"{tex(Q((h - t1) * 1e3, 'mm'))}\cdot {tex(Q(f.length * 1e3, 'mm'))}}} = "
+                                     rf"{tex(Q(p / 1e6, 'MPa'))}"),
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "h": Q(h * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
                         load_case=load_case)
-            for f, d, b, h, tau, p in _keys(shaft, a)]
+            for f, d, b, h, tau, p, T, t1 in _keys(shaft, a)]

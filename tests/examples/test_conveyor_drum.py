@@ -108,3 +108,17 @@ def test_cli_check_runs(capsys: pytest.CaptureFixture[str]) -> None:
     code = main(["check", str(DESIGN)])
     assert code in (0, 1)
     assert "drum_shaft" in capsys.readouterr().out
+
+
+def test_key_substituted_lines_evaluate_to_the_result(results: dict) -> None:
+    """The report's substituted key lines (issue 25 format) evaluate back to the printed stress and the demand."""
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("subst", Path(__file__).parents[1] / "test_reports_substituted.py")
+    mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
+    spec.loader.exec_module(mod)  # type: ignore[union-attr]
+    for name in ("shaft_key_shear", "shaft_key_crushing"):
+        r = results[("drum_shaft", name)]
+        value, printed = mod.evaluate(r.substituted)
+        assert value.m_as("MPa") == pytest.approx(printed.m_as("MPa"), rel=1e-3)
+        assert printed.m_as("MPa") == pytest.approx(r.demand.m_as("MPa"), rel=1e-3)
