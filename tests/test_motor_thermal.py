@@ -246,3 +246,17 @@ def test_design_drive_thermal_and_regeneration(tmp_path):
         _drive_design(tmp_path, "checks = { motor_winding_temperature = true }", extra_motor="").verify()
     with pytest.raises(DesignFileError, match="bus_capacitance"):
         _drive_design(tmp_path, 'bus_capacitance = "7 V"\novervoltage_limit = "7 V"')
+
+
+def test_stepper_driver_current_is_the_rated_phase_current():
+    """A chopper driver holds the stepper's phase current at its setting whatever the torque (Oriental Motor):
+    the 004 stepper's rated 1.7 A against a 1.5 A and a 2 A driver."""
+    from mechverify.checks.motors import check_driver_current
+    d = _hold_demand(motor("stepper 004"))
+    assert check_driver_current(d, "1.5 A").verdict.value == "fail"
+    r = check_driver_current(d, "2 A")
+    assert r.verdict.value == "pass" and r.demand.m_as("A") == pytest.approx(1.7)
+    with pytest.raises(InputError, match="rated_current"):
+        check_driver_current(_hold_demand(StepperMotor("s", step_angle="1.8 deg", holding_torque="0.5 N*m",
+                                                       pullout_speeds=["0 rpm", "600 rpm"],
+                                                       pullout_torques=["0.4 N*m", "0.2 N*m"])), "2 A")

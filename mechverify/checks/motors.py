@@ -327,7 +327,8 @@ def check_driver_current(demand: TorqueDemand, max_current: QuantityLike, motor:
         check="driver_current", component=component or m.name, demand=from_si(float(current[i]), "current"),
         capacity=from_si(to_si(max_current, "current", "max_current"), "current"),
         title="Driver current covers the worst operating point",
-        formula=r"I = |T|/k_t + I_0 \le I_{driver}" if m.kind == "dc" else r"I = I_0 + (I_H - I_0)\,|T|/T_H",
+        formula={"dc": r"I = |T|/k_t + I_0 \le I_{driver}", "stepper": r"I = I_{rated,phase} \le I_{driver}"}.get(
+            m.kind, r"I = I_0 + (I_H - I_0)\,|T|/T_H"),
         source=_SRC_MAXON, load_case=_case(demand, i))
 
 

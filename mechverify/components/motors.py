@@ -374,6 +374,13 @@ class StepperMotor:
         ws, ts = self.pullout_speeds.magnitude, self.pullout_torques.magnitude
         return np.interp(w, ws, ts, left=ts[0], right=0.0) * (w <= ws[-1] * (1 + 1e-12))
 
+    def current_si(self, torque: Any) -> np.ndarray:
+        """Phase current [A] the driver must supply: the rated phase current at every point, whatever the torque
+        (a chopper driver regulates the phase current to its setting; [3]). Needs ``rated_current``."""
+        if self.rated_current is None:
+            raise InputError(f"stepper {self.name!r}: no rated_current, so the driver current cannot be checked")
+        return np.full_like(np.asarray(torque, float), _si(self.rated_current))
+
     def torque_speed_curve(self, voltage: Any = None, n: int = 0) -> tuple[pint.Quantity, pint.Quantity]:
         if not self.has_curve:
             raise InputError(f"stepper {self.name!r} has no pull-out curve")
