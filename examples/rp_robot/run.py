@@ -3,7 +3,8 @@
 What a design file cannot hold yet is done here with the Python API:
 
 1. The clover path r(phi) = 8 cm - 1.5 cm cos(4 phi) around (12.5 cm, 37.5 cm), walked at the
-   document's constant tangential speed of 1.4 cm/s, and the RP inverse kinematics
+   document's constant tangential speed of 1.4 cm/s (``mechverify.mechanisms.paths.walk_polar``; the
+   RP arm's rates, accelerations and Lagrange joint loads are ``RPArm`` there), and the RP inverse kinematics
    q2 = sqrt(x^2 + y^2) (prismatic), q1 = atan2(y, x) (revolute) at every sample. The joint
    motions are written to ``clover_profiles.toml`` as two ``sampled`` profiles, which
    ``design.toml`` includes for the revolute-joint drives.
@@ -35,6 +36,7 @@ from mechverify.components.motors import motor
 from mechverify.components.power_screw import LeadScrew, Nut
 from mechverify.components.threads import generic
 from mechverify.components.transmissions import ScrewDrive
+from mechverify.mechanisms.paths import walk_polar
 from mechverify.motion import profiles as pr
 from mechverify.motion.drive_train import DriveTrain, LinearLoad, TorqueDemand
 from mechverify.units import Q
@@ -58,20 +60,11 @@ LEAD, STARTS = Q(8, "mm"), 4
 
 # ---------------------------------------------------------------- path and inverse kinematics
 def clover_path(n: int = N_SAMPLES, speed: float = SPEED) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(t [s], x [m], y [m]) of one loop of the clover, equally spaced in arc length (constant speed).
-
-    The polar curve r(phi) is sampled finely, its arc length s(phi) integrated by the trapezoidal rule,
-    and phi found at n equal steps of s; t = s / speed. The last sample closes the loop.
-    """
-    phi = np.linspace(0.0, 2 * math.pi, 20001)
-    r = R0 - R1 * np.cos(LOBES * phi)
-    dr = LOBES * R1 * np.sin(LOBES * phi)
-    ds = np.sqrt(r**2 + dr**2)
-    s = np.concatenate([[0.0], np.cumsum(0.5 * (ds[1:] + ds[:-1]) * np.diff(phi))])
-    s_k = np.linspace(0.0, s[-1], n + 1)
-    phi_k = np.interp(s_k, s, phi)
-    r_k = R0 - R1 * np.cos(LOBES * phi_k)
-    return s_k / speed, r_k * np.cos(phi_k) + CENTRE[0], r_k * np.sin(phi_k) + CENTRE[1]
+    """(t [s], x [m], y [m]) of one loop of the clover, equally spaced in arc length (constant speed):
+    :func:`mechverify.mechanisms.paths.walk_polar` on r(phi) = R0 - R1 cos(LOBES phi). The last sample
+    closes the loop."""
+    p = walk_polar(lambda phi: R0 - R1 * np.cos(LOBES * phi), Q(speed, "m/s"), centre=CENTRE, samples=n)
+    return p.t, p.x, p.y
 
 
 def inverse_kinematics(x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

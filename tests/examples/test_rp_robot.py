@@ -175,3 +175,21 @@ def test_sensor_resolutions(run):
     s = run.sensor_resolutions()
     assert s["revolute_step"].m_as("deg") == pytest.approx(432 / 1024)
     assert s["prismatic_step"].m_as("mm") == pytest.approx(8 * 10 / 360)
+
+
+def test_sampled_profiles_agree_with_the_exact_joint_rates(run):
+    """The drives get sampled joint profiles (clover_profiles.toml); their rates (differentiated by the profile)
+    agree with the exact rates of the RP inverse kinematics on the curve's derivatives
+    (mechverify.mechanisms.paths: q1' = (x y' - y x')/q2^2, q2' = (x x' + y y')/q2) to 1 % of the peak.
+    The exact peak revolute speed is 2.60 deg/s (hand calculation from the path, the document reads 3 deg/s)."""
+    from mechverify.mechanisms.paths import RPArm, walk_polar
+
+    p = walk_polar(lambda ph: 0.08 - 0.015 * np.cos(4 * ph), "1.4 cm/s", centre=(0.125, 0.375), samples=400)
+    j = RPArm().inverse(p)
+    rev, pris = run.joint_profiles()
+    sr, sp = rev.sample(), pris.sample()
+    w_exact = np.interp(sr.t, j.t, j.dq1)
+    v_exact = np.interp(sp.t, j.t, j.dq2)
+    assert np.max(np.abs(sr.v - w_exact)[2:-2]) < 0.01 * np.max(np.abs(j.dq1))
+    assert np.max(np.abs(sp.v - v_exact)[2:-2]) < 0.01 * np.max(np.abs(j.dq2))
+    assert math.degrees(np.max(np.abs(j.dq1))) == pytest.approx(2.60, abs=0.01)
