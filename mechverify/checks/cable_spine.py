@@ -37,6 +37,20 @@ def check_spine_buckling_ratio(spine: CableSpine, state: SpineState, *, required
         load_case=load_case)
 
 
+def check_spine_past_buckling(spine: CableSpine, reason: str, *, required_sf: float = 1.0,
+                              load_case: str = "") -> CheckResult:
+    """The ``spine_buckling_ratio`` result when no equilibrium exists at the asked tilt: the largest axial
+    load the spine can carry against the top load it would need (at least the weight), a FAIL."""
+    Pcr = spine.critical_load()
+    W = spine._si["W"]
+    return CheckResult(
+        check="spine_buckling_ratio", component=spine.name, demand=Q(max(W, Pcr), "N"), capacity=Q(Pcr, "N"),
+        required_sf=max(required_sf, 1.0 + 1e-9), title="Spring spine buckling (fixed-free, with shear)",
+        formula=r"P \le P_{cr} = \frac{P_e}{1 + P_e/\gamma},\ P_e = \frac{\pi^2 \beta}{4 l^2}",
+        source=ref(TG, "Sec. 2.18, Eq. (2-46)"), inputs={"W": Q(W, "N")},
+        notes=(f"no equilibrium at this tilt: {reason}",), load_case=load_case)
+
+
 @check("cable_tension", title="Cable tension against the cable rating", sf_kind="static",
        source=ref(TG, "Sec. 2.18 (spine model); the rating is the cable maker's"),
        explain=("The largest cable tension that holds the platform at the pose (spine beam-column or elastica "

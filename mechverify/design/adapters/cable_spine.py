@@ -17,7 +17,7 @@ from mechverify.components.springs import CompressionSpring
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
-from mechverify.mechanisms.cable_spine import CableSpine, SpineState
+from mechverify.mechanisms.cable_spine import CableSpine, SpineState, UnreachableTiltError
 from mechverify.units import Q
 
 DIAMETERS = {"mean_diameter": "D", "outside_diameter": "OD", "inside_diameter": "ID"}
@@ -59,7 +59,11 @@ def _build(p: dict[str, Any], ctx: Any) -> SpineInstallation:
 
 
 def _buckling(c: SpineInstallation, loads: Any, ctx: Any) -> Any:
-    return cc.check_spine_buckling_ratio(c.spine, c.state(loads), required_sf=ctx.required_sf, load_case=ctx.load_case)
+    try:
+        state = c.state(loads)
+    except UnreachableTiltError as exc:  # past buckling: a FAIL with the load ratio, not a solver failure
+        return cc.check_spine_past_buckling(c.spine, str(exc), required_sf=ctx.required_sf, load_case=ctx.load_case)
+    return cc.check_spine_buckling_ratio(c.spine, state, required_sf=ctx.required_sf, load_case=ctx.load_case)
 
 
 def _rating(c: SpineInstallation, loads: Any, ctx: Any) -> Any:
