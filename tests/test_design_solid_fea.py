@@ -83,3 +83,22 @@ def test_example_bracket_runs():
     res = mechverify.load(path).verify()
     assert {r.check for r in res} == {"solid_stress", "solid_deflection", "natural_frequency", "buckling_load_factor"}
     assert all(r.verdict == "pass" for r in res)
+
+
+def test_convergence_check_and_fatigue(tmp_path):
+    """The two-mesh check solves again at 2 x mesh_size and reports the change of the peak (the clamp corner of
+    a cantilever is a singularity, so the peak keeps changing: a WARN naming the refinement); the fatigue check
+    of the field runs on request, fully reversed by default (alternating = peak von Mises, mean 0)."""
+    extra = ('convergence_check = true\nconvergence_tolerance = 0.01\n'
+             'checks.fatigue_field = true\nfatigue_life = 1e6')
+    res = _load(tmp_path, extra=extra).verify()
+    by = {r.check: r for r in res}
+    stress = by["solid_stress"]
+    assert any("two-mesh check" in n for n in stress.notes)
+    assert any("mesh convergence" in w and "refine" in w for w in stress.warnings)
+    fat = by["fatigue_field"]
+    assert fat.load_case == "tip"
+    # fully reversed: alternating = the peak von Mises of the case (= solid_stress demand), mean 0
+    assert fat.inputs["sigma_a"].m_as("MPa") == pytest.approx(stress.demand.m_as("MPa"), rel=1e-9)
+    assert fat.inputs["sigma_m"].m_as("MPa") == 0
+    assert fat.verdict == "fail"  # 119 MPa against S_f = 86 MPa at 1e6 cycles (structural steel, Shigley Marin)

@@ -11,95 +11,19 @@ from __future__ import annotations
 
 import contextlib
 import dataclasses
-import math
 from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
 from mechverify.checks import fea as fc
+from mechverify.checks.fatigue import check_fatigue_field
 from mechverify.checks.result import CheckResult
+from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, UnknownNameError
-from mechverify.units import Q, as_quantity
+from mechverify.units import Q
 
 LOADS = ("forces|pressures|pin_loads|gravity",)
-
-
-def _num(s: str, unit: str, dim: str, path: str) -> float:
-    s = s.strip()
-    try:
-        return float(Q(float(s), unit).to_base_units().m)
-    except ValueError:
-        return float(as_quantity(s, dim, path).to_base_units().m)
-
-
-def _vec(v: Any, unit: str, dim: str, path: str) -> tuple[float, float, float]:
-    parts = v.split(",") if isinstance(v, str) else []
-    if len(parts) != 3:
-        raise InputError(f"{path}: expected three components \"x, y, z\" (numbers in {unit} or quantities), got {v!r}")
-    return tuple(_num(p, unit, dim, f"{path}") for p in parts)  # type: ignore[return-value]
-
-
-def _region(t: Any, unit: str, path: str) -> Any:
-    from mechverify.fea.regions import Box, Named, Plane
-
-    if not isinstance(t, Mapping):
-        raise InputError(f"{path}: expected a table with named, face, plane or box, got {t!r}")
-    keys = [k for k in ("named", "face", "plane", "box") if k in t]
-    if len(keys) != 1:
-        raise InputError(f"{path}: give exactly one of named, face, plane, box (got {keys or 'none'})")
-    k = keys[0]
-    if k == "named":
-        return Named(str(t["named"]))
-    if k == "face":
-        return Named(f"face{int(t['face'])}")
-    if k == "plane":
-        axis, _, val = str(t["plane"]).partition("=")
-        if axis.strip() not in ("x", "y", "z") or not val.strip():
-            raise InputError(f"{path}.plane: expected \"x = value\" (or y, z), got {t['plane']!r}")
-        return Plane(**{axis.strip(): Q(_num(val, unit, "length", f"{path}.plane"), "m")})
-    b = t["box"]
-    if not (isinstance(b, list) and len(b) == 2):
-        raise InputError(f"{path}.box: expected two corners [\"x0, y0, z0\", \"x1, y1, z1\"], got {b!r}")
-    lo, hi = (_vec(c, unit, "length", f"{path}.box[{i}]") for i, c in enumerate(b))
-    return Box(tuple(Q(v, "m") for v in lo), tuple(Q(v, "m") for v in hi))
-
-
-def _supports(items: Any, unit: str) -> tuple[Any, ...]:
-    from mechverify.fea.loads import Fixed, Support
-
-    out = []
-    for i, s in enumerate(items or []):
-        path = f"supports[{i}]"
-        region = _region(s, unit, path)
-        hold = s.get("hold", "x, y, z")
-        comps = {c.strip() for c in str(hold).split(",")}
-        if not comps <= {"x", "y", "z"} or not comps:
-            raise InputError(f"{path}.hold: expected components such as \"x, z\", got {hold!r}")
-        out.append(Fixed(region) if comps == {"x", "y", "z"} else Support(region, *(c in comps for c in "xyz")))
-    if not out:
-        raise InputError("supports: give at least one support ({named | face | plane | box, hold})")
-    return tuple(out)
-
-
-def _loads(loads: Mapping[str, Any], unit: str, path: str, g: Any) -> tuple[Any, ...]:
-    from mechverify.fea.loads import Force, Gravity, PinLoad, Pressure
-
-    out: list[Any] = []
-    for key, cls in (("forces", Force), ("pin_loads", PinLoad)):
-        for i, t in enumerate(loads.get(key, []) or []):
-            p = f"{path}.{key}[{i}]"
-            if not isinstance(t, Mapping) or "force" not in t:
-                raise InputError(f"{p}: expected {{region..., force = \"fx, fy, fz\"}} (numbers in N or forces)")
-            out.append(cls(_region(t, unit, p), tuple(Q(v, "N") for v in _vec(t["force"], "N", "force", f"{p}.force"))))
-    for i, t in enumerate(loads.get("pressures", []) or []):
-        p = f"{path}.pressures[{i}]"
-        if not isinstance(t, Mapping) or "pressure" not in t:
-            raise InputError(f"{p}: expected {{region..., pressure = \"1 MPa\"}}")
-        out.append(Pressure(_region(t, unit, p), as_quantity(t["pressure"], "pressure", f"{p}.pressure")))
-    if loads.get("gravity"):
-        out.append(Gravity((0.0, 0.0, -g.m_as("m/s**2"))))
-    return tuple(out)
 
 
 @dataclasses.dataclass(eq=False)
@@ -146,35 +70,6 @@ class SolidStudy:
             raise InputError(f"{str(exc).split(';')[0]}; valid regions: {names}") from None
 
 
-def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
-    from mechverify.fea import mesh, study
-
-    h = p["mesh_size"].m_as("m")
-    what = f"components.{p['_name']}.mesh_size"
-    if "step" in p:
-        study.require_memory(study.step_volume(p["step"]), h, what)
-        return mesh.from_step(p["step"], p["mesh_size"], unit=unit)
-    if "stl" in p:
-        study.require_memory(mesh.stl_properties(p["stl"], unit).volume.m_as("m**3"), h, what)
-        return mesh.from_stl(p["stl"], p["mesh_size"], unit=unit)
-    size = _vec(p["box"], unit, "length", "box")
-    if min(size) <= 0:
-        raise InputError(f"box: three positive lengths, got {p['box']!r}")
-    study.require_memory(math.prod(size), h, what)
-    holes = []
-    for i, t in enumerate(p.get("holes", []) or []):
-        if not isinstance(t, Mapping) or not {"center", "diameter"} <= set(t):
-            raise InputError(f"holes[{i}]: expected {{center = \"x, y\", diameter = \"8.5 mm\"}}, got {t!r}")
-        c = [_num(s, unit, "length", f"holes[{i}].center") for s in str(t["center"]).split(",")]
-        if len(c) != 2:
-            raise InputError(f"holes[{i}].center: expected \"x, y\", got {t['center']!r}")
-        holes.append(((Q(c[0], "m"), Q(c[1], "m")), t["diameter"]))
-    if not holes:
-        divs = tuple(max(1, round(s / h)) for s in size)
-        return mesh.box(tuple(Q(s, "m") for s in size), divs)
-    return mesh.block_with_holes(tuple(Q(s, "m") for s in size), holes, p["mesh_size"])
-
-
 def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     sources = [k for k in ("step", "stl", "box") if k in p]
     if len(sources) != 1:
@@ -199,7 +94,35 @@ def _g(ctx: Any) -> Any:
 
 
 def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
-    return fc.check_solid_stress(c.solve(loads, ctx.load_case, _g(ctx)), component=c.name)
+    res = c.solve(loads, ctx.load_case, _g(ctx))
+    notes, warns = [], []
+    if c.p.get("convergence_check"):
+        from mechverify.fea.solid import SolidModel
+        from mechverify.fea.study import two_mesh_check
+
+        coarse_mesh = _make_mesh({**c.p, "mesh_size": 2 * c.p["mesh_size"]}, c.unit)
+        model = SolidModel(coarse_mesh, c.p["material"], supports=c.supports,
+                           loads=_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
+        with c.regions():
+            coarse = model.solve().max_von_mises.value.m_as("MPa")
+        chk = two_mesh_check(coarse, res.max_von_mises.value.m_as("MPa"), 2.0, 2.0,
+                             float(c.p.get("convergence_tolerance", 0.05)))
+        notes.append(f"two-mesh check: peak von Mises {coarse:.4g} MPa at mesh_size x 2, {chk.fine:.4g} MPa at "
+                     f"mesh_size (change {100 * chk.change:.3g} %, Richardson error estimate "
+                     f"{100 * chk.estimated_error:.3g} %)")
+        warns += [chk.warning] if chk.warning else []
+    return fc.check_solid_stress(res, component=c.name, notes=notes, warnings=warns)
+
+
+def _fatigue(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
+    res = c.solve(loads, ctx.load_case, _g(ctx))
+    r = float(c.p.get("fatigue_stress_ratio", -1.0))
+    if not -1.0 <= r < 1.0:
+        raise InputError(f"fatigue_stress_ratio: R = sigma_min / sigma_max in [-1, 1), got {r}")
+    s = res.signed_von_mises().m_as("Pa")  # the load case is the peak of the cycle; R gives its valley
+    life = c.p.get("fatigue_life")
+    return check_fatigue_field(c.name, Q(abs(s) * (1 - r) / 2, "Pa"), Q(s * (1 + r) / 2, "Pa"), res.material,
+                               coordinates=Q(res.points, "m"), life=float(life) if life is not None else None)
 
 
 def _deflection(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
@@ -255,6 +178,12 @@ SOLID_FEA = REGISTRY.register(ComponentType(
         Field("excitation_band", "list", "[lo, hi] excitation frequencies no mode may come near", item="str"),
         Field("frequency_margin", "float", "separation from the excitation band (0.15 = 15 %)", default=0.15),
         Field("modes", "int", "natural frequencies computed", default=6),
+        Field("convergence_check", "bool", "also solve at 2 x mesh_size and WARN when the peak stress changes more "
+                                           "than convergence_tolerance"),
+        Field("convergence_tolerance", "float", "tolerance of the two-mesh check", default=0.05),
+        Field("fatigue_stress_ratio", "float", "R = sigma_min/sigma_max of the cycle whose peak is the load case "
+                                               "(check fatigue_field; -1 fully reversed)", default=-1.0),
+        Field("fatigue_life", "float", "design life in cycles (default: infinite life)"),
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
@@ -268,5 +197,6 @@ SOLID_FEA = REGISTRY.register(ComponentType(
         CheckSpec.of(fc.check_solid_deflection, _deflection, needs=LOADS),
         CheckSpec.of(fc.check_natural_frequency, _frequency),
         CheckSpec.of(fc.check_buckling_load_factor, _buckling, needs=LOADS, default=False),
+        CheckSpec.of(check_fatigue_field, _fatigue, needs=LOADS, default=False),
     ),
 ))

@@ -1,0 +1,118 @@
+"""Design-file parsing of the ``solid_fea`` type (adapters/solid_fea.py): numbers and vectors in the component's
+unit, regions (``named``, ``face``, ``plane``, ``box``), supports, loads, and the mesh from ``step``/``stl``/``box``
+(with the memory estimate before meshing)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import Any
+
+from mechverify.errors import InputError
+from mechverify.units import Q, as_quantity
+
+
+def _num(s: str, unit: str, dim: str, path: str) -> float:
+    s = s.strip()
+    try:
+        return float(Q(float(s), unit).to_base_units().m)
+    except ValueError:
+        return float(as_quantity(s, dim, path).to_base_units().m)
+
+
+def _vec(v: Any, unit: str, dim: str, path: str) -> tuple[float, float, float]:
+    parts = v.split(",") if isinstance(v, str) else []
+    if len(parts) != 3:
+        raise InputError(f"{path}: expected three components \"x, y, z\" (numbers in {unit} or quantities), got {v!r}")
+    return tuple(_num(p, unit, dim, f"{path}") for p in parts)  # type: ignore[return-value]
+
+
+def _region(t: Any, unit: str, path: str) -> Any:
+    from mechverify.fea.regions import Box, Named, Plane
+
+    if not isinstance(t, Mapping):
+        raise InputError(f"{path}: expected a table with named, face, plane or box, got {t!r}")
+    keys = [k for k in ("named", "face", "plane", "box") if k in t]
+    if len(keys) != 1:
+        raise InputError(f"{path}: give exactly one of named, face, plane, box (got {keys or 'none'})")
+    k = keys[0]
+    if k == "named":
+        return Named(str(t["named"]))
+    if k == "face":
+        return Named(f"face{int(t['face'])}")
+    if k == "plane":
+        axis, _, val = str(t["plane"]).partition("=")
+        if axis.strip() not in ("x", "y", "z") or not val.strip():
+            raise InputError(f"{path}.plane: expected \"x = value\" (or y, z), got {t['plane']!r}")
+        return Plane(**{axis.strip(): Q(_num(val, unit, "length", f"{path}.plane"), "m")})
+    b = t["box"]
+    if not (isinstance(b, list) and len(b) == 2):
+        raise InputError(f"{path}.box: expected two corners [\"x0, y0, z0\", \"x1, y1, z1\"], got {b!r}")
+    lo, hi = (_vec(c, unit, "length", f"{path}.box[{i}]") for i, c in enumerate(b))
+    return Box(tuple(Q(v, "m") for v in lo), tuple(Q(v, "m") for v in hi))
+
+
+def _supports(items: Any, unit: str) -> tuple[Any, ...]:
+    from mechverify.fea.loads import Fixed, Support
+
+    out = []
+    for i, s in enumerate(items or []):
+        path = f"supports[{i}]"
+        region = _region(s, unit, path)
+        hold = s.get("hold", "x, y, z")
+        comps = {c.strip() for c in str(hold).split(",")}
+        if not comps <= {"x", "y", "z"} or not comps:
+            raise InputError(f"{path}.hold: expected components such as \"x, z\", got {hold!r}")
+        out.append(Fixed(region) if comps == {"x", "y", "z"} else Support(region, *(c in comps for c in "xyz")))
+    if not out:
+        raise InputError("supports: give at least one support ({named | face | plane | box, hold})")
+    return tuple(out)
+
+
+def _loads(loads: Mapping[str, Any], unit: str, path: str, g: Any) -> tuple[Any, ...]:
+    from mechverify.fea.loads import Force, Gravity, PinLoad, Pressure
+
+    out: list[Any] = []
+    for key, cls in (("forces", Force), ("pin_loads", PinLoad)):
+        for i, t in enumerate(loads.get(key, []) or []):
+            p = f"{path}.{key}[{i}]"
+            if not isinstance(t, Mapping) or "force" not in t:
+                raise InputError(f"{p}: expected {{region..., force = \"fx, fy, fz\"}} (numbers in N or forces)")
+            out.append(cls(_region(t, unit, p), tuple(Q(v, "N") for v in _vec(t["force"], "N", "force", f"{p}.force"))))
+    for i, t in enumerate(loads.get("pressures", []) or []):
+        p = f"{path}.pressures[{i}]"
+        if not isinstance(t, Mapping) or "pressure" not in t:
+            raise InputError(f"{p}: expected {{region..., pressure = \"1 MPa\"}}")
+        out.append(Pressure(_region(t, unit, p), as_quantity(t["pressure"], "pressure", f"{p}.pressure")))
+    if loads.get("gravity"):
+        out.append(Gravity((0.0, 0.0, -g.m_as("m/s**2"))))
+    return tuple(out)
+
+
+def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
+    from mechverify.fea import mesh, study
+
+    h = p["mesh_size"].m_as("m")
+    what = f"components.{p['_name']}.mesh_size"
+    if "step" in p:
+        study.require_memory(study.step_volume(p["step"]), h, what)
+        return mesh.from_step(p["step"], p["mesh_size"], unit=unit)
+    if "stl" in p:
+        study.require_memory(mesh.stl_properties(p["stl"], unit).volume.m_as("m**3"), h, what)
+        return mesh.from_stl(p["stl"], p["mesh_size"], unit=unit)
+    size = _vec(p["box"], unit, "length", "box")
+    if min(size) <= 0:
+        raise InputError(f"box: three positive lengths, got {p['box']!r}")
+    study.require_memory(math.prod(size), h, what)
+    holes = []
+    for i, t in enumerate(p.get("holes", []) or []):
+        if not isinstance(t, Mapping) or not {"center", "diameter"} <= set(t):
+            raise InputError(f"holes[{i}]: expected {{center = \"x, y\", diameter = \"8.5 mm\"}}, got {t!r}")
+        c = [_num(s, unit, "length", f"holes[{i}].center") for s in str(t["center"]).split(",")]
+        if len(c) != 2:
+            raise InputError(f"holes[{i}].center: expected \"x, y\", got {t['center']!r}")
+        holes.append(((Q(c[0], "m"), Q(c[1], "m")), t["diameter"]))
+    if not holes:
+        divs = tuple(max(1, round(s / h)) for s in size)
+        return mesh.box(tuple(Q(s, "m") for s in size), divs)
+    return mesh.block_with_holes(tuple(Q(s, "m") for s in size), holes, p["mesh_size"])
