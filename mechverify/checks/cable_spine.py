@@ -11,7 +11,7 @@ from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult
 from mechverify.mechanisms.cable_spine import CableSpine, SpineState
 from mechverify.references import ref
-from mechverify.units import Q
+from mechverify.units import Q, to_si
 
 TG = "timoshenko_gere_stability"
 
@@ -42,7 +42,7 @@ def check_spine_past_buckling(spine: CableSpine, reason: str, *, required_sf: fl
     """The ``spine_buckling_ratio`` result when no equilibrium exists at the asked tilt: the largest axial
     load the spine can carry against the top load it would need (at least the weight), a FAIL."""
     Pcr = spine.critical_load()
-    W = spine._si["W"]
+    W = to_si(spine.weight, "force", "weight")
     return CheckResult(
         check="spine_buckling_ratio", component=spine.name, demand=Q(max(W, Pcr), "N"), capacity=Q(Pcr, "N"),
         required_sf=max(required_sf, 1.0 + 1e-9), title="Spring spine buckling (fixed-free, with shear)",

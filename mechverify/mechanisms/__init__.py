@@ -1,13 +1,16 @@
-"""Planar mechanisms: a general rigid-body statics solver, the five-bar and lever-arm presets, pose sweeps.
+"""Planar mechanisms: a general rigid-body statics solver, the five-bar and lever-arm presets, pose sweeps;
+the cable-driven spring spine (``cable_spine``) and paths with the RP arm's kinematics and dynamics (``paths``).
 
 Data flow: a preset's kinematics gives a pose, its ``statics(pose, ...)`` builds a
 :class:`Mechanism`, :meth:`Mechanism.solve` gives joint reactions, actuator torques and member
 diagrams, and :func:`sweep_statics` finds the governing pose of every member and actuator.
 """
 
+from mechverify.mechanisms.cable_spine import CableSpine, SpineState, UnreachableTiltError, tension_distribution
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.mechanisms.fivebar import FiveBar, FiveBarPose, WorkspaceSample
 from mechverify.mechanisms.lever_arm import LeverArm, LeverArmPose, lever_arm_closed_form
+from mechverify.mechanisms.paths import PathSamples, RPArm, RPJointMotion, walk_polar
 from mechverify.mechanisms.statics import (
     GROUND,
     Body,
@@ -26,5 +29,6 @@ __all__ = [
     "GROUND", "Body", "Pin", "Slider", "PointLoad", "Couple", "Mechanism", "StaticsSolution", "MemberLoad",
     "solve_statics", "FiveBar", "FiveBarPose", "WorkspaceSample", "LeverArm", "LeverArmPose",
     "lever_arm_closed_form", "SweepResult", "MemberDemand", "ActuatorDemand", "sweep_statics",
-    "UnreachablePoseError", "SingularPoseError",
+    "UnreachablePoseError", "SingularPoseError", "CableSpine", "SpineState", "UnreachableTiltError",
+    "tension_distribution", "PathSamples", "RPArm", "RPJointMotion", "walk_polar",
 ]
