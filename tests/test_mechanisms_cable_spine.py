@@ -165,3 +165,33 @@ def test_bad_input_named():
         CableSpine(spring(), cable_angles=("0 deg", "180 deg"))
     with pytest.raises(InputError, match="pan along a cable"):
         CableSpine(spring()).pulling_cable("60 deg")
+
+
+@pytest.mark.parametrize("alpha_deg", [30.0, 60.0, 120.0])
+def test_elastica_integrator_matches_the_postbuckled_cantilever(alpha_deg):
+    """Timoshenko & Gere Sec. 2.7 (the elastica, fixed-free bar under a vertical load P beyond buckling, tip
+    slope alpha): k L = K(p), p = sin(alpha/2), k = sqrt(P/EI); tip lateral deflection 2p/k, height of the tip
+    (2E(p) - K(p))/k (complete elliptic integrals K, E of modulus p). The shooting on integrate_elastica
+    (inextensible, the spine's integrator) must land on that shape."""
+    from scipy.optimize import fsolve
+    from scipy.special import ellipe, ellipk
+
+    from mechverify.mechanisms.cable_spine import integrate_elastica
+
+    beta, L = BETA0, L0
+    p = math.sin(math.radians(alpha_deg) / 2)
+    K, Ek = ellipk(p * p), ellipe(p * p)
+    k = K / L
+    P = k * k * beta
+    x_cf, z_cf = 2 * p / k, (2 * Ek - K) / k
+
+    def res(g):
+        x, z, _th = integrate_elastica(0.0, -P, 0.0, g[0], g[1], beta, L)
+        return [x - g[0], z - g[1]]
+
+    sol = fsolve(res, [x_cf * 1.05, z_cf + 0.02 * L], xtol=1e-13)
+    assert max(abs(r) for r in res(sol)) < 1e-10
+    x, z, th = integrate_elastica(0.0, -P, 0.0, sol[0], sol[1], beta, L)
+    assert th == pytest.approx(math.radians(alpha_deg), rel=1e-6)
+    assert x == pytest.approx(x_cf, rel=1e-6)
+    assert z == pytest.approx(z_cf, rel=1e-5, abs=1e-9)

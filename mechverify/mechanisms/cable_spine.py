@@ -246,17 +246,7 @@ class CableSpine:
         Fx, Fz = T * ux, T * uz - s["W"]
         # M0: moment about the top of the cable force at B (the weight acts at the top centre: no moment)
         M0 = (-a * math.sin(tht)) * T * ux - (a * math.cos(tht)) * T * uz
-        alpha0 = s["k"] * s["L0"]
-
-        def rhs(_s0: float, y: np.ndarray) -> list[float]:
-            x, z, th = y
-            M = M0 + (zt - z) * Fx - (xt - x) * Fz
-            N = -(Fx * math.sin(th) + Fz * math.cos(th))
-            lam = 1.0 - N / alpha0
-            return [lam * math.sin(th), lam * math.cos(th), M / s["beta0"]]
-
-        sol = solve_ivp(rhs, (0.0, s["L0"]), [0.0, 0.0, 0.0], rtol=1e-11, atol=1e-13, method="DOP853")
-        x, z, th = sol.y[:, -1]
+        x, z, th = integrate_elastica(Fx, Fz, M0, xt, zt, s["beta0"], s["L0"], s["k"] * s["L0"])
         P = -Fz
         l_axial = s["L0"] - P / s["k"]
         st = SpineState(T, th, x, l_axial - z, l_axial, math.atan2(-ux, -uz), P,
@@ -345,6 +335,24 @@ class CableSpine:
         if f(P_solid) > 0:
             return P_solid  # stable down to solid
         return brentq(f, 0.0, P_solid, xtol=1e-12)
+
+
+def integrate_elastica(Fx: float, Fz: float, M0: float, xt: float, zt: float, beta0: float, L0: float,
+                       alpha0: float = math.inf) -> tuple[float, float, float]:
+    """Integrate a base-clamped elastica (SI) loaded at its top (xt, zt) by the force (Fx, Fz) and the moment M0:
+    dtheta/ds0 = M/beta0, M = M0 + (zt - z) Fx - (xt - x) Fz, dx/ds0 = lam sin(theta), dz/ds0 = lam cos(theta),
+    lam = 1 - N/alpha0 with the axial force N = -(Fx sin(theta) + Fz cos(theta)) (alpha0 = k L0; inf:
+    inextensible). Returns the top (x, z, theta) of the integration; equilibrium is where it meets (xt, zt)."""
+
+    def rhs(_s0: float, y: np.ndarray) -> list[float]:
+        x, z, th = y
+        M = M0 + (zt - z) * Fx - (xt - x) * Fz
+        lam = 1.0 + (Fx * math.sin(th) + Fz * math.cos(th)) / alpha0
+        return [lam * math.sin(th), lam * math.cos(th), M / beta0]
+
+    sol = solve_ivp(rhs, (0.0, L0), [0.0, 0.0, 0.0], rtol=1e-11, atol=1e-13, method="DOP853")
+    x, z, th = sol.y[:, -1]
+    return float(x), float(z), float(th)
 
 
 def tension_distribution(directions: np.ndarray, arms: np.ndarray, moment: np.ndarray,
