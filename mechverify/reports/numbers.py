@@ -136,6 +136,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
         if abs(m) >= 1e10:
             return f"{number(m / 1e9, d)} GPa"
         return f"{number(m / 1e6, d)} MPa" if abs(m) >= 1e5 or m == 0 else f"{number(m, d)} Pa"
+    if name == "area" and abs(m) < 1:
+        return f"{number(m * 1e6, d)} mm²"
     if name == "temperature":
         return f"{number(float(q.m_as('degC')), d)} °C"
     if name == "inertia" and 0 < abs(m) < 1e-3:  # motor and gear data sheets: g·cm²

@@ -89,7 +89,27 @@ def bar_scale(results: list[CheckResult]) -> float:
     return min(BAR_MAX, max([1.25, *finite]))
 
 
-def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True) -> dict[str, Any]:
+DETAIL_LIMIT = 150  # failing and warning checks shown in detail by default (worst first); all with detail="all"
+SUMMARY_ROWS = 300  # a design with more checks lists only its failing and warning ones in the summary table
+FIGURE_LIMIT = 40  # figures per design (worst checks first); a big design's report stays fast and printable
+
+
+class _Budget:
+    """How many figures a report may still draw."""
+
+    def __init__(self, n: int):
+        self.left, self.skipped = n, 0
+
+    def take(self) -> bool:
+        if self.left > 0:
+            self.left -= 1
+            return True
+        self.skipped += 1
+        return False
+
+
+def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True,
+                budget: _Budget | None = None) -> dict[str, Any]:
     fu = r.factored_utilisation
     na = not_verifiable(r)
     view = {
@@ -107,7 +127,8 @@ def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True) -> dic
             "substituted": Markup(formula_html(substituted_latex(r))) if substituted_latex(r) else "",
             "inputs": _inputs_view(r),
             "notes": [_truncate(n) for n in r.notes if n != na], "warnings": [_truncate(w) for w in r.warnings],
-            "source": r.source, "figure": None if na else figure_for(r),
+            "source": r.source,
+            "figure": None if na or (budget is not None and not budget.take()) else figure_for(r),
         })
     return view
 
@@ -135,8 +156,14 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
 
     ordered = rs.sorted()
     scale = bar_scale(list(ordered))
-    shown = {id(r) for r in ordered if detail == "all" or r.verdict.value != "pass"}
-    views = {id(r): _check_view(r, scale, id(r) in shown) for r in ordered}  # each figure rendered once
+    problems = [r for r in ordered if r.verdict.value != "pass"]
+    detailed = list(ordered) if detail == "all" else problems[:DETAIL_LIMIT]
+    shown = {id(r) for r in detailed}
+    # the summary lists every check of a design up to SUMMARY_ROWS checks, else the failing and warning ones
+    listed = list(ordered) if detail == "all" or len(ordered) <= SUMMARY_ROWS else problems
+    passing_unlisted = [r for r in ordered if r.verdict.value == "pass"] if listed is problems else []
+    budget = _Budget(FIGURE_LIMIT)  # worst first: the figures go to the checks that matter most
+    views = {id(r): _check_view(r, scale, id(r) in shown, budget) for r in ordered}  # each figure rendered once
     by_comp: dict[str, list[CheckResult]] = {}
     for r in ordered:
         by_comp.setdefault(r.component, []).append(r)
@@ -155,8 +182,8 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
                 mats[v.name] = v
             params.append({"name": k, "value": _value(v), "source": src})
         figures = []
-        if entry.type.figures is not None and entry.obj is not None:
-            for caption, fig in entry.type.figures(entry.obj, [r for r in rs if r.component == name]):
+        if entry.type.figures is not None and entry.obj is not None and budget.take():
+            for caption, fig in entry.type.figures(entry.obj, by_comp.get(name, [])):
                 figures.append({"caption": caption, "uri": svg_data_uri(fig)})
         comps.append({"name": name, "anchor": _anchor(name), "type": entry.type.name, "doc": entry.type.doc,
                       "params": params, "figures": figures, "checks": [views[id(r)] for r in by_comp.get(name, [])]})
@@ -180,9 +207,15 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
         "name": getattr(design, "name", rs.name) or rs.name, "revision": getattr(design, "revision", ""),
         "description": _truncate(getattr(getattr(design, "data", None), "description", "") or ""),
         "detail": detail, "n_detailed": len(shown), "bar_scale": f"{scale:g}",
+        "figures_skipped": budget.skipped, "figure_limit": FIGURE_LIMIT,
         "verdict": rs.verdict.value, "counts": counts, "hashes": file_hashes(files),
         "commit": _git_commit(getattr(design, "path", None)),
-        "results": [views[id(r)] for r in ordered],
+        "results": [views[id(r)] for r in listed],
+        "unlisted": len(passing_unlisted), "unlisted_max": (
+            f"{number(passing_unlisted[0].factored_utilisation)} ({passing_unlisted[0].component}: "
+            f"{passing_unlisted[0].title or passing_unlisted[0].check})" if passing_unlisted else ""),
+        "problems_not_detailed": max(0, len(problems) - DETAIL_LIMIT) if detail != "all" else 0,
+        "detail_limit": DETAIL_LIMIT,
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
         "components": comps, "materials": [_material_view(m) for m in mats.values()], "inputs": inputs,
         "references": [c for _, c in bibliography(keys_in("\n".join(r.source for r in rs)))],
