@@ -104,6 +104,9 @@ def check_bearing_static_safety(b: BallBearing, Fr: QuantityLike, Fa: QuantityLi
         warnings=_axial_warning(b, Fa), load_case=load_case)
 
 
+SEAL_SPEED_FRACTION = 0.25  # contact-seal speed caveat above this fraction of the open bearing's limiting speed
+
+
 @check("bearing_speed", title="Bearing speed", sf_kind="speed",
        aliases=('ball_bearing.speed',),
        source=ref("skf17000", "product tables: limiting and reference speeds"),
@@ -112,11 +115,16 @@ def check_bearing_speed(b: BallBearing, speed: QuantityLike, *, load_case: str =
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
     n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
     warnings: tuple[str, ...] = ()
-    if b.variant == "sealed":
-        warnings = (f"{b.designation} has contact seals: the catalogue limiting speed used here is the open "
-                    "bearing's; contact-sealed variants are limited much lower (see the catalogue)",)
     notes = [f"limiting speed {fmt(b.limiting_speed.to('rpm'))} (open bearing); reference speed "
              f"{fmt(b.reference_speed.to('rpm'))} (thermal, oil)"]
+    if b.variant == "sealed":  # contact seals limit the speed well below the open bearing's: a caveat only near it
+        seal = (f"{b.designation} has contact seals: the catalogue limiting speed used here is the open bearing's; "
+                "contact-sealed variants are limited much lower (see the catalogue)")
+        if abs(n) > SEAL_SPEED_FRACTION * b.limiting_speed:
+            warnings = (seal,)
+        else:
+            notes.append(f"{seal}; at {fmt(abs(n), 'rpm')}, below {SEAL_SPEED_FRACTION:g} of the open bearing's limit, "
+                         "this does not govern (threshold chosen conservatively, not a catalogue value)")
     if n > b.reference_speed:
         notes.append("above the reference speed: check the permissible speed for the actual load and lubrication")
     return CheckResult(
