@@ -113,3 +113,20 @@ def test_wrong_substitution_is_detected():
     assert value.to("MPa").magnitude == pytest.approx(111.4, rel=1e-3)
     value, printed = evaluate(good.replace("^{2}", ""))
     assert value.dimensionality != printed.dimensionality
+
+
+SPRING_CHECKS = ("spring_static_stress", "spring_solid_stress")
+
+
+def test_spring_stress_substituted_line_evaluates_to_result(tmp_path):
+    """Shigley 10th ed. Ex. 10-1's music-wire spring data (d = 0.037 in, OD = 0.4 in) as in
+    tests/test_design_springs.py: the substituted tau line evaluates to the check's demand."""
+    from mechverify.checks.springs import check_spring_solid_stress, check_spring_static_stress
+    from mechverify.components.springs_compression import CompressionSpring
+
+    s = CompressionSpring(name="s", d="0.037 in", OD="0.4 in", Nt=12.5, end="squared", L0="2.06 in",
+                          G="11.85 Mpsi", Sut="324 ksi")
+    for r in (check_spring_static_stress(s, "4 lbf"), check_spring_solid_stress(s)):
+        value, printed = evaluate(r.substituted)
+        assert value.to("MPa").magnitude == pytest.approx(printed.m_as("MPa"), rel=3e-3), r.substituted
+        assert printed.m_as("MPa") == pytest.approx(r.demand.m_as("MPa"), rel=1e-3)

@@ -13,7 +13,7 @@ from typing import Any
 import pint
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.components.spring_formulas import torsion_spring_factors
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring, en13906_min_gap_sum
 from mechverify.errors import UnknownNameError
@@ -41,6 +41,14 @@ def _factor_note(spring: CompressionSpring) -> str:
             f"{spring.wire_class} allowable of Table 10-6")
 
 
+def _stress_substituted(spring: CompressionSpring, F: Any, tau: Any, sub: str = "") -> str:
+    """tau = K 8 F D / (pi d^3) with the numbers (K: K_s with set removed, else K_B, as the check uses)."""
+    K = spring.stress_factor
+    return (rf"\tau{'_' + sub if sub else ''} = {tex(K)}\cdot \frac{{8\cdot {tex(F, 'N')}\cdot "
+            rf"{tex(spring.mean_diameter, 'mm')}}}{{\pi\cdot ({tex(spring.wire_diameter, 'mm')})^{{3}}}}"
+            rf" = {tex(tau, 'MPa')}")
+
+
 @check("spring_static_stress", title='Spring shear stress at maximum working force', sf_kind="spring",
        aliases=('compression_spring.static_stress',),
        source=ref("shigley10", "Eqs. (10-5), (10-7), Table 10-6"),
@@ -57,6 +65,7 @@ def check_spring_static_stress(spring: CompressionSpring, F_max: QuantityLike, *
         formula=r"\tau = K_B \frac{8 F D}{\pi d^3} \le S_{sy}/n_s",
         source=f"{SHIGLEY}, Eqs. (10-5), (10-7), Table 10-6",
         inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N")},
+        substituted=_stress_substituted(spring, Q(to_si(F_max, "force", "F_max"), "N"), tau),
         notes=(_factor_note(spring), f"required factor {required_sf:g} (Shigley Sec. 10-7 recommends n_s >= 1.2)"),
         load_case=load_case)
 
@@ -75,6 +84,7 @@ def check_spring_solid_stress(spring: CompressionSpring, *, required_sf: float =
         formula=r"\tau_s = K_B \frac{8 k (L_0 - L_s) D}{\pi d^3} \le S_{sy}/n_s",
         source=f"{SHIGLEY}, Table 10-1, Eq. (10-7), Table 10-6",
         inputs={**_inputs(spring), "Ls": spring.solid_length, "F_solid": spring.solid_force.to("N")},
+        substituted=_stress_substituted(spring, spring.solid_force, spring.solid_stress, "s"),
         notes=(_factor_note(spring), "a solid-safe spring cannot take a set when closed by accident",
                f"required factor {required_sf:g} (Shigley Sec. 10-7: n_s >= 1.2)"),
         load_case="closed solid")
