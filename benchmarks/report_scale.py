@@ -72,7 +72,7 @@ def measure(kind: str, path: Path, out: Path, detail: str) -> dict:
 
 def main(argv: list[str] | None = None) -> dict:
     argv = list(argv or [])
-    detail = "problems"
+    detail = "problems"  # the CLI's default
     if "--detail" in argv:
         i = argv.index("--detail")
         detail = argv[i + 1]

@@ -106,7 +106,8 @@ def test_detail_problems_by_default_all_on_request():
     bad = CheckResult(check="stress", component="thin_rod", demand=Q(300, "MPa"), capacity=Q(250, "MPa"),
                       title="Stress", formula=r"\sigma = F/A")
     runs = [(None, ResultSet([ok, bad], "rig"))]
-    default, full = render_html(runs, date="2026-01-01"), render_html(runs, date="2026-01-01", detail="all")
+    default = render_html(runs, date="2026-01-01", detail="problems")  # the CLI's default
+    full = render_html(runs, date="2026-01-01")
     assert 'id="thin-rod-stress"' in default and 'id="rod-stress"' not in default
     assert 'id="rod-stress"' in full and "--detail all" in default
 

@@ -253,11 +253,12 @@ def _software() -> list[tuple[str, str]]:
 DETAIL = ("problems", "all")
 
 
-def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None, detail: str = "problems") -> str:
+def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None, detail: str = "all") -> str:
     """The complete self-contained HTML report of one or more verified designs.
 
-    ``detail="problems"`` (default): the summary lists every check; the per-component detail (formulas,
-    inputs, figures) covers the failing and warning checks. ``detail="all"``: every check in detail.
+    ``detail="problems"`` (the CLI's default): the per-component detail (formulas, inputs, figures)
+    covers the failing and warning checks (the 150 worst); the summary lists every check (in a design of
+    more than 300 checks the failing and warning ones). ``detail="all"`` (the API's default): every check.
     """
     if detail not in DETAIL:
         raise InputError(f"report detail: expected one of {', '.join(DETAIL)}, got {detail!r}")
@@ -275,7 +276,7 @@ def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None, deta
     )
 
 
-def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path, detail: str = "problems") -> Path:
+def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path, detail: str = "all") -> Path:
     """Write ``path`` (.html or .pdf) atomically; return it. ``detail``: see :func:`render_html`."""
     path = Path(path)
     suffix = path.suffix.lower()
