@@ -117,3 +117,20 @@ def test_long_description_is_truncated_with_a_note():
 
     text = _truncate("x" * (TEXT_LIMIT + 1234))
     assert text.startswith("x" * TEXT_LIMIT) and "1,234 more characters not shown" in text
+
+
+def test_big_design_summary_lists_the_worst_problems_and_counts_the_rest(monkeypatch):
+    """A design above SUMMARY_ROWS checks: the summary lists the failing/warning checks (at most
+    PROBLEM_ROWS, worst first) and counts the rest; the passing ones are counted with their highest u·SF."""
+    from mechverify.reports import render
+
+    monkeypatch.setattr(render, "SUMMARY_ROWS", 10)
+    monkeypatch.setattr(render, "PROBLEM_ROWS", 5)
+    rs = [CheckResult(check="stress", component=f"r{i}", demand=Q(10 * i, "MPa"), capacity=Q(250, "MPa"),
+                      title="Stress") for i in range(1, 41)]  # u = 0.04 .. 1.6
+    html = render_html([(None, ResultSet(rs, "bank"))], date="2026-01-01", detail="problems")
+    summary = html.split('<table class="summary"')[1].split("</table>")[0]
+    assert summary.count("<tr><td>r") == 5 and "<td>r40</td>" in summary and "<td>r35</td>" not in summary
+    n_problems = sum(r.verdict.value != "pass" for r in rs)
+    assert f"… and {n_problems - 5} more failing and warning checks" in html
+    assert f"… and {40 - n_problems} more checks that pass" in html

@@ -91,6 +91,7 @@ def bar_scale(results: list[CheckResult]) -> float:
 
 DETAIL_LIMIT = 150  # failing and warning checks shown in detail by default (worst first); all with detail="all"
 SUMMARY_ROWS = 300  # a design with more checks lists only its failing and warning ones in the summary table
+PROBLEM_ROWS = 1000  # ... and at most this many of those (the worst); all are in the JSON, JUnit and Markdown
 FIGURE_LIMIT = 40  # figures per design (worst checks first); a big design's report stays fast and printable
 
 
@@ -160,8 +161,9 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
     detailed = list(ordered) if detail == "all" else problems[:DETAIL_LIMIT]
     shown = {id(r) for r in detailed}
     # the summary lists every check of a design up to SUMMARY_ROWS checks, else the failing and warning ones
-    listed = list(ordered) if detail == "all" or len(ordered) <= SUMMARY_ROWS else problems
-    passing_unlisted = [r for r in ordered if r.verdict.value == "pass"] if listed is problems else []
+    listed = list(ordered) if detail == "all" or len(ordered) <= SUMMARY_ROWS else problems[:PROBLEM_ROWS]
+    short = len(listed) < len(ordered)
+    passing_unlisted = [r for r in ordered if r.verdict.value == "pass"] if short else []
     budget = _Budget(FIGURE_LIMIT)  # worst first: the figures go to the checks that matter most
     views = {id(r): _check_view(r, scale, id(r) in shown, budget) for r in ordered}  # each figure rendered once
     by_comp: dict[str, list[CheckResult]] = {}
@@ -214,6 +216,7 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
         "unlisted": len(passing_unlisted), "unlisted_max": (
             f"{number(passing_unlisted[0].factored_utilisation)} ({passing_unlisted[0].component}: "
             f"{passing_unlisted[0].title or passing_unlisted[0].check})" if passing_unlisted else ""),
+        "problems_unlisted": len(problems) - len(listed) if short else 0,
         "problems_not_detailed": max(0, len(problems) - DETAIL_LIMIT) if detail != "all" else 0,
         "detail_limit": DETAIL_LIMIT,
         "chart": utilisation_chart(list(rs)) if len(rs) else None,
