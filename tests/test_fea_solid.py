@@ -2,6 +2,7 @@
 results export (VTU, figure) and the lazy, optional gmsh import."""
 
 import builtins
+from pathlib import Path
 
 import meshio
 import numpy as np
@@ -152,7 +153,7 @@ def test_bolt_holes_as_regions_and_step_import(tmp_path):
     named = solid.SolidModel(link, "Structural Steel", supports=(Fixed(Named("hole0")),),
                              loads=(Force(Named("hole1"), ("800 N", "0 N", "0 N")),)).solve()
     assert named.max_displacement.value.m == pytest.approx(res.max_displacement.value.m, rel=1e-9)
-    gmsh.initialize()
+    mesh.initialize_gmsh(gmsh)
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.model.occ.addBox(0, 0, 0, 40, 20, 10)
     gmsh.model.occ.synchronize()
@@ -179,3 +180,19 @@ def test_coarse_curved_mesh_is_untangled():
     hole = m.named_nodes("hole0")
     r = np.hypot(m.points[0, hole] - 0.02, m.points[1, hole] - 0.015)
     assert r == pytest.approx(0.0015, rel=1e-6)
+
+
+def _sigpipe_ignored_by_the_os() -> bool:
+    with open("/proc/self/status") as f:
+        mask = next(line for line in f if line.startswith("SigIgn:")).split()[1]
+    return bool(int(mask, 16) >> (13 - 1) & 1)
+
+
+@pytest.mark.skipif(not Path("/proc/self/status").exists(), reason="reads the signal mask from Linux /proc")
+def test_gmsh_leaves_python_ignoring_sigpipe():
+    """gmsh's initialize() sets SIGPIPE back to the default action behind Python's back; mechverify restores
+    Python's disposition, else a later write to a closed pipe kills the process (seen: the whole test run
+    died with 'Broken pipe' when a study worker died after an earlier gmsh mesh)."""
+    pytest.importorskip("gmsh")
+    mesh.cylinder("5 mm", "20 mm", "5 mm")
+    assert _sigpipe_ignored_by_the_os()

@@ -37,6 +37,21 @@ def import_gmsh() -> Any:
     return gmsh
 
 
+def initialize_gmsh(gmsh: Any) -> None:
+    """``gmsh.initialize`` without its side effect on the process: gmsh's C++ start-up sets SIGPIPE back to
+    the default action behind Python's back (Python ignores it and raises ``BrokenPipeError`` instead), so a
+    later write to a closed pipe (``mechverify check ... | head``, a dead study worker's queue) would kill
+    the whole process. Python's own disposition is put back right after."""
+    import signal
+
+    gmsh.initialize(interruptible=False)
+    if hasattr(signal, "SIGPIPE"):
+        try:
+            signal.signal(signal.SIGPIPE, signal.getsignal(signal.SIGPIPE) or signal.SIG_IGN)
+        except ValueError:  # not the main thread: signal dispositions can only be set there
+            pass
+
+
 def contiguous(p: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Points and cells in C order, as scikit-fem wants them (it copies and warns otherwise)."""
     return np.ascontiguousarray(p, dtype=float), np.ascontiguousarray(t)
@@ -319,7 +334,7 @@ def second_order(gmsh: Any) -> None:
 
 
 def gmsh_session(gmsh: Any, mesh_size: float) -> None:
-    gmsh.initialize(interruptible=False)
+    initialize_gmsh(gmsh)
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.option.setNumber("General.NumThreads", 1)
     gmsh.option.setNumber("Mesh.MeshSizeMax", mesh_size)

@@ -157,13 +157,13 @@ def require_memory(volume: float, mesh_size: float, what: str, memory: float | N
 def step_volume(path: str | Path) -> float:
     """Total volume [m³] of the solids in a STEP file, read by gmsh/OpenCASCADE without meshing; a
     :class:`ModelError` naming the file and gmsh's reason when gmsh cannot read it."""
-    from mechverify.fea.mesh import import_gmsh
+    from mechverify.fea.mesh import import_gmsh, initialize_gmsh
 
     path = Path(path)
     if not path.exists():
         raise InputError(f"STEP file {str(path)!r} does not exist")
     gmsh = import_gmsh()
-    gmsh.initialize(interruptible=False)
+    initialize_gmsh(gmsh)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
         gmsh.option.setString("Geometry.OCCTargetUnit", "M")
