@@ -7,6 +7,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -37,6 +38,16 @@ def test_units_and_components_import_no_heavy_modules():
                             "mechverify.components.sections.i_section('100 mm', '50 mm', '4 mm', '6 mm')")
     assert not loaded & set(HEAVY), sorted(loaded & set(HEAVY))
     assert not any(m.startswith("mechverify.fea") for m in loaded)
+
+
+def test_checking_the_lift_imports_no_scipy_subpackage():
+    """``mechverify check`` of the lead-screw lift (target ratio <= 2.0) loads every adapter and check module: none
+    may pull in scipy's sub-packages at import (cable_spine's scipy.integrate once cost 0.3 s of a 1 s check).
+    shapely is still imported (components/plates.py through the members adapter), noted in issue 27."""
+    lift = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+    loaded = _modules_after(f"import mechverify.design as d\nd.load({str(lift)!r}).verify()")
+    heavy = {m for m in loaded & set(HEAVY) if m.startswith("scipy")}
+    assert not heavy, sorted(heavy)
 
 
 def test_lazy_entry_points_work(tmp_path):

@@ -39,12 +39,35 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import solve_ivp
-from scipy.optimize import brentq, fsolve, linprog
 
 from mechverify.components.springs import CompressionSpring
 from mechverify.errors import InputError, ModelError, ValidityError
 from mechverify.units import Q, Quantity, to_si
+
+
+# scipy's integrate/optimize cost ~0.3 s to import: loaded on first use, not when a design file is checked.
+def solve_ivp(*args, **kwargs):
+    from scipy.integrate import solve_ivp as f
+
+    return f(*args, **kwargs)
+
+
+def brentq(*args, **kwargs):
+    from scipy.optimize import brentq as f
+
+    return f(*args, **kwargs)
+
+
+def fsolve(*args, **kwargs):
+    from scipy.optimize import fsolve as f
+
+    return f(*args, **kwargs)
+
+
+def linprog(*args, **kwargs):
+    from scipy.optimize import linprog as f
+
+    return f(*args, **kwargs)
 
 QuantityLike = Quantity | str | float  # local alias (see COMMON: until mechverify.units exports one)
 
