@@ -36,3 +36,18 @@ def rod_type():
     REGISTRY.types.pop("test_rod", None)
 
 
+#: a one-rod design of the ``test_rod`` type (fixture ``rod_type``), formatted with ``rev`` and ``area`` [mm²]
+ROD_DESIGN = """
+[design]
+name = "rig"
+revision = "{rev}"
+
+[components.rod]
+type = "test_rod"
+length = "350 mm"
+area = "{area} mm^2"
+material = "Structural Steel"
+
+[load_cases.hold.rod]
+force = "2 kN"
+"""

@@ -10,23 +10,11 @@ import textwrap
 import xml.etree.ElementTree as ET
 
 import pytest
+from conftest import ROD_DESIGN
 
 from mechverify.cli import main
 
-DESIGN = """
-[design]
-name = "rig"
-revision = "{rev}"
-
-[components.rod]
-type = "test_rod"
-length = "350 mm"
-area = "{area} mm^2"
-material = "Structural Steel"
-
-[load_cases.hold.rod]
-force = "2 kN"
-"""
+DESIGN = ROD_DESIGN
 
 
 @pytest.fixture(autouse=True)

@@ -17,24 +17,12 @@ import warnings
 from pathlib import Path
 
 import pytest
+from conftest import ROD_DESIGN
 
 from mechverify.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
-DESIGN = """
-[design]
-name = "rig"
-revision = "{rev}"
-
-[components.rod]
-type = "test_rod"
-length = "350 mm"
-area = "{area} mm^2"
-material = "Structural Steel"
-
-[load_cases.hold.rod]
-force = "2 kN"
-"""
+DESIGN = ROD_DESIGN
 
 
 @pytest.fixture(autouse=True)
