@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import functools
 import inspect
+import math
 import os
 from collections.abc import Callable
 from pathlib import Path
@@ -132,8 +133,18 @@ class PlausibilityWarning(UserWarning):
     """A value within the physical bounds but implausible for a small machine (probably a wrong unit)."""
 
 
-def _check_bounds(q: Any, dim: str, name: str, from_text: bool) -> None:
+def _check_bounds(q: Any, dim: str, name: str, from_text: bool, factor: float | None = None) -> None:
     lo, hi = BOUNDS[dim]
+    m = q.magnitude
+    if factor is not None and isinstance(m, float | int) and not isinstance(m, bool):
+        # the common case, a scalar in a multiplicative unit: plain floats (no pint conversion, no arrays)
+        try:
+            mag = abs(float(m) * factor)
+        except OverflowError:
+            mag = float("inf")
+        if math.isfinite(mag) and mag <= hi and not (from_text and 0 < mag < lo) and not (
+                from_text and dim in PLAUSIBLE and mag > PLAUSIBLE[dim]):
+            return
     try:
         mag = np.abs(np.asarray(q.to(_unit(DIMENSIONS[dim][1])).magnitude, dtype=float))
     except (OverflowError, ZeroDivisionError, FloatingPointError):
@@ -148,6 +159,27 @@ def _check_bounds(q: Any, dim: str, name: str, from_text: bool) -> None:
         warnings.warn(f"{name}: {_describe(q)} is implausible for {_ARTICLE[dim]} in a small machine "
                       f"(expected at most {PLAUSIBLE[dim]:g} {DIMENSIONS[dim][1]}); is the unit right?",
                       PlausibilityWarning, stacklevel=4)
+
+
+@functools.lru_cache(maxsize=4096)
+def _unit_info(units: Any, dim: str) -> tuple[bool, bool, float | None]:
+    """For a pint units container and a dimension name: (dimension matches, unitless, SI factor).
+
+    The factor is the multiplier to the SI unit of ``dim`` (the same one pint applies in ``.to()``),
+    or None for units with an offset (degC) or a non-matching dimension. Cached: a design file uses a few
+    dozen distinct units, and pint's dimension analysis and conversion cost ~50 us per call.
+    """
+    q = Quantity(1.0, units)
+    if not _dimension_matches(q, dim):
+        return False, q.unitless, None
+    si = _unit(DIMENSIONS[dim][1])
+    try:
+        one, two = q.to(si).magnitude, Quantity(2.0, units).to(si).magnitude
+        zero = Quantity(0.0, units).to(si).magnitude
+    except Exception:  # offset units refuse some arithmetic; take pint's slow path
+        return True, q.unitless, None
+    factor = float(one) if (zero == 0.0 and two == 2.0 * one) else None
+    return True, q.unitless, factor
 
 
 # Readable names of dimensions for error messages ("expected a length").
@@ -215,24 +247,34 @@ def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
             raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got the bare number {original!r}; give a unit{hint}")
         else:
             raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {type(original).__name__} {original!r}")
-    if not _dimension_matches(value, dim):
+    matches, unitless, factor = _unit_info(value._units, dim)
+    if not matches:
         hint = ""
         if dim == "time" and value.dimensionless and not value.unitless:
             hint = ("; a number of revolutions is not a time: give the life in hours, the speed of each "
                     "load case converts it")
         got = original if isinstance(original, str) else _describe(value)
         raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {got}{hint}")
-    if dim == "angle" and value.unitless:
+    if dim == "angle" and unitless:
         raise UnitError(f"{name}: expected an angle, got {_describe(original)}; give a unit (say 'deg' or 'rad')")
-    if not np.all(np.isfinite(np.asarray(value.magnitude, dtype=float))):
+    m = value.magnitude
+    if isinstance(m, float | int) and not isinstance(m, bool):
+        if not math.isfinite(m):
+            raise UnitError(f"{name}: expected a finite {dim.replace('_', ' ')}, got {_describe(value)}")
+    elif not np.all(np.isfinite(np.asarray(m, dtype=float))):
         raise UnitError(f"{name}: expected a finite {dim.replace('_', ' ')}, got {_describe(value)}")
-    _check_bounds(value, dim, name, isinstance(original, str))
+    _check_bounds(value, dim, name, isinstance(original, str), factor)
     return value
 
 
 def to_si(value: Any, dim: str, name: str = "value") -> Any:
     """The SI magnitude (float or ndarray) of ``value`` after :func:`as_quantity` checks it."""
     q = as_quantity(value, dim, name)
+    m = q.magnitude
+    if isinstance(m, float | int) and not isinstance(m, bool):
+        factor = _unit_info(q._units, dim)[2]
+        if factor is not None:
+            return float(m) * factor if factor != 1.0 else float(m)
     mag = q.to(_unit(DIMENSIONS[dim][1])).magnitude
     return float(mag) if _is_scalar(mag) else np.asarray(mag, dtype=float)
 

@@ -104,3 +104,33 @@ def test_pint_registry_cache_folder(tmp_path):
     for value in ("off", "/proc/cannot-write-here"):
         subprocess.run([sys.executable, "-c", code], check=True, env={**os.environ, "MECHVERIFY_CACHE_DIR": value})
 
+
+
+def test_catalogues_and_materials_build_only_what_is_looked_up():
+    """Issue 27: a lookup builds one catalogue row / one material, yet every row of the data is valid.
+
+    Building rows lazily moves a data error from the first lookup to the lookup of that row, so this
+    test builds every row of the motor and gearhead catalogues and every built-in material.
+    """
+    from mechverify.components import gearheads, motors
+    from mechverify.materials import database
+
+    cat = motors._CATALOGUE
+    cat.__dict__.pop("_built", None)
+    motors.motor(motors.motor_names()[0])
+    assert len(cat._built) == 1
+    assert all(motors.motor(n).name == n for n in motors.motor_names())
+    assert all(gearheads.gearhead(n).name == n for n in gearheads.gearhead_names())
+    lib = database.default_library()
+    assert all(isinstance(m, database.Material) for m in lib)  # builds each pending material
+    assert not any(isinstance(m, database._Pending) for m in lib._own)
+
+
+def test_unit_fast_path_matches_pint():
+    """The cached SI factor of ``to_si`` gives pint's own conversion, bit for bit; offsets take pint's path."""
+    from mechverify.units import Q, to_si
+
+    for text, dim in [("350 N", "force"), ("12.5 mm", "length"), ("3 kgf*cm", "torque"), ("1500 rpm", "angular_velocity"),
+                      ("7 lbf", "force"), ("0.3 in", "length"), ("2 g*cm**2", "inertia"), ("40 degC", "temperature")]:
+        si = Q(text).to_base_units().magnitude if dim != "angular_velocity" else Q(text).to("rad/s").magnitude
+        assert to_si(text, dim) == si, text

@@ -29,29 +29,45 @@ class Catalogue(Generic[T]):
         self.kind, self.path, self.table, self.build = kind, path, table, build
 
     @functools.cached_property
-    def _index(self) -> tuple[dict[str, T], tuple[str, ...]]:
+    def _index(self) -> tuple[dict[str, int], tuple[str, ...], list[Mapping[str, Any]], dict[str, str]]:
+        """Keys -> entry number, all names, the raw entries and the references; entries are built lazily.
+
+        A catalogue holds dozens of rows and a design uses one or two: building a row parses its unit
+        strings, so a lookup builds only the row it returns (a cold ``mechverify check``, issue 27).
+        """
         with open(self.path, "rb") as fh:
             data = tomllib.load(fh)
         refs = data.get("references", {})
-        by_key: dict[str, T] = {}
+        entries = list(data.get(self.table, []))
+        by_key: dict[str, int] = {}
         names: list[str] = []
-        for entry in data.get(self.table, []):
-            item = self.build(entry, refs)
+        for i, entry in enumerate(entries):
             for key in [entry["name"], *entry.get("aliases", [])]:
                 if normalise(key) in by_key:
                     raise InputError(f"{self.path.name}: name {key!r} used twice")
-                by_key[normalise(key)] = item
+                by_key[normalise(key)] = i
                 names.append(key)
-        return by_key, tuple(names)
+        return by_key, tuple(names), entries, refs
+
+    @functools.cached_property
+    def _built(self) -> dict[int, T]:
+        return {}
+
+    def _item(self, i: int) -> T:
+        built = self._built
+        if i not in built:
+            _, _, entries, refs = self._index
+            built[i] = self.build(entries[i], refs)
+        return built[i]
 
     def get(self, name: str) -> T:
-        by_key, names = self._index
-        hit = by_key.get(normalise(name))
-        if hit is None:
+        by_key, names, _, _ = self._index
+        i = by_key.get(normalise(name))
+        if i is None:
             raise UnknownNameError(self.kind, name, names)
-        return hit
+        return self._item(i)
 
     def names(self) -> list[str]:
         """Primary names, sorted."""
-        by_key, _ = self._index
-        return sorted({item.name for item in by_key.values()})
+        _, _, entries, _ = self._index
+        return sorted({str(e["name"]) for e in entries})

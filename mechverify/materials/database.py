@@ -67,12 +67,12 @@ class MaterialLibrary:
 
     def __init__(self, materials: Iterable[Material] = (), parent: MaterialLibrary | None = None):
         self.parent = parent
-        self._by_key: dict[str, Material] = {}
-        self._own: list[Material] = []
+        self._by_key: dict[str, Material | _Pending] = {}
+        self._own: list[Material | _Pending] = []
         for m in materials:
             self.add(m)
 
-    def add(self, material: Material) -> None:
+    def add(self, material: Material | _Pending) -> None:
         keys = [_norm(material.name), *(_norm(a) for a in material.aliases)]
         for k in keys:
             other = self._by_key.get(k)
@@ -89,6 +89,8 @@ class MaterialLibrary:
         if not isinstance(name, str):
             raise InputError(f"material: expected a name, got {type(name).__name__}")
         hit = self._by_key.get(_norm(name))
+        if isinstance(hit, _Pending):
+            hit = self._resolve(hit)
         if hit is not None:
             return hit
         if self.parent is not None:
@@ -97,6 +99,15 @@ class MaterialLibrary:
             except UnknownNameError:
                 pass
         raise UnknownNameError("material", name, self.all_names())
+
+    def _resolve(self, pending: _Pending) -> Material:
+        """Build a material read lazily from the built-in data and put it in its entry's place."""
+        material = pending.build()
+        for k, v in list(self._by_key.items()):
+            if v is pending:
+                self._by_key[k] = material
+        self._own = [material if m is pending else m for m in self._own]
+        return material
 
     def __contains__(self, name: str) -> bool:
         try:
@@ -121,6 +132,26 @@ class MaterialLibrary:
 
     def __len__(self) -> int:
         return len(self.names())
+
+
+class _Pending:
+    """A built-in material known by name and aliases, built from its TOML entry on first lookup.
+
+    The database holds a few dozen materials and a design uses a few: building each one parses its
+    unit strings, which made a cold ``mechverify check`` pay for every material (issue 27).
+    """
+
+    __slots__ = ("name", "aliases", "_entry", "_refs", "_where")
+
+    def __init__(self, entry: Mapping[str, Any], refs: Mapping[str, str], where: str):
+        self.name = entry.get("name")
+        self.aliases = tuple(entry.get("aliases", ()))
+        self._entry, self._refs, self._where = entry, refs, where
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise InputError(f"{where}.name: expected a non-empty string")
+
+    def build(self) -> Material:
+        return material_from_dict(self._entry, self._refs, self._where)
 
 
 def material_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None = None,
@@ -214,8 +245,9 @@ def default_library() -> MaterialLibrary:
     for entry in sorted(resources.files("mechverify.materials").joinpath("data").iterdir(), key=lambda p: p.name):
         if entry.name.endswith(".toml"):
             data = tomllib.loads(entry.read_text(encoding="utf-8"))
-            for m in _materials_from_document(data, entry.name):
-                lib.add(m)
+            refs = data.get("references", {})
+            for i, m in enumerate(data.get("material", [])):
+                lib.add(_Pending(m, refs, f"{entry.name}: material[{i}]"))
     return lib
 
 
