@@ -1,0 +1,97 @@
+"""Two caches in front of pint's registry: parsed unit strings and multiplicative conversion factors.
+
+Profiling a study sample of the lead-screw lift (issue 19) showed ~70 % of its CPU time in pint itself:
+every ``q.to("kN")`` parses the unit string again (pint's own parse cache only answers for single unit
+names it has already defined, never for ``"N*m"`` or ``"m/s**2"``), and every conversion runs pint's
+offset-unit analysis (``_validate_and_extract``) and its context machinery before it multiplies by a
+factor that pint has cached already. :func:`install` replaces, on one registry instance only:
+
+- ``parse_units_as_container(text, as_delta, case_sensitive)``: answered from a dict once a string has
+  been parsed (a failed parse is not cached; :meth:`define` clears the dict);
+- ``convert(value, src, dst, inplace)``: for two units containers without offset units and no active
+  context it returns ``value`` when ``src == dst`` and otherwise ``value * factor`` with the factor pint's
+  ``_get_conversion_factor`` gives, exactly what pint's multiplicative path computes (so results are
+  bit-identical); anything else (offset units such as degC, contexts, Decimal or Fraction magnitudes,
+  strings, keyword arguments, dimension errors) goes to pint's own ``convert``.
+
+A unit conversion by string drops from ~90-170 us to ~10 us and one study sample of the lift from ~27 ms to
+~8 ms CPU (docs/performance.md).
+"""
+
+from __future__ import annotations
+
+from decimal import Decimal
+from fractions import Fraction
+from typing import Any
+
+_SLOW = object()  # conversion that must go through pint (offset units)
+_SAME = object()  # src == dst: pint returns the value unchanged
+
+
+def install(ureg: Any) -> None:
+    """Put the parse and conversion caches in front of ``ureg`` (idempotent)."""
+    if getattr(ureg, "_mechverify_fast", False):
+        return
+    from pint.util import UnitsContainer
+
+    parse = ureg.parse_units_as_container
+    convert = ureg.convert
+    define = ureg.define
+    parsed: dict[tuple[Any, Any, Any], Any] = {}
+    factors: dict[tuple[Any, Any], Any] = {}
+
+    def parse_units_as_container(input_string: str, as_delta: bool | None = None,
+                                 case_sensitive: bool | None = None) -> Any:
+        key = (input_string, as_delta, case_sensitive)
+        try:
+            return parsed[key]
+        except (KeyError, TypeError):  # TypeError: an unhashable argument (pint then says what is wrong)
+            pass
+        out = parse(input_string, as_delta, case_sensitive)
+        if type(input_string) is str:
+            parsed[key] = out
+        return out
+
+    def fast_convert(value: Any, src: Any, dst: Any, inplace: bool = False, **ctx_kwargs: Any) -> Any:
+        if (ctx_kwargs or type(src) is not UnitsContainer or type(dst) is not UnitsContainer
+                or ureg._active_ctx or isinstance(value, Decimal | Fraction)):
+            return convert(value, src, dst, inplace, **ctx_kwargs)
+        key = (src, dst)
+        f = factors.get(key)
+        if f is None:
+            f = _factor(ureg, src, dst)
+            if f is None:  # a dimension error: pint raises it with its message
+                return convert(value, src, dst, inplace)
+            factors[key] = f
+        if f is _SAME:
+            return value
+        if f is _SLOW:
+            return convert(value, src, dst, inplace)
+        if inplace:
+            value *= f
+            return value
+        return value * f
+
+    def fast_define(*args: Any, **kwargs: Any) -> Any:
+        parsed.clear()
+        factors.clear()
+        return define(*args, **kwargs)
+
+    ureg.parse_units_as_container = parse_units_as_container
+    ureg.convert = fast_convert
+    ureg.define = fast_define
+    ureg._mechverify_fast = True
+
+
+def _factor(ureg: Any, src: Any, dst: Any) -> Any:
+    """What :func:`install`'s ``convert`` does for ``src -> dst``: ``_SAME``, ``_SLOW``, the factor, or None
+    (pint reports an error)."""
+    try:
+        if ureg._validate_and_extract(src) or ureg._validate_and_extract(dst):
+            return _SLOW
+    except ValueError:
+        return None
+    if src == dst:
+        return _SAME
+    f = ureg._get_conversion_factor(src, dst)
+    return None if isinstance(f, Exception) else f

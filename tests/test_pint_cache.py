@@ -1,0 +1,88 @@
+"""The parse and conversion caches in front of the registry (mechverify/pint_cache.py, issue 19).
+
+Source of truth: pint itself. Every conversion through the cached registry must give exactly (bit for bit)
+what a plain pint registry gives, including offset units, contexts, arrays and the errors.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pint
+import pytest
+
+from mechverify import pint_cache
+from mechverify.units import Q, ureg
+
+PAIRS = [("N", "kN"), ("kN", "N"), ("N*m", "mN*m"), ("mm", "m"), ("m/s^2", "mm/s**2"), ("rpm", "rad/s"),
+         ("MPa*m/s", "Pa*m/s"), ("lbf", "N"), ("kg*m**2", "g*cm**2"), ("deg", "rad"), ("m", "m"), ("h", "s"),
+         ("N/mm", "lbf/inch"), ("Mpsi", "GPa"), ("rev", "deg")]
+
+
+@pytest.fixture(scope="module")
+def plain() -> pint.UnitRegistry:
+    """A registry without the caches, set up as mechverify's (offset units converted to base units)."""
+    r = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    r.define("mega_psi = 1e6 * psi = Mpsi")
+    r.define("@alias turn = rev")
+    return r
+
+
+def test_installed_once() -> None:
+    assert ureg._mechverify_fast
+    convert = ureg.convert
+    pint_cache.install(ureg)
+    assert ureg.convert is convert
+
+
+@pytest.mark.parametrize(("src", "dst"), PAIRS)
+def test_scalar_and_array_conversions_are_bit_identical(plain: pint.UnitRegistry, src: str, dst: str) -> None:
+    for value in (1.0, 0.1, 350.0, -2.5e-7, 7, 1e300):
+        ours = Q(value, src).to(dst).magnitude
+        ref = plain.Quantity(value, src).to(dst).magnitude
+        assert type(ours) is type(ref) and (ours == ref), (value, ours, ref)
+    arr = np.array([0.1, 1.0, 3.3, -8.0])
+    ours_a = Q(arr.copy(), src).to(dst).magnitude
+    ref_a = plain.Quantity(arr.copy(), src).to(dst).magnitude
+    assert np.array_equal(ours_a, ref_a) and ours_a.dtype == ref_a.dtype
+    q = Q(arr.copy(), src)
+    q.ito(dst)  # in place (pint multiplies the array in place)
+    assert np.array_equal(q.magnitude, ref_a)
+
+
+@pytest.mark.parametrize(("src", "dst", "value"), [("degC", "K", 20.0), ("degC", "degF", 100.0), ("K", "degC", 0.0),
+                                                   ("delta_degC", "K", 5.0), ("degF", "degC", 32.0)])
+def test_offset_units_take_pints_path(plain: pint.UnitRegistry, src: str, dst: str, value: float) -> None:
+    ours = Q(value, src).to(dst).magnitude
+    ref = plain.Quantity(value, src).to(dst).magnitude
+    assert ours == ref
+    if src == "degC" and dst == "K":
+        assert ours == pytest.approx(293.15)  # not the multiplicative 20 * 1
+
+
+def test_dimension_errors_are_pints(plain: pint.UnitRegistry) -> None:
+    with pytest.raises(pint.DimensionalityError):
+        Q(1.0, "N").to("m")
+    with pytest.raises(pint.DimensionalityError):  # cached pairs are never the failing ones
+        Q(1.0, "N").to("m")
+    assert Q(1.0, "N").to("kN").magnitude == 1e-3
+
+
+def test_context_conversions_still_work(plain: pint.UnitRegistry) -> None:
+    """The spectroscopy context converts a wavelength to a frequency; the cache must step aside."""
+    with ureg.context("sp"):
+        ours = Q(500.0, "nm").to("THz").magnitude
+    with plain.context("sp"):
+        ref = plain.Quantity(500.0, "nm").to("THz").magnitude
+    assert ours == ref and ours == pytest.approx(599.584916)
+    with pytest.raises(pint.DimensionalityError):
+        Q(500.0, "nm").to("THz")
+
+
+def test_parsed_strings_are_reused_and_define_clears_them() -> None:
+    a = ureg.parse_units_as_container("N*m/s**2")
+    assert ureg.parse_units_as_container("N*m/s**2") is a
+    with pytest.raises(pint.UndefinedUnitError):
+        ureg.parse_units_as_container("mechverify_test_unit")
+    ureg.define("mechverify_test_unit = 3 * m")  # a failed parse is not cached; define clears the cache
+    assert Q(2.0, "mechverify_test_unit").to("m").magnitude == 6.0
+    assert ureg.parse_units_as_container("N*m/s**2") == a
