@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import re
 
+import numpy as np
 import pytest
 
 from mechverify.checks.result import tex
@@ -48,7 +49,9 @@ def latex_to_python(s: str) -> str:
             a, i = _group(s, i + 1)
             out.append(f"**({latex_to_python(a)})")
         else:
-            for latex, py in ((r"\left(", "("), (r"\right)", ")"), (r"\cdot", "*"), (r"\pi", "pi")):
+            for latex, py in ((r"\left(", "("), (r"\right)", ")"), (r"\cdot", "*"), (r"\pi", "pi"),
+                              (r"\arctan", "atan"), (r"\cos", "cos"), (r"\tan", "tan"), (r"\sin", "sin"),
+                              (r"\max", "max"), (r"\;", " ")):
                 if s.startswith(latex, i):
                     out.append(py)
                     i += len(latex)
@@ -130,3 +133,153 @@ def test_spring_stress_substituted_line_evaluates_to_result(tmp_path):
         value, printed = evaluate(r.substituted)
         assert value.to("MPa").magnitude == pytest.approx(printed.m_as("MPa"), rel=3e-3), r.substituted
         assert printed.m_as("MPa") == pytest.approx(r.demand.m_as("MPa"), rel=1e-3)
+
+
+# ------------------------------------------------------------------ every check: the line evaluates back
+def assert_substituted(r) -> None:
+    """``r.substituted`` = ``lhs = expression = result [= result in other units]``: the expression evaluates to
+    the first printed result (within the 4-significant-digit rounding of the printed inputs) and one printed
+    result is the check's demand, capacity or (dimensionless results) safety factor."""
+    assert r.substituted, f"{r.component}/{r.check}: no substituted formula"
+    env = {"Q": Q, "pi": math.pi, "atan": np.arctan, "cos": np.cos, "tan": np.tan, "sin": np.sin}
+    printed: list = []
+    for line in r.substituted.split(r",\quad "):  # a check may print one equation per side (lambda, rho')
+        parts = line.split(" = ")
+        assert len(parts) >= 3, line
+        value = eval(latex_to_python(parts[1]), env)
+        results = [eval(latex_to_python(p), env) for p in parts[2:]]
+        first = results[0]
+        if hasattr(value, "units") or hasattr(first, "units"):
+            value, first = Q(value), Q(first)
+            assert value.dimensionality == first.dimensionality, line
+            value = value.to(first.units).magnitude
+            first = first.magnitude
+        assert value == pytest.approx(first, rel=3e-3, abs=1e-9), f"{r.check}: {line}"
+        printed += results
+    targets = [r.demand, r.capacity, Q(r.safety_factor, "")]
+    for p in printed:
+        p = Q(p)
+        for t in targets:
+            if p.dimensionality == t.dimensionality and p.to(t.units).magnitude == pytest.approx(
+                    t.magnitude, rel=1e-3, abs=1e-12):
+                return
+    raise AssertionError(f"{r.component}/{r.check}: printed {printed} is none of demand {r.demand}, "
+                         f"capacity {r.capacity}, safety factor {r.safety_factor:.4g}")
+
+
+def test_every_spring_check_substituted(tmp_path):
+    """Compression (Shigley 10th ed. Ex. 10-1's music-wire data, as above), extension and torsion springs: every
+    spring check's substituted line evaluates back to its result (buckling in both regimes, clash both methods)."""
+    from mechverify.checks import springs as sc
+    from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring
+
+    s = CompressionSpring(name="s", d="0.037 in", OD="0.4 in", Nt=12.5, end="squared", L0="2.06 in",
+                          G="11.85 Mpsi", Sut="324 ksi")
+    tall = CompressionSpring(name="tall", d="1 mm", D="8 mm", Nt=40, end="squared-ground", L0="120 mm",
+                             material="music wire")
+    results = [sc.check_spring_static_stress(s, "4 lbf"), sc.check_spring_solid_stress(s),
+               sc.check_spring_buckling(s, "4 lbf"), sc.check_spring_buckling(tall, "5 N", end="fixed-free"),
+               sc.check_spring_fatigue(s, "1 lbf", "4 lbf"), sc.check_spring_clash(s, "4 lbf"),
+               sc.check_spring_clash(s, "4 lbf", method="en13906"),
+               sc.check_spring_clash(s, "4 lbf", method="en13906", dynamic=True)]
+    assert results[3].capacity < tall.solid_deflection  # the tall spring buckles before solid: y_cr branch
+    e = ExtensionSpring(name="e", d="1 mm", D="8 mm", Nb=20, Fi="5 N", r2="2 mm")
+    results += [sc.check_extension_body_stress(e, "20 N"), sc.check_extension_hook_bending(e, "20 N"),
+                *sc.check_extension_hook_torsion(e, "20 N")]
+    t = TorsionSpring(name="t", d="0.072 in", OD="0.583 in", Nb=4.25, l1="1 in", l2="1 in")
+    results += [sc.check_torsion_spring_stress(t, "1 N*m"), sc.check_torsion_spring_arbor(t, "8 mm", "1 N*m")]
+    assert len(results) == 13
+    for r in results:
+        assert_substituted(r)
+
+
+def test_screw_holding_and_self_locking_substituted(demo_results):
+    """The demo lead screw's self-locking (lambda and rho' lines) and holding-torque lines evaluate back; a
+    back-driving thread (large lead, low friction) gives a positive holding torque that evaluates back too."""
+    from mechverify.checks.screws import check_holding_torque, check_self_locking
+    from mechverify.components.power_screw import LeadScrew, Nut
+
+    rs = [r for r in demo_results if r.check in ("self_locking", "holding_torque")]
+    assert {r.check for r in rs} == {"self_locking", "holding_torque"}
+    screw = LeadScrew("Tr12x6(P3)", length="300 mm", material="C45 cold drawn", name="fast")
+    nut = Nut(name="n", mu_min=0.05, mu_max=0.1, length="24 mm")
+    fast = check_holding_torque(screw, nut, "500 N", "1 N*m")
+    assert fast.demand.magnitude > 0
+    for r in (*rs, fast, check_self_locking(screw, nut)):
+        assert_substituted(r)
+
+
+def test_every_member_check_substituted():
+    """Link checks of tests/test_member_checks.py's 33 x 6 mm eye (PLA and S235JR): body strength (all five
+    stress terms), eye net section with and without Kt, the four BTH-1 lug modes, pin shear, buckling in both
+    the Euler and Johnson regimes, deflection with an 'L/250' and a fractional limit."""
+    from mechverify.checks import members as mc
+    from mechverify.components import sections
+    from mechverify.components.links import Link
+
+    eye = dict(hole_diameter="22 mm", width="33 mm", thickness="6 mm", edge_distance="16.5 mm")
+    pla = Link("100 mm", sections.rectangle("33 mm", "6 mm"), "PLA", lug=eye, name="link 3")
+    steel = Link("100 mm", sections.rectangle("33 mm", "6 mm"), "S235JR", lug=eye, name="link 3")
+    short = Link("40 mm", sections.rectangle("20 mm", "20 mm"), "S235JR", name="stub")
+    results = [mc.check_member_body_strength(pla, "15 N", "0.5 N*m", "0.2 N*m", "0.1 N*m", "30 N"),
+               mc.check_member_body_strength(pla, "-15 N"),
+               mc.check_eye_net_section(pla, "100 N"), mc.check_eye_net_section(steel, "100 N", apply_kt=False),
+               *mc.lug_checks(steel, "1 kN"), mc.check_pin_shear(steel, "1 kN", "S235JR"),
+               mc.check_member_buckling(pla, "100 N"), mc.check_member_buckling(short, "1 kN"),
+               mc.check_link_deflection(pla, "cantilever_end_load", "1.5 N", "L/250"),
+               mc.check_link_deflection(pla, "simply_supported_uniform", "10 N/m", 0.004, axis="y")]
+    assert {r.details.get("regime") for r in results if r.check == "member_buckling"} == {"euler", "johnson"}
+    assert sum(r.check.startswith("lug_") for r in results) == 4
+    for r in results:
+        assert_substituted(r)
+
+
+def test_every_bolt_check_substituted():
+    """VDI 2230 joints (through-bolted M8 8.8 like tests/test_bolts.py, with a transverse load and friction; tightened
+    by torque; rolled after heat treatment; tapped): every bolt check's line(s) evaluate back."""
+    from mechverify.checks import bolts as bc
+    from mechverify.components import bolts as b
+
+    def joint(**kw):
+        base = dict(name="j", thread="M8", grade="8.8", parts=[("8 mm", "S235JR"), ("8 mm", "S235JR")],
+                    length="35 mm", mu_T=0.15)
+        return b.bolted_joint(**{**base, **kw})
+
+    cases = [(joint(), dict(F_A="3 kN", F_A_min="1 kN", F_Q="500 N")),
+             (joint(tightening_torque="20 N*m", rolled_after_heat_treatment=True), dict(F_A="2 kN")),
+             (b.bolted_joint("t", "M8", "10.9", [("10 mm", "S235JR")], "16 mm", tapped="Aluminium 6061-T6"),
+              dict(F_A="2 kN"))]
+    n = 0
+    for j, load in cases:
+        a = j.analyse(**load)
+        fns = [bc.check_bolt_assembly_stress, bc.check_bolt_required_preload, bc.check_bolt_working_stress,
+               bc.check_bolt_fatigue, bc.check_bolt_surface_pressure_head, bc.check_bolt_thread_stripping,
+               bc.check_bolt_separation, bc.check_bolt_slip, bc.check_bolt_tightening_torque]
+        if j.through:
+            fns.append(bc.check_bolt_surface_pressure_nut)
+        for fn in fns:
+            assert_substituted(fn(j, a))
+            n += 1
+    assert n == 29
+
+
+def test_fatigue_substituted_by_criterion():
+    """check_fatigue (Shigley Sec. 6-12 criteria, AISI 1045 CD estimate of Se): the printed n_f or Langer n_y line
+    evaluates back to the result's safety factor for Goodman, Soderberg, Gerber, ASME elliptic and SWT on the
+    proportional line, Goodman/Soderberg at constant mean, a compressive mean, and a case where Langer governs."""
+    from mechverify.checks.fatigue import check_fatigue
+
+    mat = "AISI 1045 CD"
+    cases = [dict(criterion=c) for c in ("goodman", "soderberg", "gerber", "asme_elliptic", "smith_watson_topper")]
+    cases += [dict(criterion="goodman", load_line="constant_mean"), dict(criterion="soderberg",
+                                                                          load_line="constant_mean")]
+    seen_modes = set()
+    for kw in cases:
+        r = check_fatigue("shaft", "120 MPa", "150 MPa", mat, Kf=1.3, **kw)
+        assert_substituted(r)
+        seen_modes.add(r.details["governing_mode"])
+    assert_substituted(check_fatigue("shaft", "120 MPa", "-80 MPa", mat))
+    langer = check_fatigue("shaft", "50 MPa", "500 MPa", mat)
+    assert langer.details["governing_mode"].startswith("first-cycle")
+    assert_substituted(langer)
+    assert "fatigue" in seen_modes

@@ -14,8 +14,8 @@ import math
 from collections.abc import Sequence
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
-from mechverify.components.bolts import BoltedJoint, JointAnalysis
+from mechverify.checks.result import CheckResult, tex
+from mechverify.components.bolts import BoltedJoint, JointAnalysis, nut_dimensions, thread_torque
 from mechverify.references import ref
 from mechverify.units import Q
 
@@ -44,6 +44,26 @@ def _diagram(j: BoltedJoint, a: JointAnalysis) -> dict[str, object]:
             "dF_Vth": a.dF_Vth, "thread": j.thread.designation}
 
 
+def _mm(x: float) -> str:
+    return tex(Q(x * 1e3, "mm"))
+
+
+def _N(x: float) -> str:
+    return tex(Q(x / 1e3, "kN"))
+
+
+def _gain(a: JointAnalysis) -> float:
+    """Thermal preload gain added to the bolt force in service (a loss is not relied on)."""
+    return max(-a.dF_Vth, 0.0)
+
+
+def _pressure_substituted(a: JointAnalysis, d_W: float, d_h: float, p: float) -> str:
+    """p = max(F_M,max, F_V,max + Phi_n F_A) / (pi/4 (d_W^2 - d_h^2)) with the numbers (VDI 2230 R10)."""
+    F = max(a.F_M_max, a.F_M_max - a.F_Z + a.F_SA + _gain(a))
+    return (rf"p = \frac{{{_N(F)}}}{{\frac{{\pi}}{{4}}\cdot (({_mm(d_W)})^{{2}} - ({_mm(d_h)})^{{2}})}}"
+            rf" = {tex(Q(p / 1e6, 'MPa'))}")
+
+
 @check("bolt_assembly_stress", title="Bolt stress at assembly", sf_kind="limit",
        source=ref(VDI, "R7, Eq. (R7/2); Sec. 5.5.1"),
        explain=("Von Mises stress in the bolt thread at the largest assembly preload F_M,max (tension F_M/A_S plus "
@@ -60,6 +80,11 @@ def check_bolt_assembly_stress(joint: BoltedJoint, a: JointAnalysis, *, required
                 r"\left(\frac{P}{\pi d_2} + 1.155\mu_{G,min}\right)\right]^2} \le R_{p0.2}",
         source=ref(VDI, "R7, Eq. (R7/2)"),
         inputs={**_inputs(joint), "F_M_max": _kN(a.F_M_max), "F_M_zul": _kN(a.F_M_zul), "M_A": Q(a.M_A, "N*m")},
+        substituted=(rf"\sigma_{{red,M}} = \frac{{{_N(a.F_M_max)}}}{{{tex(Q(joint.thread.As * 1e6, 'mm**2'))}}}\cdot "
+                     rf"\sqrt{{1 + 3\cdot \left(1.5\cdot "
+                     rf"\frac{{{_mm(joint.thread.d2)}}}{{{_mm(joint.thread.d0)}}}\cdot "
+                     rf"\left(\frac{{{_mm(joint.thread.P)}}}{{\pi\cdot {_mm(joint.thread.d2)}}} + 1.155\cdot "
+                     rf"{tex(joint.mu_G[0])}\right)\right)^{{2}}}} = {tex(_MPa(a.sigma_red_M))}"),
         notes=(*a.notes, f"VDI 2230 plans nu = {joint.nu:g} of R_p0.2 (F_M,zul = {a.F_M_zul / 1e3:.4g} kN)"),
         load_case=load_case, details=_diagram(joint, a))
 
@@ -81,6 +106,8 @@ def check_bolt_required_preload(joint: BoltedJoint, a: JointAnalysis, *, require
         source=ref(VDI, "R4, R7"),
         inputs={**_inputs(joint), "F_KR": _kN(max(a.F_KQ, a.F_K_req)), "F_A": _kN(a.F_A_max), "F_Z": _kN(a.F_Z),
                 "dF_Vth": _kN(a.dF_Vth), "F_M_zul": _kN(a.F_M_zul)},
+        substituted=(rf"F_{{M,min,erf}} = {_N(max(a.F_KQ, a.F_K_req))} + (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} + "
+                     rf"{_N(a.F_Z)} + {_N(max(a.dF_Vth, 0.0))} = {_N(a.F_M_req)}"),
         notes=(f"F_KR = max(F_KQerf = {a.F_KQ / 1e3:.4g} kN, F_K,erf = {a.F_K_req / 1e3:.4g} kN)",
                f"alpha_A F_M,min,req = {joint.alpha_A * a.F_M_req / 1e3:.4g} kN against F_M,zul = "
                f"{a.F_M_zul / 1e3:.4g} kN"),
@@ -102,8 +129,20 @@ def check_bolt_working_stress(joint: BoltedJoint, a: JointAnalysis, *, required_
                 r"\frac{M_G}{W_P}\right)^2},\ k_\tau = 0.5",
         source=ref(VDI, "R8"),
         inputs={**_inputs(joint), "F_A": _kN(a.F_A_max), "Phi_n": Q(a.Phi_n, ""), "F_SA": _kN(a.F_SA)},
+        substituted=_working_substituted(joint, a),
         notes=(f"F_S,max = {(a.F_M_max + a.F_SA + max(-a.dF_Vth, 0)) / 1e3:.4g} kN",), load_case=load_case,
         details=_diagram(joint, a))
+
+
+def _working_substituted(joint: BoltedJoint, a: JointAnalysis) -> str:
+    """sigma_red,B = sqrt((F_S,max/A_0)^2 + 3 (k_tau M_G/W_P)^2), A_0 = pi d0^2/4, W_P = pi d0^3/16 (VDI 2230 R8)."""
+    th = joint.thread
+    F_S = a.F_M_max + a.F_SA + _gain(a)
+    M_G = thread_torque.si(a.F_M_max, th.P, th.d2, joint.mu_G[0])
+    d0 = _mm(th.d0)
+    return (rf"\sigma_{{red,B}} = \sqrt{{\left(\frac{{{_N(F_S)}}}{{\pi\cdot ({d0})^{{2}}/4}}\right)^{{2}} + 3\cdot "
+            rf"\left(0.5\cdot \frac{{{tex(Q(M_G, 'N*m'))}}}{{\pi\cdot ({d0})^{{3}}/16}}\right)^{{2}}}}"
+            rf" = {tex(_MPa(a.sigma_red_B))}")
 
 
 @check("bolt_fatigue", title="Bolt fatigue (thread endurance)", sf_kind="fatigue",
@@ -125,6 +164,11 @@ def check_bolt_fatigue(joint: BoltedJoint, a: JointAnalysis, *, required_sf: flo
                  r"\left(2 - \frac{F_{Sm}}{F_{0.2}}\right)\sigma_{ASV}"),
         source=ref(VDI, "R9"),
         inputs={**_inputs(joint), "F_A_max": _kN(a.F_A_max), "F_A_min": _kN(a.F_A_min), "Phi_n": Q(a.Phi_n, "")},
+        substituted=(rf"\sigma_a = \frac{{{tex(a.Phi_n)}\cdot ({_N(a.F_A_max)} - {_N(a.F_A_min)})}}{{2\cdot "
+                     rf"{tex(Q(joint.thread.As * 1e6, 'mm**2'))}}} = {tex(_MPa(a.sigma_a))}"
+                     + ("" if how == "after" else
+                        rf",\quad \sigma_{{ASV}} = 0.85\cdot \left(\frac{{150}}{{{joint.thread.d * 1e3:g}}} + 45\right)"
+                        rf"\,\mathrm{{MPa}} = {tex(_MPa(a.sigma_AS))}")),
         notes=(f"threads rolled {how} heat treatment; VDI 2230 asks S_D >= 1.2",), warnings=warnings,
         load_case=load_case, details=_diagram(joint, a))
 
@@ -156,6 +200,7 @@ def check_bolt_surface_pressure_head(joint: BoltedJoint, a: JointAnalysis, *, re
         required_sf=required_sf, title=f"Surface pressure under the head ({joint.parts[0].name})",
         formula=r"p_{max} = \frac{\max(F_{M,max},\ F_{V,max} + \Phi_n F_A)}{\frac{\pi}{4}(d_W^2 - d_h^2)} \le p_G",
         source=ref(VDI, "R10"), inputs=_inputs(joint), notes=(note,), load_case=load_case,
+        substituted=_pressure_substituted(a, joint.d_W_eff, joint.d_h_eff, a.p_head),
         details=_diagram(joint, a))
 
 
@@ -177,6 +222,8 @@ def check_bolt_surface_pressure_nut(joint: BoltedJoint, a: JointAnalysis, *, req
         formula=r"p_{max} = \frac{\max(F_{M,max},\ F_{V,max} + \Phi_n F_A)}{\frac{\pi}{4}(d_{w,nut}^2 - d_h^2)} "
                 r"\le p_G",
         source=ref(VDI, "R10"), inputs=_inputs(joint), notes=(note,), load_case=load_case,
+        substituted=_pressure_substituted(a, joint.d_W_nut or nut_dimensions(joint.thread)["dw"], joint.d_h_eff,
+                                          a.p_nut),
         details=_diagram(joint, a))
 
 
@@ -199,6 +246,8 @@ def check_bolt_thread_stripping(joint: BoltedJoint, a: JointAnalysis, *, require
         source=ref(VDI, "Sec. 5.5.5"),
         inputs={**_inputs(joint), "m_ges": Q(joint.engagement * 1e3, "mm"),
                 "m_eff": Q(joint.effective_engagement * 1e3, "mm")},
+        substituted=(rf"R_{{m,S}} A_S = {tex(Q(joint.grade.Rm / 1e6, 'MPa'))}\cdot "
+                     rf"{tex(Q(joint.thread.As * 1e6, 'mm**2'))} = {_N(a.stripping_demand)}"),
         notes=("m_eff = m_ges - 2P: two non-bearing thread turns (VDI 2230:2015 m_zu)",
                "tau_B/R_m = 0.6 steel, 0.65 austenitic, 0.7 aluminium, 0.9 grey iron (VDI 2230 Table 5.5/5 as "
                "reproduced in third-party code, not checked against the guideline)",
@@ -223,6 +272,10 @@ def check_bolt_separation(joint: BoltedJoint, a: JointAnalysis, *, required_sf: 
         formula=r"(1 - \Phi_n) F_{A,max} + F_{K,erf} \le F_{M,min} - F_Z - \Delta F_{Vth}",
         source=ref(VDI, "R4"),
         inputs={**_inputs(joint), "F_A": _kN(a.F_A_max), "F_Z": _kN(a.F_Z), "F_K_req": _kN(a.F_K_req)},
+        substituted=(rf"(1 - \Phi_n) F_{{A,max}} + F_{{K,erf}} = (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} + "
+                     rf"{_N(a.F_K_req)} = {_N(a.F_PA + a.F_K_req)}"
+                     rf",\quad F_{{M,min}} - F_Z - \Delta F_{{Vth}} = {_N(a.F_M_min)} - {_N(a.F_Z)} - "
+                     rf"{_N(max(a.dF_Vth, 0.0))} = {_N(avail)}"),
         notes=(f"F_M,min = {a.F_M_min / 1e3:.4g} kN; required assembly preload (R4) F_M,min,req = "
                f"{a.F_M_req / 1e3:.4g} kN",),
         load_case=load_case, details=_diagram(joint, a))
@@ -242,6 +295,10 @@ def check_bolt_slip(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float 
         formula=r"\frac{F_Q}{q_F \mu_{T,min}} \le F_{KR,min} = F_{M,min} - (1-\Phi_n)F_{A,max} - F_Z - \Delta F_{Vth}",
         source=ref(VDI, "R12"),
         inputs={**_inputs(joint), "F_Q": _kN(a.F_Q), "mu_T": Q(joint.mu_T or 0.0, ""), "q_F": Q(joint.q_F, "")},
+        substituted=((rf"F_{{KQerf}} = \frac{{{_N(a.F_Q)}}}{{{joint.q_F}\cdot {tex(joint.mu_T)}}} = {_N(a.F_KQ)},\quad "
+                      if a.F_Q > 0 and joint.mu_T else "")
+                     + rf"F_{{KR,min}} = {_N(a.F_M_min)} - (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} - {_N(a.F_Z)} - "
+                     rf"{_N(max(a.dF_Vth, 0.0))} = {_N(a.F_KR_min)}"),
         notes=("VDI 2230 R12 asks S_G >= 1.2 for static and 1.8 for alternating transverse loads",
                *(("no transverse load in this case",) if a.F_Q == 0 else ())),
         load_case=load_case, details=_diagram(joint, a))
@@ -264,6 +321,10 @@ def check_bolt_tightening_torque(joint: BoltedJoint, a: JointAnalysis, *, requir
                                        f"{joint.grade.name}",
         formula=r"M_A = F_M\left(0.16P + 0.58 d_2 \mu_G + \frac{D_{Km}}{2}\mu_K\right)",
         source=ref(VDI, "R13"), inputs={**_inputs(joint), "D_Km": Q(joint.D_Km * 1e3, "mm")},
+        substituted=(rf"M_A = {_N(a.F_M_max)}\cdot \left(0.16\cdot {_mm(joint.thread.P)} + 0.58\cdot "
+                     rf"{_mm(joint.thread.d2)}\cdot {tex(lo_G)} + \frac{{{_mm(joint.D_Km)}}}{{2}}\cdot "
+                     rf"{tex(lo_K)}\right)"
+                     rf" = {tex(Q(a.M_A, 'N*m'))}"),
         notes=(f"set M_A = {a.M_A:.4g} N·m (mu_G = mu_K = {lo_G:g}); preload table (mu_G = mu_K, nu = {joint.nu:g}):",
                *rows),
         load_case=load_case,

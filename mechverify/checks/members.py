@@ -12,8 +12,8 @@ from typing import Any
 import pint
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
-from mechverify.components.links import BTH1_SOURCE, Link, pin_shear_stress
+from mechverify.checks.result import CheckResult, tex
+from mechverify.components.links import _LOAD_DIMS, BTH1_SOURCE, Link, beam_case, pin_shear_stress
 from mechverify.errors import InputError
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
@@ -56,8 +56,44 @@ def check_member_body_strength(link: Link, axial: QuantityLike = "0 N", moment_y
                 "Mz": Q(to_si(moment_z, "torque", "moment_z"), "N*m"), "T": Q(to_si(torque, "torque", "torque"), "N*m"),
                 "A": link.section.area.to("mm**2"), "Wel_y": link.section.Wel_y.to("mm**3"),
                 "Wel_z": link.section.Wel_z.to("mm**3")},
+        substituted=_body_substituted(link, axial, moment_y, moment_z, torque, shear, s.von_mises),
         notes=tuple(notes), load_case=load_case,
         details={"axial": s.axial, "bending": s.bending, "torsion": s.torsion, "shear": s.shear})
+
+
+def _body_substituted(link: Link, axial: Any, moment_y: Any, moment_z: Any, torque: Any, shear: Any,
+                      vm: Any) -> str:
+    """sigma_vM = sqrt((|N|/A + |M_y|/W_y + |M_z|/W_z)^2 + 3 (|T|/W_t + |V|/A_s)^2) with the numbers (zero terms
+    left out)."""
+    sec = link.section.si()
+    N, My, Mz = (abs(to_si(v, k, n)) for v, k, n in ((axial, "force", "axial"), (moment_y, "torque", "moment_y"),
+                                                    (moment_z, "torque", "moment_z")))
+    T, V = abs(to_si(torque, "torque", "torque")), abs(to_si(shear, "force", "shear"))
+
+    def terms(pairs: list[tuple[float, str, float, str, tuple[str, str]]]) -> str:
+        """``x/w + ...`` for the non-zero terms, each printed in the display units (du, dw)."""
+        out = [rf"\frac{{{tex(Q(x, u), du)}}}{{{tex(Q(w, wu), dw)}}}" for x, u, w, wu, (du, dw) in pairs if x != 0]
+        return " + ".join(out) or r"0\,\mathrm{MPa}"
+
+    sig = terms([(N, "N", sec["area"], "m**2", ("N", "mm**2")), (My, "N*m", sec["Wel_y"], "m**3", ("N*mm", "mm**3")),
+                 (Mz, "N*m", sec["Wel_z"], "m**3", ("N*mm", "mm**3"))])
+    tau = terms([(T, "N*m", sec["Wt"], "m**3", ("N*mm", "mm**3")),
+                 (V, "N", min(sec["Asy"], sec["Asz"]), "m**2", ("N", "mm**2"))])
+    return (rf"\sigma_{{vM}} = \sqrt{{\left({sig}\right)^{{2}} + 3\cdot \left({tau}\right)^{{2}}}}"
+            rf" = {tex(vm, 'MPa')}")
+
+
+def column_substituted(b: Any, E: Any, Sy: Any, A: Any, I: Any, l: Any) -> str:
+    """The Euler (``C pi^2 E I / l^2``) or Johnson (``A [S_y - (S_y l/(2 pi k))^2/(C E)]``, ``k = sqrt(I/A)``) critical
+    load of :func:`mechverify.components.columns.column_buckling` with the numbers."""
+    e, ll, ii, aa = tex(E, "MPa"), tex(l, "mm"), tex(I, "mm**4"), tex(A, "mm**2")
+    if b.regime == "euler":
+        return (rf"P_{{cr}} = \frac{{{tex(b.C)}\cdot \pi^{{2}}\cdot {e}\cdot {ii}}}{{({ll})^{{2}}}}"
+                rf" = {tex(b.critical_load, 'N')}")
+    sy = tex(Sy, "MPa")
+    return (rf"P_{{cr}} = {aa}\cdot \left({sy} - \left(\frac{{{sy}\cdot {ll}}}{{2\cdot \pi\cdot "
+            rf"\sqrt{{\frac{{{ii}}}{{{aa}}}}}}}\right)^{{2}}\cdot \frac{{1}}{{{tex(b.C)}\cdot {e}}}\right)"
+            rf" = {tex(b.critical_load, 'N')}")
 
 
 @check("eye_net_section", title="Pin eye net section", sf_kind="static",
@@ -99,6 +135,7 @@ def check_eye_net_section(link: Link, axial: QuantityLike, *, required_sf: float
     if axial is not None and to_si(axial, "force", "axial") < 0:
         notes.append("compressive axial force: the net section bears on the pin; checked as tension (conservative)")
     L = link.lug
+    kt_tex = tex(kt) + r"\cdot " if use_kt else ""
     return CheckResult(
         check="eye_net_section", component=link.name, demand=demand.to("MPa"), capacity=link.yield_strength.to("MPa"),
         required_sf=required_sf, title="Pin eye net section",
@@ -106,6 +143,9 @@ def check_eye_net_section(link: Link, axial: QuantityLike, *, required_sf: float
         source=f"{PETERSON_HOLE}; {SHIGLEY_KT}",
         inputs={"F": Q(to_si(axial, "force", "axial"), "N"), "w": L.width.to("mm"), "D": L.hole_diameter.to("mm"),
                 "t": L.thickness.to("mm"), "Kt": kt},
+        substituted=(rf"\sigma = {kt_tex}\frac{{{tex(Q(abs(to_si(axial, 'force', 'axial')), 'N'))}}}"
+                     rf"{{({tex(L.width, 'mm')} - {tex(L.hole_diameter, 'mm')})\cdot {tex(L.thickness, 'mm')}}}"
+                     rf" = {tex(demand, 'MPa')}"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
         details={"sigma_net": sigma.to("MPa"), "Kt": kt, "kt_applied": use_kt})
 
@@ -145,7 +185,20 @@ def lug_checks(link: Link, force: QuantityLike, *, design_factor: float = 2.0,
          r"P_v = 0.70 F_u A_v,\ A_v = 2\left[a + \frac{D_p}{2}(1 - \cos\phi) - Z'\right] t", "Eqs. (3-50)-(3-52)"),
         ("lug_bearing", "Pin bearing on the lug", s.bearing, design_factor, r"P_p = 1.25 F_y D_p t", "Sec. 3-3.3.3"),
     ]
+    Cr, Fu, Fy = tex(s.Cr), tex(link.ultimate_strength, "MPa"), tex(link.yield_strength, "MPa")
+    t, Dh, Dp = tex(L.thickness, "mm"), tex(L.hole_diameter, "mm"), tex(link.pin_diameter, "mm")
+    be = tex((L.width - L.hole_diameter) / 2, "mm")
+    subs = {
+        "lug_tension": rf"P_t = {Cr}\cdot {Fu}\cdot 2\cdot {t}\cdot {tex(s.b_eff, 'mm')}",
+        "lug_fracture_beyond": (rf"P_b = {Cr}\cdot {Fu}\cdot \left(1.13\cdot \left({tex(L.edge_distance, 'mm')} - "
+                                rf"\frac{{{Dh}}}{{2}}\right) + "
+                                rf"\frac{{0.92\cdot {be}}}{{1 + \frac{{{be}}}{{{Dh}}}}}\right)"
+                                rf"\cdot {t}"),
+        "lug_shear_out": rf"P_v = 0.70\cdot {Fu}\cdot {tex(s.shear_area, 'mm**2')}",
+        "lug_bearing": rf"P_p = 1.25\cdot {Fy}\cdot {Dp}\cdot {t}",
+    }
     return [CheckResult(check=name, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
+                        substituted=f"{subs[name]} = {tex(cap, 'N')}",
                         title=title, formula=formula, source=f"{BTH1_SOURCE}: {eq}", inputs=inputs,
                         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
                         details={"b_eff": s.b_eff.to("mm"), "Av": s.shear_area.to("mm**2"), "Cr": s.Cr})
@@ -219,6 +272,8 @@ def check_pin_shear(link: Link, force: QuantityLike, pin_material: Any, *, plane
         title="Pin shear", formula=r"\tau = \frac{F}{n \pi d^2 / 4} \le S_{sy}",
         source=f"average direct shear tau = F/A; Ssy = 0.577 Sy ({ref('shigley10', 'Eq. (5-21)')})",
         inputs={"F": Q(to_si(force, "force", "force"), "N"), "d": link.pin_diameter.to("mm"), "n": planes},
+        substituted=(rf"\tau = \frac{{{tex(Q(abs(to_si(force, 'force', 'force')), 'N'))}}}{{{planes}\cdot \pi\cdot "
+                     rf"({tex(link.pin_diameter, 'mm')})^{{2}}/4}} = {tex(tau, 'MPa')}"),
         notes=(f"{planes} shear plane(s); pin {mat.name}, S_sy = {how}",
                "average shear stress; the peak in a round pin is 4/3 of it (transverse shear)"),
         load_case=load_case)
@@ -248,6 +303,8 @@ def check_member_buckling(link: Link, compression: QuantityLike, *, required_sf:
         required_sf=required_sf, title="Link buckling", formula=formula, source=b.source,
         inputs={"P": Q(P, "N"), "l": link.length.to("mm"), "I_min": link.section.I2.to("mm**4"),
                 "A": link.section.area.to("mm**2"), "E": link.material.require("E").to("GPa")},
+        substituted=column_substituted(b, link.material.require("E"), link.yield_strength, link.section.area,
+                                       link.section.I2, link.length),
         notes=tuple(notes), load_case=load_case,
         details={"slenderness": b.slenderness, "transition_slenderness": b.transition_slenderness, "regime": b.regime})
 
@@ -284,11 +341,18 @@ def deflection_check(deflection: QuantityLike, limit: Any, *, span: QuantityLike
     if lim.magnitude <= 0:
         raise InputError("limit: must be positive")
     inputs: dict[str, Any] = {"deflection": y.to("mm"), "limit": lim.to("mm")}
+    sub = ""
     if span is not None:
         inputs["span"] = Q(to_si(span, "length", "span"), "m").to("mm")
+        m = _FRACTION.match(limit) if isinstance(limit, str) else None
+        if m:  # "L/250": the limit is the span over the number
+            sub = rf"\delta_{{lim}} = \frac{{{tex(inputs['span'], 'mm')}}}{{{m.group(1)}}} = {tex(lim, 'mm')}"
+        elif isinstance(limit, int | float) and not isinstance(limit, bool):
+            sub = rf"\delta_{{lim}} = {tex(float(limit))}\cdot {tex(inputs['span'], 'mm')} = {tex(lim, 'mm')}"
     return CheckResult(
         check="deflection", component=component, demand=y.to("mm"), capacity=lim.to("mm"),
         title="Deflection", formula=r"\delta \le \delta_{lim}", source=source or "limit set by the design",
+        substituted=sub,
         inputs=inputs, notes=(f"limit {limit!r}" + (f" of span {fmt(Q(to_si(span, 'length', 'span'), 'm'), 'mm')}"
                                                    if span is not None and not isinstance(limit, pint.Quantity)
                                                    else ""),),
@@ -307,8 +371,17 @@ def check_link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis:
     y = link.deflection(case, load, axis)
     r = deflection_check(y, limit, span=link.length, component=link.name, load_case=load_case,
                          source=ref("shigley10", f"Table A-9 ({case})"))
+    c = beam_case(case)
+    dim, n, _ = _LOAD_DIMS[c.load_kind]
+    unit = {"force": "N", "force_per_length": "N/mm", "torque": "N*mm"}.get(dim, "")
+    P = Q(abs(to_si(load, dim, "load")), {"force": "N", "force_per_length": "N/m", "torque": "N*m"}.get(dim, ""))
+    I = link._I_for(axis)
+    sub = (rf"\delta_{{max}} = \frac{{{tex(c.c_deflection)}\cdot {tex(P, unit or None)}\cdot "
+           rf"({tex(link.length, 'mm')})^{{{n}}}}}{{{tex(link.material.require('E'), 'MPa')}\cdot {tex(I, 'mm**4')}}}"
+           rf" = {tex(y, 'mm')}")
     return dataclasses.replace(
         r, check="link_deflection", title="Link deflection",
+        substituted=sub + (rf",\quad {r.substituted}" if r.substituted else ""),
         formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}")
 
 

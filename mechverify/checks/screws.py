@@ -82,6 +82,9 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
                 r"\quad \tan\alpha_n = \tan\alpha\cos\lambda",
         source=f"{HAMROCK} (self-locking condition mu > cos(alpha_n) tan(lambda)); {SHIGLEY_SCREWS}, Eq. (8-3)",
         inputs={"lead": th.lead, "d2": th.d2, "flank_angle": th.flank_angle, "mu_min": Q(mu_lo, "")},
+        substituted=(rf"\lambda = \arctan\frac{{{tex(th.lead, 'mm')}}}{{\pi\cdot {tex(th.d2, 'mm')}}} = {tex(lam)}"
+                     rf",\quad \rho' = \arctan\frac{{{tex(mu_lo)}}}{{\cos({tex(th.normal_flank_angle, 'deg')})}}"
+                     rf" = {tex(rho)}"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
         details={"lead_angle": lam, "friction_angle": rho, "normal_flank_angle": th.normal_flank_angle.to("deg"),
                  "self_locking_mu": Q(mu_star, ""), "angle_margin": (rho - lam).to("deg"),
@@ -115,10 +118,20 @@ def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Qua
                 r"{\cos\alpha_n + \mu_{min}\tan\lambda}\right) \le T_{available}",
         source=f"{HAMROCK}, Eq. (16.12) (lowering torque); {SHIGLEY_SCREWS}, Eq. (8-2)",
         inputs={"F": f, "mu_min": Q(mu_lo, ""), "holding_torque": cap, "lead": screw.lead, "d2": screw.thread.d2},
+        substituted=_holding_substituted(screw, f, mu_lo, need),
         notes=tuple(notes), load_case=load_case,
         details={"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
                  "backdrive_efficiency": screw.backdrive_efficiency(mu_lo)},
     )
+
+
+def _holding_substituted(screw: LeadScrew, f: Any, mu: float, need: Any) -> str:
+    """T_hold = max(0, F d2/2 (cos(alpha_n) tan(lambda) - mu)/(cos(alpha_n) + mu tan(lambda))) with the numbers."""
+    th = screw.thread
+    an, lam = tex(th.normal_flank_angle, "deg"), tex(th.lead_angle, "deg")
+    return (rf"T_{{hold}} = \max\left(0\,\mathrm{{N\cdot m}},\; {tex(f, 'N')}\cdot \frac{{{tex(th.d2, 'mm')}}}{{2}}"
+            rf"\cdot \frac{{\cos({an})\cdot \tan({lam}) - {tex(mu)}}}{{\cos({an}) + {tex(mu)}\cdot \tan({lam})}}"
+            rf"\right) = {tex(need, 'N*m')}")
 
 
 def _nut_geometry(screw: LeadScrew, nut: Nut) -> tuple[float, Any]:

@@ -14,8 +14,9 @@ import pint
 
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
-from mechverify.components.spring_formulas import torsion_spring_factors
+from mechverify.components.spring_formulas import bergstrasser_factor, torsion_spring_factors
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring, en13906_min_gap_sum
+from mechverify.components.springs_extension import hook_bending_factor, hook_torsion_factor
 from mechverify.errors import UnknownNameError
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, fmt, to_si
@@ -47,6 +48,27 @@ def _stress_substituted(spring: CompressionSpring, F: Any, tau: Any, sub: str = 
     return (rf"\tau{'_' + sub if sub else ''} = {tex(K)}\cdot \frac{{8\cdot {tex(F, 'N')}\cdot "
             rf"{tex(spring.mean_diameter, 'mm')}}}{{\pi\cdot ({tex(spring.wire_diameter, 'mm')})^{{3}}}}"
             rf" = {tex(tau, 'MPa')}")
+
+
+def _wire_stress(K: float, F: Any, D: Any, d: Any, result: Any, lhs: str = r"\tau", k: int = 8) -> str:
+    """``lhs = K·k F D/(pi d^3) = result`` with the numbers (helical body and hook torsion: k = 8)."""
+    return (rf"{lhs} = {tex(K)}\cdot \frac{{{k}\cdot {tex(F, 'N')}\cdot {tex(D, 'mm')}}}"
+            rf"{{\pi\cdot ({tex(d, 'mm')})^{{3}}}} = {tex(result, 'MPa')}")
+
+
+def _deflection_tex(spring: CompressionSpring, F: Any) -> str:
+    """``\frac{F}{k}`` with the numbers (k in N/mm)."""
+    return rf"\frac{{{tex(Q(to_si(F, 'force', 'F_max'), 'N'), 'N')}}}{{{tex(spring.rate, 'N/mm')}}}"
+
+
+def _buckling_substituted(spring: CompressionSpring, alpha: float, y_cr: Any) -> str:
+    """y_cr = L0 C1' [1 - sqrt(1 - C2'/lambda^2)], C1' = E/(2(E - G)), C2' = 2 pi^2 (E - G)/(2G + E),
+    lambda = alpha L0/D (Shigley Eqs. (10-10) to (10-12))."""
+    E, G = tex(spring.elastic_modulus, "GPa"), tex(spring.shear_modulus, "GPa")
+    L0, D = tex(spring.free_length, "mm"), tex(spring.mean_diameter, "mm")
+    return (rf"y_{{cr}} = {L0}\cdot \frac{{{E}}}{{2\cdot ({E} - {G})}}\cdot \left(1 - \sqrt{{1 - "
+            rf"\frac{{2\cdot \pi^{{2}}\cdot ({E} - {G})}}{{(2\cdot {G} + {E})\cdot "
+            rf"\left(\frac{{{tex(alpha)}\cdot {L0}}}{{{D}}}\right)^{{2}}}}}}\right) = {tex(y_cr, 'mm')}")
 
 
 @check("spring_static_stress", title='Spring shear stress at maximum working force', sf_kind="spring",
@@ -112,6 +134,11 @@ def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end
                      f"{fmt(spring.critical_free_length(end), 'mm')} (or buckling only beyond solid)")
     else:
         capacity = y_cr
+    if capacity is y_cr:
+        sub = _buckling_substituted(spring, alpha, y_cr)
+    else:  # absolutely stable: held to its travel
+        sub = (rf"L_0 - L_s = {tex(spring.free_length, 'mm')} - {tex(spring.solid_length, 'mm')}"
+               rf" = {tex(capacity, 'mm')}")
     return CheckResult(
         check="spring_buckling", component=spring.name, demand=y, capacity=capacity, required_sf=required_sf,
         title="Spring buckling (critical deflection)",
@@ -119,7 +146,7 @@ def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end
         source=f"{SHIGLEY}, Eqs. (10-10)..(10-13), Table 10-2; EN 13906-1:2013 Sec. 9",
         inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N"), "E": spring.elastic_modulus,
                 "G": spring.shear_modulus},
-        notes=tuple(notes), load_case=load_case)
+        substituted=sub, notes=tuple(notes), load_case=load_case)
 
 
 @check("spring_fatigue", title='Spring fatigue (infinite life)', sf_kind="fatigue",
@@ -152,6 +179,9 @@ def check_spring_fatigue(spring: CompressionSpring, F_min: QuantityLike, F_max: 
         source=f"{SHIGLEY}, Secs. 10-9, 10-10, Eq. (10-30); mean-stress criterion from mechverify.fatigue.criteria",
         inputs={**_inputs(spring), "F_min": Q(to_si(F_min, "force", "F_min"), "N"),
                 "F_max": Q(to_si(F_max, "force", "F_max"), "N")},
+        substituted=_wire_stress(spring.bergstrasser_factor,
+                                 Q((to_si(F_max, "force", "F_max") - to_si(F_min, "force", "F_min")) / 2, "N"),
+                                 spring.mean_diameter, spring.wire_diameter, f.tau_a, r"\tau_a"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
         details={"tau_m": f.tau_m, "Ssu": f.Ssu, "Sse": f.Sse, "Ssy": f.Ssy, "n_f": f.n_f, "n_y": f.n_y})
 
@@ -176,19 +206,25 @@ def check_spring_clash(spring: CompressionSpring, F_max: QuantityLike, *, method
         formula = r"(1 + \xi)\, y_{max} \le L_0 - L_s"
         source = f"{SHIGLEY}, Sec. 10-7 (fractional overrun to closure, xi = {xi:g})"
         note = f"fractional overrun to closure xi = {xi:g} keeps the spring in its linear range"
+        sub = rf"(1 + \xi)\, y_{{max}} = (1 + {tex(xi)})\cdot {_deflection_tex(spring, F_max)} = {tex(demand, 'mm')}"
     elif method == "en13906":
         Sa = en13906_min_gap_sum(spring.wire_diameter, spring.mean_diameter, spring.active_coils, dynamic)
         demand, capacity = (y + Sa).to("mm"), travel
         formula = r"y_{max} + S_a \le L_0 - L_s,\ S_a = (0.0015 D^2/d + 0.1 d)\, n"
         source = "EN 13906-1:2013, Sec. 10 (minimum sum of gaps between active coils)"
         note = f"minimum sum of gaps S_a = {fmt(Sa, 'mm')} ({'dynamic, doubled' if dynamic else 'static'})"
+        dd, DD = tex(spring.wire_diameter, "mm"), tex(spring.mean_diameter, "mm")
+        two = "2\\cdot " if dynamic else ""
+        sub = (rf"y_{{max}} + S_a = {_deflection_tex(spring, F_max)} + {two}"
+               rf"\left(\frac{{0.0015\cdot ({DD})^{{2}}}}{{{dd}}} + 0.1\cdot {dd}\right)\cdot "
+               rf"{tex(spring.active_coils)} = {tex(demand, 'mm')}")
     else:
         raise UnknownNameError("clash method", method, ["shigley", "en13906"])
     return CheckResult(
         check="spring_clash", component=spring.name, demand=demand, capacity=capacity, title="Spring clash allowance",
         formula=formula, source=source,
         inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N"), "Ls": spring.solid_length},
-        notes=(note,), load_case=load_case)
+        substituted=sub, notes=(note,), load_case=load_case)
 
 
 
@@ -215,7 +251,9 @@ def check_extension_body_stress(s: ExtensionSpring, F: QuantityLike, *, required
         check="extension_body_stress", component=s.name, demand=s.body_stress(Fq), capacity=s.allowable("body"),
         required_sf=required_sf, title="Extension spring body stress",
         formula=r"\tau = K_B \frac{8 F D}{\pi d^3} \le S_{sy}", source=f"{SHIGLEY}, Eq. (10-7), Table 10-7",
-        inputs=_ext_inputs(s, Fq), notes=(_initial_tension_note(s),))
+        inputs=_ext_inputs(s, Fq), notes=(_initial_tension_note(s),),
+        substituted=_wire_stress(bergstrasser_factor(s.index), Fq, s.mean_diameter, s.wire_diameter,
+                                 s.body_stress(Fq)))
 
 
 @check("extension_hook_bending", title='Extension spring hook bending (A)', sf_kind="static",
@@ -235,7 +273,16 @@ def check_extension_hook_bending(s: ExtensionSpring, F: QuantityLike, *, require
         formula=r"\sigma_A = F \left[(K)_A \frac{16 D}{\pi d^3} + \frac{4}{\pi d^2}\right],\ "
                 r"(K)_A = \frac{4 C_1^2 - C_1 - 1}{4 C_1 (C_1 - 1)},\ C_1 = 2 r_1/d",
         source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r1": s.hook_bend_radius}, notes=tuple(notes))
+        inputs={**_ext_inputs(s, Fq), "r1": s.hook_bend_radius}, notes=tuple(notes),
+        substituted=_hook_bending_substituted(s, Fq))
+
+
+def _hook_bending_substituted(s: ExtensionSpring, F: Any) -> str:
+    C1 = float((2 * s.hook_bend_radius / s.wire_diameter).m_as(""))
+    d, D = tex(s.wire_diameter, "mm"), tex(s.mean_diameter, "mm")
+    return (rf"\sigma_A = {tex(F, 'N')}\cdot \left({tex(hook_bending_factor(C1))}\cdot \frac{{16\cdot {D}}}"
+            rf"{{\pi\cdot ({d})^{{3}}}} + \frac{{4}}{{\pi\cdot ({d})^{{2}}}}\right) = "
+            rf"{tex(s.hook_bending_stress(F), 'MPa')}")
 
 
 @check("extension_hook_torsion", title='Extension spring hook torsion (B)', sf_kind="static",
@@ -253,7 +300,9 @@ def check_extension_hook_torsion(s: ExtensionSpring, F: QuantityLike, *, require
         capacity=s.allowable("end_torsion"), required_sf=required_sf, title="Extension spring hook torsion (B)",
         formula=r"\tau_B = (K)_B \frac{8 F D}{\pi d^3},\ (K)_B = \frac{4 C_2 - 1}{4 C_2 - 4},\ C_2 = 2 r_2/d",
         source=f"{SHIGLEY}, Sec. 10-11, Table 10-7",
-        inputs={**_ext_inputs(s, Fq), "r2": s.hook_side_radius})]
+        inputs={**_ext_inputs(s, Fq), "r2": s.hook_side_radius},
+        substituted=_wire_stress(hook_torsion_factor(float((2 * s.hook_side_radius / s.wire_diameter).m_as(""))),
+                                 Fq, s.mean_diameter, s.wire_diameter, s.hook_torsion_stress(Fq), r"\tau_B"))]
 
 
 # ----------------------------------------------------------------------------------------- torsion springs
@@ -275,6 +324,8 @@ def check_torsion_spring_stress(s: TorsionSpring, M: QuantityLike, *, required_s
         required_sf=required_sf, title="Torsion spring bending stress",
         formula=r"\sigma = K_i \frac{32 M}{\pi d^3} \le S_y,\ K_i = \frac{4 C^2 - C - 1}{4 C (C - 1)}",
         source=f"{SHIGLEY}, Sec. 10-12, Eq. (10-43) (K_i), Eq. (10-57) (S_y)", inputs=_tor_inputs(s, Mq),
+        substituted=(rf"\sigma = {tex(Ki)}\cdot \frac{{32\cdot {tex(Mq, 'N*mm')}}}{{\pi\cdot "
+                     rf"({tex(s.wire_diameter, 'mm')})^{{3}}}} = {tex(s.bending_stress(Mq), 'MPa')}"),
         notes=(f"K_i = {Ki:.4g} (inner fibre, where the stress is highest when the spring winds up)",
                "the load must close (wind up) the coils; unwinding loads need the residual-stress-free allowable"))
 
@@ -298,8 +349,18 @@ def check_torsion_spring_arbor(s: TorsionSpring, arbor_diameter: QuantityLike, M
         formula=r"D_{arbor} \le D_i' = \frac{D N_b}{N_b + \theta_c'} - d",
         source=f"{SHIGLEY}, Sec. 10-12 (coil diameter under load)",
         inputs={**_tor_inputs(s, Mq), "angle": s.angle(Mq)},
+        substituted=_arbor_substituted(s, Mq, Di),
         notes=("theta_c' = body turns of wind-up (legs excluded), friction-corrected rate (Eq. (10-51))",
                "to keep a diametral clearance margin, set a required_sf (1.1 = 10 %)"))
+
+
+def _arbor_substituted(s: TorsionSpring, M: Any, Di: Any) -> str:
+    """D_i' = D N_b/(N_b + theta_c') - d, theta_c' = (theta/360 deg) N_b/N_a body turns."""
+    Nb = s.Nb
+    turns = float(s.angle(M).m_as("deg")) / 360 * Nb / s.active_turns
+    return (rf"D_i' = \frac{{{tex(s.mean_diameter, 'mm')}\cdot {tex(Nb)}}}{{{tex(Nb)} + {tex(turns)}}} - "
+            rf"{tex(s.wire_diameter, 'mm')} = {tex(Di, 'mm')}")
+
 
 __all__ = ["check_spring_static_stress", "check_spring_solid_stress", "check_spring_buckling", "check_spring_fatigue",
            "check_spring_clash", "check_extension_body_stress", "check_extension_hook_bending",
