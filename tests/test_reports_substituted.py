@@ -283,3 +283,67 @@ def test_fatigue_substituted_by_criterion():
     assert langer.details["governing_mode"].startswith("first-cycle")
     assert_substituted(langer)
     assert "fatigue" in seen_modes
+
+
+# Checks whose result may carry no substituted line, each with the reason. Everything else that runs in an
+# example design must print one that evaluates back. Field results are the maximum over a mesh or a sweep: there
+# is no closed form to substitute into (their limit is substituted when it is a fraction of a span).
+ALLOW_NO_SUBSTITUTION = {
+    "frame_deflection": "largest displacement of the frame's element fields; a limit given as a length has "
+                        "nothing to substitute (an 'L/250' limit is substituted)",
+    "plate_deflection_fea": "largest deflection of a plate FEA field; the same for the limit as frame_deflection",
+    "solid_stress": "largest von Mises stress of a solid FEA field (CalculiX): no closed form",
+    "solid_deflection": "largest displacement of a solid FEA field: no closed form",
+    "natural_frequency": "eigenvalue of the FE model: no closed form",
+    "buckling_load_factor": "eigenvalue of the FE model: no closed form",
+}
+# Checks owned by other issues that had no substituted line when this test was written (issue 25's table);
+# the test still evaluates their line as soon as one exists. Remove an entry when its check prints one.
+PENDING_ELSEWHERE = {
+    "bearing_life": "issue 24", "bearing_static_safety": "issue 24", "bearing_speed": "issue 24",
+    "motor_peak_torque": "issue 24", "motor_rms_torque": "issue 24", "motor_max_speed": "issue 24",
+    "motor_supply_voltage": "issue 24", "inertia_ratio": "issue 24", "gearhead_continuous_torque": "issue 24",
+    "gearhead_intermittent_torque": "issue 24", "gearhead_input_speed": "issue 24",
+    "shaft_static_yield": "issue 21", "shaft_fatigue": "issue 21", "shaft_bearing_slope": "issue 21",
+    "shaft_critical_speed": "issue 21", "spine_buckling_ratio": "issue 20",
+}
+
+
+def _example_designs():
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1] / "examples"
+    skip = {"solid_bracket/design.toml"}  # CalculiX run (~15 s); its four checks are all field results (allow-list)
+    return sorted(str(p.relative_to(root)) for p in root.glob("*/design*.toml") if str(p.relative_to(root)) not in skip)
+
+
+@pytest.mark.parametrize("design", _example_designs())
+def test_every_example_check_has_a_substituted_line(design):
+    """Every result of every example design (each run through its design file) prints a substituted line that
+    evaluates back to its result, except the allow-listed field results and the checks still pending in other
+    issues (listed with the issue)."""
+    from pathlib import Path
+
+    from mechverify.design import load
+
+    path = Path(__file__).resolve().parents[1] / "examples" / design
+    results = list(load(path).verify())
+    assert results
+    missing = []
+    for r in results:
+        if not r.substituted:
+            if r.check not in ALLOW_NO_SUBSTITUTION and r.check not in PENDING_ELSEWHERE:
+                missing.append(f"{r.component}/{r.check}")
+            continue
+        assert_substituted(r)
+    assert not missing, f"no substituted line: {missing}"
+
+
+def test_allow_list_entries_are_real_checks():
+    """The allow-list names registered checks (a renamed check must not hide behind a stale entry)."""
+    from mechverify.checks import registry
+
+    registry.load_all()
+    names = {d.name for d in registry.all_checks()}
+    assert set(ALLOW_NO_SUBSTITUTION) <= names
+    assert set(PENDING_ELSEWHERE) <= names

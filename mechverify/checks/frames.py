@@ -19,7 +19,7 @@ import numpy as np
 from mechverify.checks.fatigue import check_fatigue_field
 from mechverify.checks.members import deflection_check
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike
 
@@ -76,6 +76,8 @@ def check_frame_stress(results: FrameResults, *, required_sf: float = 1.0, load_
         formula=check_frame_stress.check_def.formula, source=VM_SOURCE,  # type: ignore[attr-defined]
         inputs={"N": d.N[i].to("N"), "My": d.My[i].to("N*m"), "Mz": d.Mz[i].to("N*m"), "T": d.T[i].to("N*m"),
                 "sigma": d.normal_stress[i, j].to("MPa"), "tau": d.shear_stress[i].to("MPa"), "Sy": Sy},
+        substituted=(rf"\sigma_{{vM}} = \sqrt{{({tex(d.normal_stress[i, j], 'MPa')})^{{2}} + 3\cdot "
+                     rf"({tex(d.shear_stress[i], 'MPa')})^{{2}}}} = {tex(d.von_mises[i, j], 'MPa')}"),
         notes=tuple(notes), load_case=load_case,
         details={"member": d.member, "position": d.s[i], "location": d.points[i], "safety_factor": n})
 

@@ -21,7 +21,7 @@ from shapely.geometry import Polygon as ShapelyPolygon
 
 from mechverify.checks.members import deflection_check
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.components import plates as pl
 from mechverify.references import ref
 from mechverify.units import Q
@@ -167,8 +167,16 @@ def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component
         inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
                 "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": plate.material.require("E").to("GPa"),
                 "nu": plate.material.require("nu")},
+        substituted=_vm_substituted(s, mx.value),
         notes=tuple(all_notes), warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings),
         load_case=load_case, details={"location": Q(xy, "m").to("mm"), "node": node})
+
+
+def _vm_substituted(s: np.ndarray, vm: Any) -> str:
+    """sigma_vM = sqrt(sx^2 - sx sy + sy^2 + 3 txy^2) with the governing node's (signed) surface stresses."""
+    x, y, t = (tex(Q(v / 1e6, "MPa")) for v in (s[0, 0], s[1, 1], s[0, 1]))
+    return (rf"\sigma_{{vM}} = \sqrt{{({x})^{{2}} - ({x})\cdot ({y}) + ({y})^{{2}} + 3\cdot ({t})^{{2}}}}"
+            rf" = {tex(vm, 'MPa')}")
 
 
 @check("plate_deflection_fea", title="Plate deflection (FEA)", sf_kind="deflection",
