@@ -95,7 +95,14 @@ json.dump({"build": t1 - t0, "analyse": t2 - t1, "total": t2 - t0, "disp": disp,
 
 
 def run_mechverify(s: dict) -> dict:
-    from mechverify.fea.frame import DistributedLoad, Frame, Member, PointLoad, Support, section_from_properties
+    from mechverify.fea.frame import (
+        DistributedLoad,
+        Frame,
+        FramePointLoad,
+        FrameSupport,
+        Member,
+        section_from_properties,
+    )
     from mechverify.materials.material import Material
     from mechverify.units import Q
 
@@ -105,9 +112,9 @@ def run_mechverify(s: dict) -> dict:
                                   c_z=Q(B / 2, "m"))
     nodes = {n: Q(np.array(p), "m") for n, p in s["nodes"].items()}
     members = [Member(i, j, sec, steel, name) for name, i, j in s["members"]]
-    fr = Frame(nodes, members, [Support(n) for n in s["supports"]], theory="euler")
+    fr = Frame(nodes, members, [FrameSupport(n) for n in s["supports"]], theory="euler")
     w, h = Q(np.array([0.0, 0.0, -W]), "N/m"), Q(np.array([H, 0.0, 0.0]), "N")
-    loads = [DistributedLoad(b, w) for b in s["beams"]] + [PointLoad(n, force=h) for n in s["roof"]]
+    loads = [DistributedLoad(b, w) for b in s["beams"]] + [FramePointLoad(n, force=h) for n in s["roof"]]
     t1 = time.perf_counter()
     res = fr.solve(loads, progress=False)
     t2 = time.perf_counter()

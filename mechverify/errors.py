@@ -7,7 +7,10 @@ expected*; the CLI prints the message and exits with status 2 instead of showing
 from __future__ import annotations
 
 import difflib
-from collections.abc import Iterable
+import sys
+import warnings
+from collections.abc import Callable, Iterable, Mapping
+from typing import Any
 
 
 class MechverifyError(Exception):
@@ -54,3 +57,23 @@ def suggest(name: str, known: Iterable[str], n: int = 3) -> list[str]:
         if k not in out:
             out.append(k)
     return out[:n]
+
+
+def renamed(module: str, old_to_new: Mapping[str, str], stacklevel: int = 2) -> Callable[[str], Any]:
+    """A module ``__getattr__`` that keeps renamed public names working as deprecated aliases.
+
+    ``__getattr__ = renamed(__name__, {"PointLoad": "FramePointLoad"})`` in a module makes
+    ``module.PointLoad`` (and ``from module import PointLoad``) return ``FramePointLoad`` with a
+    :class:`DeprecationWarning` naming the new name. Unknown names raise :class:`AttributeError` as usual.
+    ``stacklevel``: 3 when the returned function is called from the module's own ``__getattr__``.
+    """
+
+    def __getattr__(name: str) -> Any:
+        if name in old_to_new:
+            new = old_to_new[name]
+            warnings.warn(f"{module}.{name} is deprecated; use {module}.{new}", DeprecationWarning,
+                          stacklevel=stacklevel)
+            return getattr(sys.modules[module], new)
+        raise AttributeError(f"module {module!r} has no attribute {name!r}")
+
+    return __getattr__

@@ -17,10 +17,10 @@ from mechverify.errors import InputError, UnknownNameError
 from mechverify.fea.frame import (
     DistributedLoad,
     Frame,
+    FramePointLoad,
+    FrameSupport,
     LoadCombination,
     Member,
-    PointLoad,
-    Support,
     SupportDisplacement,
     section_from_properties,
 )
@@ -35,7 +35,7 @@ NODES = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L} m", "0 m", "0 m"]}
 
 
 def fixed_fixed(**kw):
-    return Frame(NODES, [Member("A", "B", SEC, STEEL, "beam", **kw)], [Support("A"), Support("B")], theory="euler")
+    return Frame(NODES, [Member("A", "B", SEC, STEEL, "beam", **kw)], [FrameSupport("A"), FrameSupport("B")], theory="euler")
 
 
 def test_settlement_of_a_fixed_fixed_beam():
@@ -46,7 +46,7 @@ def test_settlement_of_a_fixed_fixed_beam():
 
 
 def test_settlement_of_a_propped_cantilever_prop_and_errors():
-    fr = Frame(NODES, [Member("A", "B", SEC, STEEL, "beam")], [Support("A"), Support("B", "roller")], theory="euler")
+    fr = Frame(NODES, [Member("A", "B", SEC, STEEL, "beam")], [FrameSupport("A"), FrameSupport("B", "roller")], theory="euler")
     res = fr.solve([SupportDisplacement("B", {"z": f"-{D} m"})])
     assert abs(res.reactions["A"][1].m_as("N*m")[1]) == pytest.approx(3 * E * I * D / L**2, rel=1e-12)
     with pytest.raises(InputError, match="rotation about y is not held"):
@@ -83,17 +83,17 @@ def test_section_from_tabulated_properties():
     s = SEC.si()
     tab = section_from_properties(f"{s['area']} m**2", f"{s['Iy']} m**4", f"{s['Iz']} m**4", f"{s['J']} m**4",
                                   c_y="10 mm", c_z="20 mm")
-    load = [PointLoad("B", force=["0 N", "0 N", "-100 N"])]
-    a = Frame(NODES, [Member("A", "B", SEC, STEEL, "beam")], [Support("A")], theory="euler").solve(load)
-    b = Frame(NODES, [Member("A", "B", tab, STEEL, "beam")], [Support("A")], theory="euler").solve(load)
+    load = [FramePointLoad("B", force=["0 N", "0 N", "-100 N"])]
+    a = Frame(NODES, [Member("A", "B", SEC, STEEL, "beam")], [FrameSupport("A")], theory="euler").solve(load)
+    b = Frame(NODES, [Member("A", "B", tab, STEEL, "beam")], [FrameSupport("A")], theory="euler").solve(load)
     assert b.displacement("B").m_as("mm") == pytest.approx(a.displacement("B").m_as("mm"), rel=1e-12)
     sigma = 100 * L * 0.020 / I
     assert np.max(b.diagram("beam").normal_stress.m_as("Pa")) == pytest.approx(sigma, rel=1e-12)
     # Timoshenko without shear areas: shear deformation neglected (stated), the same Euler answer
-    c = Frame(NODES, [Member("A", "B", tab, STEEL, "beam")], [Support("A")]).solve(load)
+    c = Frame(NODES, [Member("A", "B", tab, STEEL, "beam")], [FrameSupport("A")]).solve(load)
     assert c.displacement("B").m_as("mm") == pytest.approx(a.displacement("B").m_as("mm"), rel=1e-12)
     bare = section_from_properties("800 mm**2", "1e5 mm**4", "2e4 mm**4", "5e4 mm**4")
-    r = Frame(NODES, [Member("A", "B", bare, STEEL, "beam")], [Support("A")], theory="euler").solve(load)
+    r = Frame(NODES, [Member("A", "B", bare, STEEL, "beam")], [FrameSupport("A")], theory="euler").solve(load)
     assert r.max_displacement.value.m_as("mm") > 0
     with pytest.raises(InputError, match="no extreme-fibre distances"):
         _ = r.max_von_mises
@@ -112,8 +112,8 @@ def test_node_lookup_scales_linearly():
     for i in range(n):
         members.append(Member(f"N{i}_1", f"N{i + 1}_1", SEC, STEEL, f"B{i}"))
     t0 = time.perf_counter()
-    fr = Frame(nodes, members, [Support(f"N{i}_0") for i in range(n + 1)])
-    res = fr.solve([PointLoad(f"N{i}_1", force=["0 N", "0 N", "-10 N"]) for i in range(n + 1)])
+    fr = Frame(nodes, members, [FrameSupport(f"N{i}_0") for i in range(n + 1)])
+    res = fr.solve([FramePointLoad(f"N{i}_1", force=["0 N", "0 N", "-10 N"]) for i in range(n + 1)])
     assert time.perf_counter() - t0 < 5.0
     assert sum(r[0].m_as("N")[2] for r in res.reactions.values()) == pytest.approx(10 * (n + 1), rel=1e-12)
 

@@ -12,7 +12,7 @@ import pytest
 
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import buckling, mesh, modal, solid
-from mechverify.fea.loads import Fixed, Force, Support
+from mechverify.fea.loads import Fixed, Force, Restraint
 from mechverify.fea.regions import Plane
 from mechverify.materials.material import Material
 from mechverify.units import Q
@@ -58,7 +58,7 @@ def test_mode_request_larger_than_model_is_named():
 
 
 def test_partly_supported_model_names_the_free_motion():
-    model = _bar(supports=(Support(Plane(x="0 mm"), x=True),))
+    model = _bar(supports=(Restraint(Plane(x="0 mm"), x=True),))
     with pytest.raises(ModelError, match="translation along"):
         modal.modal(model, 3)
 

@@ -9,7 +9,7 @@ from shapely.geometry import box as shapely_box
 from mechverify.components import plates as P
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import mesh2d
-from mechverify.fea.loads import Fixed, Force, Gravity, Support
+from mechverify.fea.loads import Fixed, Force, Gravity, Restraint
 from mechverify.fea.plane import PlaneModel
 from mechverify.fea.plate import check_plate_supported, solve_plate
 from mechverify.fea.regions import Box, Plane
@@ -20,7 +20,7 @@ def strip():
 
 
 def test_plane_unsupported_names_free_motion():
-    model = PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Support(Plane(x="0 m"), x=True),),
+    model = PlaneModel(strip(), "5 mm", "Structural Steel", supports=(Restraint(Plane(x="0 m"), x=True),),
                        loads=(Force(Plane(x="100 mm"), ("100 N", "0 N")),))
     with pytest.raises(ModelError, match="translation along y"):
         model.solve()
@@ -70,7 +70,7 @@ def test_bolted_plate_with_cutout_self_weight_and_point_loads(tmp_path):
     plate = P.Plate.rectangle("335 mm", "160 mm", "6 mm", "Inventor Aluminum 6061", holes=holes,
                               cutouts=[[("120 mm", "50 mm"), ("215 mm", "50 mm"), ("215 mm", "110 mm"),
                                         ("120 mm", "110 mm")]])
-    loads = (P.PointLoad(("60 mm", "80 mm"), "-120 N"), P.PointLoad(("275 mm", "80 mm"), "-120 N"), P.SelfWeight())
+    loads = (P.PlatePointLoad(("60 mm", "80 mm"), "-120 N"), P.PlatePointLoad(("275 mm", "80 mm"), "-120 N"), P.PlateSelfWeight())
     model = P.PlateModel(plate, supports=(P.HoleSupport("all", "clamped", washer_diameter="12 mm"),), loads=loads)
     res = solve_plate(model, mesh_size="10 mm")
     weight = plate.weight.m_as("N")

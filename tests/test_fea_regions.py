@@ -13,7 +13,7 @@ from shapely.geometry import box as shapely_box
 
 from mechverify.errors import InputError
 from mechverify.fea import mesh, mesh2d, solid
-from mechverify.fea.loads import Fixed, Force, Pressure, Support
+from mechverify.fea.loads import Fixed, Force, Pressure, Restraint
 from mechverify.fea.plane import PlaneModel, mesh_region
 from mechverify.fea.regions import Arc, Box, Named, Plane, Polyline
 from mechverify.units import Q
@@ -55,7 +55,7 @@ def test_arc_catches_the_hole_rim_and_knows_its_length():
     arc = Arc(("0 mm", "0 mm"), "10 mm", 0, 90)
     assert arc.measure(2) == pytest.approx(0.01 * np.pi / 2)
     model = PlaneModel(m, "1 mm", "Structural Steel",
-                       supports=(Support(Plane(x="0 m"), x=True), Support(Plane(y="0 m"), y=True)),
+                       supports=(Restraint(Plane(x="0 m"), x=True), Restraint(Plane(y="0 m"), y=True)),
                        loads=(Pressure(arc, "10 MPa"),))
     rep = model.region_reports()[0]
     assert rep.warning is None and rep.measure == pytest.approx(0.01 * np.pi / 2, rel=0.005)
@@ -111,7 +111,7 @@ def test_named_curves_and_points_in_2d():
     m = gmsh_plate_2d()
     assert m.measures == pytest.approx({"left": 0.05, "right": 0.05})
     model = PlaneModel(m, "2 mm", "Structural Steel",
-                       supports=(Support(Named("left"), x=True), Support(Named("origin"), y=True)),
+                       supports=(Restraint(Named("left"), x=True), Restraint(Named("origin"), y=True)),
                        loads=(Force(Named("right"), ("1000 N", "0 N")),))
     res = model.solve()
     assert res.warnings == ()
@@ -158,7 +158,7 @@ def test_named_groups_of_every_dimension_in_3d():
     assert m.named_nodes("edge").size == 2 * nseg + 1  # the edge's vertices and its mid-edge nodes
     assert m.named_nodes("corner").size == 1
     model = solid.SolidModel(m, "Structural Steel",
-                             supports=(Fixed(Plane(x="0 m")), Support(Named("edge"), z=True)),
+                             supports=(Fixed(Plane(x="0 m")), Restraint(Named("edge"), z=True)),
                              loads=(Force(Named("end"), ("0 N", "0 N", "-100 N")),))
     reps = model.region_reports()
     assert reps[0].measure == pytest.approx(4e-4) and reps[0].warning is None
@@ -212,9 +212,9 @@ def test_solid_stress_at_and_integration_points():
     """Uniform tension of a bar: σxx = F/A everywhere (hand calculation), at any point and integration point."""
     m = mesh.box(("100 mm", "20 mm", "10 mm"), (5, 2, 2))
     model = solid.SolidModel(m, "Structural Steel",
-                             supports=(Support(Plane(x="0 m"), x=True), Support(Box(("0 m",) * 3, ("0 m",) * 3),
+                             supports=(Restraint(Plane(x="0 m"), x=True), Restraint(Box(("0 m",) * 3, ("0 m",) * 3),
                                                                                  y=True, z=True),
-                                       Support(Box(("0 m", "20 mm", "0 m"), ("0 m", "20 mm", "0 m")), z=True)),
+                                       Restraint(Box(("0 m", "20 mm", "0 m"), ("0 m", "20 mm", "0 m")), z=True)),
                              loads=(Force(Plane(x="100 mm"), ("2000 N", "0 N", "0 N")),))
     res = model.solve()
     s = res.stress_at([("50 mm", "10 mm", "5 mm"), (0.0999, 0.0001, 0.0099)]).m_as("MPa")

@@ -10,7 +10,7 @@ import pytest
 
 from mechverify.errors import InputError, ModelError, UnitError
 from mechverify.fea import mesh, solid
-from mechverify.fea.loads import Fixed, Force, Gravity, Support
+from mechverify.fea.loads import Fixed, Force, Gravity, Restraint
 from mechverify.fea.regions import Box, Cylinder, Named, Plane
 
 
@@ -25,7 +25,7 @@ def test_unsupported_model_names_the_free_motion():
         cantilever().solve()
     # a roller in z on one face leaves x, y and the rotation about z free
     with pytest.raises(ModelError, match=r"translation along x.*translation along y|translation along x \+ y"):
-        cantilever(supports=(Support(Plane(x="0 mm"), z=True),)).solve()
+        cantilever(supports=(Restraint(Plane(x="0 mm"), z=True),)).solve()
     # clamping only one edge (x = 0, z = 0, along y) leaves the beam free to swing about that edge
     edge = Box(("0 mm", "0 mm", "0 mm"), ("0 mm", "10 mm", "0 mm"))
     with pytest.raises(ModelError, match=r"rotation about an axis parallel to y through \(0, [-\d.e]+, 0\) mm"):
@@ -55,7 +55,7 @@ def test_inputs_checked():
     with pytest.raises(InputError):
         Cylinder(("0 mm", "0 mm"), "-1 mm")
     with pytest.raises(InputError):
-        Support(Plane(x="0 mm"))
+        Restraint(Plane(x="0 mm"))
     with pytest.raises(InputError, match="Material or its name"):
         solid.SolidModel(mesh.box(("1 m",) * 3, (1, 1, 1)), 3.0)
 

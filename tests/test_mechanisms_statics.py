@@ -9,14 +9,14 @@ from hypothesis import strategies as st
 
 from mechverify import Q
 from mechverify.errors import InputError, ModelError, UnitError, UnknownNameError
-from mechverify.mechanisms import GROUND, Body, Couple, Mechanism, Pin, PointLoad, Slider
+from mechverify.mechanisms import GROUND, AppliedForce, Body, Couple, Mechanism, Pin, Slider
 
 O, A, B = (Q(0, "m"), Q(0, "m")), (Q(1, "m"), Q(0, "m")), (Q(2, "m"), Q(0, "m"))
 
 
 def test_under_constrained_names_the_free_body():
     mech = Mechanism((Body("bar", {"O": O, "A": A}),), (Pin("p", GROUND, "bar", "O"),),
-                     (PointLoad("bar", "A", ("0 N", "-1 N")),), name="pendulum")
+                     (AppliedForce("bar", "A", ("0 N", "-1 N")),), name="pendulum")
     with pytest.raises(ModelError, match=r"under-constrained.*body 'bar' rotates"):
         mech.solve()
 
@@ -31,7 +31,7 @@ def test_free_translation_is_named():
 def test_over_constrained_names_indeterminate_unknowns():
     mech = Mechanism((Body("beam", {"O": O, "B": B}),),
                      (Pin("left", GROUND, "beam", "O"), Pin("right", GROUND, "beam", "B")),
-                     (PointLoad("beam", A, ("0 N", "-10 N")),))
+                     (AppliedForce("beam", A, ("0 N", "-10 N")),))
     with pytest.raises(ModelError, match=r"over-constrained.*pin 'left' Rx.*pin 'right' Rx"):
         mech.solve()
 
@@ -40,7 +40,7 @@ def test_singular_configuration_is_reported():
     """Three collinear pins (a toggle): counts balance, but the rank drops."""
     bodies = (Body("l1", {"O": O, "A": A}), Body("l2", {"A": A, "B": B}))
     joints = (Pin("o", GROUND, "l1", "O"), Pin("a", "l1", "l2", "A"), Pin("b", GROUND, "l2", "B"))
-    mech = Mechanism(bodies, joints, (PointLoad("l1", A, ("0 N", "-1 N")),))
+    mech = Mechanism(bodies, joints, (AppliedForce("l1", A, ("0 N", "-1 N")),))
     with pytest.raises(ModelError, match="singular configuration"):
         mech.solve()
 
@@ -69,7 +69,7 @@ def test_actuated_slider_and_couple():
     """A block on a slide driven by a force holds a horizontal load; a couple on a pinned crank is
     balanced by its motor."""
     mech = Mechanism((Body("block", {"A": A}),), (Slider("s", GROUND, "block", "A", "30 deg", actuated=True),),
-                     (PointLoad("block", "A", (Q(math.cos(math.radians(30)) * 5, "N"),
+                     (AppliedForce("block", "A", (Q(math.cos(math.radians(30)) * 5, "N"),
                                                Q(math.sin(math.radians(30)) * 5, "N"))),))
     assert mech.solve().actuator_efforts["s"].m_as("N") == pytest.approx(-5.0)
     crank = Mechanism((Body("c", {"O": O, "A": A}),), (Pin("m", GROUND, "c", "O", actuated=True),),
@@ -86,7 +86,7 @@ def _slider_crank(theta, r=0.05, ell=0.2, P=100.0):
               Body("piston", {"B": q["B"]}))
     joints = (Pin("motor", GROUND, "crank", "O", actuated=True), Pin("a", "crank", "rod", "A"),
               Pin("b", "rod", "piston", "B"), Slider("bore", GROUND, "piston", "B", "0 deg"))
-    return Mechanism(bodies, joints, (PointLoad("piston", "B", (Q(-P, "N"), "0 N")),)), Bp[0]
+    return Mechanism(bodies, joints, (AppliedForce("piston", "B", (Q(-P, "N"), "0 N")),)), Bp[0]
 
 
 @settings(max_examples=30, deadline=None)

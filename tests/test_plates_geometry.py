@@ -16,10 +16,10 @@ from mechverify.components.plates import (
     PatchLoad,
     Plate,
     PlateModel,
-    PointLoad,
+    PlatePointLoad,
+    PlateSelfWeight,
     PointSupport,
     PressureLoad,
-    SelfWeight,
     corner_holes,
     hole_grid,
 )
@@ -52,7 +52,7 @@ def test_net_area_mass_and_weight():
 def test_model_resultant_includes_self_weight_and_drops_patch_over_hole():
     p = base_plate()
     m = PlateModel(p, [HoleSupport("all")],
-                   [PointLoad(("225 mm", "50 mm"), "-80 N"), SelfWeight(),
+                   [PlatePointLoad(("225 mm", "50 mm"), "-80 N"), PlateSelfWeight(),
                     PatchLoad(center=("225 mm", "60 mm"), size=("20 mm", "10 mm"), pressure="-1 MPa"),
                     PressureLoad("-100 Pa")])
     expected = -80 - p.weight.m_as("N") - 1e6 * 200e-6 - 100 * p.area.m_as("m**2")
@@ -95,7 +95,7 @@ def test_support_and_load_errors():
     with pytest.raises(InputError, match="edge 7 does not exist"):
         PlateModel(p, [EdgeSupport([7])])
     with pytest.raises(InputError, match="not on base"):
-        PlateModel(p, [EdgeSupport()], [PointLoad(("225 mm", "200 mm"), "1 N")])  # in the cut-out
+        PlateModel(p, [EdgeSupport()], [PlatePointLoad(("225 mm", "200 mm"), "1 N")])  # in the cut-out
     with pytest.raises(InputError, match="not on base"):
         PlateModel(p, [PointSupport(("500 mm", "0 mm"))])
     with pytest.raises(InputError, match="at least one support"):
@@ -108,8 +108,8 @@ def test_support_and_load_errors():
     with pytest.raises(InputError, match="exactly one of force"):
         PatchLoad(center=("1 mm", "1 mm"), size=("1 mm", "1 mm"))
     with pytest.raises(UnitError, match="force"):
-        PointLoad(("1 mm", "1 mm"), "5 mm")
+        PlatePointLoad(("1 mm", "1 mm"), "5 mm")
     with pytest.raises(InputError, match="all zero"):
-        PointLoad(("1 mm", "1 mm"))
+        PlatePointLoad(("1 mm", "1 mm"))
     assert PointSupport((0.0, 0.0), unit="mm").condition == "simply_supported"
     assert HoleSupport("corner_sw", condition="bolted").condition == "clamped"

@@ -77,10 +77,10 @@ def frame_per_newton(component: str = "pla_links") -> dict[str, float]:
     """Deflection [mm/N] and stress [MPa/N] of the design's grillage for 1 N at P, and the self-weight effects."""
     design = load(HERE / "design.toml")
     comp = design.data.components[component].obj
-    from mechverify.fea.frame import PointLoad, SelfWeight
+    from mechverify.fea.frame import FramePointLoad, FrameSelfWeight
 
-    unit = comp.frame.solve([PointLoad("P", force=["0 N", "0 N", "-1 N"])])
-    sw = comp.frame.solve([SelfWeight()])
+    unit = comp.frame.solve([FramePointLoad("P", force=["0 N", "0 N", "-1 N"])])
+    sw = comp.frame.solve([FrameSelfWeight()])
     mat = comp.frame.members[0].material
     return {"delta_per_N": unit.max_displacement.value.m_as("mm"), "sigma_per_N": unit.max_von_mises.value.m_as("MPa"),
             "delta_self": sw.max_displacement.value.m_as("mm"), "sigma_self": sw.max_von_mises.value.m_as("MPa"),

@@ -24,7 +24,7 @@ from mechverify.references import ref
 from mechverify.units import Q, QuantityLike
 
 if TYPE_CHECKING:  # annotations only: importing the checks does not import the FEA layer
-    from mechverify.fea.frame import Extreme, FrameResults
+    from mechverify.fea.frame import FrameExtreme, FrameResults
     from mechverify.materials.material import Material
 
 ELEMENT = f"the exact 3D beam element ({ref('przemieniecki', 'Sec. 5.6')}; {ref('mcguire2', 'Sec. 4.3-4.5, 7.3')})"
@@ -32,7 +32,7 @@ VM_SOURCE = f"{ref('shigley10', 'Eq. 5-15')} (von Mises of a beam fibre); member
 FATIGUE_LOADINGS = ("fully_reversed", "zero_to_max")
 
 
-def where_text(e: Extreme) -> str:
+def where_text(e: FrameExtreme) -> str:
     """``member M at s = ... mm from its start, point (x, y, z) mm``."""
     loc = ", ".join(f"{c:.4g}" for c in e.location.m_as("mm"))
     return f"member {e.member} at s = {e.position.m_as('mm'):.4g} mm from its start, point ({loc}) mm"

@@ -89,7 +89,7 @@ def nearest_feature(model: pl.PlateModel, xy: np.ndarray) -> str:
     for i, (a, b) in enumerate(plate.edges()):
         cands.append((shapely.LineString([a, b]).distance(pt), f"at outline edge {i} (from {_mm(a)} to {_mm(b)})"))
     for i, ld in enumerate(model.loads):
-        if isinstance(ld, pl.PointLoad):
+        if isinstance(ld, pl.PlatePointLoad):
             cands.append((float(np.hypot(*(xy - np.asarray(ld.point)))), f"at point load {i}"))
     for s in model.supports:
         if isinstance(s, pl.HoleSupport) and s.washer_diameter:
@@ -107,7 +107,7 @@ def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tup
     xy = res.points[node, :2]
     pts = res.points[:, :2]
     h = float(np.median(np.linalg.norm(pts[res.surface[:, 1]] - pts[res.surface[:, 0]], axis=1)))
-    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PointLoad)
+    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PlatePointLoad)
             and np.hypot(*(xy - np.asarray(ld.point))) <= 2.5 * h]
     near += [f"point support at {_mm(s.point)}" for s in model.supports if isinstance(s, pl.PointSupport)
              and np.hypot(*(xy - np.asarray(s.point))) <= 2.5 * h]

@@ -1,16 +1,16 @@
 """Flat plates: declarative geometry, supports and loads (meshed by the FEA plate model), and Roark checks.
 
 Geometry lives in the plate's own x-y plane; the plate normal is +z and out-of-plane loads are
-positive along +z (self-weight acts along -z unless ``SelfWeight.direction`` says otherwise).
+positive along +z (self-weight acts along -z unless ``PlateSelfWeight.direction`` says otherwise).
 
 * :class:`Plate` — an outline polygon with circular holes (bolt holes, named) and polygonal
   cut-outs (lightening), a thickness and a material; :meth:`Plate.rectangle` builds a rectangle
   with a hole pattern (see :func:`corner_holes`, :func:`hole_grid`).
 * supports — :class:`EdgeSupport` (outline edges by index), :class:`PointSupport` (a point, e.g.
   a corner), :class:`HoleSupport` (the rim of bolt holes); each ``"clamped"`` or ``"simply_supported"``.
-* loads — :class:`PointLoad` (force along z and optional moments), :class:`PatchLoad` (a force or
+* loads — :class:`PlatePointLoad` (force along z and optional moments), :class:`PatchLoad` (a force or
   pressure on a rectangle or polygon patch), :class:`PressureLoad` (uniform over the whole plate),
-  :class:`SelfWeight`.
+  :class:`PlateSelfWeight`.
 * :class:`PlateModel` — plate + supports + loads, validated (supports and loads lie on the plate).
 
 All coordinates are stored as SI floats (metres) in tuples; :attr:`Plate.region` is the shapely
@@ -36,7 +36,7 @@ import shapely
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as ShapelyPolygon
 
-from mechverify.errors import InputError, UnknownNameError, ValidityError
+from mechverify.errors import InputError, UnknownNameError, ValidityError, renamed
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.units import Q, QuantityLike, from_si, to_si
@@ -395,7 +395,7 @@ class HoleSupport:
 
 # ----------------------------------------------------------------------------------------- loads
 @dataclass(frozen=True)
-class PointLoad:
+class PlatePointLoad:
     """A concentrated load at ``point``: force along z (``force``, +z up) and optional moments about x and y."""
 
     point: Any
@@ -405,13 +405,13 @@ class PointLoad:
     unit: str | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "point", _point(self.point, "PointLoad.point", self.unit))
-        object.__setattr__(self, "force", to_si(self.force, "force", "PointLoad.force"))
-        object.__setattr__(self, "moment_x", to_si(self.moment_x, "torque", "PointLoad.moment_x"))
-        object.__setattr__(self, "moment_y", to_si(self.moment_y, "torque", "PointLoad.moment_y"))
+        object.__setattr__(self, "point", _point(self.point, "PlatePointLoad.point", self.unit))
+        object.__setattr__(self, "force", to_si(self.force, "force", "PlatePointLoad.force"))
+        object.__setattr__(self, "moment_x", to_si(self.moment_x, "torque", "PlatePointLoad.moment_x"))
+        object.__setattr__(self, "moment_y", to_si(self.moment_y, "torque", "PlatePointLoad.moment_y"))
         object.__setattr__(self, "unit", None)
         if self.force == 0 and self.moment_x == 0 and self.moment_y == 0:
-            raise InputError("PointLoad: force and moments are all zero")
+            raise InputError("PlatePointLoad: force and moments are all zero")
 
 
 @dataclass(frozen=True)
@@ -472,7 +472,7 @@ class PressureLoad:
 
 
 @dataclass(frozen=True)
-class SelfWeight:
+class PlateSelfWeight:
     """The plate's weight, ``factor`` x g x density x thickness per unit area, along ``direction`` (-1: -z)."""
 
     factor: float = 1.0
@@ -480,11 +480,11 @@ class SelfWeight:
     direction: int = -1
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "g", to_si(self.g, "acceleration", "SelfWeight.g"))
+        object.__setattr__(self, "g", to_si(self.g, "acceleration", "PlateSelfWeight.g"))
         if self.direction not in (-1, 1):
-            raise InputError(f"SelfWeight.direction: -1 (down, -z) or +1, got {self.direction!r}")
+            raise InputError(f"PlateSelfWeight.direction: -1 (down, -z) or +1, got {self.direction!r}")
         if not self.factor > 0:
-            raise InputError(f"SelfWeight.factor: must be positive, got {self.factor!r}")
+            raise InputError(f"PlateSelfWeight.factor: must be positive, got {self.factor!r}")
 
     def pressure(self, plate: Plate) -> float:
         """Equivalent pressure along z [Pa] (negative when acting along -z)."""
@@ -493,7 +493,7 @@ class SelfWeight:
 
 
 PlateSupport = EdgeSupport | PointSupport | HoleSupport
-PlateLoad = PointLoad | PatchLoad | PressureLoad | SelfWeight
+PlateLoad = PlatePointLoad | PatchLoad | PressureLoad | PlateSelfWeight
 
 
 @dataclass(frozen=True)
@@ -530,15 +530,15 @@ class PlateModel:
                 raise InputError(f"supports[{i}]: expected EdgeSupport, PointSupport or HoleSupport, "
                                  f"got {type(s).__name__}")
         for i, ld in enumerate(self.loads):
-            if isinstance(ld, PointLoad):
+            if isinstance(ld, PlatePointLoad):
                 if region.distance(ShapelyPoint(ld.point)) > tol:
                     raise InputError(f"loads[{i}]: point load at ({fmt_mm(ld.point[0])}, {fmt_mm(ld.point[1])}) is "
                                      f"not on {self.plate.name} (outside it or in a hole)")
             elif isinstance(ld, PatchLoad):
                 if not ShapelyPolygon(self.plate.outline).buffer(tol).contains(ShapelyPolygon(ld.polygon)):
                     raise InputError(f"loads[{i}]: the load patch extends beyond the outline of {self.plate.name}")
-            elif not isinstance(ld, PressureLoad | SelfWeight):
-                raise InputError(f"loads[{i}]: expected PointLoad, PatchLoad, PressureLoad or SelfWeight, "
+            elif not isinstance(ld, PressureLoad | PlateSelfWeight):
+                raise InputError(f"loads[{i}]: expected PlatePointLoad, PatchLoad, PressureLoad or PlateSelfWeight, "
                                  f"got {type(ld).__name__}")
 
     def total_force(self) -> pint.Quantity:
@@ -546,13 +546,13 @@ class PlateModel:
         region = self.plate.region
         total = 0.0
         for ld in self.loads:
-            if isinstance(ld, PointLoad):
+            if isinstance(ld, PlatePointLoad):
                 total += ld.force
             elif isinstance(ld, PatchLoad):
                 total += ld.pressure * ShapelyPolygon(ld.polygon).intersection(region).area
             elif isinstance(ld, PressureLoad):
                 total += ld.pressure * self.plate.area.m_as("m**2")
-            elif isinstance(ld, SelfWeight):
+            elif isinstance(ld, PlateSelfWeight):
                 total += ld.pressure(self.plate) * self.plate.area.m_as("m**2")
         return from_si(total, "force")
 
@@ -749,6 +749,9 @@ def roark_circular_plate(radius: QuantityLike, thickness: QuantityLike, E: Quant
                          warnings=_plate_warnings(y, t, 2 * a))
 
 
-__all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PointLoad",
-           "PatchLoad", "PressureLoad", "SelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS",
+__all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PlatePointLoad",
+           "PatchLoad", "PressureLoad", "PlateSelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS",
            "PlateEstimate", "roark_rectangular_plate", "roark_circular_plate", "equivalent_contact_radius"]
+
+# Former names (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"PointLoad": "PlatePointLoad", "SelfWeight": "PlateSelfWeight"})

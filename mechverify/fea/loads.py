@@ -1,7 +1,7 @@
 """Supports and loads of continuum models, declared in physical terms on regions (never node numbers).
 
 - :class:`Fixed` - every displacement component of a region held at zero (a clamped face).
-- :class:`Support` - chosen components held (a roller or symmetry plane: ``Support(r, x=True)``).
+- :class:`Restraint` - chosen components held (a roller or symmetry plane: ``Restraint(r, x=True)``).
 - :class:`Force` - a total force spread uniformly (per unit area) over a region: a bolt or pin
   load on a hole wall, a load on a face.
 - :class:`Pressure` - a pressure acting on a region, pushing into the surface when positive.
@@ -23,7 +23,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from mechverify.errors import InputError
+from mechverify.errors import InputError, renamed
 from mechverify.fea.regions import MEASURE_RTOL, Region
 from mechverify.units import QuantityLike, to_si
 
@@ -45,7 +45,7 @@ class RegionReport:
 
     def __str__(self) -> str:
         scale, u = (1e6, "mm²") if self.unit == "m**2" else (1e3, "mm")
-        what = "nodes" if self.item.startswith(("Fixed", "Support")) else "facets"
+        what = "nodes" if self.item.startswith(("Fixed", "Restraint")) else "facets"
         text = f"{self.item}: {self.count} {what}, {self.measure * scale:.6g} {u}"
         if self.resultant is not None:
             text += ", resultant (" + ", ".join(f"{v:.4g}" for v in self.resultant) + ") N"
@@ -172,7 +172,7 @@ class Fixed:
 
 
 @dataclass(frozen=True)
-class Support:
+class Restraint:
     """The chosen displacement components of ``region`` are zero (roller, slider, symmetry)."""
 
     region: Region
@@ -183,12 +183,12 @@ class Support:
     expect_length: Any = None
 
     def __post_init__(self) -> None:
-        _region(self.region, "Support")
+        _region(self.region, "Restraint")
         a, ln = _expect(self.expect_area, self.expect_length)
         object.__setattr__(self, "expect_area", a)
         object.__setattr__(self, "expect_length", ln)
         if not (self.x or self.y or self.z):
-            raise InputError("Support: hold at least one of x, y, z")
+            raise InputError("Restraint: hold at least one of x, y, z")
 
     @property
     def components(self) -> tuple[bool, bool, bool]:
@@ -298,3 +298,6 @@ class Gravity:
 
 
 STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 (ISO 80000-3)
+
+# Former name (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"Support": "Restraint"})

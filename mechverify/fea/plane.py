@@ -41,7 +41,7 @@ from mechverify.fea.loads import (
     PinLoad,
     Pressure,
     RegionReport,
-    Support,
+    Restraint,
     Traction,
     _join,
     compare_measure,
@@ -72,7 +72,7 @@ class PlaneModel:
     mesh: MeshTri
     thickness: QuantityLike
     material: Material | str
-    supports: tuple[Fixed | Support, ...] = ()
+    supports: tuple[Fixed | Restraint, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     plane: str = "stress"
     curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
@@ -314,11 +314,11 @@ class PlaneModel:
     def held_dofs(self) -> np.ndarray:
         """Indices of the DOFs the supports hold at zero."""
         if not self.supports:
-            raise ModelError("the model has no supports; add Fixed(...) or Support(...) on a region")
+            raise ModelError("the model has no supports; add Fixed(...) or Restraint(...) on a region")
         held = []
         for s in self.supports:
-            if isinstance(s, Support) and s.z and not (s.x or s.y):
-                raise InputError("Support(z=True) has no meaning in a 2D model; hold x and/or y")
+            if isinstance(s, Restraint) and s.z and not (s.x or s.y):
+                raise InputError("Restraint(z=True) has no meaning in a 2D model; hold x and/or y")
             nodes = self._support_nodes(s.region)
             for i, on in enumerate(s.components[:2]):
                 if on:

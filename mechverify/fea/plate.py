@@ -133,7 +133,7 @@ def _load_vector(sys_: _PlateSystem) -> tuple[np.ndarray, float]:
     import shapely
 
     for ld in sys_.model.loads:
-        if isinstance(ld, P.PressureLoad | P.SelfWeight):
+        if isinstance(ld, P.PressureLoad | P.PlateSelfWeight):
             q = ld.pressure if isinstance(ld, P.PressureLoad) else ld.pressure(plate)
 
             @LinearForm
@@ -160,7 +160,7 @@ def _load_vector(sys_: _PlateSystem) -> tuple[np.ndarray, float]:
                                  "or enlarge the patch")
             f += fp * (ld.pressure * covered / got)  # exact resultant
             total += ld.pressure * covered
-        elif isinstance(ld, P.PointLoad):
+        elif isinstance(ld, P.PlatePointLoad):
             x, y = ld.point
             pts = [((x, y), ld.force)]
             if ld.moment_x or ld.moment_y:

@@ -25,7 +25,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError
+from mechverify.errors import InputError, renamed
 from mechverify.materials.material import Material
 from mechverify.units import Q, QuantityLike
 
@@ -34,7 +34,7 @@ if TYPE_CHECKING:  # annotations only: results are read without scipy (a fast co
 
 
 @dataclass(frozen=True)
-class Extreme:
+class FieldExtreme:
     """A field's extreme value, where it occurs (node coordinates) and the node's index."""
 
     value: pint.Quantity
@@ -209,27 +209,27 @@ class FieldResults:
         return elem, bary
 
     # -- extremes -----------------------------------------------------------------------------
-    def _extreme(self, values: np.ndarray, unit: str, largest: bool = True) -> Extreme:
+    def _extreme(self, values: np.ndarray, unit: str, largest: bool = True) -> FieldExtreme:
         i = int(np.argmax(values) if largest else np.argmin(values))
-        return Extreme(Q(float(values[i]), unit), Q(self.points[i], "m"), i)
+        return FieldExtreme(Q(float(values[i]), unit), Q(self.points[i], "m"), i)
 
     @property
-    def max_displacement(self) -> Extreme:
+    def max_displacement(self) -> FieldExtreme:
         """Largest displacement magnitude and where."""
         return self._extreme(np.linalg.norm(self.u, axis=1), "m")
 
     @property
-    def max_von_mises(self) -> Extreme:
+    def max_von_mises(self) -> FieldExtreme:
         """Largest von Mises stress and where."""
         return self._extreme(self._vm, "Pa")
 
     @property
-    def max_principal(self) -> Extreme:
+    def max_principal(self) -> FieldExtreme:
         """Largest (most tensile) principal stress and where."""
         return self._extreme(principal(self.sigma)[:, 0], "Pa")
 
     @property
-    def min_principal(self) -> Extreme:
+    def min_principal(self) -> FieldExtreme:
         """Most compressive principal stress and where."""
         return self._extreme(principal(self.sigma)[:, 2], "Pa", largest=False)
 
@@ -248,7 +248,7 @@ class FieldResults:
         sf[stressed] = S / self._vm[stressed]
         return Q(sf, "")
 
-    def min_safety_factor(self, strength: str = "yield_strength") -> Extreme:
+    def min_safety_factor(self, strength: str = "yield_strength") -> FieldExtreme:
         """Smallest static safety factor and where (at the largest von Mises stress)."""
         return self._extreme(self.safety_factor(strength).m, "", largest=False)
 
@@ -294,7 +294,7 @@ class FieldResults:
         n = criteria.safety_factor.si(criterion, sa, sm, Se, load_line=load_line, **kw)
         return Q(np.asarray(n, float), "")
 
-    def min_fatigue_safety_factor(self, **kw: Any) -> Extreme:
+    def min_fatigue_safety_factor(self, **kw: Any) -> FieldExtreme:
         """Smallest fatigue safety factor and where (arguments of :meth:`fatigue_safety_factor`)."""
         return self._extreme(self.fatigue_safety_factor(**kw).m, "", largest=False)
 
@@ -344,3 +344,6 @@ class FieldResults:
         if self.material.yield_strength is not None:
             out["min_safety_factor"] = self.min_safety_factor()
         return out
+
+# Former name (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"Extreme": "FieldExtreme"})

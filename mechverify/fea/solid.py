@@ -46,7 +46,7 @@ from mechverify.fea.loads import (
     PinLoad,
     Pressure,
     RegionReport,
-    Support,
+    Restraint,
     Traction,
     _join,
     compare_measure,
@@ -89,7 +89,7 @@ class SolidModel:
 
     mesh: SolidMesh
     material: Material | str
-    supports: tuple[Fixed | Support, ...] = ()
+    supports: tuple[Fixed | Restraint, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
 
@@ -100,8 +100,8 @@ class SolidModel:
         object.__setattr__(self, "supports", tuple(self.supports))
         object.__setattr__(self, "loads", tuple(self.loads))
         for s in self.supports:
-            if not isinstance(s, Fixed | Support):
-                raise InputError(f"supports: expected Fixed or Support, got {s!r}")
+            if not isinstance(s, Fixed | Restraint):
+                raise InputError(f"supports: expected Fixed or Restraint, got {s!r}")
         for ld in self.loads:
             if not isinstance(ld, Force | Pressure | PinLoad | Traction | Gravity):
                 raise InputError(f"loads: expected Force, Pressure, PinLoad, Traction or Gravity, got {ld!r}")
@@ -342,7 +342,7 @@ class SolidModel:
 
     def _held(self) -> np.ndarray:
         if not self.supports:
-            raise ModelError("the model has no supports; add Fixed(...) or Support(...) on a region")
+            raise ModelError("the model has no supports; add Fixed(...) or Restraint(...) on a region")
         held = []
         for s in self.supports:
             nodes = self._support_nodes(s.region, np.empty(0))

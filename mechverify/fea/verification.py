@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.fea import mesh2d
-from mechverify.fea.loads import Pressure, Support, Traction
+from mechverify.fea.loads import Pressure, Restraint, Traction
 from mechverify.fea.mesh import gmsh_session, import_gmsh
 from mechverify.fea.plane import PlaneModel
 from mechverify.fea.regions import Named
@@ -137,7 +137,7 @@ def kirsch(h: float, h_hole: float | None = None, order: int = 1, a: float = 0.0
         return np.einsum("kij,j->ik", s[:, :2, :2], n)
 
     model = PlaneModel(m, "1 m", _material(200e9, 0.3), plane="strain",
-                       supports=(Support(Named("left"), x=True), Support(Named("bottom"), y=True)),
+                       supports=(Restraint(Named("left"), x=True), Restraint(Named("bottom"), y=True)),
                        loads=(Traction(Named("right"), lambda p: traction(p, (1.0, 0.0))),
                               Traction(Named("top"), lambda p: traction(p, (0.0, 1.0)))))
     return Benchmark("Kirsch: hole in a plate, σxx at (0, a)", model, (0.0, a), lambda s: s[0, 0], 3 * sigma,
@@ -186,7 +186,7 @@ def lame(h: float, order: int = 1, ri: float = 0.02, ro: float = 0.04, p: float 
 
     m = _mesh(build, h, h, lambda g: [], order)
     model = PlaneModel(m, "1 m", _material(200e9, 0.3), plane="strain",
-                       supports=(Support(Named("left"), x=True), Support(Named("bottom"), y=True)),
+                       supports=(Restraint(Named("left"), x=True), Restraint(Named("bottom"), y=True)),
                        loads=(Pressure(Named("bore"), Q(p, "Pa")),))
     return Benchmark("Lamé: thick cylinder, σθ at the bore", model, (ri, 0.0), lambda s: s[1, 1],
                      p * (ro**2 + ri**2) / (ro**2 - ri**2),
@@ -216,7 +216,7 @@ def le1(h: float, h_d: float | None = None, order: int = 1) -> Benchmark:
     m = _mesh(build, h, h_d or h,
               lambda g: [int(t) for t in g.model.getEntitiesForPhysicalGroup(1, _group(g, "inner"))], order)
     model = PlaneModel(m, "0.1 m", _material(210e9, 0.3), plane="stress",
-                       supports=(Support(Named("left"), x=True), Support(Named("bottom"), y=True)),
+                       supports=(Restraint(Named("left"), x=True), Restraint(Named("bottom"), y=True)),
                        loads=(Pressure(Named("outer"), "-10 MPa"),))
     return Benchmark("NAFEMS LE1: elliptic membrane, σyy at D", model, (2.0, 0.0), lambda s: s[1, 1], 92.7e6,
                      "NAFEMS TNSB Rev. 3 (1990), LE1: 92.7 MPa")
@@ -252,7 +252,7 @@ def lame_solid(h: float, order: int = 2, ri: float = 0.02, ro: float = 0.04, len
     finally:
         gmsh.finalize()
     model = SolidModel(m, _material(200e9, 0.3),
-                       supports=(Support(Plane(x="0 m"), x=True), Support(Plane(y="0 m"), y=True),
-                                 Support(Plane(z="0 m"), z=True), Support(Plane(z=Q(length, "m")), z=True)),
+                       supports=(Restraint(Plane(x="0 m"), x=True), Restraint(Plane(y="0 m"), y=True),
+                                 Restraint(Plane(z="0 m"), z=True), Restraint(Plane(z=Q(length, "m")), z=True)),
                        loads=(Pressure(Named("bore"), Q(p, "Pa")),))
     return model, p * (ro**2 + ri**2) / (ro**2 - ri**2)

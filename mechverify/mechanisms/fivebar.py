@@ -42,7 +42,7 @@ import pint
 
 from mechverify.errors import InputError
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
-from mechverify.mechanisms.statics import GROUND, Body, Mechanism, Pin, PointLoad, point_si, vector_si
+from mechverify.mechanisms.statics import GROUND, AppliedForce, Body, Mechanism, Pin, point_si, vector_si
 from mechverify.units import from_si, require_positive, to_si
 
 _MODES = ("++", "+-", "-+", "--")
@@ -289,5 +289,5 @@ class FiveBar:
             Pin("elbow_right", "crank_right", "distal_right", "B2"),
             Pin("motor_right", GROUND, "crank_right", "A2", actuated=True),
         )
-        loads = (PointLoad("distal_left", "P", force, name="tool force"),)
+        loads = (AppliedForce("distal_left", "P", force, name="tool force"),)
         return Mechanism(tuple(bodies), joints, loads, gravity=gravity, name=f"{self.name} at {pose.label()}")

@@ -39,7 +39,7 @@ import pint
 
 from mechverify.errors import InputError
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
-from mechverify.mechanisms.statics import GROUND, Body, Mechanism, Pin, PointLoad
+from mechverify.mechanisms.statics import GROUND, AppliedForce, Body, Mechanism, Pin
 from mechverify.units import from_si, require_positive, to_si
 
 _POINTS = ("O", "A", "B", "C", "D", "E", "F", "G", "H", "I")
@@ -202,7 +202,7 @@ class LeverArm:
             Pin("F", "OF", "FG", "F"), Pin("G", "FG", "GAH", "G"),
             Pin("H", "GAH", "HI", "H"), Pin("I", "HI", "IBC", "I"), Pin("B", "EAB", "IBC", "B"),
         )
-        loads = (PointLoad("IBC", "C", (from_si(0.0, "force"), from_si(-W, "force")), name="tool load W"),)
+        loads = (AppliedForce("IBC", "C", (from_si(0.0, "force"), from_si(-W, "force")), name="tool load W"),)
         return Mechanism(bodies, joints, loads, gravity=(from_si(0.0, "acceleration"), from_si(-g, "acceleration")),
                          name=f"{self.name} at {pose.label()}")
 

@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError, ModelError, UnknownNameError
+from mechverify.errors import InputError, ModelError, UnknownNameError, renamed
 from mechverify.units import as_quantity, from_si, to_si
 
 GROUND = "ground"
@@ -193,7 +193,7 @@ class Slider:
 
 
 @dataclass(frozen=True)
-class PointLoad:
+class AppliedForce:
     """An applied force (Fx, Fy) on ``body`` at ``at`` (position or point name)."""
 
     body: str
@@ -212,7 +212,7 @@ class Couple:
 
 
 Joint = Pin | Slider
-Load = PointLoad | Couple
+Load = AppliedForce | Couple
 
 
 @dataclass(frozen=True)
@@ -391,7 +391,7 @@ def solve_statics(mech: Mechanism) -> StaticsSolution:
         if body == GROUND:
             continue
         label = f"load {ld.name or k}"
-        if isinstance(ld, PointLoad):
+        if isinstance(ld, AppliedForce):
             p = position(ld.at, (body,), label)
             f = vector_si(ld.force, "force", f"{label} force")
             atts.append(_Attachment(body, p, np.zeros((2, n_unk)), f, np.zeros(n_unk), 0.0, label))
@@ -620,3 +620,6 @@ def points_m(**coords: Iterable[float]) -> dict[str, tuple[pint.Quantity, pint.Q
     """Convenience for presets: ``points_m(A=(0, 0.1))`` -> ``{"A": (0 m, 0.1 m)}`` from SI floats."""
     return {k: (from_si(float(v[0]), "length"), from_si(float(v[1]), "length")) for k, v in
             ((k, list(v)) for k, v in coords.items())}
+
+# Former name (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"PointLoad": "AppliedForce"})

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError, UnitError
+from mechverify.errors import InputError, UnitError, renamed
 from mechverify.units import Q, as_quantity, fmt, to_si
 
 _KIND_UNIT = {"length": ("m", "m/s", "m/s**2", "m/s**3"), "angle": ("rad", "rad/s", "rad/s**2", "rad/s**3")}
@@ -69,7 +69,7 @@ def _rate(value: Any, kind: str, order: int, name: str) -> float:
 
 
 @dataclass(frozen=True)
-class Segment:
+class JerkSegment:
     """A constant-jerk piece: starts at ``(x0, v0, a0)``, lasts ``duration`` [s], jerk ``j``. SI floats."""
 
     duration: float
@@ -97,7 +97,7 @@ class Segment:
 class ProfileSamples:
     """Sampled profile: arrays of time and state, SI floats, with the label of each sample's phase.
 
-    Segment boundaries appear twice (end of one, start of the next) so that jumps in
+    JerkSegment boundaries appear twice (end of one, start of the next) so that jumps in
     acceleration are kept exactly; the zero-length interval adds nothing to integrals.
     """
 
@@ -117,10 +117,10 @@ class ProfileSamples:
 
 @dataclass(frozen=True)
 class Profile:
-    """A motion profile made of constant-jerk :class:`Segment` s (SI inside)."""
+    """A motion profile made of constant-jerk :class:`JerkSegment` s (SI inside)."""
 
     kind: str  # "length" or "angle"
-    segments: tuple[Segment, ...]
+    segments: tuple[JerkSegment, ...]
     name: str = ""
     reached_max_velocity: bool = True  # False when a trapezoidal move became triangular
 
@@ -206,20 +206,20 @@ class Profile:
 
 
 # ---------------------------------------------------------------------------------------- builders
-def _mirror(segs: list[Segment], sign: float) -> list[Segment]:
+def _mirror(segs: list[JerkSegment], sign: float) -> list[JerkSegment]:
     if sign > 0:
         return segs
-    return [Segment(s.duration, -s.j, -s.x0, -s.v0, -s.a0, s.label) for s in segs]
+    return [JerkSegment(s.duration, -s.j, -s.x0, -s.v0, -s.a0, s.label) for s in segs]
 
 
-def _chain(pieces: list[tuple[float, float, float, str]], x0: float = 0.0) -> list[Segment]:
+def _chain(pieces: list[tuple[float, float, float, str]], x0: float = 0.0) -> list[JerkSegment]:
     """Build segments from (duration, jerk, start acceleration, label), integrating the state."""
-    segs: list[Segment] = []
+    segs: list[JerkSegment] = []
     x, v = x0, 0.0
     for dur, j, a0, label in pieces:
         if dur <= 0:
             continue
-        s = Segment(dur, j, x, v, a0, label)
+        s = JerkSegment(dur, j, x, v, a0, label)
         segs.append(s)
         x, v, _ = s.end
     return segs
@@ -303,7 +303,7 @@ def trapezoidal(distance: Any, *, max_velocity: Any = None, acceleration: Any = 
     last = segs[-1]
     err = last.end[0] - sign * D
     if abs(err) > 0:
-        segs[-1] = Segment(last.duration, last.j, last.x0 - err, last.v0, last.a0, last.label)
+        segs[-1] = JerkSegment(last.duration, last.j, last.x0 - err, last.v0, last.a0, last.label)
     return Profile(kind, tuple(segs), name="trapezoidal" if reached else "triangular", reached_max_velocity=reached)
 
 
@@ -365,14 +365,14 @@ def s_curve(distance: Any, *, max_velocity: Any, acceleration: Any, jerk: Any) -
     segs = _mirror(_chain(pieces), sign)
     last = segs[-1]
     err = last.end[0] - sign * D
-    segs[-1] = Segment(last.duration, last.j, last.x0 - err, last.v0, last.a0, last.label)
+    segs[-1] = JerkSegment(last.duration, last.j, last.x0 - err, last.v0, last.a0, last.label)
     return Profile(kind, tuple(segs), name="s-curve", reached_max_velocity=reached)
 
 
 def dwell(duration: Any, kind: str = "length") -> Profile:
     """Standing still for ``duration`` (kind 'length' or 'angle' to match the moves around it)."""
     T = _positive(to_si(duration, "time", "duration"), "duration")
-    return Profile(kind, (Segment(T, 0.0, 0.0, 0.0, 0.0, "dwell"),), name="dwell")
+    return Profile(kind, (JerkSegment(T, 0.0, 0.0, 0.0, 0.0, "dwell"),), name="dwell")
 
 
 def sequence(*profiles: Profile) -> Profile:
@@ -386,7 +386,7 @@ def sequence(*profiles: Profile) -> Profile:
     if len(kinds) > 1:
         raise InputError("sequence: cannot mix linear and rotary profiles")
     kind = kinds.pop()
-    segs: list[Segment] = []
+    segs: list[JerkSegment] = []
     x_end, v_end = profiles[0].start, 0.0
     for i, p in enumerate(profiles):
         v0 = p.segments[0].v0
@@ -394,7 +394,7 @@ def sequence(*profiles: Profile) -> Profile:
             raise InputError(f"sequence: profile {i} starts at velocity {v0:g} but the previous ends at {v_end:g}")
         shift = x_end - p.start
         for s in p.segments:
-            segs.append(Segment(s.duration, s.j, s.x0 + shift, s.v0, s.a0, s.label or p.name))
+            segs.append(JerkSegment(s.duration, s.j, s.x0 + shift, s.v0, s.a0, s.label or p.name))
         x_end, v_end, _ = segs[-1].end
     reached = all(p.reached_max_velocity for p in profiles)
     return Profile(kind, tuple(segs), name="sequence", reached_max_velocity=reached)
@@ -453,5 +453,8 @@ def sampled(t: Any, x: Any) -> SampledProfile:
 
 AnyProfile = Profile | SampledProfile
 
-__all__ = ["Profile", "SampledProfile", "Segment", "ProfileSamples", "trapezoidal", "triangular", "s_curve",
+__all__ = ["Profile", "SampledProfile", "JerkSegment", "ProfileSamples", "trapezoidal", "triangular", "s_curve",
            "dwell", "sequence", "sampled", "AnyProfile"]
+
+# Former name (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"Segment": "JerkSegment"})

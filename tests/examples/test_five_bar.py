@@ -73,9 +73,9 @@ def test_pla_grillage_against_hand_compatibility():
     w, M = grillage_hand(1.5, E_PLA, E_PLA / (2 * (1 + NU_PLA)))
     assert res["frame_deflection"].demand.m_as("m") == pytest.approx(w, rel=0.02)  # Bredt J, web shear area
     comp = load(EXAMPLE / "design.toml").data.components["pla_links"].obj
-    from mechverify.fea.frame import PointLoad
+    from mechverify.fea.frame import FramePointLoad
 
-    d = comp.frame.solve([PointLoad("P", force=["0 N", "0 N", "-1.5 N"])]).diagram("link2")
+    d = comp.frame.solve([FramePointLoad("P", force=["0 N", "0 N", "-1.5 N"])]).diagram("link2")
     I = (B * H**3 - (B - 2 * T) * (H - 2 * T) ** 3) / 12
     assert np.max(np.abs(d.normal_stress.m_as("Pa"))) == pytest.approx(M * (H / 2) / I, rel=0.01)
     # the document's criterion (SF 4 against Sy = 26 MPa) holds with a wide margin in the beam model

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from mechverify.components import sections
-from mechverify.fea.frame import DistributedLoad, Frame, Member, MemberPointLoad, Support, fixed_end_forces_linear
+from mechverify.fea.frame import DistributedLoad, Frame, FrameSupport, Member, MemberPointLoad, fixed_end_forces_linear
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")
@@ -23,7 +23,7 @@ SEC = sections.rectangle("20 mm", "40 mm")
 I = 0.020 * 0.040**3 / 12
 L = 3.0
 NODES = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L} m", "0 m", "0 m"]}
-SIMPLE = [Support("A", "pinned"), Support("B", "custom", hold=("y", "z", "rx"))]
+SIMPLE = [FrameSupport("A", "pinned"), FrameSupport("B", "custom", hold=("y", "z", "rx"))]
 
 
 def frame(supports, theory="euler", **kw):
@@ -55,7 +55,7 @@ def test_triangular_load_fixed_both_ends(theory):
     (the fixed-end forces come from the exact Timoshenko fields); statics still holds: R_A + R_B = wl/2 and
     R_B l - w l²/3 = M_A + M_B (global y components of the support moments)."""
     w = 3000.0
-    res = frame([Support("A"), Support("B")], theory).solve(
+    res = frame([FrameSupport("A"), FrameSupport("B")], theory).solve(
         [DistributedLoad("beam", ["0 N/m", "0 N/m", "0 N/m"], load_end=["0 N/m", "0 N/m", f"-{w} N/m"])])
     RA, RB = res.reactions["A"][0].m_as("N")[2], res.reactions["B"][0].m_as("N")[2]
     MA, MB = res.reactions["A"][1].m_as("N*m")[1], res.reactions["B"][1].m_as("N*m")[1]
@@ -76,7 +76,7 @@ def test_trapezoidal_load_is_uniform_plus_triangle_and_element_independent():
     w1, w2 = 1000.0, 4000.0
     load = DistributedLoad("beam", ["0 N/m", "0 N/m", f"-{w1} N/m"], load_end=["0 N/m", "0 N/m", f"-{w2} N/m"])
     for div in (1, 5):
-        res = frame([Support("A"), Support("B")], divisions=div).solve([load])
+        res = frame([FrameSupport("A"), FrameSupport("B")], divisions=div).solve([load])
         assert abs(res.reactions["A"][1].m_as("N*m")[1]) == pytest.approx(w1 * L**2 / 12 + (w2 - w1) * L**2 / 30,
                                                                           rel=1e-12)
         assert abs(res.reactions["B"][1].m_as("N*m")[1]) == pytest.approx(w1 * L**2 / 12 + (w2 - w1) * L**2 / 20,
@@ -109,6 +109,6 @@ def test_point_load_and_moment_along_a_member_in_local_axes():
     c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
     nodes = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L * c} m", "0 m", f"{L * s} m"]}
     inc = Frame(nodes, [Member("A", "B", SEC, STEEL, "beam")],
-                [Support("A", "pinned"), Support("B", "custom", hold=("x", "y", "z", "rx"))], theory="euler")
+                [FrameSupport("A", "pinned"), FrameSupport("B", "custom", hold=("x", "y", "z", "rx"))], theory="euler")
     r2 = inc.solve([MemberPointLoad("beam", f"{a} m", force=["0 N", "0 N", f"-{P} N"])])
     assert -r2.ranges("beam")["My"].min.m_as("N*m") == pytest.approx(P * a * (L - a) / L, rel=1e-9)

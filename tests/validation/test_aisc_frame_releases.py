@@ -15,7 +15,7 @@ import pytest
 
 from mechverify.components import sections
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.frame import DistributedLoad, Frame, Hinge, Member, PointLoad, Release, Support
+from mechverify.fea.frame import DistributedLoad, Frame, FramePointLoad, FrameSupport, Hinge, Member, Release
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")  # E = 200 GPa
@@ -35,7 +35,7 @@ def beam(supports, hinges=(), **kw):
 def test_fixed_fixed_member_fully_restrained_case_15():
     """No free degree of freedom at all: reactions only. R = wl/2, M_end = wl²/12, M_centre = wl²/24,
     Δ_centre = wl⁴/(384 EI) (the exact field between the nodes)."""
-    res = beam([Support("A"), Support("B")]).solve([UNIFORM])
+    res = beam([FrameSupport("A"), FrameSupport("B")]).solve([UNIFORM])
     for n in ("A", "B"):
         f, m = res.reactions[n]
         assert f.m_as("N")[2] == pytest.approx(W * L / 2, rel=1e-12)
@@ -54,11 +54,11 @@ def test_propped_cantilever_by_a_release_at_a_one_member_node_case_12(how):
     Hinge at a node with one member): the propped cantilever. R_B = 3wl/8, M_A = wl²/8, span moment
     9wl²/128 at 3l/8 from B."""
     if how == "member":
-        fr = beam([Support("A"), Support("B")], releases_end="My")
+        fr = beam([FrameSupport("A"), FrameSupport("B")], releases_end="My")
     elif how == "release_object":
-        fr = beam([Support("A"), Support("B")], releases_end=Release(My=True))
+        fr = beam([FrameSupport("A"), FrameSupport("B")], releases_end=Release(My=True))
     else:
-        fr = beam([Support("A"), Support("B")], hinges=[Hinge("B", "y")])
+        fr = beam([FrameSupport("A"), FrameSupport("B")], hinges=[Hinge("B", "y")])
     res = fr.solve([UNIFORM])
     assert res.reactions["B"][0].m_as("N")[2] == pytest.approx(3 * W * L / 8, rel=1e-12)
     assert res.reactions["A"][0].m_as("N")[2] == pytest.approx(5 * W * L / 8, rel=1e-12)
@@ -74,9 +74,9 @@ def test_pinned_ended_beam_between_fixed_supports_case_1(how):
     """The issue's silent wrong answer: a beam with pinned ends between two fixed supports. Midspan moment
     wl²/8 (simple beam), not wl²/24 (the fixed-fixed beam, a factor 3 low)."""
     if how == "member":
-        fr = beam([Support("A"), Support("B")], releases_start="My", releases_end="My,Mz")
+        fr = beam([FrameSupport("A"), FrameSupport("B")], releases_start="My", releases_end="My,Mz")
     else:
-        fr = beam([Support("A"), Support("B")], hinges=[Hinge("A", "y"), Hinge("B", "y")])
+        fr = beam([FrameSupport("A"), FrameSupport("B")], hinges=[Hinge("A", "y"), Hinge("B", "y")])
     res = fr.solve([UNIFORM])
     r = res.ranges("beam")["My"]
     assert r.min.m_as("N*m") == pytest.approx(-W * L**2 / 8, rel=1e-12)  # sagging is My < 0
@@ -89,7 +89,7 @@ def test_shear_release_gives_a_guided_end():
     """Vz released at the end B of a beam fixed at both supports: B slides but does not turn (a guided
     end). Hand calculation by superposition (cantilever + tip moment restoring zero slope):
     M_B = wl²/6, M_A = wl²/3, Δ_B = wl⁴/(24 EI)."""
-    res = beam([Support("A"), Support("B")], releases_end="Vz").solve([UNIFORM])
+    res = beam([FrameSupport("A"), FrameSupport("B")], releases_end="Vz").solve([UNIFORM])
     assert abs(res.reactions["A"][1].m_as("N*m")[1]) == pytest.approx(W * L**2 / 3, rel=1e-12)
     assert abs(res.reactions["B"][1].m_as("N*m")[1]) == pytest.approx(W * L**2 / 6, rel=1e-12)
     assert res.reactions["B"][0].m_as("N")[2] == pytest.approx(0, abs=1e-9)
@@ -107,7 +107,7 @@ def test_beam_continuous_over_a_pinned_column():
              "D": [f"{L} m", "0 m", f"{-h} m"]}
     ms = [Member("A", "B", SEC, STEEL, "AB"), Member("B", "C", SEC, STEEL, "BC"),
           Member("D", "B", SEC, STEEL, "column", releases_end="My,Mz")]
-    sups = [Support("A", "pinned"), Support("C", "custom", hold=("y", "z", "rx")), Support("D")]
+    sups = [FrameSupport("A", "pinned"), FrameSupport("C", "custom", hold=("y", "z", "rx")), FrameSupport("D")]
     loads = [DistributedLoad(m, ["0 N/m", "0 N/m", f"-{W} N/m"]) for m in ("AB", "BC")]
     res = Frame(nodes, ms, sups, theory="euler").solve(loads)
     k = E * A / h
@@ -126,11 +126,11 @@ def test_a_named_node_inside_a_member_is_joined_with_a_note():
     says so), the same answer as two members A-C, C-B — not the misleading 'mechanism' error."""
     nodes = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L} m", "0 m", "0 m"], "C": [f"{L / 2} m", "0 m", "0 m"],
              "D": [f"{L / 2} m", "0 m", "-1 m"]}
-    sups = [Support("A", "pinned"), Support("B", "custom", hold=("y", "z", "rx")), Support("D")]
+    sups = [FrameSupport("A", "pinned"), FrameSupport("B", "custom", hold=("y", "z", "rx")), FrameSupport("D")]
     one = Frame(nodes, [Member("A", "B", SEC, STEEL, "AB"), Member("C", "D", SEC, STEEL, "post")], sups)
     two = Frame(nodes, [Member("A", "C", SEC, STEEL, "AC"), Member("C", "B", SEC, STEEL, "CB"),
                         Member("C", "D", SEC, STEEL, "post")], sups)
-    load = [PointLoad(["0.3 m", "0 m", "0 m"], force=["0 N", "0 N", "-1000 N"])]
+    load = [FramePointLoad(["0.3 m", "0 m", "0 m"], force=["0 N", "0 N", "-1000 N"])]
     r1, r2 = one.solve(load), two.solve(load)
     assert any("passes through node C" in n for n in r1.notes)
     assert r1.displacement("C").m_as("mm") == pytest.approx(r2.displacement("C").m_as("mm"), rel=1e-12)
@@ -139,15 +139,15 @@ def test_a_named_node_inside_a_member_is_joined_with_a_note():
 
 def test_unstable_and_ineffective_releases_are_named():
     with pytest.raises(InputError, match=r"member beam: its end releases leave it unstable.*twist"):
-        beam([Support("A"), Support("B")], releases_start="T", releases_end="T").solve([UNIFORM])
+        beam([FrameSupport("A"), FrameSupport("B")], releases_start="T", releases_end="T").solve([UNIFORM])
     with pytest.raises(InputError, match=r"member beam: its end releases leave it unstable.*translation along local z"):
-        beam([Support("A"), Support("B")], releases_start="Vz", releases_end="Vz").solve([UNIFORM])
+        beam([FrameSupport("A"), FrameSupport("B")], releases_start="Vz", releases_end="Vz").solve([UNIFORM])
     # a release at a free end (cantilever tip) has no effect: named, not ignored
     with pytest.raises(ModelError, match=r"rotation about y at node B.*released \(member beam end \(My\)\)"):
-        beam([Support("A")], releases_end="My").solve([UNIFORM])
+        beam([FrameSupport("A")], releases_end="My").solve([UNIFORM])
     # a hinge at a pinned support with one member: the end turns freely anyway
     with pytest.raises(ModelError, match=r"node A.*hinge about y.*has no effect"):
-        beam([Support("A", "pinned"), Support("B")], hinges=[Hinge("A", "y")]).solve([UNIFORM])
+        beam([FrameSupport("A", "pinned"), FrameSupport("B")], hinges=[Hinge("A", "y")]).solve([UNIFORM])
     with pytest.raises(InputError, match=r"releases_end.*did you mean 'Mz'"):
         Member("A", "B", SEC, STEEL, "beam", releases_end="Mzz")
 
@@ -160,8 +160,8 @@ def test_three_hinged_frame_with_a_hinge_at_the_apex():
     nodes = {"A": ["0 m", "0 m", "0 m"], "C": [f"{span / 2} m", "0 m", f"{h} m"], "B": [f"{span} m", "0 m", "0 m"]}
     ms = [Member("A", "C", SEC, STEEL, "left"), Member("C", "B", SEC, STEEL, "right")]
     hold = ("x", "y", "z", "rx")
-    fr = Frame(nodes, ms, [Support("A", "custom", hold=hold), Support("B", "custom", hold=hold)], [Hinge("C", "y")])
-    res = fr.solve([PointLoad("C", force=["0 N", "0 N", f"-{P} N"])])
+    fr = Frame(nodes, ms, [FrameSupport("A", "custom", hold=hold), FrameSupport("B", "custom", hold=hold)], [Hinge("C", "y")])
+    res = fr.solve([FramePointLoad("C", force=["0 N", "0 N", f"-{P} N"])])
     H = P * span / (4 * h)
     assert res.reactions["A"][0].m_as("N") == pytest.approx([H, 0, P / 2], rel=1e-9, abs=1e-6)
     assert res.reactions["B"][0].m_as("N") == pytest.approx([-H, 0, P / 2], rel=1e-9, abs=1e-6)

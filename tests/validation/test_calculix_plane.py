@@ -18,7 +18,7 @@ from shapely.geometry import Point
 from shapely.geometry import box as shapely_box
 
 from mechverify.fea import calculix, mesh2d
-from mechverify.fea.loads import Fixed, Force, Pressure, Support
+from mechverify.fea.loads import Fixed, Force, Pressure, Restraint
 from mechverify.fea.plane import PlaneModel, mesh_region
 from mechverify.fea.regions import Box, Plane
 
@@ -46,8 +46,8 @@ def test_plane_model_matches_ccx_on_the_same_mesh(plane, thickness, tol):
 def test_plate_with_hole_gmsh_mesh_runs_in_ccx():
     shape = shapely_box(0, 0, 0.1, 0.04).difference(Point(0.05, 0.02).buffer(0.008, 32))
     m = mesh_region(shape, "5 mm")
-    model = PlaneModel(m, "1 mm", "Structural Steel", supports=(Support(Plane(x="0 m"), x=True),
-                                                                 Support(Box(("0 m", "0 m"), ("0 m", "0 m")), y=True)),
+    model = PlaneModel(m, "1 mm", "Structural Steel", supports=(Restraint(Plane(x="0 m"), x=True),
+                                                                 Restraint(Box(("0 m", "0 m"), ("0 m", "0 m")), y=True)),
                        loads=(Force(Plane(x="100 mm"), ("400 N", "0 N")),), plane="strain")
     res = model.solve()
     ccx = calculix.run_model(model)

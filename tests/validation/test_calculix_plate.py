@@ -23,7 +23,7 @@ import pytest
 
 from mechverify.components import plates as P
 from mechverify.fea import calculix, mesh, solid
-from mechverify.fea.loads import Pressure, Support
+from mechverify.fea.loads import Pressure, Restraint
 from mechverify.fea.plate import solve_plate
 from mechverify.fea.regions import Box, Plane
 
@@ -37,7 +37,7 @@ def plate_case():
     right = Box(("120 mm", "0 mm", "0 mm"), ("120 mm", "40 mm", "0 mm"))
     corner = Box(("0 mm", "0 mm", "0 mm"), ("0 mm", "0 mm", "0 mm"))
     model = solid.SolidModel(m, "Inventor Aluminum 6061",
-                             supports=(Support(left, x=True, z=True), Support(right, z=True), Support(corner, y=True)),
+                             supports=(Restraint(left, x=True, z=True), Restraint(right, z=True), Restraint(corner, y=True)),
                              loads=(Pressure(Plane(z="6 mm"), "50 kPa"),))
     res = model.solve()
     ccx = calculix.run_model(model, ip_stress=True)

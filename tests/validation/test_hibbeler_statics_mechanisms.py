@@ -14,7 +14,7 @@ import math
 import pytest
 
 from mechverify import Q
-from mechverify.mechanisms import GROUND, Body, Mechanism, Pin, PointLoad, Slider
+from mechverify.mechanisms import GROUND, AppliedForce, Body, Mechanism, Pin, Slider
 
 
 def hibbeler_6_14() -> Mechanism:
@@ -26,7 +26,7 @@ def hibbeler_6_14() -> Mechanism:
     return Mechanism(
         bodies=(Body("AB", {"A": A, "B": B}), Body("BC", {"B": B, "C": C})),
         joints=(Pin("A", GROUND, "AB", "A"), Pin("B", "AB", "BC", "B"), Pin("C", GROUND, "BC", "C")),
-        loads=(PointLoad("BC", mid, ("0 N", "-2000 N")),),
+        loads=(AppliedForce("BC", mid, ("0 N", "-2000 N")),),
         name="Hibbeler Example 6.14",
     )
 
@@ -51,7 +51,7 @@ def simply_supported(L=2.0, load=None, mass=None) -> Mechanism:
     roller = Body("roller", {"R": P1})
     joints = (Pin("pin", GROUND, "beam", "L"), Slider("slide", GROUND, "roller", "R", direction="0 deg"),
               Pin("roller_pin", "roller", "beam", "R"))
-    loads = (PointLoad("beam", (Q(L / 2, "m"), Q(0, "m")), ("0 N", f"-{load} N")),) if load else ()
+    loads = (AppliedForce("beam", (Q(L / 2, "m"), Q(0, "m")), ("0 N", f"-{load} N")),) if load else ()
     return Mechanism((beam, roller), joints, loads)
 
 

@@ -12,7 +12,7 @@ shortening changes the answers by less than 0.1 %.
 import pytest
 
 from mechverify.components import sections
-from mechverify.fea.frame import DistributedLoad, Frame, Member, PointLoad, Support
+from mechverify.fea.frame import DistributedLoad, Frame, FramePointLoad, FrameSupport, Member
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")
@@ -26,7 +26,7 @@ def portal(supports):
              "D": [f"{L} m", "0 m", "0 m"]}
     members = [Member("A", "B", col, STEEL, "left"), Member("B", "C", gir, STEEL, "girder"),
                Member("D", "C", col, STEEL, "right")]
-    return Frame(nodes, members, [Support(n, **supports) for n in ("A", "D")], theory="euler")
+    return Frame(nodes, members, [FrameSupport(n, **supports) for n in ("A", "D")], theory="euler")
 
 
 def k_ratio():
@@ -54,7 +54,7 @@ def test_two_hinged_portal_uniform_girder_load():
 
 def test_fixed_base_portal_horizontal_load():
     P = 5_000.0
-    res = portal({"kind": "fixed"}).solve([PointLoad("B", force=[f"{P} N", "0 N", "0 N"])])
+    res = portal({"kind": "fixed"}).solve([FramePointLoad("B", force=[f"{P} N", "0 N", "0 N"])])
     k = k_ratio()
     MA = P * h * (3 * k + 1) / (2 * (6 * k + 1))
     MB = P * h * 3 * k / (2 * (6 * k + 1))

@@ -12,7 +12,7 @@ import pytest
 
 from mechverify.components import sections
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.frame import Frame, Member, PointLoad, Spring, Support
+from mechverify.fea.frame import Frame, FramePointLoad, FrameSupport, Member, Spring
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")
@@ -28,8 +28,8 @@ def test_logan_example_2_1_spring_assemblage():
     springs = [Spring("1", "3", axial="1000 lbf/in", name="k1"), Spring("3", "4", axial="2000 lbf/in", name="k2"),
                Spring("4", "2", axial="3000 lbf/in", name="k3")]
     line = ("y", "z", "rx", "ry", "rz")
-    sups = [Support("1"), Support("2"), Support("3", "custom", hold=line), Support("4", "custom", hold=line)]
-    res = Frame(nodes, [], sups, springs=springs).solve([PointLoad("4", force=["5000 lbf", "0 lbf", "0 lbf"])])
+    sups = [FrameSupport("1"), FrameSupport("2"), FrameSupport("3", "custom", hold=line), FrameSupport("4", "custom", hold=line)]
+    res = Frame(nodes, [], sups, springs=springs).solve([FramePointLoad("4", force=["5000 lbf", "0 lbf", "0 lbf"])])
     book = {"u3": 0.9091, "u4": 1.3636, "f1": -909.1, "f2": -4090.9}  # Logan's printed values (4 significant)
     hand = {"u3": 10 / 11, "u4": 15 / 11}
     u3, u4 = res.displacement("3").m_as("in")[0], res.displacement("4").m_as("in")[0]
@@ -52,14 +52,14 @@ def test_six_component_spring_between_coincident_nodes():
     nodes = {"A": ["0 m", "0 m", "0 m"], "B": [f"{a} m", "0 m", "0 m"], "B2": [f"{a} m", "0 m", "0 m"]}
     k = {"x": "1e9 N/m", "y": "1e9 N/m", "z": f"{kz} N/m", "rx": "1e6 N*m/rad", "ry": "1e6 N*m/rad",
          "rz": "1e6 N*m/rad"}
-    fr = Frame(nodes, [Member("A", "B", SEC, STEEL, "arm")], [Support("A")], theory="euler",
+    fr = Frame(nodes, [Member("A", "B", SEC, STEEL, "arm")], [FrameSupport("A")], theory="euler",
                springs=[Spring("B", "B2", stiffness=k, name="joint")])
-    res = fr.solve([PointLoad("B2", force=["0 N", "0 N", f"-{P} N"])])
+    res = fr.solve([FramePointLoad("B2", force=["0 N", "0 N", f"-{P} N"])])
     assert -res.displacement("B2").m_as("m")[2] == pytest.approx(P / kz + P * a**3 / (3 * E * I), rel=1e-12)
     assert -res.displacement("B").m_as("m")[2] == pytest.approx(P * a**3 / (3 * E * I), rel=1e-12)
     assert res.spring_force("joint")["force"].m_as("N")[2] == pytest.approx(P, rel=1e-12)  # holds B2 up
     with pytest.raises(InputError, match="across the offset"):
-        Frame(nodes | {"C": ["1 m", "0 m", "0 m"]}, [Member("A", "B", SEC, STEEL)], [Support("A")],
+        Frame(nodes | {"C": ["1 m", "0 m", "0 m"]}, [Member("A", "B", SEC, STEEL)], [FrameSupport("A")],
               springs=[Spring("B", "C", stiffness={"z": "1 N/m"})]).solve([])
 
 
@@ -70,11 +70,11 @@ def test_one_way_spring_under_a_cantilever_tip():
     k, P, L = 2e5, 100.0, 0.4
     nodes = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L} m", "0 m", "0 m"]}
     fr = Frame(nodes, [Member("A", "B", SEC, STEEL, "beam")],
-               [Support("A"), Support("B", "spring", springs={"z": f"{k} N/m"}, one_way={"z": "+"})], theory="euler")
-    down = fr.solve([PointLoad("B", force=["0 N", "0 N", f"-{P} N"])])
+               [FrameSupport("A"), FrameSupport("B", "spring", springs={"z": f"{k} N/m"}, one_way={"z": "+"})], theory="euler")
+    down = fr.solve([FramePointLoad("B", force=["0 N", "0 N", f"-{P} N"])])
     assert -down.displacement("B").m_as("m")[2] == pytest.approx(P / (k + 3 * E * I / L**3), rel=1e-12)
     assert any("all in contact" in n for n in down.notes)
-    up = fr.solve([PointLoad("B", force=["0 N", "0 N", f"{P} N"])])
+    up = fr.solve([FramePointLoad("B", force=["0 N", "0 N", f"{P} N"])])
     assert up.displacement("B").m_as("m")[2] == pytest.approx(P * L**3 / (3 * E * I), rel=1e-12)
     assert up.reactions["B"][0].m_as("N")[2] == 0.0
     assert any("lifted (no reaction): z at node B" in n for n in up.notes)
@@ -88,18 +88,18 @@ def test_lever_on_one_way_springs_needs_the_active_set():
     nodes = {"A": ["0 m", "0 m", "0 m"], "B": [f"{L} m", "0 m", "0 m"], "C": [f"{2 * L} m", "0 m", "0 m"]}
     sp = {"z": "1e6 N/m"}
     fr = Frame(nodes, [Member("A", "C", SEC, STEEL, "lever")],
-               [Support("B", "custom", hold=("x", "y", "z", "rx", "rz")),
-                Support("A", "spring", springs=sp, one_way={"z": "+"}),
-                Support("C", "spring", springs=sp, one_way={"z": "+"})], theory="euler")
-    res = fr.solve([PointLoad([f"{1.5 * L} m", "0 m", "0 m"], force=["0 N", "0 N", f"-{P} N"])])
+               [FrameSupport("B", "custom", hold=("x", "y", "z", "rx", "rz")),
+                FrameSupport("A", "spring", springs=sp, one_way={"z": "+"}),
+                FrameSupport("C", "spring", springs=sp, one_way={"z": "+"})], theory="euler")
+    res = fr.solve([FramePointLoad([f"{1.5 * L} m", "0 m", "0 m"], force=["0 N", "0 N", f"-{P} N"])])
     assert res.reactions["A"][0].m_as("N")[2] == 0.0
     assert res.reactions["C"][0].m_as("N")[2] == pytest.approx(P * 0.5, rel=1e-12)
     assert res.reactions["B"][0].m_as("N")[2] == pytest.approx(P * 0.5, rel=1e-12)
     assert any("converged in 2 iteration(s); lifted (no reaction): z at node A" in n for n in res.notes)
     # with the A spring the only support in z besides the pin... lifted everywhere: named, not a singular matrix
     fr2 = Frame(nodes, [Member("A", "C", SEC, STEEL, "lever")],
-                [Support("B", "custom", hold=("x", "y", "rx", "rz")),
-                 Support("A", "spring", springs=sp, one_way={"z": "+"}),
-                 Support("C", "spring", springs=sp, one_way={"z": "+"})], theory="euler")
+                [FrameSupport("B", "custom", hold=("x", "y", "rx", "rz")),
+                 FrameSupport("A", "spring", springs=sp, one_way={"z": "+"}),
+                 FrameSupport("C", "spring", springs=sp, one_way={"z": "+"})], theory="euler")
     with pytest.raises(ModelError, match="one-way springs at z at node A, z at node C lifted"):
-        fr2.solve([PointLoad("B", force=["0 N", "0 N", f"{P} N"])])
+        fr2.solve([FramePointLoad("B", force=["0 N", "0 N", f"{P} N"])])

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from shapely.geometry import Polygon
 
-from mechverify.fea.loads import Force, Pressure, Support
+from mechverify.fea.loads import Force, Pressure, Restraint
 from mechverify.fea.plane import PlaneModel, mesh_region
 from mechverify.fea.regions import Cylinder, Plane
 
@@ -35,7 +35,7 @@ def test_plate_with_hole_in_tension_kt():
     mesh = mesh_region(region, "12 mm", "0.6 mm")
     sigma = 10e6
     model = PlaneModel(mesh, f"{t} m", "Structural Steel",
-                       supports=(Support(Plane(x="0 m"), x=True), Support(Plane(y="0 m"), y=True)),
+                       supports=(Restraint(Plane(x="0 m"), x=True), Restraint(Plane(y="0 m"), y=True)),
                        loads=(Force(Plane(x=f"{half_len} m"), (f"{sigma * half_w * t} N", "0 N")),))
     res = model.solve()
     peak = res.max_principal
@@ -51,7 +51,7 @@ def test_lame_thick_cylinder(plane):
     region = Polygon(quarter_arc(ri, 48) [::-1] + quarter_arc(ro, 96))
     mesh = mesh_region(region, "3 mm", "3 mm")
     model = PlaneModel(mesh, "1 m", "Structural Steel", plane=plane,
-                       supports=(Support(Plane(x="0 m"), x=True), Support(Plane(y="0 m"), y=True)),
+                       supports=(Restraint(Plane(x="0 m"), x=True), Restraint(Plane(y="0 m"), y=True)),
                        loads=(Pressure(Cylinder(("0 m", "0 m"), f"{ri} m"), f"{p} Pa"),))
     res = model.solve()
     x, y = res.points[:, 0], res.points[:, 1]

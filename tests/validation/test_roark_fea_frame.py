@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from mechverify.components import sections
-from mechverify.fea.frame import DistributedLoad, Frame, Member, PointLoad, Support
+from mechverify.fea.frame import DistributedLoad, Frame, FramePointLoad, FrameSupport, Member
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")  # E = 200 GPa, nu = 0.3 (ANSYS default)
@@ -29,14 +29,14 @@ def beam(length_mm, supports, theory, divisions=1):
 
 def simply_supported(length_mm, theory, divisions=1):
     # pinned at A; at B a roller in z that also holds y and the twist about the axis (a 3D simple support)
-    return beam(length_mm, [Support("A", "pinned"), Support("B", "custom", hold=("y", "z", "rx"))], theory, divisions)
+    return beam(length_mm, [FrameSupport("A", "pinned"), FrameSupport("B", "custom", hold=("y", "z", "rx"))], theory, divisions)
 
 
 @pytest.mark.parametrize("theory", ["euler", "timoshenko"])
 def test_cantilever_end_load_table_8_1_case_1a(theory):
     """Tip deflection W l^3 / (3 E I) (+ F W l / (A G), Sec. 8.10); root moment W l; root stress W l c / I."""
     W, L = 500.0, 0.150  # short beam: the shear term is 0.8 % of the bending term
-    res = beam(150, [Support("A", "fixed")], theory).solve([PointLoad("B", force=["0 N", "0 N", f"-{W} N"])])
+    res = beam(150, [FrameSupport("A", "fixed")], theory).solve([FramePointLoad("B", force=["0 N", "0 N", f"-{W} N"])])
     y = W * L**3 / (3 * E * I) + (F_SHEAR * W * L / (A * G) if theory == "timoshenko" else 0.0)
     assert res.displacement("B").m_as("m")[2] == pytest.approx(-y, rel=1e-9)
     assert res.max_displacement.value.m_as("m") == pytest.approx(y, rel=1e-9)
@@ -53,7 +53,7 @@ def test_cantilever_end_load_table_8_1_case_1a(theory):
 def test_simply_supported_central_load_table_8_1_case_1e(theory):
     """Midspan deflection W l^3 / (48 E I) (+ F W l / (4 A G)); the load point splits the member."""
     W, L = 1000.0, 0.400
-    res = simply_supported(400, theory).solve([PointLoad(["200 mm", "0 mm", "0 mm"], force=["0 N", "0 N", f"-{W} N"])])
+    res = simply_supported(400, theory).solve([FramePointLoad(["200 mm", "0 mm", "0 mm"], force=["0 N", "0 N", f"-{W} N"])])
     y = W * L**3 / (48 * E * I) + (F_SHEAR * W * L / (4 * A * G) if theory == "timoshenko" else 0.0)
     assert res.max_displacement.value.m_as("m") == pytest.approx(y, rel=1e-9)
     assert res.max_displacement.position.m_as("mm") == pytest.approx(200)
@@ -104,7 +104,7 @@ def test_unsymmetrical_bending_corner_stress():
     """Cantilever with an end load along y and z: the corner stress is M_z c_y / I_z + M_y c_z / I_y (Roark
     Sec. 8.1, bending about both principal axes), and the deflections are independent in y and z."""
     Py, Pz, L = 200.0, 300.0, 0.200
-    res = beam(200, [Support("A", "fixed")], "euler").solve([PointLoad("B", force=["0 N", f"{Py} N", f"{Pz} N"])])
+    res = beam(200, [FrameSupport("A", "fixed")], "euler").solve([FramePointLoad("B", force=["0 N", f"{Py} N", f"{Pz} N"])])
     Iz = H * B**3 / 12
     sigma = Pz * L * (H / 2) / I + Py * L * (B / 2) / Iz
     d = res.diagram("beam")

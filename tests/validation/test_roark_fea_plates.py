@@ -54,7 +54,7 @@ def test_deflection_converges_at_second_order():
 
 def test_central_point_load_twk():
     """[TWK] Table 8: simply supported square, central load P: w_max = 0.01160 P a^2 / D."""
-    res = square("simply_supported", 64, loads=(P.PointLoad(("100 mm", "100 mm"), "-100 N"),))
+    res = square("simply_supported", 64, loads=(P.PlatePointLoad(("100 mm", "100 mm"), "-100 N"),))
     D = E * T**3 / (12 * (1 - NU**2))
     assert -res.u[:, 2].min() == pytest.approx(0.01160 * 100 * A**2 / D, rel=0.01)
 

@@ -12,7 +12,7 @@ import pytest
 
 from mechverify.errors import InputError
 from mechverify.fea import mesh, solid
-from mechverify.fea.loads import Force, Support
+from mechverify.fea.loads import Force, Restraint
 from mechverify.fea.regions import Plane
 
 
@@ -20,8 +20,8 @@ from mechverify.fea.regions import Plane
 def bar():
     m = mesh.box(("50 mm", "10 mm", "10 mm"), (2, 1, 1))
     model = solid.SolidModel(m, "Structural Steel",
-                             supports=(Support(Plane(x="0 mm"), x=True), Support(Plane(y="0 mm"), y=True),
-                                       Support(Plane(z="0 mm"), z=True)),
+                             supports=(Restraint(Plane(x="0 mm"), x=True), Restraint(Plane(y="0 mm"), y=True),
+                                       Restraint(Plane(z="0 mm"), z=True)),
                              loads=(Force(Plane(x="50 mm"), ("5 kN", "0 N", "0 N")),))
     return model.solve()
 

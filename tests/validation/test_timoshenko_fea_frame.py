@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from mechverify.components import sections
-from mechverify.fea.frame import Frame, Member, PointLoad, Support
+from mechverify.fea.frame import Frame, FramePointLoad, FrameSupport, Member
 from mechverify.materials.database import get
 
 STEEL = get("Structural Steel")
@@ -25,14 +25,14 @@ E, G = 200e9, 200e9 / 2.6
 
 def bar(section, length_mm, load):
     nodes = {"A": ["0 mm", "0 mm", "0 mm"], "B": [f"{length_mm} mm", "0 mm", "0 mm"]}
-    fr = Frame(nodes, [Member("A", "B", section, STEEL, "bar")], [Support("A", "fixed")])
+    fr = Frame(nodes, [Member("A", "B", section, STEEL, "bar")], [FrameSupport("A", "fixed")])
     return fr.solve([load])
 
 
 def test_twist_of_a_round_shaft():
     """phi = T L / (G I_P) (ref. 1 Eq. 3-15), tau_max = 16 T / (pi d^3) (Eq. 3-11); von Mises = sqrt(3) tau."""
     T, L, d = 100.0, 0.5, 0.020
-    res = bar(sections.circle("20 mm"), 500, PointLoad("B", moment=[f"{T} N*m", "0 N*m", "0 N*m"]))
+    res = bar(sections.circle("20 mm"), 500, FramePointLoad("B", moment=[f"{T} N*m", "0 N*m", "0 N*m"]))
     Ip = math.pi * d**4 / 32
     assert res.rotation("B").m_as("rad")[0] == pytest.approx(T * L / (G * Ip), rel=1e-9)
     tau = 16 * T / (math.pi * d**3)
@@ -47,7 +47,7 @@ def test_twist_of_a_rectangular_bar():
     """Rectangle 20 x 10 mm (b/c = 2): J = 0.229 b c^3, tau_max = T / (0.246 b c^2) (ref. 2, Sec. 109 table;
     three significant figures, hence the 0.3 % tolerance)."""
     T, L, b, c = 20.0, 0.3, 0.020, 0.010
-    res = bar(sections.rectangle("10 mm", "20 mm"), 300, PointLoad("B", moment=[f"{T} N*m", "0 N*m", "0 N*m"]))
+    res = bar(sections.rectangle("10 mm", "20 mm"), 300, FramePointLoad("B", moment=[f"{T} N*m", "0 N*m", "0 N*m"]))
     assert res.rotation("B").m_as("rad")[0] == pytest.approx(T * L / (G * 0.229 * b * c**3), rel=3e-3)
     assert np.max(res.diagram("bar").shear_stress.m_as("Pa")) == pytest.approx(T / (0.246 * b * c**2), rel=3e-3)
 
@@ -56,7 +56,7 @@ def test_shear_deflection_of_a_deep_cantilever():
     """A deep cantilever (L/h = 2.5): delta = P L^3 / (3 E I) + 1.2 P L / (G A) (ref. 3, Sec. 7.8); the shear
     part is 11 % of the total here, so the Timoshenko element must carry it."""
     P, L, b, h = 10_000.0, 0.050, 0.010, 0.020
-    res = bar(sections.rectangle("10 mm", "20 mm"), 50, PointLoad("B", force=["0 N", "0 N", f"-{P} N"]))
+    res = bar(sections.rectangle("10 mm", "20 mm"), 50, FramePointLoad("B", force=["0 N", "0 N", f"-{P} N"]))
     I, A = b * h**3 / 12, b * h
     bend, shear = P * L**3 / (3 * E * I), 1.2 * P * L / (G * A)
     assert shear / (bend + shear) > 0.1
@@ -72,8 +72,8 @@ def test_right_angle_grillage_castigliano():
     sec = sections.circle("12 mm")
     nodes = {"A": ["0 mm", "0 mm", "0 mm"], "B": ["300 mm", "0 mm", "0 mm"], "C": ["300 mm", "200 mm", "0 mm"]}
     fr = Frame(nodes, [Member("A", "B", sec, STEEL, "arm1"), Member("B", "C", sec, STEEL, "arm2")],
-               [Support("A", "fixed")], theory="euler")
-    res = fr.solve([PointLoad("C", force=["0 N", "0 N", f"-{P} N"])])
+               [FrameSupport("A", "fixed")], theory="euler")
+    res = fr.solve([FramePointLoad("C", force=["0 N", "0 N", f"-{P} N"])])
     I, J = math.pi * d**4 / 64, math.pi * d**4 / 32
     delta = P * a**3 / (3 * E * I) + P * b**3 / (3 * E * I) + P * b**2 * a / (G * J)
     assert -res.displacement("C").m_as("m")[2] == pytest.approx(delta, rel=1e-9)

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from mechverify.fea import mesh, solid
-from mechverify.fea.loads import Fixed, Force, Gravity, Support
+from mechverify.fea.loads import Fixed, Force, Gravity, Restraint
 from mechverify.fea.regions import Plane
 from mechverify.materials import get
 
@@ -25,7 +25,7 @@ STEEL = get("Structural Steel")  # E = 200 GPa, nu = 0.30, rho = 7850 kg/m^3
 def rollers_at_x0():
     """Symmetry supports at x = 0 that leave lateral contraction free: x held on the face,
     y held on the y = 0 face, z held on the z = 0 face."""
-    return (Support(Plane(x="0 mm"), x=True), Support(Plane(y="0 mm"), y=True), Support(Plane(z="0 mm"), z=True))
+    return (Restraint(Plane(x="0 mm"), x=True), Restraint(Plane(y="0 mm"), y=True), Restraint(Plane(z="0 mm"), z=True))
 
 
 def test_bar_in_tension_is_exact():

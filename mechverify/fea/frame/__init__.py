@@ -2,10 +2,10 @@
 
 A :class:`Frame` is a set of named nodes, straight :class:`Member` s between them (each with a
 :class:`~mechverify.components.sections.Section` and a material, and optional end
-:class:`Release` s), :class:`Support` s (rigid, springs, one-way springs), :class:`Hinge` s and
+:class:`Release` s), :class:`FrameSupport` s (rigid, springs, one-way springs), :class:`Hinge` s and
 two-node :class:`Spring` s, declared at named nodes or at points, never at degree-of-freedom
-numbers. ``Frame.solve(loads)`` takes :class:`PointLoad`, :class:`MemberPointLoad`,
-:class:`DistributedLoad` (uniform, partial, trapezoidal; local or global axes), :class:`SelfWeight`
+numbers. ``Frame.solve(loads)`` takes :class:`FramePointLoad`, :class:`MemberPointLoad`,
+:class:`DistributedLoad` (uniform, partial, trapezoidal; local or global axes), :class:`FrameSelfWeight`
 and :class:`SupportDisplacement` (settlements) and returns :class:`FrameResults`: node
 displacements and rotations, support reactions (global equilibrium is asserted), spring forces,
 internal force and moment diagrams along every member, stresses at section fibres, exact extremes
@@ -49,6 +49,7 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+from mechverify.errors import renamed
 from mechverify.fea.frame.element import (
     fixed_end_forces,
     fixed_end_forces_linear,
@@ -62,16 +63,16 @@ from mechverify.fea.frame.model import (
     SUPPORT_KINDS,
     THEORIES,
     DistributedLoad,
+    FramePointLoad,
+    FrameSelfWeight,
+    FrameSupport,
     Hinge,
     Load,
     LoadCombination,
     Member,
     MemberPointLoad,
-    PointLoad,
     Release,
-    SelfWeight,
     Spring,
-    Support,
     SupportDisplacement,
     Where,
     section_from_properties,
@@ -80,8 +81,8 @@ from mechverify.fea.frame.results import (
     EXTREME_QUANTITIES,
     Diagram,
     Envelope,
-    Extreme,
     FrameAnalysis,
+    FrameExtreme,
     FrameResults,
     Range,
     section_fibres,
@@ -97,9 +98,14 @@ _LAZY = {"Frame": "analysis", "DENSE_CHECK_LIMIT": "analysis", "PROGRESS_THRESHO
          "frame_figure": "figure"}
 
 
+# Former names (issue 16: one meaning per public class name across the package), deprecated.
+_renamed = renamed(__name__, {"PointLoad": "FramePointLoad", "Support": "FrameSupport",
+                              "SelfWeight": "FrameSelfWeight", "Extreme": "FrameExtreme"}, stacklevel=3)
+
+
 def __getattr__(name: str) -> Any:
     if name not in _LAZY:
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+        return _renamed(name)
     value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
     globals()[name] = value
     return value
@@ -107,7 +113,8 @@ def __getattr__(name: str) -> Any:
 
 __all__ = ["DOF_NAMES", "RELEASE_NAMES", "STANDARD_GRAVITY", "SUPPORT_KINDS", "THEORIES", "DENSE_CHECK_LIMIT",
            "PROGRESS_THRESHOLD", "EXTREME_QUANTITIES", "DistributedLoad", "Hinge", "Load", "LoadCombination", "Member",
-           "MemberPointLoad", "PointLoad", "Release", "SelfWeight", "Spring", "Support", "SupportDisplacement", "Where",
+           "MemberPointLoad", "FramePointLoad", "Release", "FrameSelfWeight", "Spring", "FrameSupport",
+           "SupportDisplacement", "Where",
            "section_from_properties", "fixed_end_forces", "fixed_end_forces_linear", "local_axes", "local_stiffness",
-           "Diagram", "Envelope", "Extreme", "FrameAnalysis", "FrameResults", "Range", "section_fibres", "Frame",
+           "Diagram", "Envelope", "FrameExtreme", "FrameAnalysis", "FrameResults", "Range", "section_fibres", "Frame",
            "frame_figure"]

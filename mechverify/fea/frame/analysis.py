@@ -32,15 +32,15 @@ from mechverify.fea.frame.model import (
     DOF_WORDS,
     THEORIES,
     DistributedLoad,
+    FramePointLoad,
+    FrameSelfWeight,
+    FrameSupport,
     Hinge,
     Load,
     LoadCombination,
     Member,
     MemberPointLoad,
-    PointLoad,
-    SelfWeight,
     Spring,
-    Support,
     SupportDisplacement,
     Where,
     _vector,
@@ -67,7 +67,7 @@ class Frame:
     :class:`Spring`).
     """
 
-    def __init__(self, nodes: Mapping[str, Any] | None, members: Sequence[Member], supports: Sequence[Support],
+    def __init__(self, nodes: Mapping[str, Any] | None, members: Sequence[Member], supports: Sequence[FrameSupport],
                  hinges: Sequence[Hinge] = (), theory: str = "timoshenko", name: str = "frame",
                  springs: Sequence[Spring] = ()):
         if theory not in THEORIES:
@@ -213,7 +213,7 @@ class Frame:
         F, Mo = np.zeros(3), np.zeros(3)
         presc: dict[int, float] = {}
         for ld in loads:
-            if isinstance(ld, PointLoad | MemberPointLoad):
+            if isinstance(ld, FramePointLoad | MemberPointLoad):
                 fv, mv = ld.vectors()
                 if isinstance(ld, MemberPointLoad):
                     i = self._member(ld.member)
@@ -249,7 +249,7 @@ class Frame:
                         a, b = mesh.R[e] @ a, mesh.R[e] @ b
                     q0[e] += a
                     q1[e] += b
-            elif isinstance(ld, SelfWeight):
+            elif isinstance(ld, FrameSelfWeight):
                 g = ld.vector()
                 for e, pr in enumerate(mesh.props):
                     if not np.isfinite(pr.rho):
@@ -268,8 +268,8 @@ class Frame:
                                          "there (only held motions can be imposed)")
                     presc[dof] = presc.get(dof, 0.0) + v
             else:
-                raise InputError(f"unknown load {ld!r}: use PointLoad, MemberPointLoad, DistributedLoad, SelfWeight "
-                                 "or SupportDisplacement")
+                raise InputError(f"unknown load {ld!r}: use FramePointLoad, MemberPointLoad, DistributedLoad, "
+                                 "FrameSelfWeight or SupportDisplacement")
         loaded = np.flatnonzero(np.any(q0 != 0, axis=1) | np.any(q1 != 0, axis=1))
         fef = np.zeros((ne, 12))
         if len(loaded):
@@ -293,11 +293,11 @@ class Frame:
         return _CaseData(f, q0, q1, fef, F, Mo, presc)
 
     def _restraints(self, mesh: _Mesh) -> tuple[np.ndarray, dict[int, float], dict[int, tuple[float, int]],
-                                                 list[tuple[Support, int]]]:
+                                                 list[tuple[FrameSupport, int]]]:
         held: set[int] = set()
         springs: dict[int, float] = {}
         one_way: dict[int, tuple[float, int]] = {}
-        at: list[tuple[Support, int]] = []
+        at: list[tuple[FrameSupport, int]] = []
         for s in self.supports:
             k = self._node(mesh, s.at)
             at.append((s, k))
@@ -521,7 +521,7 @@ class _Solve:
     held: np.ndarray
     springs: dict[int, float]
     one_way: dict[int, tuple[float, int]]
-    at: list[tuple[Support, int]]
+    at: list[tuple[FrameSupport, int]]
 
     def _factor(self, A: sp.spmatrix) -> _Factor:
         """SuperLU of ``A`` (the free DOFs) in an order found on the node graph: the minimum-degree order

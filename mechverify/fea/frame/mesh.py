@@ -18,9 +18,9 @@ from mechverify.fea.frame.model import (
     DOF_NAMES,
     NO_SHEAR_AREAS,
     DistributedLoad,
+    FramePointLoad,
     Load,
     MemberPointLoad,
-    PointLoad,
     Spring,
     SupportDisplacement,
     _axis,
@@ -142,7 +142,7 @@ def build_mesh(fr: Frame, loads: Sequence[Load]) -> _Mesh:
     splits: list[list[float]] = [[0.0, 1.0] + [k / m.divisions for k in range(1, m.divisions)]
                                  for m in fr.members]
     for where in [s.at for s in fr.supports] + [h.at for h in fr.hinges] + \
-                 [ld.at for ld in loads if isinstance(ld, PointLoad | SupportDisplacement)]:
+                 [ld.at for ld in loads if isinstance(ld, FramePointLoad | SupportDisplacement)]:
         for i, t in fr._locate(fr._on_frame(where, "load or support")):
             splits[i].append(t)
     for ld in loads:

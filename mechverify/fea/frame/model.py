@@ -18,7 +18,7 @@ import numpy as np
 import pint
 
 from mechverify.components.sections import Section
-from mechverify.errors import InputError, suggest
+from mechverify.errors import InputError, renamed, suggest
 from mechverify.materials.material import Material
 from mechverify.units import BOUNDS, QuantityLike, from_si, to_si
 
@@ -244,7 +244,7 @@ def section_from_properties(area: QuantityLike, Iy: QuantityLike, Iz: QuantityLi
 
 # ----------------------------------------------------------------------------------------- supports
 @dataclass(frozen=True)
-class Support:
+class FrameSupport:
     """A support at a node or point.
 
     ``kind``: ``"fixed"`` (all six motions held), ``"pinned"`` (three translations held, rotations
@@ -369,7 +369,7 @@ def _axes(axes: str, what: str) -> None:
 
 
 @dataclass(frozen=True)
-class PointLoad:
+class FramePointLoad:
     """A force (N, three global components) and/or a moment (N·m) at a node or at a point on a member."""
 
     at: Where
@@ -400,7 +400,7 @@ class MemberPointLoad:
             raise InputError(f"member point load on {self.member}: give force and/or moment")
 
     def vectors(self) -> tuple[np.ndarray, np.ndarray]:
-        return PointLoad(None, self.force, self.moment).vectors()
+        return FramePointLoad(None, self.force, self.moment).vectors()
 
 
 @dataclass(frozen=True)
@@ -434,7 +434,7 @@ class DistributedLoad:
 
 
 @dataclass(frozen=True)
-class SelfWeight:
+class FrameSelfWeight:
     """The weight of every member, rho A g per length, along ``direction`` (default -Z) times ``factor``."""
 
     g: Any = "9.80665 m/s**2"
@@ -467,7 +467,7 @@ class SupportDisplacement:
         object.__setattr__(self, "values", vals)
 
 
-Load = PointLoad | MemberPointLoad | DistributedLoad | SelfWeight | SupportDisplacement
+Load = FramePointLoad | MemberPointLoad | DistributedLoad | FrameSelfWeight | SupportDisplacement
 
 
 @dataclass(frozen=True)
@@ -489,5 +489,9 @@ class LoadCombination:
 
 
 __all__ = ["DOF_NAMES", "RELEASE_NAMES", "SUPPORT_KINDS", "THEORIES", "STANDARD_GRAVITY", "Where", "Release",
-           "Member", "Support", "Hinge", "Spring", "PointLoad", "MemberPointLoad", "DistributedLoad", "SelfWeight",
-           "SupportDisplacement", "Load", "LoadCombination", "section_from_properties", ]
+           "Member", "FrameSupport", "Hinge", "Spring", "FramePointLoad", "MemberPointLoad", "DistributedLoad",
+           "FrameSelfWeight", "SupportDisplacement", "Load", "LoadCombination", "section_from_properties", ]
+
+# Former names (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"PointLoad": "FramePointLoad", "Support": "FrameSupport",
+                                 "SelfWeight": "FrameSelfWeight"})

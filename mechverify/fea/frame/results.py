@@ -14,7 +14,7 @@ import numpy as np
 import pint
 
 from mechverify.components.sections import Section
-from mechverify.errors import InputError, UnknownNameError
+from mechverify.errors import InputError, UnknownNameError, renamed
 from mechverify.fea.frame.element import element_polynomials, poly_extremes, stationary_points
 from mechverify.fea.frame.model import NO_FIBRES, Load, LoadCombination, Where
 from mechverify.units import Q, QuantityLike, to_si
@@ -57,7 +57,7 @@ class Diagram:
 
 
 @dataclass(frozen=True)
-class Extreme:
+class FrameExtreme:
     """A maximum along the frame: value, member, position along it, point in space (and fibre)."""
 
     value: pint.Quantity
@@ -300,7 +300,7 @@ class FrameResults:
         a, d = self.frame._a[i], self.frame._d[i]
         return Q((a + d / np.linalg.norm(d) * s_mm * 1e-3) * 1e3, "mm")
 
-    def _largest(self, key: str) -> Extreme:
+    def _largest(self, key: str) -> FrameExtreme:
         best: tuple[float, str, pint.Quantity] | None = None
         for m in self.frame.members:
             r = self.ranges(m.name)[key]
@@ -308,16 +308,16 @@ class FrameResults:
             if best is None or v > best[0]:
                 best = (v, m.name, r.s_max)
         assert best is not None
-        return Extreme(Q(best[0], _UNITS[key]), best[1], best[2], self._point_at(best[1], best[2].m_as("mm")),
+        return FrameExtreme(Q(best[0], _UNITS[key]), best[1], best[2], self._point_at(best[1], best[2].m_as("mm")),
                        case=self.name)
 
     @property
-    def max_displacement(self) -> Extreme:
+    def max_displacement(self) -> FrameExtreme:
         """The largest translation (magnitude) anywhere along the members (exact: stationary points)."""
         return self._largest("u")
 
     @property
-    def max_bending_moment(self) -> Extreme:
+    def max_bending_moment(self) -> FrameExtreme:
         """The largest resultant bending moment ``sqrt(My² + Mz²)`` (exact: stationary points)."""
         return self._largest("M")
 
@@ -327,7 +327,7 @@ class FrameResults:
                 raise InputError(f"member {m.name}: its section (tabulated properties) has no extreme-fibre distances "
                                  "c_y, c_z, so its stresses are unknown; give them in section_from_properties")
 
-    def _extreme(self, values: Any, with_fibre: bool = False) -> Extreme:
+    def _extreme(self, values: Any, with_fibre: bool = False) -> FrameExtreme:
         self._stresses_known()
         best: tuple[float, Diagram, int, int] | None = None
         for d in self.diagrams():
@@ -337,19 +337,19 @@ class FrameResults:
                 best = (float(v[idx]), d, int(idx[0]), int(idx[1]) if len(idx) > 1 else -1)
         assert best is not None
         val, d, i, j = best
-        return Extreme(val, d.member, d.s[i], d.points[i], d.fibres[j] if with_fibre and j >= 0 else None,
+        return FrameExtreme(val, d.member, d.s[i], d.points[i], d.fibres[j] if with_fibre and j >= 0 else None,
                        case=self.name)
 
     @property
-    def max_von_mises(self) -> Extreme:
+    def max_von_mises(self) -> FrameExtreme:
         """The largest von Mises stress at any fibre of any member (with the fibre)."""
         e = self._extreme(lambda d: d.von_mises.m_as("MPa"), with_fibre=True)
-        return Extreme(Q(e.value, "MPa"), e.member, e.position, e.location, e.fibre, self.name)
+        return FrameExtreme(Q(e.value, "MPa"), e.member, e.position, e.location, e.fibre, self.name)
 
-    def min_safety_factor(self) -> tuple[float, Extreme]:
+    def min_safety_factor(self) -> tuple[float, FrameExtreme]:
         """Smallest yield safety factor ``Sy / sigma_vm`` over all members (each with its material) and where."""
         self._stresses_known()
-        best: tuple[float, Extreme] | None = None
+        best: tuple[float, FrameExtreme] | None = None
         for d in self.diagrams():
             m = self.frame.members[self.frame.member_index[d.member]]
             Sy = m.material.require("yield_strength").m_as("MPa")
@@ -357,7 +357,7 @@ class FrameResults:
             i, j = np.unravel_index(int(np.argmax(vm)), vm.shape)
             n = Sy / vm[i, j] if vm[i, j] > 0 else math.inf
             if best is None or n < best[0]:
-                best = (n, Extreme(Q(vm[i, j], "MPa"), d.member, d.s[i], d.points[i], d.fibres[j], self.name))
+                best = (n, FrameExtreme(Q(vm[i, j], "MPa"), d.member, d.s[i], d.points[i], d.fibres[j], self.name))
         assert best is not None
         return best
 
@@ -425,3 +425,6 @@ def _merge(a: Range | None, b: Range, case: str) -> Range:
     hi = (b.max, b.s_max, case) if b.max > a.max else (a.max, a.s_max, a.case_max)
     lo = (b.min, b.s_min, case) if b.min < a.min else (a.min, a.s_min, a.case_min)
     return Range(a.quantity, hi[0], hi[1], lo[0], lo[1], hi[2], lo[2])
+
+# Former name (issue 16: one meaning per public class name across the package), deprecated.
+__getattr__ = renamed(__name__, {"Extreme": "FrameExtreme"})
