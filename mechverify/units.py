@@ -21,15 +21,16 @@ from typing import Any, TypeAlias
 import numpy as np
 import pint
 
-from mechverify import pint_cache as _pint_cache
 from mechverify.errors import InputError, UnitError
 
 
-def _cache_folder() -> Path | None:
-    """Where pint keeps its parsed definitions: ``$MECHVERIFY_CACHE_DIR/pint`` or the user cache dir.
+def cache_folder(name: str) -> Path | None:
+    """A writable folder ``name`` under mechverify's cache: ``$MECHVERIFY_CACHE_DIR`` or the user cache dir.
 
-    Building the registry from pint's text definitions takes ~0.2 s; from the cache ~0.04 s
-    (docs/performance.md). ``MECHVERIFY_CACHE_DIR=off`` disables it; an unwritable folder is skipped.
+    Holds what is costly to rebuild at every start: pint's parsed definitions (building the registry
+    from pint's text definitions takes ~0.2 s, from the cache ~0.04 s: docs/performance.md) and the
+    index of design-file component types. ``MECHVERIFY_CACHE_DIR=off`` disables it (None); an
+    unwritable folder is skipped (None).
     """
     root = os.environ.get("MECHVERIFY_CACHE_DIR", "")
     if root.lower() in ("off", "none", "0"):
@@ -39,11 +40,16 @@ def _cache_folder() -> Path | None:
             import platformdirs  # a dependency of pint
 
             root = str(platformdirs.user_cache_path("mechverify", appauthor=False))
-        folder = Path(root) / f"pint-{pint.__version__}"
+        folder = Path(root) / name
         folder.mkdir(parents=True, exist_ok=True)
         return folder if os.access(folder, os.W_OK) else None
     except (OSError, ImportError):
         return None
+
+
+def _cache_folder() -> Path | None:
+    """Where pint keeps its parsed definitions (see :func:`cache_folder`)."""
+    return cache_folder(f"pint-{pint.__version__}")
 
 
 def _make_registry() -> pint.UnitRegistry:
@@ -68,7 +74,6 @@ QuantityLike: TypeAlias = pint.Quantity | str
 ureg.define("mega_psi = 1e6 * psi = Mpsi")
 ureg.define("@alias turn = rev")  # "5000 rev": revolutions (a count of turns, i.e. an angle)
 pint.set_application_registry(ureg)
-_pint_cache.install(ureg)  # parsed unit strings and conversion factors cached (issue 19; mechverify/pint_cache.py)
 
 #: Dimension name -> (pint dimensionality, SI unit used inside the package).
 DIMENSIONS: dict[str, tuple[str, str]] = {

@@ -5,6 +5,7 @@ in benchmarks/startup.py and docs/performance.md."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -134,3 +135,32 @@ def test_unit_fast_path_matches_pint():
                       ("7 lbf", "force"), ("0.3 in", "length"), ("2 g*cm**2", "inertia"), ("40 degC", "temperature")]:
         si = Q(text).to_base_units().magnitude if dim != "angular_velocity" else Q(text).to("rad/s").magnitude
         assert to_si(text, dim) == si, text
+
+
+def test_checking_the_lift_imports_only_its_adapters(tmp_path):
+    """Issue 27: the adapters of types the design does not name (springs, cable spine, frame, shafts,
+    solid FEA) are not imported; the type index is written to the cache folder and read from it."""
+    env = {**os.environ, "MECHVERIFY_CACHE_DIR": str(tmp_path)}
+    code = ("import sys, mechverify.design as d; d.load(sys.argv[1]).verify(); "
+            "print(' '.join(sorted(m for m in sys.modules if m.startswith('mechverify.'))))")
+    lift = str(Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml")
+    for _ in range(2):  # the first run makes the index, the second reads it
+        out = subprocess.run([sys.executable, "-c", code, lift], env=env, capture_output=True, text=True, check=True)
+    loaded = set(out.stdout.split())
+    assert "mechverify.design.adapters.screws" in loaded
+    for absent in ("mechverify.design.adapters.springs", "mechverify.design.adapters.cable_spine",
+                   "mechverify.design.adapters.frame", "mechverify.design.adapters.solid_fea",
+                   "mechverify.mechanisms.cable_spine", "mechverify.components.springs"):
+        assert absent not in loaded, absent
+    assert len(list((tmp_path / "adapters").glob("index-*.json"))) == 1
+
+
+def test_adapter_index_names_every_registered_type():
+    """The cached index and a full import agree: every built-in type, with its module and section."""
+    from mechverify.design import REGISTRY, adapters
+
+    index = adapters.index()
+    full = {k: (REGISTRY._module[k], v.section) for k, v in REGISTRY.types.items()
+            if REGISTRY._module[k].startswith("mechverify.design.adapters.")}
+    assert index == full
+    assert set(REGISTRY.names("components")) >= {"lead_screw", "ball_bearing", "drive", "compression_spring"}

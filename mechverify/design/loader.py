@@ -377,7 +377,7 @@ def _extend(raw: dict[str, Any], templates: dict[str, Any], path: str, col: _Col
 
 def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict[str, Any],
                    templates: dict[str, Any]) -> dict[str, Entry]:
-    types = REGISTRY.in_section(section)
+    types = REGISTRY.section(section)  # imports only the adapters of the types the design names
     out: dict[str, Entry] = {}
     table = doc.get(section, {})
     if not isinstance(table, dict):

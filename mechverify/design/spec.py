@@ -9,7 +9,9 @@ them, and ``Design.verify()`` runs the checks. Adapters for the built-in compone
 
 from __future__ import annotations
 
-from collections.abc import Callable, Mapping
+import importlib
+import sys
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -158,18 +160,90 @@ class ComponentType:
         return next((o for o in self.outputs if o.name == name), None)
 
 
-@dataclass
 class Registry:
-    types: dict[str, ComponentType] = field(default_factory=dict)
+    """The component types a design file may name, by name.
+
+    The built-in types are registered by the adapter modules of :mod:`mechverify.design.adapters`,
+    imported on demand: :meth:`get` and :meth:`section` import only the adapter of a type asked for
+    (through the adapters' cached index), :attr:`types` and :meth:`in_section` import them all.
+    """
+
+    def __init__(self) -> None:
+        self._types: dict[str, ComponentType] = {}
+        self._module: dict[str, str] = {}  # type name -> the module that registered it
+        self._all_loaded = False
 
     def register(self, ct: ComponentType) -> ComponentType:
-        if ct.name in self.types:
+        if ct.name in self._types:
             raise ValueError(f"component type {ct.name!r} registered twice")
-        self.types[ct.name] = ct
+        self._types[ct.name] = ct
+        self._module[ct.name] = sys._getframe(1).f_globals.get("__name__", "")
         return ct
+
+    @property
+    def types(self) -> dict[str, ComponentType]:
+        """Every registered type (imports every built-in adapter first)."""
+        if not self._all_loaded:
+            from mechverify.design import adapters
+
+            adapters.load_all()
+            self._all_loaded = True
+        return self._types
+
+    def get(self, name: str) -> ComponentType | None:
+        """The type called ``name``, importing only its adapter; None when no type has that name."""
+        ct = self._types.get(name)
+        if ct is not None:
+            return ct
+        from mechverify.design import adapters
+
+        where = adapters.index().get(name)
+        if where is not None:
+            importlib.import_module(where[0])
+            ct = self._types.get(name)
+            if ct is None:  # a stale index: the module no longer registers it
+                adapters.forget_index()
+                return self.types.get(name)
+            return ct
+        return None
+
+    def names(self, section: str) -> list[str]:
+        """The names of the types of ``section`` (without importing their adapters)."""
+        from mechverify.design import adapters
+
+        names = {k for k, (_, sec) in adapters.index().items() if sec == section}
+        return sorted(names | {k for k, v in self._types.items() if v.section == section})
+
+    def section(self, section: str) -> Mapping[str, ComponentType]:
+        """The types of ``section`` as a mapping that imports an adapter when its type is looked up."""
+        return _Section(self, section)
 
     def in_section(self, section: str) -> dict[str, ComponentType]:
         return {k: v for k, v in self.types.items() if v.section == section}
+
+
+class _Section(Mapping[str, ComponentType]):
+    def __init__(self, registry: Registry, section: str) -> None:
+        self._registry, self._section = registry, section
+
+    def __getitem__(self, name: str) -> ComponentType:
+        ct = self._registry.get(name) if isinstance(name, str) else None
+        if ct is None or ct.section != self._section:
+            raise KeyError(name)
+        return ct
+
+    def __contains__(self, name: object) -> bool:
+        try:
+            self[name]  # type: ignore[index]
+        except KeyError:
+            return False
+        return True
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._registry.names(self._section))
+
+    def __len__(self) -> int:
+        return len(self._registry.names(self._section))
 
 
 REGISTRY = Registry()
