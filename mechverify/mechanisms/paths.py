@@ -50,49 +50,136 @@ class PathSamples:
     length: float  # path length [m]
 
 
-def _derivatives(r: Callable[[np.ndarray], np.ndarray], phi: np.ndarray, h: float = 1e-4):
-    """r, r', r'' by central differences of step h (error O(h^4 r'''') with the 5-point stencil)."""
-    r0 = np.asarray(r(phi), float)
-    rp1, rm1, rp2, rm2 = (np.asarray(r(phi + k), float) for k in (h, -h, 2 * h, -2 * h))
-    d1 = (-rp2 + 8 * rp1 - 8 * rm1 + rm2) / (12 * h)
-    d2 = (-rp2 + 16 * rp1 - 30 * r0 + 16 * rm1 - rm2) / (12 * h * h)
-    return r0, d1, d2
+def _derivatives(f: Callable[[np.ndarray], np.ndarray], u: np.ndarray, h: float):
+    """f, f', f'' by central differences of step h (error O(h^4 f^(5)) and O(h^4 f^(6)), 5-point stencils)."""
+    f0 = np.asarray(f(u), float)
+    fp1, fm1, fp2, fm2 = (np.asarray(f(u + k), float) for k in (h, -h, 2 * h, -2 * h))
+    d1 = (-fp2 + 8 * fp1 - 8 * fm1 + fm2) / (12 * h)
+    d2 = (-fp2 + 16 * fp1 - 30 * f0 + 16 * fm1 - fm2) / (12 * h * h)
+    return f0, d1, d2
 
 
-def walk_polar(r: Callable[[np.ndarray], np.ndarray], speed: QuantityLike, centre: tuple[float, float] = (0.0, 0.0),
-               phi_range: tuple[float, float] = (0.0, 2 * math.pi), samples: int = 400,
-               dense: int = 200_001) -> PathSamples:
-    """The polar curve x = x_c + r cos(phi), y = y_c + r sin(phi), walked at constant tangential ``speed``;
-    ``samples`` equal arc-length steps (``samples + 1`` points, both ends included)."""
-    v = to_si(speed, "velocity", "speed")
-    if v <= 0:
-        raise InputError(f"path speed must be > 0, got {speed!r}")
-    if samples < 2:
-        raise InputError(f"samples must be >= 2, got {samples}")
-    p0, p1 = phi_range
-    if not p1 > p0:
-        raise InputError(f"phi range must increase, got {phi_range}")
-    phi = np.linspace(p0, p1, dense)
-    rr, d1, _ = _derivatives(r, phi)
-    if not np.all(np.isfinite(rr)):
-        raise InputError("the path r(phi) is not finite everywhere on its range")
-    ds = np.sqrt(rr**2 + d1**2)
-    s = np.concatenate([[0.0], np.cumsum(0.5 * (ds[1:] + ds[:-1]) * np.diff(phi))])
+Curve = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+
+
+def _xy_derivatives(curve: Curve, u: np.ndarray, h: float):
+    x = _derivatives(lambda w: np.asarray(curve(w)[0], float), u, h)
+    y = _derivatives(lambda w: np.asarray(curve(w)[1], float), u, h)
+    return (*x, *y)
+
+
+def _arc_table(curve: Curve, u_range: tuple[float, float], dense: int, h: float) -> tuple[np.ndarray, np.ndarray]:
+    u = np.linspace(u_range[0], u_range[1], dense)
+    x, xu, _, y, yu, _ = _xy_derivatives(curve, u, h)
+    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(y)) and np.all(np.isfinite(xu)) and np.all(np.isfinite(yu))):
+        raise InputError("the path is not finite everywhere on its range")
+    ds = np.hypot(xu, yu)
+    s = np.concatenate([[0.0], np.cumsum(0.5 * (ds[1:] + ds[:-1]) * np.diff(u))])
     if s[-1] <= 0:
         raise InputError("the path has zero length")
-    s_k = np.linspace(0.0, s[-1], samples + 1)
-    ph = np.interp(s_k, s, phi)
-    r0, r1, r2 = _derivatives(r, ph)
-    c, sn = np.cos(ph), np.sin(ph)
-    x_p, y_p = r1 * c - r0 * sn, r1 * sn + r0 * c
-    x_pp, y_pp = r2 * c - 2 * r1 * sn - r0 * c, r2 * sn + 2 * r1 * c - r0 * sn
-    sp = np.hypot(x_p, y_p)
-    if np.any(sp <= 0):
-        raise InputError(f"the path stops (ds/dphi = 0) at sample {int(np.argmin(sp))}")
-    dphi = v / sp
-    ddphi = -v * v * (x_p * x_pp + y_p * y_pp) / sp**4
-    return PathSamples(t=s_k / v, x=centre[0] + r0 * c, y=centre[1] + r0 * sn, vx=x_p * dphi, vy=y_p * dphi,
-                       ax=x_pp * dphi**2 + x_p * ddphi, ay=y_pp * dphi**2 + y_p * ddphi, length=float(s[-1]))
+    return u, s
+
+
+def _check_range(u_range: tuple[float, float], what: str) -> tuple[float, float, float]:
+    u0, u1 = float(u_range[0]), float(u_range[1])
+    if not (math.isfinite(u0) and math.isfinite(u1) and u1 > u0):
+        raise InputError(f"{what} range must increase, got {u_range}")
+    return u0, u1, 1e-5 * (u1 - u0)  # stencil step relative to the parameter range
+
+
+def curve_length(curve: Curve, u_range: tuple[float, float], dense: int = 200_001) -> float:
+    """Length [m] of the curve (x(u), y(u)), u in ``u_range`` (trapezoidal integral of |dp/du| on a dense grid)."""
+    u0, u1, h = _check_range(u_range, "curve parameter")
+    return float(_arc_table(curve, (u0, u1), dense, h)[1][-1])
+
+
+@dataclass(frozen=True)
+class Timing:
+    """How a path is walked: arc length s(t) [m] with its rates s' [m/s] and s'' [m/s^2] at the sample times."""
+
+    t: np.ndarray
+    s: np.ndarray
+    ds: np.ndarray
+    dds: np.ndarray
+
+
+def walk_curve(curve: Curve, u_range: tuple[float, float], speed: QuantityLike | None = None, *,
+               timing: Timing | Callable[[float], Timing] | None = None, samples: int = 400,
+               dense: int = 200_001) -> PathSamples:
+    """The planar curve p(u) = (x(u), y(u)) [m] walked in time: at constant tangential ``speed`` (``samples``
+    equal arc-length steps, both ends included), or along ``timing`` (arc length over time, e.g. a trapezoidal
+    move over the curve's length; a callable gets the length and returns the :class:`Timing`).
+
+    Chain rule with s' = |p_u| u': u' = s'/|p_u|, u'' = s''/|p_u| - s'^2 (p_u . p_uu)/|p_u|^4,
+    v = p_u u', a = p_uu u'^2 + p_u u'' (exact in the curve's derivatives, here 5-point differences)."""
+    u0, u1, h = _check_range(u_range, "curve parameter")
+    if (speed is None) == (timing is None):
+        raise InputError("give either a constant path speed or a timing (a motion profile along the path)")
+    u, s = _arc_table(curve, (u0, u1), dense, h)
+    length = float(s[-1])
+    if timing is None:
+        v = to_si(speed, "velocity", "speed")
+        if not v > 0:
+            raise InputError(f"path speed must be > 0, got {speed!r}")
+        if samples < 2:
+            raise InputError(f"samples must be >= 2, got {samples}")
+        s_k = np.linspace(0.0, length, samples + 1)
+        tm = Timing(s_k / v, s_k, np.full_like(s_k, v), np.zeros_like(s_k))
+    else:
+        tm = timing(length) if callable(timing) else timing
+        if np.any(tm.s < -1e-9 * length) or np.any(tm.s > length * (1 + 1e-6)):
+            raise InputError(f"the timing walks s = {float(np.min(tm.s)):.6g} to {float(np.max(tm.s)):.6g} m, "
+                             f"outside the path's length 0 to {length:.6g} m")
+    uk = np.interp(np.clip(tm.s, 0.0, length), s, u)
+    x, xu, xuu, y, yu, yuu = _xy_derivatives(curve, uk, h)
+    sp = np.hypot(xu, yu)
+    if np.any(sp <= 1e-12 * max(float(np.max(sp)), 1e-300)):
+        i = int(np.argmin(sp))
+        raise InputError(f"the path stops (dp/du = 0) at sample {i} (x = {x[i] * 1e3:.4g} mm, y = {y[i] * 1e3:.4g} mm)")
+    du = tm.ds / sp
+    ddu = tm.dds / sp - tm.ds**2 * (xu * xuu + yu * yuu) / sp**4
+    return PathSamples(t=tm.t, x=x, y=y, vx=xu * du, vy=yu * du, ax=xuu * du**2 + xu * ddu,
+                       ay=yuu * du**2 + yu * ddu, length=length)
+
+
+def walk_polar(r: Callable[[np.ndarray], np.ndarray], speed: QuantityLike | None = None,
+               centre: tuple[float, float] = (0.0, 0.0), phi_range: tuple[float, float] = (0.0, 2 * math.pi),
+               samples: int = 400, dense: int = 200_001, *, timing: Timing | Callable[[float], Timing] | None = None,
+               ) -> PathSamples:
+    """The polar curve x = x_c + r cos(phi), y = y_c + r sin(phi) [m], walked as :func:`walk_curve` says
+    (constant tangential ``speed``: ``samples`` equal arc-length steps, ``samples + 1`` points)."""
+    xc, yc = float(centre[0]), float(centre[1])
+
+    def curve(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        rr = np.asarray(r(phi), float)
+        return xc + rr * np.cos(phi), yc + rr * np.sin(phi)
+
+    return walk_curve(curve, phi_range, speed, timing=timing, samples=samples, dense=dense)
+
+
+def spline_through(points: np.ndarray, closed: bool = False) -> tuple[Curve, tuple[float, float]]:
+    """A C2 cubic spline through sampled points (N x 2, metres), parametrised by chord length (a periodic spline
+    when ``closed``: the first point is repeated at the end); returns (curve, u_range) for :func:`walk_curve`."""
+    from scipy.interpolate import CubicSpline
+
+    pts = np.asarray(points, float)
+    if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 3:
+        raise InputError(f"a sampled path needs at least 3 points (x, y), got an array of shape {pts.shape}")
+    if closed and np.hypot(*(pts[-1] - pts[0])) > 0:
+        pts = np.vstack([pts, pts[:1]])
+    chord = np.hypot(*np.diff(pts, axis=0).T)
+    if np.any(chord <= 0):
+        raise InputError(f"sampled path: point {int(np.argmin(chord)) + 1} repeats the point before it")
+    u = np.concatenate([[0.0], np.cumsum(chord)])
+    sp = CubicSpline(u, pts, bc_type="periodic" if closed else "natural")
+    pad = u[-1]  # the stencils look past the ends: a periodic spline wraps, a natural one extrapolates its cubic
+
+    def curve(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        ww = np.mod(w, pad) if closed else w
+        p = sp(ww)
+        return p[..., 0], p[..., 1]
+
+    return curve, (0.0, float(u[-1]))
 
 
 @dataclass(frozen=True)
@@ -123,6 +210,8 @@ class RPArm:
     arm_com: QuantityLike = "0 m"
     gravity: QuantityLike = "9.80665 m/s^2"
     name: str = "RP arm"
+    q1_min: QuantityLike | None = None
+    q1_max: QuantityLike | None = None
 
     def _si(self) -> tuple[float, ...]:
         return (to_si(self.reach_min, "length", "reach_min"), to_si(self.reach_max, "length", "reach_max"),
@@ -145,7 +234,8 @@ class RPArm:
             raise UnreachablePoseError(f"{self.name}: sample {i} (t = {path.t[i]:.4g} s, x = {x[i] * 1e3:.4g} mm, "
                                        f"y = {y[i] * 1e3:.4g} mm) needs q2 = {q2[i] * 1e3:.4g} mm, outside the "
                                        f"stroke {lo * 1e3:.4g} to {hi * 1e3:.4g} mm")
-        q1 = np.unwrap(np.arctan2(y, x))
+        q1 = _within_limits(np.unwrap(np.arctan2(y, x)), _angle_limits(self.q1_min, self.q1_max, "q1"),
+                            "q1", self.name, path)
         dq2 = (x * vx + y * vy) / q2
         dq1 = (x * vy - y * vx) / q2**2
         ddq2 = (vx**2 + vy**2 + x * ax + y * ay) / q2 - dq2**2 / q2
@@ -164,3 +254,230 @@ class RPArm:
         _lo, _hi, mc, J, ma, ra, g = self._si()
         T = 0.5 * (J + mc * m.q2**2) * m.dq1**2 + 0.5 * mc * m.dq2**2
         return T + (ma * ra + mc * m.q2) * g * np.sin(m.q1)
+
+
+def _angle_limits(lo: QuantityLike | None, hi: QuantityLike | None, joint: str) -> tuple[float, float] | None:
+    """(lo, hi) [rad] of a revolute joint, or None without limits."""
+    if lo is None and hi is None:
+        return None
+    a = -math.inf if lo is None else to_si(lo, "angle", f"{joint}_min")
+    b = math.inf if hi is None else to_si(hi, "angle", f"{joint}_max")
+    if not b > a:
+        raise InputError(f"{joint} limits must increase, got {lo!r} to {hi!r}")
+    return a, b
+
+
+def _within_limits(q: np.ndarray, limits: tuple[float, float] | None, joint: str, name: str,
+                   path: PathSamples) -> np.ndarray:
+    """The unwrapped joint angles shifted by whole turns into the limits (the first sample decides the turn);
+    the first sample outside them is named in an :class:`UnreachablePoseError`."""
+    if limits is None:
+        return q
+    lo, hi = limits
+    if math.isfinite(lo):
+        q = q - 2 * math.pi * math.floor((q[0] - lo) / (2 * math.pi))  # q[0] in [lo, lo + 2 pi)
+    elif math.isfinite(hi):
+        q = q - 2 * math.pi * math.ceil((q[0] - hi) / (2 * math.pi))  # q[0] in (hi - 2 pi, hi]
+    tol = 1e-9 * max(1.0, abs(lo) if math.isfinite(lo) else 0.0, abs(hi) if math.isfinite(hi) else 0.0)
+    bad = (q < lo - tol) | (q > hi + tol)
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise UnreachablePoseError(f"{name}: sample {i} (t = {path.t[i]:.4g} s, x = {path.x[i] * 1e3:.4g} mm, "
+                                   f"y = {path.y[i] * 1e3:.4g} mm) needs {joint} = {math.degrees(q[i]):.4g} deg, "
+                                   f"outside its limits {math.degrees(lo):.4g} to {math.degrees(hi):.4g} deg")
+    return q
+
+
+@dataclass(frozen=True)
+class RRJointMotion:
+    """Joint angles, rates and accelerations of an RR arm along a path (SI: rad, s)."""
+
+    t: np.ndarray
+    q1: np.ndarray
+    q2: np.ndarray
+    dq1: np.ndarray
+    dq2: np.ndarray
+    ddq1: np.ndarray
+    ddq2: np.ndarray
+
+
+@dataclass(frozen=True)
+class RRArm:
+    """Planar RR (elbow) arm, shoulder at the origin: links l1, l2; q1 from +x, q2 of link 2 relative to link 1;
+    ``elbow`` picks the branch: "down" q2 > 0 (link 2 turned counter-clockwise from link 1, so the elbow lies
+    clockwise of the shoulder-tip line), "up" q2 < 0.
+
+    Dynamics data: link masses m1, m2 with centres of mass at lc1, lc2 from their proximal joints and centroidal
+    inertias I1, I2; ``payload`` a point mass at the tip. Lagrange's equations of the planar elbow manipulator
+    (Spong, Hutchinson & Vidyasagar, Robot Modeling and Control, Sec. 7.4.2):
+
+        d11 = m1 lc1^2 + m2 (l1^2 + lc2^2 + 2 l1 lc2 cos q2) + I1 + I2,  d12 = m2 (lc2^2 + l1 lc2 cos q2) + I2,
+        d22 = m2 lc2^2 + I2,  h = -m2 l1 lc2 sin q2,
+        tau1 = d11 q1'' + d12 q2'' + 2 h q1' q2' + h q2'^2 + (m1 lc1 + m2 l1) g cos q1 + m2 lc2 g cos(q1 + q2),
+        tau2 = d12 q1'' + d22 q2'' - h q1'^2 + m2 lc2 g cos(q1 + q2),
+
+    with the payload merged into link 2 (mass, centre of mass and inertia by the parallel-axis theorem)."""
+
+    l1: QuantityLike
+    l2: QuantityLike
+    elbow: str = "down"
+    link1_mass: QuantityLike = "0 kg"
+    link2_mass: QuantityLike = "0 kg"
+    link1_com: QuantityLike | None = None  # default l1/2
+    link2_com: QuantityLike | None = None  # default l2/2
+    link1_inertia: QuantityLike = "0 kg*m^2"  # about the link's centre of mass
+    link2_inertia: QuantityLike = "0 kg*m^2"
+    payload: QuantityLike = "0 kg"
+    gravity: QuantityLike = "9.80665 m/s^2"
+    q1_min: QuantityLike | None = None
+    q1_max: QuantityLike | None = None
+    q2_min: QuantityLike | None = None
+    q2_max: QuantityLike | None = None
+    name: str = "RR arm"
+
+    def _si(self) -> tuple[float, ...]:
+        l1, l2 = to_si(self.l1, "length", "l1"), to_si(self.l2, "length", "l2")
+        if not (l1 > 0 and l2 > 0):
+            raise InputError(f"{self.name}: link lengths must be > 0, got l1 = {self.l1!r}, l2 = {self.l2!r}")
+        if self.elbow not in ("up", "down"):
+            raise InputError(f"{self.name}: elbow must be 'up' or 'down', got {self.elbow!r}")
+        m1, m2 = to_si(self.link1_mass, "mass", "link1_mass"), to_si(self.link2_mass, "mass", "link2_mass")
+        lc1 = l1 / 2 if self.link1_com is None else to_si(self.link1_com, "length", "link1_com")
+        lc2 = l2 / 2 if self.link2_com is None else to_si(self.link2_com, "length", "link2_com")
+        I1, I2 = to_si(self.link1_inertia, "inertia", "link1_inertia"), to_si(self.link2_inertia, "inertia",
+                                                                                "link2_inertia")
+        mp, g = to_si(self.payload, "mass", "payload"), to_si(self.gravity, "acceleration", "gravity")
+        M2 = m2 + mp  # link 2 with the payload
+        lcm = (m2 * lc2 + mp * l2) / M2 if M2 > 0 else lc2
+        IM = I2 + m2 * (lc2 - lcm) ** 2 + mp * (l2 - lcm) ** 2
+        return l1, l2, m1, lc1, I1, M2, lcm, IM, g
+
+    def forward(self, q1: np.ndarray, q2: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Tip position (x, y) [m]."""
+        l1, l2 = self._si()[:2]
+        return l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)
+
+    def inverse(self, path: PathSamples) -> RRJointMotion:
+        """Joint angles by the law of cosines, rates q' = J^-1 v and accelerations q'' = J^-1 (a - J' q').
+
+        Raises UnreachablePoseError (the first sample out of the annulus |l1 - l2| <= r <= l1 + l2, or outside a
+        joint limit) or SingularPoseError (the first sample with sin q2 = 0: arm stretched or folded)."""
+        l1, l2 = self._si()[:2]
+        x, y = path.x, path.y
+        c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
+        tol = 1e-9
+        bad = np.abs(c2) > 1 + tol
+        c2c = np.clip(c2, -1.0, 1.0)
+        sing = np.sqrt(1 - c2c * c2c) < 1e-4  # within 0.006 deg of stretched or folded: rates 1e4 x the tool speed
+        if np.any(bad) and not (np.any(sing) and np.argmax(sing) < np.argmax(bad)):
+            i = int(np.argmax(bad))
+            r = math.hypot(x[i], y[i])
+            raise UnreachablePoseError(f"{self.name}: sample {i} (t = {path.t[i]:.4g} s, x = {x[i] * 1e3:.4g} mm, "
+                                       f"y = {y[i] * 1e3:.4g} mm) is {r * 1e3:.4g} mm from the shoulder, outside the "
+                                       f"reach {abs(l1 - l2) * 1e3:.4g} to {(l1 + l2) * 1e3:.4g} mm")
+        c2 = c2c
+        s2 = np.sqrt(1 - c2 * c2) * (1.0 if self.elbow == "down" else -1.0)
+        if np.any(sing):
+            i = int(np.argmax(sing))
+            raise SingularPoseError(f"{self.name}: sample {i} (t = {path.t[i]:.4g} s, x = {x[i] * 1e3:.4g} mm, "
+                                    f"y = {y[i] * 1e3:.4g} mm) has the arm {'stretched' if c2[i] > 0 else 'folded'} "
+                                    f"(q2 = {math.degrees(math.atan2(s2[i], c2[i])):.4g} deg, sin q2 = {s2[i]:.2g}): "
+                                    "the joint rates are undefined")
+        q2 = np.arctan2(s2, c2)
+        q1 = np.unwrap(np.arctan2(y, x) - np.arctan2(l2 * s2, l1 + l2 * c2))
+        q1 = _within_limits(q1, _angle_limits(self.q1_min, self.q1_max, "q1"), "q1", self.name, path)
+        q2 = _within_limits(q2, _angle_limits(self.q2_min, self.q2_max, "q2"), "q2", self.name, path)
+        s1, c1, s12, c12 = np.sin(q1), np.cos(q1), np.sin(q1 + q2), np.cos(q1 + q2)
+        j11, j12, j21, j22 = -l1 * s1 - l2 * s12, -l2 * s12, l1 * c1 + l2 * c12, l2 * c12
+        det = j11 * j22 - j12 * j21  # = l1 l2 sin q2
+        dq1 = (j22 * path.vx - j12 * path.vy) / det
+        dq2 = (-j21 * path.vx + j11 * path.vy) / det
+        w12 = dq1 + dq2
+        bx = path.ax + l1 * c1 * dq1**2 + l2 * c12 * w12**2  # a - J' q'
+        by = path.ay + l1 * s1 * dq1**2 + l2 * s12 * w12**2
+        ddq1 = (j22 * bx - j12 * by) / det
+        ddq2 = (-j21 * bx + j11 * by) / det
+        return RRJointMotion(path.t, q1, q2, dq1, dq2, ddq1, ddq2)
+
+    def joint_loads(self, m: RRJointMotion) -> tuple[np.ndarray, np.ndarray]:
+        """(tau1, tau2) [N m] from Lagrange's equations (class docstring)."""
+        l1, _l2, m1, lc1, I1, M2, lc2, I2, g = self._si()
+        c2 = np.cos(m.q2)
+        d11 = m1 * lc1**2 + M2 * (l1**2 + lc2**2 + 2 * l1 * lc2 * c2) + I1 + I2
+        d12 = M2 * (lc2**2 + l1 * lc2 * c2) + I2
+        d22 = M2 * lc2**2 + I2
+        h = -M2 * l1 * lc2 * np.sin(m.q2)
+        g2 = M2 * lc2 * g * np.cos(m.q1 + m.q2)
+        tau1 = d11 * m.ddq1 + d12 * m.ddq2 + 2 * h * m.dq1 * m.dq2 + h * m.dq2**2 + (m1 * lc1 + M2 * l1) * g * np.cos(
+            m.q1) + g2
+        tau2 = d12 * m.ddq1 + d22 * m.ddq2 - h * m.dq1**2 + g2
+        return tau1, tau2
+
+    def energy(self, m: RRJointMotion) -> np.ndarray:
+        """T + V [J] of the two links and the payload (from the centres of mass' velocities, not from d_ij)."""
+        l1, _l2, m1, lc1, I1, M2, lc2, I2, g = self._si()
+        w1, w12 = m.dq1, m.dq1 + m.dq2
+        v1 = lc1 * w1
+        vx2 = -l1 * np.sin(m.q1) * w1 - lc2 * np.sin(m.q1 + m.q2) * w12
+        vy2 = l1 * np.cos(m.q1) * w1 + lc2 * np.cos(m.q1 + m.q2) * w12
+        T = 0.5 * (m1 * v1**2 + I1 * w1**2 + M2 * (vx2**2 + vy2**2) + I2 * w12**2)
+        V = g * (m1 * lc1 * np.sin(m.q1) + M2 * (l1 * np.sin(m.q1) + lc2 * np.sin(m.q1 + m.q2)))
+        return T + V
+
+    def reach(self) -> tuple[float, float]:
+        """(inner, outer) radius [m] of the annulus the tip reaches without joint limits."""
+        l1, l2 = self._si()[:2]
+        return abs(l1 - l2), l1 + l2
+
+
+@dataclass(frozen=True)
+class LinkBody:
+    """A homogeneous body fixed to an arm's link, for the link's mass, first moment and inertia about its joint.
+
+    ``shape``: "rod" (slender, along the link, ``length``), "cylinder" (solid, along the link, ``length`` and
+    ``radius``), "tube" (hollow: ``radius`` outer, ``inner_radius``), "point" (a lumped mass). It starts at
+    ``start`` from the joint axis (rod, cylinder, tube) or sits there (point). Inertia about the joint axis
+    (normal to the plane): the centroidal transverse inertia of the shape (mechverify.components.mass_properties)
+    plus m c^2 with c the centre's distance (parallel-axis theorem)."""
+
+    shape: str
+    mass: QuantityLike
+    length: QuantityLike | None = None
+    radius: QuantityLike | None = None
+    inner_radius: QuantityLike | None = None
+    start: QuantityLike = "0 m"
+    name: str = ""
+
+    def properties(self) -> tuple[float, float, float]:
+        """(m [kg], m c [kg m], I about the joint [kg m^2])."""
+        from mechverify.components import mass_properties as mp
+
+        what = self.name or self.shape
+        m = to_si(self.mass, "mass", f"{what}.mass")
+        s0 = to_si(self.start, "length", f"{what}.start")
+        if self.shape == "point":
+            return m, m * s0, m * s0 * s0
+        if self.shape not in ("rod", "cylinder", "tube"):
+            raise InputError(f"{what}.shape: expected rod, cylinder, tube or point, got {self.shape!r}")
+        if self.length is None:
+            raise InputError(f"{what}.length: a {self.shape} needs its length")
+        L = to_si(self.length, "length", f"{what}.length")
+        if self.shape == "rod":
+            Ic = mp.rod_about_centre(self.mass, self.length)
+        elif self.radius is None:
+            raise InputError(f"{what}.radius: a {self.shape} needs its radius")
+        elif self.shape == "cylinder":
+            Ic = mp.solid_cylinder_transverse(self.mass, self.radius, self.length)
+        else:
+            Ic = mp.hollow_cylinder_transverse(self.mass, self.radius, self.inner_radius or "0 m", self.length)
+        c = s0 + L / 2
+        return m, m * c, float(Ic.m_as("kg*m**2")) + m * c * c
+
+
+def compose_bodies(bodies: tuple[LinkBody, ...] | list[LinkBody]) -> tuple[float, float, float]:
+    """(total mass [kg], centre of mass from the joint [m], inertia about the joint [kg m^2]) of bodies on a link."""
+    m = mr = J = 0.0
+    for b in bodies:
+        bm, bmr, bJ = b.properties()
+        m, mr, J = m + bm, mr + bmr, J + bJ
+    return m, (mr / m if m > 0 else 0.0), J

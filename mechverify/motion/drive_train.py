@@ -277,8 +277,9 @@ class DriveTrain:
         """Motor displacement per unit load displacement (product of the stage ratios)."""
         return float(np.prod([s.ratio_si for s in self.stages])) if self.stages else 1.0
 
-    def load_inertia_at_motor_si(self) -> float:
-        J = self.load.mass_or_inertia_si
+    def load_inertia_at_motor_si(self, extra: float = 0.0) -> float:
+        """Load (plus ``extra``, a mechanism's inertia or mass at the load side) reflected to the motor shaft."""
+        J = self.load.mass_or_inertia_si + extra
         for s in reversed(self.stages):
             J = J / s.ratio_si**2 + s.inertia_at_input_si
         return J
@@ -310,6 +311,9 @@ class DriveTrain:
         vs, as_ = max(float(np.max(np.abs(v))), 1e-300), max(float(np.max(np.abs(a))), 1e-300)
         d = _direction(v, a, vs, as_)
         effort = self.load.effort_si(x, v, a, d)
+        joint = getattr(profile, "joint_effort", None)  # a mechanism's joint motion brings the joint's own effort
+        if joint is not None:  # (its dynamics along a path), added to the load's; held at the end in standstill
+            effort = effort + np.interp(t - t[0], joint[0], joint[1])
         stage_data = []
         for st in reversed(self.stages):
             r = st.ratio_si
@@ -321,7 +325,7 @@ class DriveTrain:
             J_rotor = float(self.motor.rotor_inertia.m_as("kg*m**2"))
         torque = effort + J_rotor * a
         return TorqueDemand(self, t - t[0], v, a, torque, tuple(labels), tuple(reversed(stage_data)), tc,
-                            self.load_inertia_at_motor_si())
+                            self.load_inertia_at_motor_si(float(getattr(profile, "joint_inertia", 0.0) or 0.0)))
 
 
 __all__ = ["LinearLoad", "RotaryLoad", "DriveTrain", "TorqueDemand", "StageDemand", "rms", "G0"]

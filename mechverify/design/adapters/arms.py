@@ -1,0 +1,416 @@
+"""``planar_arm`` (an RP or RR arm walking a path) and the ``joint_motion`` profile that hands a joint to a drive.
+
+The arm's ``path`` table: a polar curve ``r`` in ``phi`` (``"8 cm - 1.5 cm * cos(4*phi)"``) about ``centre``,
+a Cartesian curve ``x``, ``y`` in ``u``, or sampled ``points`` (a C2 spline through them); walked at constant
+``speed``, or from rest to rest with a trapezoidal speed profile when ``acceleration`` is given too. Parsing only:
+kinematics and dynamics are :mod:`mechverify.mechanisms.paths` (``walk_curve``, ``RPArm``, ``RRArm``).
+
+A profile ``{ type = "joint_motion", mechanism = "arm", joint = "q1" }`` is the joint's motion along the path
+together with the joint's effort from the arm's dynamics (Lagrange); a ``drive`` on that profile adds it to its
+own load, so the motor checks follow from the path. Outputs: ``q1_peak_torque``, ``q2_peak_force`` (RP),
+``q2_peak_torque`` (RR), ``q1_inertia`` (largest inertia about q1 on the path), ``path_length``, ``path_time``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from mechverify.design.expressions import ExpressionError
+from mechverify.design.expressions import parse as parse_expression
+from mechverify.design.spec import REGISTRY, ComponentType, Field, Output
+from mechverify.errors import InputError, MechverifyError
+from mechverify.mechanisms import paths as mp
+from mechverify.motion.profiles import ProfileSamples
+from mechverify.units import Q, Quantity, to_si
+
+PATH_KEYS = {"curve": "str", "r": "str", "centre": "list", "phi": "list", "x": "str", "y": "str", "u": "list",
+             "points": "list", "closed": "bool", "speed": "velocity", "acceleration": "acceleration",
+             "samples": "int"}
+
+
+# ------------------------------------------------------------------------------------------ expressions of a curve
+
+def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> Any:
+    """A vectorised SI function of the curve parameter (radians for phi) from an expression with units."""
+    try:
+        e = parse_expression(expr_text)
+    except ExpressionError as exc:
+        raise InputError(f"{where}: {exc}") from None
+    unknown = sorted(n for n in e.names if n != var and n not in params)
+    if unknown:
+        raise InputError(f"{where}: unknown name {unknown[0]!r} (the curve's variable is {var!r}; parameters: "
+                         f"{', '.join(params) or 'none'})")
+    code = e._code
+
+    def f(w: np.ndarray) -> np.ndarray:
+        env = {**params, var: Q(np.asarray(w, float), "rad" if var == "phi" else "")}
+        stack: list[Any] = []
+        for op, arg in code:
+            if op == "const":
+                stack.append(arg)
+            elif op == "name":
+                stack.append(env[arg])
+            elif op == "neg":
+                stack.append(-stack.pop())
+            elif op == "op":
+                b, a = stack.pop(), stack.pop()
+                stack.append(a + b if arg == "+" else a - b if arg == "-" else a * b if arg == "*"
+                             else a / b if arg == "/" else a ** _plain(b))
+            else:
+                fname, n = arg
+                args = stack[len(stack) - n:]
+                del stack[len(stack) - n:]
+                stack.append(_call(fname, args))
+        (v,) = stack
+        return np.asarray(Q(v).to_base_units().magnitude if isinstance(v, Quantity) else v, float)
+
+    try:
+        f(np.array([0.1, 0.2]))
+    except Exception as exc:  # pint raises several types for mismatched units
+        raise InputError(f"{where}: {expr_text!r} cannot be evaluated ({exc})") from None
+    return f, e
+
+
+def _plain(v: Any) -> Any:
+    return v.to("dimensionless").magnitude if isinstance(v, Quantity) else v
+
+
+def _call(fname: str, args: list[Any]) -> Any:
+    if fname in ("sin", "cos", "tan"):
+        x = args[0].to("rad").magnitude if isinstance(args[0], Quantity) else args[0]
+        return {"sin": np.sin, "cos": np.cos, "tan": np.tan}[fname](x)
+    if fname == "sqrt":
+        return args[0] ** 0.5
+    if fname == "abs":
+        return abs(args[0])
+    if fname == "atan2":
+        y, x = (Q(a) for a in args)
+        return Q(np.arctan2(y.magnitude, x.to(y.units).magnitude), "rad")
+    red = np.minimum if fname == "min" else np.maximum
+    out = args[0]
+    for a in args[1:]:
+        out = Q(red(Q(out).magnitude, Q(a).to(Q(out).units).magnitude), Q(out).units)
+    return out
+
+
+def _length(v: Any, where: str) -> float:
+    return to_si(v, "length", where)
+
+
+def _pair(v: Any, where: str, kind: str) -> tuple[float, float]:
+    if not isinstance(v, list) or len(v) != 2:
+        raise InputError(f"{where}: expected two values [from, to] or [x, y], got {v!r}")
+    if kind == "number":
+        return tuple(float(to_si(x, "angle", where)) if isinstance(x, str) else float(x) for x in v)  # type: ignore
+    return to_si(v[0], kind, f"{where}[0]"), to_si(v[1], kind, f"{where}[1]")
+
+
+def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSamples:
+    """The path table of a ``planar_arm`` walked in time (key paths start at ``path``)."""
+    from mechverify.errors import suggest
+
+    for k in table:
+        if k not in PATH_KEYS:
+            hint = suggest(k, PATH_KEYS, 1)
+            raise InputError(f"path.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint
+                                                          else f" (allowed: {', '.join(PATH_KEYS)})"))
+    curve = table.get("curve")
+    if curve not in ("polar", "cartesian", "points"):
+        raise InputError(f"path.curve: expected 'polar', 'cartesian' or 'points', got {curve!r}")
+    samples = int(table.get("samples", 400))
+    if samples < 2:
+        raise InputError(f"path.samples: must be >= 2, got {samples}")
+    if "speed" not in table:
+        raise InputError("path.speed: missing (the tangential speed, constant or the cruise speed with acceleration)")
+    speed = to_si(table["speed"], "velocity", "path.speed")
+    if not speed > 0:
+        raise InputError(f"path.speed: must be > 0, got {table['speed']!r}")
+    if curve == "polar":
+        if "r" not in table:
+            raise InputError("path.r: missing (r as an expression in phi, e.g. \"8 cm - 1.5 cm * cos(4*phi)\")")
+        r, _ = _vector(str(table["r"]), "phi", params, "path.r")
+        xc, yc = _pair(table.get("centre", ["0 m", "0 m"]), "path.centre", "length")
+        rng = _pair(table.get("phi", ["0 deg", "360 deg"]), "path.phi", "angle")
+
+        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            rr = r(w)
+            return xc + rr * np.cos(w), yc + rr * np.sin(w)
+    elif curve == "cartesian":
+        if "x" not in table or "y" not in table:
+            raise InputError("path.x, path.y: a Cartesian curve needs both, as expressions in u")
+        fx, _ = _vector(str(table["x"]), "u", params, "path.x")
+        fy, _ = _vector(str(table["y"]), "u", params, "path.y")
+        rng = _pair(table.get("u", [0.0, 1.0]), "path.u", "number")
+
+        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            return fx(w), fy(w)
+    else:
+        pts = table.get("points")
+        if not isinstance(pts, list):
+            raise InputError("path.points: expected a list of [x, y] pairs with units")
+        xy = np.array([_pair(p, f"path.points[{i}]", "length") for i, p in enumerate(pts)])
+        fn, rng = mp.spline_through(xy, bool(table.get("closed", False)))
+    for k in (("r",) if curve != "polar" else ()) + (("x", "y") if curve != "cartesian" else ()) + \
+            (("points",) if curve != "points" else ()):
+        if k in table:
+            raise InputError(f"path.{k}: not a key of a {curve} curve")
+    if "acceleration" in table:
+        acc = to_si(table["acceleration"], "acceleration", "path.acceleration")
+
+        def timing(length: float) -> mp.Timing:
+            from mechverify.motion.profiles import trapezoidal
+
+            prof = trapezoidal(Q(length, "m"), max_velocity=Q(speed, "m/s"), acceleration=Q(acc, "m/s**2"))
+            t = np.linspace(0.0, prof.duration.m_as("s"), samples + 1)
+            st = prof.at(Q(t, "s"))
+            return mp.Timing(t, st["x"].m_as("m"), st["v"].m_as("m/s"), st["a"].m_as("m/s**2"))
+
+        return mp.walk_curve(fn, rng, timing=timing, samples=samples)
+    return mp.walk_curve(fn, rng, Q(speed, "m/s"), samples=samples)
+
+
+# ------------------------------------------------------------------------------------------ the arm
+
+@dataclasses.dataclass(frozen=True)
+class ArmOnPath:
+    """The built arm, the path it walks, its joint motion and joint efforts (SI arrays)."""
+
+    name: str
+    arm: Any
+    path: mp.PathSamples
+    motion: Any
+    efforts: tuple[np.ndarray, np.ndarray]
+    q1_inertia: np.ndarray  # inertia about the first joint at every sample [kg m^2]
+    kinds: tuple[str, str]  # "angle" / "length" of q1, q2
+
+    def joint(self, name: str) -> tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(kind, q, q', q'', effort) of joint ``q1`` or ``q2``."""
+        i = {"q1": 0, "q2": 1}[name]
+        m = self.motion
+        q, dq, ddq = ((m.q1, m.dq1, m.ddq1), (m.q2, m.dq2, m.ddq2))[i]
+        return self.kinds[i], q, dq, ddq, self.efforts[i]
+
+
+def _bodies(p: Mapping[str, Any], link: int | None) -> list[mp.LinkBody]:
+    out = []
+    for i, b in enumerate(p.get("bodies", [])):
+        where = f"bodies[{i}]"
+        if not isinstance(b, dict):
+            raise InputError(f"{where}: expected a table such as {{ shape = \"rod\", mass = \"99 g\", length = "
+                             f"\"25 cm\" }}")
+        extra = [k for k in b if k not in ("shape", "mass", "length", "radius", "inner_radius", "start", "name",
+                                           "link")]
+        if extra:
+            raise InputError(f"{where}.{extra[0]}: unknown key (allowed: shape, mass, length, radius, inner_radius, "
+                             "start, name, link)")
+        if "shape" not in b or "mass" not in b:
+            raise InputError(f"{where}: needs shape and mass")
+        on = int(b.get("link", 1))
+        if link is None and on != 1:
+            raise InputError(f"{where}.link: an RP arm's bodies turn with q1 (link 1); the carriage is carriage_mass")
+        if link is not None and on not in (1, 2):
+            raise InputError(f"{where}.link: expected 1 or 2, got {b.get('link')!r}")
+        if link is None or on == link:
+            out.append(mp.LinkBody(b["shape"], b["mass"], b.get("length"), b.get("radius"), b.get("inner_radius"),
+                                   b.get("start", "0 m"), b.get("name", where)))
+    return out
+
+
+def _build_arm(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
+    name = p["_name"]
+    cache = ctx.setdefault("planar_arms", {}) if isinstance(ctx, dict) else {}
+    if name not in cache:  # a joint_motion profile may have built it already
+        cache[name] = _arm_on_path(p, ctx)
+    return cache[name]
+
+
+def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
+    name, kind = p["_name"], p["kind"]
+    g = p.get("gravity", (ctx.get("requirements", {}) if isinstance(ctx, Mapping) else {}).get("g", "9.80665 m/s^2"))
+    params = ctx.get("parameters", {}) if isinstance(ctx, Mapping) else {}
+    try:
+        path = walk_path(p["path"], params)
+    except MechverifyError as exc:
+        msg = str(exc)
+        raise InputError(msg if msg.startswith("path") else f"path: {msg}") from None
+    lim = {k: p[k] for k in ("q1_min", "q1_max") if k in p}
+    if kind == "rp":
+        for k in ("l1", "l2", "elbow", "q2_min", "q2_max"):
+            if k in p:
+                raise InputError(f"{k}: not a key of an RP arm (its stroke is reach_min, reach_max)")
+        m_a, r_a, J_a = mp.compose_bodies(_bodies(p, None))
+        J = J_a + (to_si(p["arm_inertia"], "inertia", "arm_inertia") if "arm_inertia" in p else 0.0)
+        mc = to_si(p.get("carriage_mass", "0 kg"), "mass", "carriage_mass") + to_si(p.get("payload", "0 kg"), "mass",
+                                                                                     "payload")
+        if "reach_max" not in p:
+            raise InputError("reach_max: missing (the prismatic joint's longest extension)")
+        arm = mp.RPArm(reach_min=p.get("reach_min", "0 m"), reach_max=p["reach_max"], carriage_mass=Q(mc, "kg"),
+                       arm_inertia=Q(J, "kg*m^2"), arm_mass=Q(m_a, "kg"), arm_com=Q(r_a, "m"), gravity=g, name=name,
+                       **lim)
+        motion = arm.inverse(path)
+        J1 = J + mc * motion.q2**2
+        kinds = ("angle", "length")
+    else:
+        for k in ("reach_min", "reach_max", "carriage_mass", "arm_inertia"):
+            if k in p:
+                raise InputError(f"{k}: not a key of an RR arm (links l1, l2; bodies with link = 1 or 2; payload)")
+        if "l1" not in p or "l2" not in p:
+            raise InputError("l1, l2: an RR arm needs both link lengths")
+        l1 = to_si(p["l1"], "length", "l1")
+        links = []
+        for k in (1, 2):
+            m, c, Jj = mp.compose_bodies(_bodies(p, k))
+            links.append((m, c, Jj - m * c * c))  # centroidal
+        arm = mp.RRArm(p["l1"], p["l2"], p.get("elbow", "down"), Q(links[0][0], "kg"), Q(links[1][0], "kg"),
+                       Q(links[0][1], "m") if links[0][0] > 0 else None,
+                       Q(links[1][1], "m") if links[1][0] > 0 else None,
+                       Q(links[0][2], "kg*m^2"), Q(links[1][2], "kg*m^2"), p.get("payload", "0 kg"), g,
+                       name=name, **lim, **{k: p[k] for k in ("q2_min", "q2_max") if k in p})
+        motion = arm.inverse(path)
+        _l1, _l2, m1, lc1, I1, M2, lc2, I2, _g = arm._si()
+        J1 = m1 * lc1**2 + M2 * (l1**2 + lc2**2 + 2 * l1 * lc2 * np.cos(motion.q2)) + I1 + I2  # d11
+        kinds = ("angle", "angle")
+    return ArmOnPath(name, arm, path, motion, arm.joint_loads(motion), np.asarray(J1, float), kinds)
+
+
+def _peak(i: int, what: str) -> Any:
+    def fn(a: ArmOnPath, loads: Any) -> Any:
+        if (what == "force") != (a.kinds[i] == "length"):
+            raise InputError(f"{a.name}: q{i + 1} is {'prismatic' if a.kinds[i] == 'length' else 'revolute'}; "
+                             f"ask for q{i + 1}_peak_{'force' if a.kinds[i] == 'length' else 'torque'}")
+        return Q(float(np.max(np.abs(a.efforts[i]))), "N" if what == "force" else "N*m")
+    return fn
+
+
+_LIMIT = "joint limit (an angle); the first path sample outside it is named"
+PLANAR_ARM = REGISTRY.register(ComponentType(
+    name="planar_arm",
+    doc="An RP or RR arm in a vertical (or, with gravity = '0 m/s^2', horizontal) plane walking a path: inverse "
+        "kinematics with joint limits, joint rates and accelerations, joint torques and forces from Lagrange's "
+        "equations (inertial, Coriolis, centripetal, gravity). Drives get a joint through a joint_motion profile.",
+    fields=(
+        Field("kind", "choice", "rp (revolute + prismatic) or rr (two revolute joints)", required=True,
+              choices=("rp", "rr")),
+        Field("path", "table", "the tool path: curve = polar (r in phi, centre, phi = [from, to]) | cartesian (x, y "
+                               "in u, u = [from, to]) | points (points = [[x, y], ...], closed); speed; optional "
+                               "acceleration (trapezoidal from rest to rest) and samples (default 400)",
+              required=True),
+        Field("reach_min", "length", "RP: shortest extension of the prismatic joint"),
+        Field("reach_max", "length", "RP: longest extension of the prismatic joint"),
+        Field("carriage_mass", "mass", "RP: the carriage with the tool, a point mass at the extension q2"),
+        Field("arm_inertia", "inertia", "RP: inertia about q1 besides the bodies (e.g. a motor rotor)"),
+        Field("l1", "length", "RR: first link length"),
+        Field("l2", "length", "RR: second link length"),
+        Field("elbow", "choice", "RR: elbow down (q2 > 0) or up (q2 < 0)", choices=("down", "up")),
+        Field("bodies", "list", "bodies on the links: tables with shape = rod | cylinder | tube | point, mass, length, "
+                                "radius, inner_radius, start (distance from the joint), link (RR: 1 or 2)",
+              item="table"),
+        Field("payload", "mass", "a point mass at the tool (RP: on the carriage)"),
+        Field("gravity", "acceleration", "gravity in the plane, along -y (default requirements.g)"),
+        Field("q1_min", "angle", "q1 " + _LIMIT),
+        Field("q1_max", "angle", "q1 " + _LIMIT),
+        Field("q2_min", "angle", "RR: q2 " + _LIMIT),
+        Field("q2_max", "angle", "RR: q2 " + _LIMIT),
+    ),
+    build=lambda p, ctx: _build_arm(p, ctx),
+    outputs=(
+        Output("q1_peak_torque", "torque", "largest |joint torque| of q1 along the path", _peak(0, "torque")),
+        Output("q2_peak_force", "force", "RP: largest |joint force| of the prismatic joint", _peak(1, "force")),
+        Output("q2_peak_torque", "torque", "RR: largest |joint torque| of q2", _peak(1, "torque")),
+        Output("q1_inertia", "inertia", "largest inertia about q1 on the path (links and payload)",
+               lambda a, loads: Q(float(np.max(a.q1_inertia)), "kg*m^2")),
+        Output("path_length", "length", "length of the path", lambda a, loads: Q(a.path.length, "m")),
+        Output("path_time", "time", "time to walk the path", lambda a, loads: Q(float(a.path.t[-1] - a.path.t[0]),
+                                                                                  "s")),
+    ),
+))
+
+
+# ------------------------------------------------------------------------------------------ the joint_motion profile
+
+class JointMotionProfile:
+    """A joint of a ``planar_arm`` along its path, resolved when first used (the arm is a component, built after
+    the profiles): the joint's motion (exact rates from the inverse kinematics) and its effort from the arm's
+    dynamics, ``joint_effort`` (t [s], effort [N m or N]); ``joint_inertia`` the largest inertia (or, for a
+    prismatic joint, the mass) the joint moves, for the inertia ratio."""
+
+    def __init__(self, name: str, mechanism: str, joint: str, ctx: Mapping[str, Any]):
+        self.name, self.mechanism, self.joint, self._ctx = name, mechanism, joint, ctx
+        self._arm: ArmOnPath | None = None
+
+    def _resolve(self) -> ArmOnPath:
+        if self._arm is None:
+            from mechverify.errors import suggest
+
+            comps = self._ctx.get("components", {})
+            entry = comps.get(self.mechanism)
+            if entry is None or entry.type.name != "planar_arm":
+                arms = [k for k, e in comps.items() if e.type.name == "planar_arm"]
+                hint = suggest(self.mechanism, arms, 1)
+                raise InputError(f"profile {self.name!r}: mechanism {self.mechanism!r} is not a planar_arm component"
+                                 + (f"; did you mean {hint[0]!r}?" if hint
+                                    else f" (arms: {', '.join(arms) or 'none'})"))
+            if entry.obj is None:
+                if "kind" not in entry.params or "path" not in entry.params:
+                    raise InputError(f"profile {self.name!r}: the arm {self.mechanism!r} is invalid (see its errors)")
+                try:
+                    entry.obj = entry.type.build({**entry.params, "_name": self.mechanism}, self._ctx)
+                except MechverifyError as exc:
+                    raise InputError(f"profile {self.name!r}: arm {self.mechanism!r}: {exc}") from None
+            self._arm = entry.obj
+        return self._arm
+
+    @property
+    def kind(self) -> str:
+        return self._resolve().joint(self.joint)[0]
+
+    @property
+    def duration(self) -> Quantity:
+        t = self._resolve().path.t
+        return Q(float(t[-1] - t[0]), "s")
+
+    @property
+    def distance(self) -> Quantity:
+        kind, q, *_ = self._resolve().joint(self.joint)
+        return Q(float(q[-1] - q[0]), "m" if kind == "length" else "rad")
+
+    @property
+    def peak_velocity(self) -> Quantity:
+        kind, _q, dq, *_ = self._resolve().joint(self.joint)
+        return Q(float(np.max(np.abs(dq))), "m/s" if kind == "length" else "rad/s")
+
+    @property
+    def joint_effort(self) -> tuple[np.ndarray, np.ndarray]:
+        a = self._resolve()
+        return a.path.t - a.path.t[0], a.joint(self.joint)[4]
+
+    @property
+    def joint_inertia(self) -> float:
+        a = self._resolve()
+        if self.joint == "q1":
+            return float(np.max(a.q1_inertia))
+        if a.kinds[1] == "length":
+            return to_si(a.arm.carriage_mass, "mass", "carriage_mass")
+        _l1, _l2, _m1, _lc1, _I1, M2, lc2, I2, _g = a.arm._si()
+        return M2 * lc2**2 + I2  # d22
+
+    def sample(self, points_per_segment: int = 0) -> ProfileSamples:
+        kind, q, dq, ddq, _ = self._resolve().joint(self.joint)
+        t = self._resolve().path.t
+        t = t - t[0]
+        j = np.gradient(ddq, t, edge_order=2)
+        return ProfileSamples(kind, t, q.copy(), dq.copy(), ddq.copy(), j, tuple(f"sample {i}" for i in range(len(t))))
+
+
+REGISTRY.register(ComponentType(
+    "joint_motion", "A joint of a planar_arm along the arm's path: the joint's motion, and its torque or force from "
+                    "the arm's dynamics, which a drive on this profile adds to its own load.",
+    fields=(Field("mechanism", "str", "the planar_arm component", required=True),
+            Field("joint", "choice", "q1 (first joint) or q2", required=True, choices=("q1", "q2"))),
+    build=lambda p, ctx: JointMotionProfile(p["_name"], p["mechanism"], p["joint"], ctx), section="profiles"))
+
+__all__ = ["ArmOnPath", "JointMotionProfile", "walk_path", "PLANAR_ARM"]
