@@ -270,8 +270,8 @@ def test_drive_demand_computed_once_per_verify(monkeypatch):
     from mechverify.design.adapters import drives
 
     calls = []
-    real = drives.Drive._demands
-    monkeypatch.setattr(drives.Drive, "_demands", lambda self, ctx: calls.append(1) or real(self, ctx))
+    real = drives._demands
+    monkeypatch.setattr(drives, "_demands", lambda drive, ctx: calls.append(1) or real(drive, ctx))
     d = load(LIFT)
     rs = d.verify()
     assert sum(r.component == "lift" for r in rs) >= 3 and len(calls) == 1
