@@ -235,8 +235,8 @@ def test_one_edition_per_book():
         seen[key] = k
 
 
-#: Known exceptions, to be replaced by public accessors (issue 28: FrameResults).
-PRIVATE_ACCESS_ALLOWED = {("mechverify/checks/frames.py", "results._stresses_known")}
+#: Known exceptions, to be replaced by public accessors (none left).
+PRIVATE_ACCESS_ALLOWED: set[tuple[str, str]] = set()
 
 
 def test_checks_use_public_accessors_only():

@@ -118,7 +118,7 @@ def check_frame_fatigue(results: FrameResults, *, loading: str = "zero_to_max", 
     """Fatigue of every point along the members (worst material group governs)."""
     if loading not in FATIGUE_LOADINGS:
         raise ValueError(f"loading must be one of {FATIGUE_LOADINGS}, got {loading!r}")
-    results._stresses_known()
+    results.require_stresses()
     groups: dict[str, tuple[Material, list[np.ndarray], list[np.ndarray]]] = {}
     for d in results.diagrams():
         m = results.frame.members[results.frame.member_index[d.member]]

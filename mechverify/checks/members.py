@@ -375,7 +375,7 @@ def check_link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis:
     dim, n, _ = _LOAD_DIMS[c.load_kind]
     unit = {"force": "N", "force_per_length": "N/mm", "torque": "N*mm"}.get(dim, "")
     P = Q(abs(to_si(load, dim, "load")), {"force": "N", "force_per_length": "N/m", "torque": "N*m"}.get(dim, ""))
-    I = link._I_for(axis)
+    I = link.second_moment(axis)
     sub = (rf"\delta_{{max}} = \frac{{{tex(c.c_deflection)}\cdot {tex(P, unit or None)}\cdot "
            rf"({tex(link.length, 'mm')})^{{{n}}}}}{{{tex(link.material.require('E'), 'MPa')}\cdot {tex(I, 'mm**4')}}}"
            rf" = {tex(y, 'mm')}")

@@ -447,10 +447,12 @@ class Link:
 
     def deflection(self, case: str, load: Any, axis: str = "z") -> pint.Quantity:
         """Max deflection for a Table A-9 case over the link length; ``axis`` = direction of the load (y or z)."""
-        I = self._I_for(axis)
+        I = self.second_moment(axis)
         return beam_max_deflection(case, load, self.length, self.material.require("E"), I)
 
-    def _I_for(self, axis: str) -> pint.Quantity:
+    def second_moment(self, axis: str) -> pint.Quantity:
+        """Second moment of area [m^4] resisting a transverse load along ``axis`` (``"z"``: bending about
+        y, ``Iy``; ``"y"``: ``Iz``); an :class:`InputError` for any other axis."""
         if axis == "z":
             return self.section.Iy  # load along z bends about y
         if axis == "y":

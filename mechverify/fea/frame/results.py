@@ -321,14 +321,16 @@ class FrameResults:
         """The largest resultant bending moment ``sqrt(My² + Mz²)`` (exact: stationary points)."""
         return self._largest("M")
 
-    def _stresses_known(self) -> None:
+    def require_stresses(self) -> None:
+        """Raise :class:`~mechverify.errors.InputError` when a member's section has no extreme-fibre distances
+        (tabulated properties without ``c_y``, ``c_z``), so that its stresses are unknown."""
         for m in self.frame.members:
             if NO_FIBRES in m.section.method:
                 raise InputError(f"member {m.name}: its section (tabulated properties) has no extreme-fibre distances "
                                  "c_y, c_z, so its stresses are unknown; give them in section_from_properties")
 
     def _extreme(self, values: Any, with_fibre: bool = False) -> FrameExtreme:
-        self._stresses_known()
+        self.require_stresses()
         best: tuple[float, Diagram, int, int] | None = None
         for d in self.diagrams():
             v = np.asarray(values(d))
@@ -348,7 +350,7 @@ class FrameResults:
 
     def min_safety_factor(self) -> tuple[float, FrameExtreme]:
         """Smallest yield safety factor ``Sy / sigma_vm`` over all members (each with its material) and where."""
-        self._stresses_known()
+        self.require_stresses()
         best: tuple[float, FrameExtreme] | None = None
         for d in self.diagrams():
             m = self.frame.members[self.frame.member_index[d.member]]
