@@ -18,7 +18,7 @@ from mechverify.components import shafts as s
 from mechverify.errors import InputError
 from mechverify.fatigue import criteria, notch
 from mechverify.fatigue.endurance import corrected_endurance_limit
-from mechverify.fea.shafts import CriticalSpeed, ShaftAnalysis
+from mechverify.fea.shafts import CriticalSpeed, ModalCriticalSpeeds, ShaftAnalysis
 from mechverify.references import ref
 from mechverify.units import Q
 
@@ -53,6 +53,10 @@ class SectionStress:
     sigma_max: float  # Eq. 7-15
     Se: float
     factors: dict[str, float]
+    bore: float = 0.0
+    Ta: float = 0.0
+    Ma: float = 0.0
+    Mm: float = 0.0
 
     def n(self, criterion: str, Sut: float, Sy: float) -> float:
         """Fatigue safety factor by a DE criterion (proportional load line), Shigley Eqs. 7-7..7-14."""
@@ -85,6 +89,8 @@ def _section(shaft: s.Shaft, a: ShaftAnalysis, name: str, x: float, D: float, bo
     Kfs = notch.neuber_kf(Kts, Q(r, "m"), Q(Sut, "Pa"), "torsion").m if Kts > 1 and r > 0 else Kts
     v = a.at(x)
     M, T, N = v["M"], v["T"], max(v["N"], 0.0)
+    if M < 1e-9 * float(a.M.max()):  # round-off of a section the loads do not bend
+        M = 0.0
     Ma, Mm = (M, 0.0) if shaft.rotating else (0.0, M)
     Ta, Tm = shaft.torque_alternating_fraction * T, T
     sa, sm, smax = de_stresses(Ma, Mm, Ta, Tm, D, Kf, Kfs, bore=bore, N=N)
@@ -93,7 +99,7 @@ def _section(shaft: s.Shaft, a: ShaftAnalysis, name: str, x: float, D: float, bo
     el = corrected_endurance_limit(Q(Sut, "Pa"), finish=shaft.finish, d=Q(D, "m"), loading="bending",
                                    reliability=shaft.reliability)
     return SectionStress(name, x, D, Kt, Kts, Kf, Kfs, src, M, T, N, sa, sm, smax, el.Se.m_as("Pa"),
-                         el.factors.as_dict())
+                         el.factors.as_dict(), bore, Ta, Ma, Mm)
 
 
 def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
@@ -132,6 +138,52 @@ def _MPa(v: float) -> object:
     return Q(v / 1e6, "MPa")
 
 
+def _feature_warnings(shaft: s.Shaft) -> tuple[str, ...]:
+    """Caveats of unverified Table 7-1 rows the features' Kt come from (deduplicated)."""
+    return tuple(dict.fromkeys(w for f in shaft.features for w in shaft.data_warnings(f)))
+
+
+def _n_substituted(criterion: str, g: SectionStress, Sut: float, Sy: float, n: float) -> str:
+    """The DE criterion with the section's stresses and strengths substituted, = n (Shigley Eqs. 7-7 to 7-14)."""
+    a, m, e = tex(_MPa(g.sigma_a), "MPa"), tex(_MPa(g.sigma_m), "MPa"), tex(_MPa(g.Se), "MPa")
+    S = tex(_MPa(Sut if criterion in ("goodman", "gerber") else Sy), "MPa")
+    res = tex(n)
+    if g.sigma_a <= 0:
+        return rf"n = \frac{{{S}}}{{{m}}} = {res}"
+    if g.sigma_m <= 0:
+        return rf"n = \frac{{{e}}}{{{a}}} = {res}"
+    if criterion in ("goodman", "soderberg"):
+        return rf"n = \frac{{1}}{{\frac{{{a}}}{{{e}}} + \frac{{{m}}}{{{S}}}}} = {res}"
+    if criterion == "asme_elliptic":
+        return (rf"n = \frac{{1}}{{\sqrt{{\left(\frac{{{a}}}{{{e}}}\right)^{{2}} + "
+                rf"\left(\frac{{{m}}}{{{S}}}\right)^{{2}}}}}} = {res}")
+    # Gerber, Eq. 7-9 solved for n: n = (1/2)(Sut/sm)^2 (sa/Se) [-1 + sqrt(1 + (2 sm Se/(Sut sa))^2)]
+    return (rf"n = \frac{{1}}{{2}}\cdot \left(\frac{{{S}}}{{{m}}}\right)^{{2}}\cdot \frac{{{a}}}{{{e}}}\cdot "
+            rf"\left(-1 + \sqrt{{1 + \left(\frac{{2\cdot {m}\cdot {e}}}{{{S}\cdot {a}}}\right)^{{2}}}}\right) = {res}")
+
+
+def _smax_substituted(g: SectionStress) -> str:
+    """sigma'_max of Eq. 7-15 with the section's Kf, Kfs, moments and diameter substituted (solid: 32/(pi d^3),
+    hollow: the section modulus W = pi (D^4 - d^4)/(32 D) as a number; a tensile axial force adds Kf N/A)."""
+    D = tex(Q(g.d * 1e3, "mm"), "mm")
+    M = tex(Q(g.Ma + g.Mm, "N*m"), "N*m")
+    T = tex(Q(g.T + g.Ta, "N*m"), "N*m")
+    kf, kfs = tex(g.Kf), tex(g.Kfs)
+    if g.bore:
+        W = math.pi * (g.d**4 - g.bore**4) / (32 * g.d)
+        Wt = tex(Q(2 * W * 1e9, "mm**3"), "mm**3")
+        Ws = tex(Q(W * 1e9, "mm**3"), "mm**3")
+        bend, tors = rf"\frac{{{kf}\cdot {M}}}{{{Ws}}}", rf"\frac{{{kfs}\cdot {T}}}{{{Wt}}}"
+    else:
+        bend = rf"\frac{{32\cdot {kf}\cdot {M}}}{{\pi\cdot ({D})^{{3}}}}"
+        tors = rf"\frac{{16\cdot {kfs}\cdot {T}}}{{\pi\cdot ({D})^{{3}}}}"
+    if g.N > 0:
+        A = math.pi / 4 * (g.d**2 - g.bore**2)
+        bend += rf" + \frac{{{kf}\cdot {tex(Q(g.N, 'N'), 'N')}}}{{{tex(Q(A * 1e6, 'mm**2'), 'mm**2')}}}"
+    return (rf"\sigma'_{{max}} = \sqrt{{\left({bend}\right)^{{2}} + 3\cdot \left({tors}\right)^{{2}}}} = "
+            rf"{tex(_MPa(g.sigma_max), 'MPa')}")
+
+
 @check("shaft_fatigue", title="Shaft fatigue (distortion energy)", sf_kind="fatigue",
        source=ref("shigley10", "Sec. 7-4, Eqs. 7-7 to 7-14; Eqs. 6-18, 6-32 to 6-35"),
        explain=("At every feature (shoulder fillet, keyseat, groove, ...) and at the section of largest bending "
@@ -162,6 +214,8 @@ def check_shaft_fatigue(shaft: s.Shaft, a: ShaftAnalysis, *, criterion: str = "g
                 "Sy": _MPa(Sy), "sigma_a'": _MPa(g.sigma_a), "sigma_m'": _MPa(g.sigma_m)},
         notes=(f"Kt source: {g.kt_source}",
                "Marin factors: " + ", ".join(f"{k}={v:.3f}" for k, v in g.factors.items())),
+        substituted=_n_substituted(criterion, g, Sut, Sy, n) if math.isfinite(n) else "",
+        warnings=_feature_warnings(shaft),
         load_case=load_case,
         details={"sections": [{"name": sec.name, "x": sec.x, "n": ns[i], "Kf": sec.Kf, "Kfs": sec.Kfs}
                               for i, sec in enumerate(secs)], "criterion": criterion, **layout(shaft, a)})
@@ -184,7 +238,8 @@ def check_shaft_static_yield(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: f
         formula=r"\sigma'_{max} = \sqrt{(\sigma_m + \sigma_a)^2 + 3(\tau_m + \tau_a)^2} \le S_y",
         source=ref("shigley10", "Eqs. 7-15, 7-16"),
         inputs={"d": Q(g.d * 1e3, "mm"), "M": Q(g.M, "N*m"), "T": Q(g.T, "N*m"), "Kf": Q(g.Kf, ""),
-                "Kfs": Q(g.Kfs, "")}, load_case=load_case,
+                "Kfs": Q(g.Kfs, "")}, load_case=load_case, substituted=_smax_substituted(g),
+        warnings=_feature_warnings(shaft),
         details={"sections": [{"name": v.name, "x": v.x, "n": Sy / v.sigma_max if v.sigma_max else math.inf}
                               for v in secs]})
 
@@ -208,8 +263,17 @@ def check_shaft_bearing_slope(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf: 
         capacity=Q(allow, "rad"), required_sf=required_sf, title=f"Shaft slope at bearing {sup.name} ({sup.bearing})",
         formula=r"\theta = \sqrt{\theta_y^2 + \theta_z^2} \le \theta_{allow}\ \mathrm{(Table\ 7\text{-}2)}",
         source=ref("shigley10", "Table 7-2"), inputs={"bearing": sup.bearing}, load_case=load_case,
-        notes=("Table 7-2 values are typed from the book and flagged unverified in components/data/shafts.toml",),
+        substituted=_slope_substituted(a, sup.name),
+        notes=("Table 7-2 values checked against the printed table (see components/data/shafts.toml)",),
+        warnings=s.table_caveat("slope_allowance", sup.bearing, "Table 7-2 slope"),
         details={"slopes": {k: v for k, v in a.slopes.items()}})
+
+
+def _slope_substituted(a: ShaftAnalysis, name: str) -> str:
+    ty, tz = a.slope_components.get(name, (a.slopes[name], 0.0))
+    label = name.replace("_", r"\_")
+    return (rf"\theta_{{\mathrm{{{label}}}}} = \sqrt{{({tex(Q(ty, 'rad'), 'rad')})^{{2}} + "
+            rf"({tex(Q(tz, 'rad'), 'rad')})^{{2}}}} = {tex(Q(a.slopes[name], 'rad'), 'rad')}")
 
 
 @check("shaft_gear_deflection", title="Shaft deflection at the gears", sf_kind="deflection",
@@ -226,44 +290,66 @@ def check_shaft_gear_deflection(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf
             continue
         P = 0.0254 / ld.module
         allow = s.gear_deflection_allowance(P)
-        y = a.at(ld.x)["deflection"]
+        v = a.at(ld.x)
+        y = v["deflection"]
         out.append(CheckResult(
             check="shaft_gear_deflection", component=shaft.name, demand=Q(y * 1e3, "mm"),
             capacity=Q(allow * 1e3, "mm"), required_sf=required_sf, title=f"Shaft deflection at gear {ld.name}",
             formula=r"y = \sqrt{y_y^2 + y_z^2} \le y_{allow}(P)",
             source=ref("shigley10", "Table 7-2"), inputs={"module": Q(ld.module * 1e3, "mm"), "P": Q(P, "1/in")},
+            substituted=(rf"y = \sqrt{{({tex(Q(v['uy'] * 1e3, 'mm'), 'mm')})^{{2}} + "
+                         rf"({tex(Q(v['uz'] * 1e3, 'mm'), 'mm')})^{{2}}}} = {tex(Q(y * 1e3, 'mm'), 'mm')}"),
+            warnings=s.table_caveat("gear_deflection_allowance_in", what="Table 7-2 gear deflection"),
             load_case=load_case))
     return out
 
 
 @check("shaft_critical_speed", title="Shaft first critical speed", sf_kind="speed",
        source=ref("shigley10", "Sec. 7-6, Eqs. 7-23, 7-24"),
-       explain=("The operating speed against the first lateral critical speed from lumped masses (the shaft in "
-                "pieces and the mounted masses): the lower of Rayleigh's estimate (Eq. 7-23, static deflections "
-                "under the weights) and Dunkerley's (Eq. 7-24, influence coefficients), both from the frame model; "
-                "the margin omega_c/omega is asked to exceed the speed safety factor (Shigley suggests 2)."))
-def check_shaft_critical_speed(shaft: s.Shaft, cs: CriticalSpeed, *, required_sf: float = 1.25,
-                               load_case: str = "") -> CheckResult:
-    """Operating speed against min(Rayleigh, Dunkerley)."""
-    wc = min(cs.rayleigh, cs.dunkerley)
+       explain=("The operating speed against the first lateral critical speed: the first natural frequency of the "
+                "shaft on its bearings from the consistent-mass beam eigenproblem K phi = omega^2 M phi (the "
+                "shaft's distributed mass and the mounted masses; Shigley Sec. 7-6 identifies the first critical "
+                "speed with it), with Rayleigh's estimate (Eq. 7-23, static deflections under the weights, an "
+                "upper bound of the lumped system) and Dunkerley's (Eq. 7-24, influence coefficients, a lower "
+                "bound) from the same frame model as cross-checks; without the modal solution the lower of the "
+                "two closed forms decides. The margin omega_c/omega is asked to exceed the speed safety factor "
+                "(Shigley suggests 2)."))
+def check_shaft_critical_speed(shaft: s.Shaft, cs: CriticalSpeed, *, modal: ModalCriticalSpeeds | None = None,
+                               required_sf: float = 1.25, load_case: str = "") -> CheckResult:
+    """Operating speed against the modal first critical speed (or min(Rayleigh, Dunkerley) without ``modal``)."""
+    wc = modal.first if modal is not None else min(cs.rayleigh, cs.dunkerley)
     rpm = 60 / (2 * math.pi)
+    g = s.G_STANDARD
+    S1 = sum(m * g * y for m, y in zip(cs.masses, cs.deflections, strict=True))
+    S2 = sum(m * g * y * y for m, y in zip(cs.masses, cs.deflections, strict=True))
+    inputs: dict[str, object] = {"Rayleigh": Q(cs.rayleigh * rpm, "rpm"), "Dunkerley": Q(cs.dunkerley * rpm, "rpm"),
+                                 "masses": len(cs.masses)}
+    notes: tuple[str, ...] = ()
+    if modal is not None:
+        inputs = {"modal": Q(modal.first * rpm, "rpm"), **inputs}
+        notes = (f"capacity: first natural frequency of the consistent-mass beam model ({modal.elements} elements, "
+                 f"{modal.theory}); Rayleigh/Dunkerley on {len(cs.masses)} lumped masses as cross-checks",)
     return CheckResult(
         check="shaft_critical_speed", component=shaft.name, demand=Q(shaft.speed * rpm, "rpm"),
         capacity=Q(wc * rpm, "rpm"), required_sf=required_sf, title="Shaft first critical speed",
-        formula=r"\omega_1 = \sqrt{\frac{g\sum w_i y_i}{\sum w_i y_i^2}},\quad "
-                r"\frac{1}{\omega_1^2} = \sum \frac{1}{\omega_{ii}^2}",
-        source=ref("shigley10", "Eqs. 7-23, 7-24"),
-        inputs={"Rayleigh": Q(cs.rayleigh * rpm, "rpm"), "Dunkerley": Q(cs.dunkerley * rpm, "rpm"),
-                "masses": len(cs.masses)}, load_case=load_case)
+        formula=(r"K\phi = \omega^2 M\phi,\quad " if modal is not None else "")
+        + r"\omega_1 = \sqrt{\frac{g\sum w_i y_i}{\sum w_i y_i^2}},\quad "
+          r"\frac{1}{\omega_1^2} = \sum \frac{1}{\omega_{ii}^2}",
+        substituted=(rf"\omega_{{R}} = \sqrt{{\frac{{{tex(Q(g, 'm/s**2'), 'm/s**2')}\cdot {tex(Q(S1, 'N*m'), 'N*m')}}}"
+                     rf"{{{tex(Q(S2, 'N*m**2'), 'N*m**2')}}}}} = {tex(Q(cs.rayleigh, 'rad/s'), 'rad/s')}"),
+        source=ref("shigley10", "Sec. 7-6, Eqs. 7-23, 7-24"), notes=notes,
+        inputs=inputs, load_case=load_case)
 
 
-def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, float, float, float, float, float, float]]:
+def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, float, float, float, float, float, float,
+                                                         tuple[str, ...]]]:
     out = []
     for f in shaft.features:
         if f.kind != "keyseat":
             continue
         d = shaft.segment_at(f.x).diameter
         std = s.standard_key(d, shaft.key_standard)
+        caveat = s.key_caveat(d, shaft.key_standard) if not (f.width and f.depth) else ()
         b = f.width or std["b"]
         t1 = f.depth or std["t1"]
         h = std["h"] if not f.width else std["h"] * b / std["b"]
@@ -271,7 +357,7 @@ def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, floa
             raise InputError(f"shaft {shaft.name}: keyseat {f.name}: give the key length for the key checks")
         T = a.at(f.x)["T"]
         tau, p = s.key_stresses(T, d, b, h, t1, f.length)
-        out.append((f, d, b, h, tau, p, T, t1))
+        out.append((f, d, b, h, tau, p, T, t1, caveat))
     return out
 
 
@@ -292,8 +378,8 @@ def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float 
                                      rf"{tex(Q(tau / 1e6, 'MPa'))}"),
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "b": Q(b * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
-                        load_case=load_case)
-            for f, d, b, h, tau, p, T, t1 in _keys(shaft, a)]
+                        warnings=caveat, load_case=load_case)
+            for f, d, b, h, tau, p, T, t1, caveat in _keys(shaft, a)]
 
 
 @check("shaft_key_crushing", title="Parallel key crushing (bearing)", sf_kind="static",
@@ -313,5 +399,5 @@ def check_shaft_key_crushing(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: flo
                                      rf"{tex(Q(p / 1e6, 'MPa'))}"),
                         source=ref("shigley10", "Sec. 7-7"),
                         inputs={"d": Q(d * 1e3, "mm"), "h": Q(h * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
-                        load_case=load_case)
-            for f, d, b, h, tau, p, T, t1 in _keys(shaft, a)]
+                        warnings=caveat, load_case=load_case)
+            for f, d, b, h, tau, p, T, t1, caveat in _keys(shaft, a)]

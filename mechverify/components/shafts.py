@@ -35,6 +35,7 @@ from mechverify.units import Q, QuantityLike, to_si
 G_STANDARD = 9.80665
 DATA = Path(__file__).with_name("data") / "shafts.toml"
 SUPPORT_KINDS = ("pinned", "fixed", "spring")
+META_KEYS = ("source", "verified", "checked_against", "unverified_reason")  # table keys that are not rows
 KEYSEAT_KINDS = ("profile", "sled_runner")
 
 
@@ -119,9 +120,9 @@ class Support:
             raise InputError(f"support {self.name}: kind must be one of {SUPPORT_KINDS}, got {self.kind!r}")
         if self.kind == "spring" and not self.stiffness > 0:
             raise InputError(f"support {self.name}: a spring support needs a positive stiffness")
-        if self.bearing not in data()["slope_allowance"] or self.bearing in ("source", "verified"):
+        if self.bearing not in data()["slope_allowance"] or self.bearing in META_KEYS:
             raise InputError(f"support {self.name}: bearing must be one of "
-                             f"{sorted(k for k in data()['slope_allowance'] if k not in ('source', 'verified'))}, "
+                             f"{sorted(k for k in data()['slope_allowance'] if k not in META_KEYS)}, "
                              f"got {self.bearing!r}")
 
 
@@ -325,9 +326,17 @@ class Shaft:
         """(Kt bending, Kts torsion, source) of a feature: the Peterson fits for shoulder fillets and
         U-grooves, Shigley Table 7-1 for keyseats and retaining-ring grooves without a root radius, given
         values otherwise. Outside a fit's range the Table 7-1 estimate is used (stated in the source)."""
+        return self._kt(f)[:3]  # type: ignore[return-value]
+
+    def data_warnings(self, f: Feature) -> tuple[str, ...]:
+        """The caveat of a Table 7-1 row the feature's Kt comes from when that row is flagged unverified."""
+        key = self._kt(f)[3]
+        return table_caveat("kt_first_iteration", key, f"Kt of {f.name or f.kind}") if key else ()
+
+    def _kt(self, f: Feature) -> tuple[float, float, str, str | None]:
         t71 = data()["kt_first_iteration"]
         if f.Kt is not None:
-            return f.Kt, f.Kts if f.Kts is not None else f.Kt, "given"
+            return f.Kt, f.Kts if f.Kts is not None else f.Kt, "given", None
         d = self.segment_at(f.x).diameter
         if f.kind == "shoulder":
             small, large = self.step_at(f.x)  # type: ignore[misc]
@@ -335,27 +344,30 @@ class Shaft:
                 D_, d_, r_ = (Q(v, "m") for v in (large.diameter, small.diameter, f.radius))
                 kt = notch.kt_shoulder_fillet(D_, d_, r_, "bending").m
                 kts = notch.kt_shoulder_fillet(D_, d_, r_, "torsion").m
-                return kt, kts, "Peterson 3rd ed. Charts 3.4/3.12 fits"
+                return kt, kts, "Peterson 3rd ed. Charts 3.4/3.12 fits", None
             except ValidityError as exc:
-                row = t71["shoulder_sharp" if f.radius / small.diameter < 0.06 else "shoulder_well_rounded"]
-                return row["bending"], row["torsion"], f"Shigley 10th ed. Table 7-1 (fit out of range: {exc})"
+                key = "shoulder_sharp" if f.radius / small.diameter < 0.06 else "shoulder_well_rounded"
+                row = t71[key]
+                return row["bending"], row["torsion"], f"Shigley 10th ed. Table 7-1 (fit out of range: {exc})", key
         if f.kind == "keyseat":
             if f.keyseat == "sled_runner":
                 row = t71["keyseat_sled_runner"]
                 return row["bending"], t71["keyseat_end_mill"]["torsion"], \
-                    "Shigley 10th ed. Table 7-1 (sled runner; Kts of the profile keyseat)"
+                    "Shigley 10th ed. Table 7-1 (sled runner; Kts of the profile keyseat)", "keyseat_sled_runner"
             row = t71["keyseat_end_mill"]
-            return row["bending"], row["torsion"], "Shigley 10th ed. Table 7-1 (end-mill keyseat, r/d = 0.02)"
+            return row["bending"], row["torsion"], "Shigley 10th ed. Table 7-1 (end-mill keyseat, r/d = 0.02)", \
+                "keyseat_end_mill"
         if f.kind == "groove":
+            row = t71["retaining_ring_groove"]
             if f.radius > 0:
                 try:
                     kt = notch.kt_groove(Q(d, "m"), Q(d - 2 * f.depth, "m"), Q(f.radius, "m"), "bending").m
-                    row = t71["retaining_ring_groove"]
-                    return kt, min(kt, row["torsion"]), "Peterson 3rd ed. U-groove fit (bending); Kts <= Table 7-1"
+                    return kt, min(kt, row["torsion"]), "Peterson 3rd ed. U-groove fit (bending); Kts <= Table 7-1", \
+                        "retaining_ring_groove"
                 except ValidityError:
                     pass
-            row = t71["retaining_ring_groove"]
-            return row["bending"], row["torsion"], "Shigley 10th ed. Table 7-1 (retaining-ring groove)"
+            return row["bending"], row["torsion"], "Shigley 10th ed. Table 7-1 (retaining-ring groove)", \
+                "retaining_ring_groove"
         raise InputError(f"feature {f.name}: no Kt")  # pragma: no cover (validated)
 
     def notch_radius(self, f: Feature) -> float:
@@ -408,14 +420,45 @@ def dunkerley_critical_speed(masses: Sequence[float], self_influence: Sequence[f
     return 1.0 / math.sqrt(s)
 
 
+# ------------------------------------------------------------------------------------------ provenance
+def table_caveat(table: str, row: str | None = None, what: str = "") -> tuple[str, ...]:
+    """("data not verified against source: ...",) when a table of ``shafts.toml`` (or its ``row``) is flagged
+    ``verified = false``; () for a verified one. A row's own flag wins over the table's."""
+    tab = data()[table]
+    entry = tab.get(row, {}) if row else {}
+    ok = entry.get("verified", tab.get("verified", False)) if isinstance(entry, dict) else tab.get("verified", False)
+    if ok:
+        return ()
+    why = (entry.get("unverified_reason") if isinstance(entry, dict) else None) or tab.get("unverified_reason",
+                                                                                           "not checked")
+    return (f"data not verified against source: {what or table}{f' ({row})' if row else ''} "
+            f"[{tab.get('source', table)}: {why}]",)
+
+
 # ------------------------------------------------------------------------------------------ keys
-def din6885_key(d: float) -> dict[str, float]:
-    """DIN 6885-1 parallel key for shaft diameter d [m]: {b, h, t1} [m] (data file, row flagged unverified)."""
+def _din6885_row(d: float) -> dict[str, Any]:
     dm = d * 1e3
     for row in data()["din6885"]["rows"]:
         if row["d_min"] < dm <= row["d_max"]:
-            return {"b": row["b"] / 1e3, "h": row["h"] / 1e3, "t1": row["t1"] / 1e3}
+            return row
     raise ValidityError(f"DIN 6885-1 table covers shaft diameters 10..110 mm, got {dm:g} mm")
+
+
+def din6885_key(d: float) -> dict[str, float]:
+    """DIN 6885-1 parallel key for shaft diameter d [m]: {b, h, t1} [m] (rows checked against the public tables
+    named in the data file)."""
+    row = _din6885_row(d)
+    return {"b": row["b"] / 1e3, "h": row["h"] / 1e3, "t1": row["t1"] / 1e3}
+
+
+def key_caveat(d: float, standard: str = "din6885") -> tuple[str, ...]:
+    """The caveat of the standard key row for shaft diameter d [m] when it is flagged unverified."""
+    if standard == "din6885":
+        row = _din6885_row(d)
+        if row.get("verified", data()["din6885"].get("verified", False)):
+            return ()
+        return (f"data not verified against source: DIN 6885-1 key row {row['d_min']}..{row['d_max']} mm",)
+    return table_caveat("ansi_square_keys", what="Shigley Table 7-6 key row")
 
 
 def ansi_square_key(d: float) -> dict[str, float]:
@@ -449,9 +492,9 @@ def key_stresses(torque: float, d: float, b: float, h: float, t1: float, length:
 def slope_allowance(bearing: str) -> tuple[float, float]:
     """(lower, upper) typical maximum slope [rad] of a bearing or gear type, Shigley 10th ed. Table 7-2."""
     tab = data()["slope_allowance"]
-    if bearing not in tab or bearing in ("source", "verified"):
+    if bearing not in tab or bearing in META_KEYS:
         raise InputError(f"bearing type {bearing!r}: one of "
-                         f"{sorted(k for k in tab if k not in ('source', 'verified'))}")
+                         f"{sorted(k for k in tab if k not in META_KEYS)}")
     lo, hi = tab[bearing]
     return float(lo), float(hi)
 
@@ -466,4 +509,4 @@ def gear_deflection_allowance(diametral_pitch: float) -> float:
 __all__ = ["Segment", "Feature", "Support", "ShaftLoad", "Shaft", "gear_load", "pulley_load", "force_load",
            "belt_tensions", "section_moduli", "critical_speed_uniform", "rayleigh_critical_speed",
            "dunkerley_critical_speed", "din6885_key", "ansi_square_key", "standard_key",
-           "key_stresses", "slope_allowance", "gear_deflection_allowance"]
+           "key_stresses", "slope_allowance", "gear_deflection_allowance", "table_caveat", "key_caveat"]

@@ -28,7 +28,7 @@ from mechverify.components.shafts import (
     rayleigh_critical_speed,
 )
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.frame import Member, PointLoad, Support
+from mechverify.fea.frame.model import FramePointLoad, FrameSupport, Member
 from mechverify.units import Q
 
 MASS_PIECES = 4  # lumped masses per segment for the shaft's own mass in the critical speed
@@ -69,6 +69,7 @@ class ShaftAnalysis:
     reactions: dict[str, Reaction]
     slopes: dict[str, float]  # support name -> resultant slope [rad]
     node_slopes: dict[float, float] = field(default_factory=dict)  # x -> resultant slope [rad]
+    slope_components: dict[str, tuple[float, float]] = field(default_factory=dict)  # support -> (about y, about z)
 
     @property
     def M(self) -> np.ndarray:
@@ -86,8 +87,9 @@ class ShaftAnalysis:
         if not len(i):
             j = int(np.searchsorted(self.x, x))
             i = np.array([max(j - 1, 0), min(j, len(self.x) - 1)])
+        k = int(i[np.argmax(self.deflection[i])])
         return {"M": float(self.M[i].max()), "T": float(np.abs(self.T[i]).max()), "N": float(self.N[i].max()),
-                "deflection": float(self.deflection[i].max())}
+                "deflection": float(self.deflection[k]), "uy": float(self.uy[k]), "uz": float(self.uz[k])}
 
     def max_moment(self) -> tuple[float, float]:
         """(x, M) of the largest resultant bending moment (exact: the frame includes stationary points); of a flat
@@ -119,7 +121,7 @@ def _stations(shaft: Shaft, extra: list[float] = ()) -> list[float]:  # type: ig
 
 
 def _frame(shaft: Shaft, stations: list[float], theory: str = "timoshenko") -> Any:
-    from mechverify.fea.frame import Frame
+    from mechverify.fea.frame.analysis import Frame
 
     members = []
     for i in range(len(stations) - 1):
@@ -140,15 +142,15 @@ def _frame(shaft: Shaft, stations: list[float], theory: str = "timoshenko") -> A
             hold.append("rx")
         springs = {"y": Q(s.stiffness, "N/m"), "z": Q(s.stiffness, "N/m")} if s.kind == "spring" else {}
         if hold:
-            sups.append(Support(Q([s.x, 0, 0], "m"), kind="custom", hold=tuple(hold), springs=springs))
+            sups.append(FrameSupport(Q([s.x, 0, 0], "m"), kind="custom", hold=tuple(hold), springs=springs))
         else:
-            sups.append(Support(Q([s.x, 0, 0], "m"), kind="spring", springs=springs))
+            sups.append(FrameSupport(Q([s.x, 0, 0], "m"), kind="spring", springs=springs))
     return Frame(None, members, sups, theory=theory, name=shaft.name)
 
 
-def _point_loads(shaft: Shaft, loads: Any = None) -> list[PointLoad]:
+def _point_loads(shaft: Shaft, loads: Any = None) -> list[FramePointLoad]:
     lds = shaft.loads if loads is None else loads
-    return [PointLoad(Q([ld.x, 0, 0], "m"), force=Q(list(ld.force), "N"), moment=Q(list(ld.moment), "N*m"))
+    return [FramePointLoad(Q([ld.x, 0, 0], "m"), force=Q(list(ld.force), "N"), moment=Q(list(ld.moment), "N*m"))
             for ld in lds]
 
 
@@ -188,13 +190,15 @@ def analyse(shaft: Shaft, theory: str = "timoshenko") -> ShaftAnalysis:
         f, m = reac_q[keys[k]]
         reactions[s.name] = Reaction(s.name, s.x, tuple(float(c) for c in f.m_as("N")),  # type: ignore[arg-type]
                                      tuple(float(c) for c in m.m_as("N*m")))  # type: ignore[arg-type]
-    node_slopes = {}
+    node_slopes, node_rot = {}, {}
     for x in st:
         r = res.rotation(Q([x, 0, 0], "m")).m_as("rad")
         node_slopes[x] = float(math.hypot(r[1], r[2]))
-    slopes = {s.name: node_slopes[min(node_slopes, key=lambda v: abs(v - s.x))] for s in shaft.supports}
+        node_rot[x] = (float(r[1]), float(r[2]))
+    near = {s.name: min(node_slopes, key=lambda v: abs(v - s.x)) for s in shaft.supports}
+    slopes = {k: node_slopes[x] for k, x in near.items()}
     return ShaftAnalysis(shaft, arr["x"], arr["N"], arr["Vy"], arr["Vz"], arr["My"], arr["Mz"], arr["T"], arr["uy"],
-                         arr["uz"], reactions, slopes, node_slopes)
+                         arr["uz"], reactions, slopes, node_slopes, {k: node_rot[x] for k, x in near.items()})
 
 
 @dataclass(frozen=True)
@@ -251,4 +255,133 @@ def critical_speed(shaft: Shaft, theory: str = "timoshenko") -> CriticalSpeed:
                          tuple(x for x, _ in lm), tuple(y), tuple(dii))
 
 
-__all__ = ["Reaction", "ShaftAnalysis", "CriticalSpeed", "analyse", "critical_speed", "lumped_masses"]
+# ------------------------------------------------------------------------------------------ modal solution
+ELEMENTS_PER_SPAN = 80  # beam elements over the shaft length (more at short intervals: at least 2 per interval)
+
+
+@dataclass(frozen=True)
+class ModalCriticalSpeeds:
+    """Lateral natural frequencies of the shaft on its bearings [rad/s] (each a pair of equal whirl modes of the
+    round shaft) from the consistent-mass eigenproblem, with the mode shapes (transverse displacement at ``x``)."""
+
+    omegas: tuple[float, ...]
+    x: np.ndarray
+    shapes: np.ndarray  # (n_modes, len(x)), each normalised to a largest |w| of 1
+    elements: int
+    theory: str
+
+    @property
+    def first(self) -> float:
+        return self.omegas[0]
+
+
+def _beam_matrices(L: float, EI: float, mass_per_length: float, phi: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Stiffness and consistent mass of a planar beam element (dofs w1, theta1, w2, theta2).
+
+    Stiffness: Euler-Bernoulli (phi = 0) or Timoshenko with phi = 12 E I / (G A_s L^2) (Przemieniecki, Theory of
+    Matrix Structural Analysis, 1968, Sec. 5.6); mass: the cubic-Hermite consistent translational mass
+    m' L / 420 [[156, 22L, 54, -13L], ...] (Przemieniecki Sec. 11.3; Zienkiewicz, Taylor & Zhu Sec. 16.2)."""
+    c = EI / ((1 + phi) * L**3)
+    K = c * np.array([[12, 6 * L, -12, 6 * L],
+                      [6 * L, (4 + phi) * L**2, -6 * L, (2 - phi) * L**2],
+                      [-12, -6 * L, 12, -6 * L],
+                      [6 * L, (2 - phi) * L**2, -6 * L, (4 + phi) * L**2]])
+    M = mass_per_length * L / 420 * np.array([[156, 22 * L, 54, -13 * L],
+                                              [22 * L, 4 * L**2, 13 * L, -3 * L**2],
+                                              [54, 13 * L, 156, -22 * L],
+                                              [-13 * L, -3 * L**2, -22 * L, 4 * L**2]])
+    return K, M
+
+
+def modal_critical_speeds(shaft: Shaft, n_modes: int = 3, theory: str = "euler",
+                          elements: int = ELEMENTS_PER_SPAN) -> ModalCriticalSpeeds:
+    """Lateral critical speeds of the shaft as the natural frequencies of the generalized eigenproblem
+    ``K phi = omega^2 M phi`` (scipy.linalg.eigh, dense: a shaft has a few hundred dofs).
+
+    The shaft is meshed in planar beam elements (about ``elements`` over its length, at least two per interval
+    between segment steps, supports, loads and features) with the consistent mass of each segment's own section
+    (when ``shaft.shaft_mass``) plus the load masses lumped at their nodes. A round shaft on bearings that act alike
+    in y and z whirls in either plane, so one plane gives every lateral frequency. Supports: pinned holds w, fixed
+    holds w and theta, spring adds its radial stiffness to w. The frame's modal solution (FEA issue) did not exist
+    when this was written; this is the shaft's own eigenproblem on the same model (Shigley 10th ed. Sec. 7-6 calls
+    the first of these frequencies the first critical speed).
+
+    Raises:
+        InputError: no mass at all; the supports leave a free rigid motion (named); ``theory`` not euler/timoshenko.
+    """
+    import scipy.linalg as sla
+
+    if theory not in ("euler", "timoshenko"):
+        raise InputError(f"shaft {shaft.name}: theory must be 'euler' or 'timoshenko', got {theory!r}")
+    lm = [(ld.x, ld.mass) for ld in shaft.loads if ld.mass > 0]
+    if not lm and not shaft.shaft_mass:
+        raise InputError(f"shaft {shaft.name}: no masses for the critical speed (give load masses or shaft_mass)")
+    mat = shaft.material
+    E = mat.require("E").m_as("Pa")
+    G = mat.require("G").m_as("Pa") if theory == "timoshenko" else 0.0
+    rho = mat.require("density").m_as("kg/m**3") if shaft.shaft_mass else 0.0
+    st = _stations(shaft, [x for x, _ in lm])
+    L = shaft.length
+    nodes = [st[0]]
+    for a, b in zip(st[:-1], st[1:], strict=True):
+        n = max(2, math.ceil(elements * (b - a) / L))
+        nodes += [a + (b - a) * (j + 1) / n for j in range(n)]
+    x = np.array(nodes)
+    ndof = 2 * len(x)
+    K, M = np.zeros((ndof, ndof)), np.zeros((ndof, ndof))
+    for e in range(len(x) - 1):
+        le = x[e + 1] - x[e]
+        seg = shaft.segment_at(0.5 * (x[e] + x[e + 1]))
+        A = math.pi / 4 * (seg.diameter**2 - seg.bore**2)
+        I = math.pi / 64 * (seg.diameter**4 - seg.bore**4)
+        phi = 0.0
+        if theory == "timoshenko":
+            sec = sections.tube(Q(seg.diameter, "m"), inner_diameter=Q(seg.bore, "m")) if seg.bore else \
+                sections.circle(Q(seg.diameter, "m"))
+            phi = 12 * E * I / (G * sec.Asy.m_as("m**2") * le**2)
+        ke, me = _beam_matrices(le, E * I, rho * A, phi)
+        dofs = slice(2 * e, 2 * e + 4)
+        K[dofs, dofs] += ke
+        M[dofs, dofs] += me
+
+    def node(xv: float) -> int:
+        return int(np.argmin(np.abs(x - xv)))
+
+    for xv, m in lm:
+        M[2 * node(xv), 2 * node(xv)] += m
+    fixed: list[int] = []
+    for sup in shaft.supports:
+        i = node(sup.x)
+        if sup.kind == "spring":
+            K[2 * i, 2 * i] += sup.stiffness
+        else:
+            fixed.append(2 * i)
+            if sup.kind == "fixed":
+                fixed.append(2 * i + 1)
+    free = np.setdiff1d(np.arange(ndof), fixed)
+    Kf, Mf = K[np.ix_(free, free)], M[np.ix_(free, free)]
+    k = min(n_modes, len(free))
+    # M phi = mu K phi with mu = 1/omega^2: K is positive definite for a supported shaft, M may be singular (a
+    # massless shaft with point masses); the largest mu are the lowest frequencies.
+    try:
+        mu, vec = sla.eigh(Mf, Kf, subset_by_index=[len(free) - k, len(free) - 1])
+    except np.linalg.LinAlgError:
+        what = (f"free to tilt about bearing {shaft.supports[0].name}" if len(shaft.supports) == 1
+                else "free to move as a rigid body")
+        raise ModelError(f"shaft {shaft.name}: the supports leave the shaft {what} (the stiffness matrix is "
+                         "singular); give two bearings or a fixed one") from None
+    mu, vec = mu[::-1], vec[:, ::-1]
+    if not mu[0] > 0:
+        raise InputError(f"shaft {shaft.name}: no mass that moves laterally (load masses sit on the bearings)")
+    k = int(np.count_nonzero(mu > mu[0] * 1e-12))
+    mu, vec = mu[:k], vec[:, :k]
+    w2 = 1.0 / mu
+    full = np.zeros((k, ndof))
+    full[:, free] = vec.T
+    w = full[:, 0::2]
+    w /= np.abs(w).max(axis=1, keepdims=True)
+    return ModalCriticalSpeeds(tuple(float(v) for v in np.sqrt(w2)), x, w, len(x) - 1, theory)
+
+
+__all__ = ["Reaction", "ShaftAnalysis", "CriticalSpeed", "ModalCriticalSpeeds", "analyse", "critical_speed",
+           "lumped_masses", "modal_critical_speeds"]

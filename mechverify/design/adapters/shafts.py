@@ -1,13 +1,17 @@
 """``shaft``: a stepped shaft on bearings with gears, pulleys, couplings and masses (parse and call).
 
-The load case gives the transmitted ``torque``; each element takes ``torque_share`` of it (+1 the input,
--1 the output, -0.5 each of two hubs). Outputs ``reaction_A_radial`` ... ``reaction_D_axial`` are the
-bearing forces of the supports in their order (A the first), for ``ball_bearing`` load cases.
+The load case gives the transmitted ``torque`` (a number or another component's torque output); each element
+takes ``torque_share`` of it (+1 the input, -1 the output, -0.5 each of two hubs). Outputs
+``reaction_<support>_radial`` and ``reaction_<support>_axial`` give the bearing force at every support by its
+name (any number of supports; ``reaction_A_radial`` ... ``reaction_D_axial`` also name the first four by
+position), for the ``ball_bearing`` load cases that name the shaft; a name the shaft has no support for is a
+named error at the referring key.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Mapping
 from typing import Any
 
@@ -130,22 +134,55 @@ def _run(fn: Any, **kw: Any) -> Any:
 
 def _critical(c: ShaftDesign, loads: Any, ctx: Any) -> Any:
     sh, _ = c.solved(loads)
-    return cs.check_shaft_critical_speed(sh, fs.critical_speed(sh), required_sf=ctx.required_sf,
-                                         load_case=ctx.load_case)
+    return cs.check_shaft_critical_speed(sh, fs.critical_speed(sh), modal=fs.modal_critical_speeds(sh),
+                                         required_sf=ctx.required_sf, load_case=ctx.load_case)
+
+
+def _reaction_named(support: str, which: str) -> Any:
+    def fn(c: ShaftDesign, loads: Any) -> Any:
+        sh, a = c.solved(loads)
+        if support not in a.reactions:
+            raise InputError(f"{c.name} has no support named {support!r} (supports: "
+                             f"{', '.join(sp.name for sp in sh.supports)}); a bearing reads the reaction of a support "
+                             "the shaft has at its seat")
+        r = a.reactions[support]
+        return Q(r.radial if which == "radial" else r.axial, "N")
+    return fn
+
+
+_NAMED = re.compile(r"reaction_(.+)_(radial|axial)")
+
+
+@dataclasses.dataclass(frozen=True)
+class _ShaftType(ComponentType):
+    """The shaft's component type: besides its fixed outputs, ``reaction_<support>_radial|axial`` for every
+    support name (the names are the design's, so these outputs are made when asked for)."""
+
+    def output(self, name: str) -> Output | None:
+        out = super().output(name)
+        if out is not None:
+            return out
+        m = _NAMED.fullmatch(name)
+        if m is None:
+            return None
+        return Output(name, "force", f"{m[2]} force on support {m[1]}", _reaction_named(m[1], m[2]))
 
 
 def _reaction(i: int, which: str) -> Any:
     def fn(c: ShaftDesign, loads: Any) -> Any:
         sh, a = c.solved(loads)
-        if i >= len(sh.supports):
+        if LETTERS[i] in a.reactions:  # a support of that name first, else the i-th support
+            r = a.reactions[LETTERS[i]]
+        elif i >= len(sh.supports):
             raise InputError(f"{c.name}: output reaction_{LETTERS[i]}_{which}: the shaft has {len(sh.supports)} "
-                             "supports")
-        r = a.reactions[sh.supports[i].name]
+                             f"supports ({', '.join(sp.name for sp in sh.supports)})")
+        else:
+            r = a.reactions[sh.supports[i].name]
         return Q(r.radial if which == "radial" else r.axial, "N")
     return fn
 
 
-SHAFT = REGISTRY.register(ComponentType(
+SHAFT = REGISTRY.register(_ShaftType(
     name="shaft",
     doc="A stepped round shaft on bearings (pinned, fixed or elastic) with gears, pulleys, couplings and masses; "
         "reactions, bending in two planes, torque, slope and deflection on the frame FEA; fatigue at every feature "
@@ -184,6 +221,7 @@ SHAFT = REGISTRY.register(ComponentType(
         CheckSpec.of(cs.check_shaft_key_shear, _run(cs.check_shaft_key_shear), needs=("torque",)),
         CheckSpec.of(cs.check_shaft_key_crushing, _run(cs.check_shaft_key_crushing), needs=("torque",)),
     ),
-    outputs=tuple(Output(f"reaction_{L}_{w}", "force", f"{w} force on support {L} (the {i + 1}. in order)",
+    outputs=tuple(Output(f"reaction_{L}_{w}", "force", f"{w} force on the support named {L}, else on the "
+                         f"{i + 1}. support in order (reaction_<support name>_{w} for any support)",
                          _reaction(i, w)) for i, L in enumerate(LETTERS) for w in ("radial", "axial")),
 ))
