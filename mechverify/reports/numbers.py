@@ -12,6 +12,8 @@ unit, with the same significant-digit rule (no prefix change).
 from __future__ import annotations
 
 import math
+import re
+from functools import lru_cache
 from typing import Any
 
 import pint
@@ -152,4 +154,66 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     return f"{mant} {_PREFIX[e3]}{symbol}"
 
 
-__all__ = ["number", "quantity", "unit_symbol"]
+_QTY_TEXT = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*([^\d\s].*?)\s*$")
+_PREFIXES = ("p", "n", "µ", "u", "m", "c", "k", "M", "G", "T")
+
+
+@lru_cache(maxsize=512)
+def _user_unit(text: str) -> tuple[Any, str] | None:
+    """(dimensionality, unit) of a unit text the design file wrote, or ``None`` for one that needs no second
+    column: unknown, dimensionless, a temperature (offset units) or the SI unit of its kind with any prefix
+    (``kN`` beside ``N``, ``mm/s`` beside ``m/s``)."""
+    try:
+        q = Q(1, text)
+    except Exception:  # any unit pint does not know is simply not offered
+        return None
+    if q.dimensionless or not q._is_multiplicative:
+        return None
+    kind = _dims().get(q.dimensionality)
+    if kind is not None and kind[0] == "temperature":
+        return None
+    sym = unit_symbol(q.units)
+    if kind is not None:
+        bases = {kind[2], unit_symbol(kind[1]), "g" if kind[0] == "mass" else kind[2], "h" if kind[0] == "time" else ""}
+        if sym in bases or (len(sym) > 1 and sym[0] in _PREFIXES and sym[1:] in bases):
+            return None
+        if kind[0] == "stress" and sym in ("N/mm²", "MPa", "GPa"):
+            return None
+    return q.dimensionality, text
+
+
+def design_units(raw: Any, limit: int = 100_000) -> dict[Any, str]:
+    """The units a design file wrote, by kind: every ``"<number> <unit>"`` string in ``raw`` (the parsed TOML),
+    the first unit of each dimensionality that is not the report's own (``kgf*cm`` for torque, ``lbf``,
+    ``in``); at most ``limit`` strings are read (a huge generated file)."""
+    out: dict[Any, str] = {}
+    stack, seen = [raw], 0
+    while stack and seen < limit:
+        v = stack.pop()
+        if isinstance(v, dict):
+            stack.extend(reversed(list(v.values())))
+        elif isinstance(v, list | tuple):
+            stack.extend(reversed(list(v)))
+        elif isinstance(v, str):
+            seen += 1
+            m = _QTY_TEXT.match(v)
+            if m:
+                hit = _user_unit(m.group(1))
+                if hit is not None:
+                    out.setdefault(hit[0], hit[1])
+    return out
+
+
+def quantity_in(q: Any, units: dict[Any, str] | None) -> str:
+    """:func:`quantity`, followed by the same value in the design file's own unit of that kind when it wrote one
+    (``2.94 N·m (30.0 kgf·cm)``)."""
+    text = quantity(q)
+    if not units or not isinstance(q, Quantity) or (hasattr(q, "ndim") and q.ndim):
+        return text
+    unit = units.get(q.dimensionality)
+    if unit is None or text.endswith(" " + unit_symbol(unit)):
+        return text
+    return f"{text} ({quantity(q, unit=unit)})"
+
+
+__all__ = ["number", "quantity", "unit_symbol", "design_units", "quantity_in"]

@@ -22,8 +22,9 @@ from mechverify.materials import Material
 from mechverify.materials.material import PROPERTY_DIMENSIONS
 from mechverify.references import bibliography, keys_in
 from mechverify.reports.mathtext import formula_html
-from mechverify.reports.numbers import number, quantity
+from mechverify.reports.numbers import design_units, number, quantity, quantity_in
 from mechverify.reports.plots import figure_for, svg_data_uri, utilisation_chart
+from mechverify.reports.symbols import describe, symbol_html
 
 _PACKAGES = ("numpy", "scipy", "scikit-fem", "pint", "matplotlib", "jinja2", "weasyprint", "meshio", "trimesh")
 
@@ -32,9 +33,10 @@ def _anchor(*parts: str) -> str:
     return "-".join(re.sub(r"[^a-z0-9]+", "-", p.lower()).strip("-") for p in parts)
 
 
-def _value(v: Any) -> str:
+def _value(v: Any, units: dict[Any, str] | None = None) -> str:
+    """A value for a table; a quantity also in the design file's own unit of its kind (``units``)."""
     if isinstance(v, pint.Quantity):
-        return quantity(v)
+        return quantity_in(v, units)
     if isinstance(v, Material):
         return v.name
     if isinstance(v, dict):  # an inline table (e.g. motor_data): one "key = value" per line
@@ -109,14 +111,49 @@ class _Budget:
         return False
 
 
+class _Context:
+    """What a design gives every check view: the design file's own units and its derived values."""
+
+    def __init__(self, data: Any = None):
+        self.units = design_units(getattr(data, "raw", None) or {}) if data is not None else {}
+        trace = getattr(data, "trace", None)
+        self.entries: dict[str, tuple[str, Any]] = dict(trace.entries) if trace is not None else {}
+        self.cases = list(getattr(data, "load_cases", {}) or {})
+
+    def derived(self, component: str, load_case: str) -> list[tuple[str, str, Any]]:
+        """(key, expression, value) of the component's derived fields and its derived loads in ``load_case``."""
+        if not self.entries:
+            return []
+        out = []
+        prefixes = [f"components.{component}."]
+        prefixes += [f"load_cases.{c}.{component}." for c in self.cases
+                     if load_case == c or load_case.startswith(c + " (")]
+        for p, (src, v) in self.entries.items():
+            for pre in prefixes:
+                if p.startswith(pre) and "." not in p[len(pre):]:
+                    out.append((p[len(pre):], src, v))
+        return out
+
+
+def _same(a: Any, b: Any) -> bool:
+    if not (isinstance(a, pint.Quantity) and isinstance(b, pint.Quantity)) or a.dimensionality != b.dimensionality:
+        return False
+    try:
+        x, y = float(a.m_as(b.units)), float(b.magnitude)
+    except (TypeError, ValueError):
+        return False
+    return abs(x - y) <= 1e-9 * max(abs(x), abs(y)) and y != 0
+
+
 def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True,
-                budget: _Budget | None = None) -> dict[str, Any]:
+                budget: _Budget | None = None, ctx: _Context | None = None) -> dict[str, Any]:
     fu = r.factored_utilisation
     na = not_verifiable(r)
     view = {
         "anchor": _anchor(r.component, r.check), "component": r.component, "title": r.title or r.check,
-        "verdict": r.verdict.value, "na": _truncate(na), "demand": "n/a" if na else quantity(r.demand),
-        "capacity": "n/a" if na else quantity(r.capacity),
+        "verdict": r.verdict.value, "na": _truncate(na),
+        "demand": "n/a" if na else quantity_in(r.demand, ctx.units if ctx else None),
+        "capacity": "n/a" if na else quantity_in(r.capacity, ctx.units if ctx else None),
         "u": "n/a" if na else number(r.utilisation), "fu": "n/a" if na else number(fu),
         "sf": f"{r.required_sf:g}", "achieved_sf": "n/a" if na else number(r.safety_factor),
         "bar": f"{0 if na else min(fu, scale) / scale * 100:.1f}", "over": fu > scale and not na,
@@ -126,7 +163,7 @@ def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True,
         view.update({
             "formula": Markup(formula_html(r.formula)),
             "substituted": Markup(formula_html(substituted_latex(r))) if substituted_latex(r) else "",
-            "inputs": _inputs_view(r),
+            "inputs": _inputs_view(r, ctx),
             "notes": [_truncate(n) for n in r.notes if n != na], "warnings": [_truncate(w) for w in r.warnings],
             "source": r.source,
             "figure": None if na or (budget is not None and not budget.take()) else figure_for(r),
@@ -139,8 +176,17 @@ def substituted_latex(r: CheckResult) -> str:
     return getattr(r, "substituted", "") or ""
 
 
-def _inputs_view(r: CheckResult) -> list[tuple[str, str]]:
-    return [(k, _value(v)) for k, v in r.inputs.items()]
+def _inputs_view(r: CheckResult, ctx: _Context | None = None) -> list[dict[str, Any]]:
+    """One row per input: the formula's symbol, the value (also in the design file's unit), a description and,
+    for a value derived from parameters or another component's output, the expression it came from."""
+    derived = ctx.derived(r.component, r.load_case) if ctx else []
+    rows = []
+    for k, v in r.inputs.items():
+        sym, desc = describe(r.check, k)
+        origin = next((f"← {src} ({key})" for key, src, val in derived if key == k or _same(v, val)), "")
+        rows.append({"key": k, "symbol": symbol_html(sym) if sym else "",
+                     "value": _value(v, ctx.units if ctx else None), "description": desc, "origin": origin})
+    return rows
 
 
 def _material_view(m: Material) -> dict[str, Any]:
@@ -165,7 +211,8 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
     short = len(listed) < len(ordered)
     passing_unlisted = [r for r in ordered if r.verdict.value == "pass"] if short else []
     budget = _Budget(FIGURE_LIMIT)  # worst first: the figures go to the checks that matter most
-    views = {id(r): _check_view(r, scale, id(r) in shown, budget) for r in ordered}  # each figure rendered once
+    ctx = _Context(getattr(design, "data", None))
+    views = {id(r): _check_view(r, scale, id(r) in shown, budget, ctx) for r in ordered}  # each figure rendered once
     by_comp: dict[str, list[CheckResult]] = {}
     for r in ordered:
         by_comp.setdefault(r.component, []).append(r)
@@ -182,7 +229,7 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
                 src = f"design file: ← {derived[0]}"
             if isinstance(v, Material):
                 mats[v.name] = v
-            params.append({"name": k, "value": _value(v), "source": src})
+            params.append({"name": k, "value": _value(v, ctx.units), "source": src})
         figures = []
         if entry.type.figures is not None and entry.obj is not None and budget.take():
             for caption, fig in entry.type.figures(entry.obj, by_comp.get(name, [])):

@@ -1,0 +1,70 @@
+"""Inputs tables (issue 25): the formula's symbols with a description, derived inputs with the expression they
+came from, and the design file's own units beside the report's (a user who writes ``lbf`` or ``kgf*cm`` sees
+it). The design is ``mechverify init``'s starter with its payload as a parameter and the bearing load in lbf;
+the numbers are unit conversions (1 lbf = 4.4482216 N, 1 kgf·cm = 0.0980665 N·m), not published values."""
+
+from __future__ import annotations
+
+import re
+from importlib import resources
+
+import pytest
+
+from mechverify.design import load
+from mechverify.reports.numbers import design_units, quantity_in
+from mechverify.reports.render import render_html
+from mechverify.reports.symbols import describe, symbol_html
+from mechverify.units import Q
+
+STARTER = resources.files("mechverify.design").joinpath("starter.toml").read_text(encoding="utf-8")
+
+
+@pytest.fixture(scope="module")
+def html(tmp_path_factory):
+    text = STARTER.replace("[components.lift_screw]", '[parameters]\npayload = "300 N"\n\n[components.lift_screw]', 1)
+    text = text.replace('[load_cases.raise.lift_screw]\naxial_force = "300 N"',
+                        '[load_cases.raise.lift_screw]\naxial_force = "payload"', 1)
+    text = text.replace('[load_cases.raise.top_bearing]\naxial_force = "300 N"',
+                        '[load_cases.raise.top_bearing]\naxial_force = "67.443 lbf"', 1)
+    assert text.count("axial_force = \"payload\"") == 1 and "lbf" in text
+    path = tmp_path_factory.mktemp("inputs") / "design.toml"
+    path.write_text(text, encoding="utf-8")
+    d = load(path)
+    return render_html([(d, d.verify())], detail="all")
+
+
+def _row(html: str, symbol: str) -> str:
+    rows = re.findall(r"<tr><td>(.*?)</td><td class=\"value\">(.*?)</td><td>(.*?)</td></tr>", html)
+    hit = [r for r in rows if r[0] == symbol]
+    assert hit, symbol
+    return " | ".join(hit[0])
+
+
+def test_inputs_show_symbols_and_descriptions(html):
+    row = _row(html, str(symbol_html("d_3")))
+    assert "minor (root) diameter" in row and "mm" in row
+    assert "<i>d</i><sub>3</sub>" in html and "<i>S</i><sub>y</sub>" in html
+    assert "<th>Symbol</th>" in html and "<th>Description</th>" in html
+
+
+def test_derived_input_names_its_expression(html):
+    """The screw's axial force comes from the parameter ``payload``: its row says so."""
+    assert "← payload" in html
+    rows = [r for r in re.findall(r"<tr><td>(.*?)</td><td class=\"value\">(.*?)</td><td>(.*?)</td></tr>", html)
+            if "← payload" in r[2]]
+    assert rows and all("300 N" in r[1] for r in rows)
+
+
+def test_design_file_units_are_carried(html):
+    """The bearing's load was written in lbf: every force is also shown in lbf (300 N = 67.4 lbf)."""
+    assert "300 N (67.4 lbf)" in html
+
+
+def test_user_units_helpers():
+    units = design_units({"a": {"t": "30 kgf*cm", "l": "450 mm", "f": "2 kN", "s": "fixed-pinned", "T": "20 degC"}})
+    assert list(units.values()) == ["kgf*cm"]  # mm, kN: the report's own units (any SI prefix); degC: offset
+    assert quantity_in(Q(30, "kgf*cm"), units) == "2.94 N·m (30.0 kgf·cm)"
+    assert quantity_in(Q(1, "m"), units) == "1000 mm"
+    assert describe("bearing_life", "C")[1] == "basic dynamic load rating"
+    assert describe("spring_buckling", "C")[1] == "spring index D/d"
+    assert describe("any", "unknown_key") == ("unknown_key", "")
