@@ -8,18 +8,19 @@ from __future__ import annotations
 from typing import Any
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.components.bearings import (
     BallBearing,
     DutyCycleLoad,
+    EquivalentLoad,
     Lubrication,
     PlainBushing,
     basic_rating_life,
-    equivalent_static_load,
     life_hours,
     modified_rating_life,
     reliability_factor,
 )
+from mechverify.components.bearings_rolling import RollingBearing
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, fmt, to_si
 
@@ -28,16 +29,35 @@ ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
 BUSHING = f"{ref('shigley10', 'Sec. 12-15')}; bushing maker's limits"
 
 
-def provenance_warning(b: BallBearing) -> tuple[str, ...]:
+AnyBearing = BallBearing | RollingBearing
+
+
+def _exponent(b: AnyBearing) -> float:
+    """The life exponent p: 3 (ball), 10/3 (roller)."""
+    return float(getattr(b, "life_exponent", 3.0))
+
+
+def _p_tex(p: float) -> str:
+    return "3" if p == 3 else r"\frac{10}{3}"
+
+
+def _life_substituted(a1: float, C: Any, P: Any, p: float, n: Any, Lh: Any, a_iso: float | None = None) -> str:
+    """L = a1 [a_ISO] (C/P)^p 10^6 rev / n, in hours (evaluates back with its units)."""
+    factors = tex(a1) + (rf"\cdot {tex(a_iso)}" if a_iso is not None else "")
+    return (rf"L_{{h}} = {factors}\cdot \left(\frac{{{tex(C, 'kN')}}}{{{tex(P, 'kN')}}}\right)^{{{_p_tex(p)}}}"
+            rf"\cdot \frac{{10^{{6}}\,\mathrm{{turn}}}}{{{tex(n, 'rpm')}}} = {tex(Lh, 'hour')}")
+
+
+def provenance_warning(b: AnyBearing) -> tuple[str, ...]:
     """The caveat of a catalogue row not verified against its source (empty for a verified row)."""
     if not b.unverified:
         return ()
     return (f"data not verified against source: bearing {b.designation} ({b.unverified}; {b.source})",)
 
 
-def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
+def _axial_warning(b: AnyBearing, Fa: Any) -> tuple[str, ...]:
     fa = Q(to_si(Fa, "force", "Fa"), "N")
-    if fa > b.axial_load_limit:
+    if b.axial_load_limit is not None and fa > b.axial_load_limit:
         return (f"axial load {fmt(fa.to('kN'))} exceeds {fmt(b.axial_load_limit)} recommended for "
                 f"deep groove ball bearing {b.designation} (SKF 17000 EN: 0.25 C0 small/light series, else 0.5 C0)",
                 *provenance_warning(b))
@@ -47,61 +67,72 @@ def _axial_warning(b: BallBearing, Fa: Any) -> tuple[str, ...]:
 @check("bearing_life", title="Bearing rating life", sf_kind="bearing",
        aliases=('ball_bearing.life',),
        source=ISO281,
-       explain=('L10h = a1 (C/P)^3 10^6/(60 n), P = X Fr + Y Fa (ISO 281 Eq. (1), Table 3), against the required '
-                'life.'))
-def check_bearing_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
+       explain=('L10h = a1 (C/P)^p 10^6/(60 n), p = 3 ball, 10/3 roller bearings, P = X Fr + Y Fa with the '
+                "ISO 281 factors (deep groove) or the maker's (other types) (ISO 281 Eq. (1), Table 3), against "
+                'the required life.'))
+def check_bearing_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
                        required_life: QuantityLike, *, reliability: float = 0.9,
-                       duty_cycle: DutyCycleLoad | None = None, load_case: str = "") -> CheckResult:
-    """Rating life L_nh = a1·(C/P)³/(60 n) against the required life in hours.
+                       duty_cycle: DutyCycleLoad | None = None, equivalent: EquivalentLoad | None = None,
+                       load_case: str = "") -> CheckResult:
+    """Rating life L_nh = a1·(C/P)^p/(60 n) against the required life in hours.
 
-    With ``duty_cycle`` its equivalent load and mean speed replace those of (Fr, Fa, speed).
+    With ``duty_cycle`` its equivalent load and mean speed replace those of (Fr, Fa, speed); ``equivalent``
+    replaces the bearing's own equivalent load (two bearings adjusted against each other, Timken's rule).
     """
-    eq = b.equivalent_load(Fr, Fa)
+    eq = equivalent if equivalent is not None else b.equivalent_load(Fr, Fa)
     a1 = reliability_factor(reliability)
+    p = _exponent(b)
     if duty_cycle is not None:
         speed = duty_cycle.mean_speed if duty_cycle.mean_speed is not None else speed
-        L = a1 * basic_rating_life(b.C, duty_cycle.P)
+        P = duty_cycle.P
     else:
-        L = b.rating_life(Fr, Fa, reliability)
+        P = eq.P
+    L = a1 * basic_rating_life(b.C, P, p)
     Lh = life_hours(L, speed)
+    n = Q(abs(to_si(speed, "angular_velocity", "speed")), "rad/s").to("rpm")
     req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
+    inputs: dict[str, Any] = {"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"),
+                              "n": n, "C": b.C, "C0": b.C0, "p": p, "reliability": reliability}
+    if getattr(b, "f0", None) is not None:
+        inputs["f0"] = b.f0
+    rel = f"f0·Fa/C0 = {eq.relative_axial_load:.3g}, " if isinstance(b, BallBearing) else ""
     return CheckResult(
         check="bearing_life", component=b.designation, demand=req, capacity=Lh,
-        title="Bearing rating life", formula=r"L_{nh} = a_1 \left(\frac{C}{P}\right)^3 \frac{10^6}{60 n},\ "
+        title="Bearing rating life", formula=r"L_{nh} = a_1 \left(\frac{C}{P}\right)^p \frac{10^6}{60 n},\ "
                                              r"P = X F_r + Y F_a",
-        source=ISO281,
-        inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"),
-                "n": Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm"), "C": b.C, "C0": b.C0,
-                "f0": b.f0, "reliability": reliability},
-        notes=((f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} (f0·Fa/C0 = {eq.relative_axial_load:.3g}, "
-                f"e = {eq.e:.3g})") if duty_cycle is None else
-               (f"duty cycle: P = (sum f_i P_i^3)^(1/3) = {fmt(duty_cycle.P.to('N'))} over revolution shares "
-                + ", ".join(f"{f:.3g}" for f in duty_cycle.shares)
-                + f"; mean speed {fmt(Q(to_si(speed, 'angular_velocity'), 'rad/s').to('rpm'))}"),
-               f"a1 = {a1:.3g} for reliability {reliability:g}",
+        source=ISO281, inputs=inputs,
+        notes=((f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} ({rel}e = {eq.e:.3g})") if duty_cycle is None
+               else (f"duty cycle: P = (sum f_i P_i^p)^(1/p) = {fmt(duty_cycle.P.to('N'))} over revolution shares "
+                     + ", ".join(f"{f:.3g}" for f in duty_cycle.shares) + f"; mean speed {fmt(n)}"),
+               f"a1 = {a1:.3g} for reliability {reliability:g}; life exponent p = {p:.4g}",
                "basic rating life only: no aISO/aSKF factor for lubrication or contamination "
                "(see bearing_modified_life)"),
         warnings=_axial_warning(b, Fa), load_case=load_case,
-        details={"P": eq.P if duty_cycle is None else duty_cycle.P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L})
+        details={"P": P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L},
+        substituted=_life_substituted(a1, b.C, P, p, n, Lh))
 
 
 @check("bearing_static_safety", title="Bearing static safety (s0)", sf_kind="bearing",
        aliases=('ball_bearing.static_safety',),
        source=ISO76,
-       explain=('s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) (ISO 76); the required s0 is the bearing class factor '
+       explain=('s0 = C0/P0, P0 = max(0.6 Fr + 0.5 Fa, Fr) for deep groove ball bearings (ISO 76), the maker\'s '
+                'X0, Y0 for other types (thrust: P0 = Fa); the required s0 is the bearing class factor '
                 '(SKF: 1 normal, 1.5 shock loads, 2 quiet running).'))
-def check_bearing_static_safety(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike = "0 N", *, required_s0: float = 1.0,
-                          load_case: str = "") -> CheckResult:
+def check_bearing_static_safety(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike = "0 N", *,
+                                required_s0: float = 1.0, load_case: str = "") -> CheckResult:
     """Static safety s0 = C0/P0 against the required s0 (SKF guideline for rotating ball bearings: 1,
     1.5 with shock loads, 2 where low noise matters; ISO 76)."""
-    P0 = equivalent_static_load(Fr, Fa)
+    P0 = b.static_load(Fr, Fa).to("N")
+    s0 = to_si(b.C0, "force") / to_si(P0, "force") if to_si(P0, "force") > 0 else None
     return CheckResult(
-        check="bearing_static_safety", component=b.designation, demand=P0.to("N"), capacity=b.C0.to("N"),
+        check="bearing_static_safety", component=b.designation, demand=P0, capacity=b.C0.to("N"),
         required_sf=required_s0, title="Bearing static safety (s0)",
-        formula=r"s_0 = C_0 / P_0,\ P_0 = \max(0.6 F_r + 0.5 F_a,\ F_r)", source=ISO76,
+        formula=(r"s_0 = C_0 / P_0,\ P_0 = \max(0.6 F_r + 0.5 F_a,\ F_r)" if isinstance(b, BallBearing)
+                 else r"s_0 = C_0 / P_0,\ P_0 = \max(X_0 F_r + Y_0 F_a,\ F_r)"), source=ISO76,
         inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"), "C0": b.C0},
         notes=(f"required s0 = {required_s0:g} (SKF 17000 EN guideline: >= 1 normal, 1.5 shock, 2 quiet running)",),
-        warnings=_axial_warning(b, Fa), load_case=load_case)
+        warnings=_axial_warning(b, Fa), load_case=load_case,
+        substituted=(rf"s_0 = \frac{{{tex(b.C0, 'kN')}}}{{{tex(P0, 'kN')}}} = {tex(s0)}" if s0 is not None else ""))
 
 
 SEAL_SPEED_FRACTION = 0.25  # contact-seal speed caveat above this fraction of the open bearing's limiting speed
@@ -111,7 +142,7 @@ SEAL_SPEED_FRACTION = 0.25  # contact-seal speed caveat above this fraction of t
        aliases=('ball_bearing.speed',),
        source=ref("skf17000", "product tables: limiting and reference speeds"),
        explain=('Speed against the catalogue limiting speed (the reference speed is noted).'))
-def check_bearing_speed(b: BallBearing, speed: QuantityLike, *, load_case: str = "") -> CheckResult:
+def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
     n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
     warnings: tuple[str, ...] = ()
@@ -130,7 +161,9 @@ def check_bearing_speed(b: BallBearing, speed: QuantityLike, *, load_case: str =
     return CheckResult(
         check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
         title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
-        notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case)
+        notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case,
+        substituted=(rf"S = \frac{{{tex(b.limiting_speed, 'rpm')}}}{{{tex(abs(n), 'rpm')}}} = "
+                     rf"{tex(b.limiting_speed.m_as('rpm') / abs(n.m_as('rpm')))}" if n.magnitude != 0 else ""))
 
 
 ISO281_MOD = ref("iso281", "Sec. 9 (L_nm = a1 a_ISO L10; nu1, kappa, a_ISO for radial ball bearings), Table 13 (e_C)")
@@ -143,7 +176,7 @@ ISO281_MOD = ref("iso281", "Sec. 9 (L_nm = a1 a_ISO L10; nu1, kappa, a_ISO for r
                 "values by ASTM D341; nu1 the ISO 281 rated viscosity for the speed and mean diameter), the "
                 "contamination factor e_C (ISO 281 Table 13) and the fatigue load limit Pu (catalogue), capped at 50 "
                 "(ISO 281:2007 Sec. 9). P is the governing case's equivalent load, or a duty cycle's."))
-def check_bearing_modified_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
+def check_bearing_modified_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
                                 required_life: QuantityLike, lubrication: Lubrication, *,
                                 reliability: float = 0.9, duty_cycle: DutyCycleLoad | None = None,
                                 load_case: str = "") -> CheckResult:
@@ -156,7 +189,7 @@ def check_bearing_modified_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLi
     if duty_cycle is not None:
         P = duty_cycle.P
         n = duty_cycle.mean_speed if duty_cycle.mean_speed is not None else speed
-        notes.append(f"duty cycle: P = (sum f_i P_i^3)^(1/3) = {fmt(P.to('N'))} over revolution shares "
+        notes.append(f"duty cycle: P = (sum f_i P_i^p)^(1/p) = {fmt(P.to('N'))} over revolution shares "
                      + ", ".join(f"{f:.3g}" for f in duty_cycle.shares))
     else:
         eq = b.equivalent_load(Fr, Fa)
@@ -179,7 +212,9 @@ def check_bearing_modified_life(b: BallBearing, Fr: QuantityLike, Fa: QuantityLi
                 "nu": m.nu, "reliability": reliability},
         notes=tuple(notes), warnings=(*m.warnings, *_axial_warning(b, Fa)), load_case=load_case,
         details={"kappa": m.kappa, "a_iso": m.a_iso, "a1": m.a1, "eC": m.eC, "nu1": m.nu1, "L10h": life_hours(
-            m.L10_rev, n)})
+            m.L10_rev, n)},
+        substituted=_life_substituted(m.a1, b.C, m.P, _exponent(b),
+                                      Q(abs(to_si(n, "angular_velocity", "speed")), "rad/s").to("rpm"), Lh, m.a_iso))
 
 
 def _bushing_inputs(bush: PlainBushing, F: Any, v: Any) -> dict[str, Any]:
@@ -204,7 +239,14 @@ def check_bushing_pressure(bush: PlainBushing, F: QuantityLike, *, load_case: st
         title="Bushing pressure", formula=r"p = \frac{F}{d L} \le p_{max}",
         source=BUSHING,
         inputs={"F": Q(to_si(F, "force", "F"), "N"), "d": bush.d, "L": bush.length},
-        notes=_bushing_notes(bush), load_case=load_case)
+        notes=_bushing_notes(bush), load_case=load_case,
+        substituted=_pressure_substituted(bush, F))
+
+
+def _pressure_substituted(bush: PlainBushing, F: Any) -> str:
+    d, L = (Q(to_si(x, "length"), "m") for x in (bush.d, bush.length))
+    return (rf"p = \frac{{{tex(Q(to_si(F, 'force', 'F'), 'N'), 'N')}}}{{{tex(d, 'mm')}\cdot {tex(L, 'mm')}}} = "
+            rf"{tex(bush.pressure(F), 'MPa')}")
 
 
 @check("bushing_velocity", title="Bushing sliding speed", sf_kind="speed",
@@ -218,7 +260,9 @@ def check_bushing_velocity(bush: PlainBushing, v: QuantityLike, *, load_case: st
         check="bushing_velocity", component=bush.name, demand=vv, capacity=bush.limit("v_max"),
         title="Bushing sliding speed", formula=r"v \le v_{max}",
         source=BUSHING,
-        inputs={"v": vv}, notes=_bushing_notes(bush), load_case=load_case)
+        inputs={"v": vv}, notes=_bushing_notes(bush), load_case=load_case,
+        substituted=(rf"S = \frac{{{tex(bush.limit('v_max'), 'm/s')}}}{{{tex(vv, 'm/s')}}} = "
+                     rf"{tex(bush.limit('v_max').m_as('m/s') / vv.m_as('m/s'))}" if vv.magnitude > 0 else ""))
 
 
 @check("bushing_pv", title="Bushing pv", sf_kind="pressure",
@@ -231,7 +275,9 @@ def check_bushing_pv(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "")
         check="bushing_pv", component=bush.name, demand=bush.pv(F, v), capacity=bush.limit("pv_max"),
         title="Bushing pv", formula=r"p\,v = \frac{F}{d L} v \le (pv)_{max}",
         source=BUSHING,
-        inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case)
+        inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case,
+        substituted=(rf"pv = {tex(bush.pressure(F), 'MPa')}\cdot {tex(Q(abs(to_si(v, 'velocity', 'v')), 'm/s'), 'm/s')}"
+                     rf" = {tex(bush.pv(F, v), 'MPa*m/s')}"))
 
 
 __all__ = ["check_bearing_life", "check_bearing_modified_life", "check_bearing_static_safety", "check_bearing_speed",

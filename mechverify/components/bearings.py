@@ -26,6 +26,7 @@ References
     for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1, (1.9987, 0.071739) for 1 <= kappa <= 4;
     a_ISO <= 50; kappa > 4 taken as 4; kappa < 0.1 outside the method; Table 13 (e_C guideline values).
     Constants cross-read from two independent public transcriptions (not from the standard itself).
+[8] ASTM D2270 (viscosity index; nu100 from nu40 and VI: mechverify.components.lubricants).
 [6] ASTM D341, viscosity-temperature relation log log(nu + 0.7) = A - B log T (T in K), fitted through
     the lubricant's viscosities at 40 and 100 degC; ISO 3448 (the VG grade is nu at 40 degC, mm^2/s).
 """
@@ -416,6 +417,17 @@ class Lubrication:
     iso_vg: int | None = None
     operating_temperature: QuantityLike | None = None
     contamination: str | float = "normal_cleanliness"
+    #: viscosity index (ASTM D2270), instead of ``viscosity_100``: "ISO VG 68, VI 95"
+    viscosity_index: float | None = None
+
+    def viscosity_100_value(self, v40: pint.Quantity) -> pint.Quantity | None:
+        """The 100 degC viscosity: given, or from the viscosity index by ASTM D2270 ([8])."""
+        if self.viscosity_100 is not None:
+            return self.viscosity_100  # type: ignore[return-value]
+        if self.viscosity_index is None:
+            return None
+        from mechverify.components.lubricants import viscosity_100_from_vi
+        return Q(viscosity_100_from_vi(_nu_mm2s(v40, "viscosity_40"), float(self.viscosity_index)), "mm**2/s")
 
     def operating_viscosity(self) -> pint.Quantity:
         if self.viscosity is not None:
@@ -425,12 +437,16 @@ class Lubrication:
             return Q(v, "mm**2/s")
         v40 = self.viscosity_40 if self.viscosity_40 is not None else (
             iso_vg_viscosity(self.iso_vg) if self.iso_vg is not None else None)
-        missing = [n for n, v in (("viscosity_40 or iso_vg", v40), ("viscosity_100", self.viscosity_100),
+        if self.viscosity_100 is not None and self.viscosity_index is not None:
+            raise InputError("lubrication: give viscosity_100 or viscosity_index, not both")
+        v100 = self.viscosity_100_value(v40) if v40 is not None else None
+        missing = [n for n, v in (("viscosity_40 or iso_vg", v40), ("viscosity_100 or viscosity_index", v100),
                                   ("operating_temperature", self.operating_temperature)) if v is None]
         if missing:
             raise InputError("lubrication: give the operating viscosity, or " + ", ".join(missing)
-                             + " (ISO 3448 fixes only the 40 degC value; the 100 degC value is on the oil's datasheet)")
-        return viscosity_at_temperature(v40, self.viscosity_100, self.operating_temperature)  # type: ignore[arg-type]
+                             + " (ISO 3448 fixes only the 40 degC value; the 100 degC value or the VI is on the oil's "
+                               "datasheet)")
+        return viscosity_at_temperature(v40, v100, self.operating_temperature)  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True)
@@ -462,6 +478,13 @@ def modified_rating_life(b: BallBearing, P: QuantityLike, speed: QuantityLike, l
     C_u is the catalogue fatigue load limit P_u. ``P`` is the equivalent dynamic load (of the
     governing case or of a duty cycle, :func:`duty_cycle_load`).
     """
+    kind = getattr(b, "kind", "deep_groove_ball")
+    if kind not in ("deep_groove_ball", "angular_contact_ball"):
+        raise ValidityError(f"bearing {b.designation}: the ISO 281 a_ISO of this version covers radial ball bearings "
+                            f"(deep groove, angular contact) only, not {kind.replace('_', ' ')} bearings: use "
+                            "bearing_life (L10) or the maker's tool")
+    if b.Pu is None:
+        raise InputError(f"bearing {b.designation}: the modified life needs the fatigue load limit Pu")
     p = to_si(P, "force", "P")
     dm = mean_diameter(b)
     nu = lubrication.operating_viscosity()

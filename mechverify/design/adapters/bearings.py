@@ -19,6 +19,7 @@ from mechverify.components.bearings import (
     reliability_factor,
     sliding_speed,
 )
+from mechverify.components.bearings_rolling import RollingBearing
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError
@@ -29,14 +30,14 @@ from mechverify.units import Q, fmt
 class BearingInstallation:
     """A catalogue ball bearing with its life requirement and reliability (from the design file)."""
 
-    bearing: BallBearing
+    bearing: BallBearing | RollingBearing
     required_life: pint.Quantity | None = None
     reliability: float = 0.9
     lubrication: Lubrication | None = None
     duty_cycle: dict[str, float] | None = None
 
 
-_LUB_KEYS = ("viscosity", "viscosity_40", "viscosity_100", "iso_vg", "operating_temperature")
+_LUB_KEYS = ("viscosity", "viscosity_40", "viscosity_100", "iso_vg", "operating_temperature", "viscosity_index")
 
 
 def _lubrication(p: dict[str, Any]) -> Lubrication | None:
@@ -100,7 +101,7 @@ def _cycle(inst: BearingInstallation, ctx: Any) -> DutyCycleLoad | None:
         P.append(inst.bearing.equivalent_load(*_forces(loads)).P)
         shares.append(share)
         speeds.append(loads["speed"])
-    return duty_cycle_load(P, shares, speeds=speeds)
+    return duty_cycle_load(P, shares, speeds=speeds, exponent=float(getattr(inst.bearing, "life_exponent", 3.0)))
 
 
 def _first_cycle_case(inst: BearingInstallation, ctx: Any) -> bool:
@@ -157,6 +158,8 @@ BALL = REGISTRY.register(ComponentType(
         Field("viscosity_40", "str", "lubricant viscosity at 40 degC, e.g. '68 mm^2/s'"),
         Field("iso_vg", "int", "ISO 3448 viscosity grade (its 40 degC viscosity), instead of viscosity_40"),
         Field("viscosity_100", "str", "lubricant viscosity at 100 degC (oil datasheet), with viscosity_40 or iso_vg"),
+        Field("viscosity_index", "float", "viscosity index (ASTM D2270), instead of viscosity_100: iso_vg = 68 with "
+                                          "viscosity_index = 95 gives nu(T)"),
         Field("operating_temperature", "str", "bearing operating temperature, e.g. '70 degC' (-20..150 degC)"),
         Field("contamination", "choice", "ISO 281 Table 13 contamination level (its lower e_C is used)",
               default="normal_cleanliness", choices=tuple(CONTAMINATION_LEVELS)),
