@@ -173,8 +173,9 @@ def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
 
 
 # ------------------------------------------------------------------------------------------------------ figure
-def plate_figure(c: PlateFEA, res: FieldResults, case: str) -> Any:
-    """Von Mises contour (left) and deflection (right) on the plate, the maxima marked with a star."""
+def plate_figure(c: PlateFEA, res: FieldResults, case: str, loads: tuple[Any, ...] = ()) -> Any:
+    """Von Mises contour (left) and deflection (right) on the plate, the maxima marked with a star; the
+    supports in magenta and where the ``loads`` act in red (point forces as triangles, patches hatched)."""
     import matplotlib.pyplot as plt
     from matplotlib.figure import Figure
     from matplotlib.tri import Triangulation
@@ -196,6 +197,8 @@ def plate_figure(c: PlateFEA, res: FieldResults, case: str) -> Any:
             ax.plot(rx, ry, color="k", lw=0.6)
         for s in c.supports:
             _draw_support(ax, c.plate, s)
+        for ld in loads:
+            _draw_load(ax, ld)
         ax.plot(x[k], y[k], marker="*", color="white", mec="k", ms=14)
         ax.set_aspect("equal")
         ax.set_xlabel("x [mm]")
@@ -205,6 +208,35 @@ def plate_figure(c: PlateFEA, res: FieldResults, case: str) -> Any:
     fig.suptitle(f"{c.name}, load case '{case}'", fontsize=10)
     fig.tight_layout()
     return fig
+
+
+def _draw_load(ax: Any, ld: Any) -> None:
+    """Where a load acts: a point force as a red triangle pointing along its sign (▼ along -z, ▲ along +z; a
+    pure moment as a red circle), a patch as its hatched red outline. Uniform pressure and self-weight act
+    everywhere and are named in the caption."""
+    if hasattr(ld, "point"):
+        f = float(getattr(ld, "force", 0.0) or 0.0)
+        marker = "v" if f < 0 else "^" if f > 0 else "o"
+        ax.plot(ld.point[0] * 1e3, ld.point[1] * 1e3, marker=marker, color="red", mec="k", ms=9, zorder=5)
+    elif getattr(ld, "polygon", None) is not None:
+        from matplotlib.patches import Polygon as MplPolygon
+
+        pts = np.asarray(ld.polygon) * 1e3
+        ax.add_patch(MplPolygon(pts, closed=True, fill=False, edgecolor="red", hatch="////", lw=1.2, zorder=5))
+
+
+def _loads_text(loads: tuple[Any, ...]) -> str:
+    """The caption's words for the loads: what is drawn and what acts over the whole plate."""
+    drawn = [ld for ld in loads if hasattr(ld, "point") or getattr(ld, "polygon", None) is not None]
+    spread = [type(ld).__name__ for ld in loads if ld not in drawn]
+    parts = []
+    if drawn:
+        parts.append("loads in red (▼ force along -z, ▲ along +z, ● moment only, hatched: patch load)")
+    if any("Pressure" in n for n in spread):
+        parts.append("uniform pressure over the whole plate")
+    if any("Weight" in n for n in spread):
+        parts.append("self-weight")
+    return "; ".join(parts)
 
 
 def _draw_support(ax: Any, plate: pl.Plate, s: Any) -> None:
@@ -230,10 +262,13 @@ def _figures(c: PlateFEA, results: list[CheckResult]) -> list[tuple[str, Any]]:
         return []
     model, res = c.solved[gov.load_case]
     vm, k = res.max_von_mises, int(res.max_von_mises.node)
+    loads = tuple(getattr(model, "loads", ()) or ())
     caption = (f"{c.name}, load case '{gov.load_case}': von Mises stress at the plate surfaces (largest "
                f"{fmt(vm.value, 'MPa')} at {_mm(res.points[k, :2])}, ★) and deflection (largest "
                f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
-    return [(caption, plate_figure(c, res, gov.load_case))]
+    if _loads_text(loads):
+        caption += f"; {_loads_text(loads)}"
+    return [(caption, plate_figure(c, res, gov.load_case, loads))]
 
 
 PLATE_FEA = REGISTRY.register(ComponentType(
