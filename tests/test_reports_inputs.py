@@ -68,3 +68,16 @@ def test_user_units_helpers():
     assert describe("bearing_life", "C")[1] == "basic dynamic load rating"
     assert describe("spring_buckling", "C")[1] == "spring index D/d"
     assert describe("any", "unknown_key") == ("unknown_key", "")
+
+
+def test_temperature_differences_in_kelvin():
+    """A rise (pint's delta_degC/delta_degF) is shown in K, not converted as an absolute temperature (40 Δ°C used
+    to print as -233 °C or fail); absolute temperatures stay in °C. 72 Δ°F = 40 K (5/9)."""
+    from mechverify.checks.result import CheckResult
+    from mechverify.reports.numbers import quantity
+
+    assert quantity(Q(40, "delta_degC")) == "40.0 K"
+    assert quantity(Q(72, "delta_degF")) == "40.0 K"
+    assert quantity(Q(40, "degC")) == "40.0 °C" and quantity(Q(313.15, "K")) == "40.0 °C"
+    r = CheckResult(check="rise", component="m", demand=Q(40, "delta_degC"), capacity=Q(50, "delta_degC"))
+    assert r.utilisation == pytest.approx(0.8)

@@ -101,6 +101,12 @@ def unit_symbol(u: str | pint.Unit) -> str:
     return "rpm" if text in ("turn/min", "rpm", "1/min") else text.replace(" ", "")
 
 
+def is_temperature_difference(q: Any) -> bool:
+    """True for a temperature difference: a quantity in ``delta_degC``/``delta_degF`` (pint's difference units).
+    A value in plain kelvin stays an absolute temperature (shown in °C); give a rise as ``Q(40, "delta_degC")``."""
+    return isinstance(q, Quantity) and any(str(u).startswith("delta_") for u in q.units._units)
+
+
 def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     """A quantity for people: kind-chosen unit, SI prefix, significant digits by kind.
 
@@ -141,6 +147,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     if name == "area" and abs(m) < 1:
         return f"{number(m * 1e6, d)} mm²"
     if name == "temperature":
+        if is_temperature_difference(q):  # a rise or a difference: kelvin (= Δ°C), never an absolute °C value
+            return f"{number(m, d)} K"
         return f"{number(float(q.m_as('degC')), d)} °C"
     if name == "inertia" and 0 < abs(m) < 1e-3:  # motor and gear data sheets: g·cm²
         return f"{number(m * 1e7, d)} g·cm²"
@@ -216,4 +224,4 @@ def quantity_in(q: Any, units: dict[Any, str] | None) -> str:
     return f"{text} ({quantity(q, unit=unit)})"
 
 
-__all__ = ["number", "quantity", "unit_symbol", "design_units", "quantity_in"]
+__all__ = ["number", "quantity", "unit_symbol", "design_units", "quantity_in", "is_temperature_difference"]
