@@ -146,7 +146,10 @@ def check_spring_buckling(spring: CompressionSpring, F_max: QuantityLike, *, end
         source=f"{SHIGLEY}, Eqs. (10-10)..(10-13), Table 10-2; EN 13906-1:2013 Sec. 9",
         inputs={**_inputs(spring), "F_max": Q(to_si(F_max, "force", "F_max"), "N"), "E": spring.elastic_modulus,
                 "G": spring.shear_modulus},
-        substituted=sub, notes=tuple(notes), load_case=load_case)
+        substituted=sub, notes=tuple(notes), load_case=load_case,
+        details={"rate": spring.rate, "solid_deflection": spring.solid_deflection,
+                 "solid_force": spring.solid_force.to("N"), "end_condition": end,
+                 **({"critical_deflection": y_cr} if y_cr is not None else {})})  # force-deflection figure
 
 
 @check("spring_fatigue", title='Spring fatigue (infinite life)', sf_kind="fatigue",
@@ -174,8 +177,8 @@ def check_spring_fatigue(spring: CompressionSpring, F_min: QuantityLike, F_max: 
     return CheckResult(
         check="spring_fatigue", component=spring.name, demand=f.tau_a, capacity=f.Ssa, required_sf=required_sf,
         title="Spring fatigue (infinite life)",
-        formula=r"\tau_a = K_B \frac{8 F_a D}{\pi d^3},\ S_{se}: \text{Zimmerli point on the criterion},\ "
-                r"n_f = S_{sa}/\tau_a",
+        formula=r"\tau_a = K_B \frac{8 F_a D}{\pi d^3},\ \tau_m = K_B \frac{8 F_m D}{\pi d^3},\ "
+                r"n_f = S_{sa}/\tau_a",  # S_sa: the Zimmerli point projected on the criterion
         source=f"{SHIGLEY}, Secs. 10-9, 10-10, Eq. (10-30); mean-stress criterion from mechverify.fatigue.criteria",
         inputs={**_inputs(spring), "F_min": Q(to_si(F_min, "force", "F_min"), "N"),
                 "F_max": Q(to_si(F_max, "force", "F_max"), "N")},
@@ -183,7 +186,9 @@ def check_spring_fatigue(spring: CompressionSpring, F_min: QuantityLike, F_max: 
                                  Q((to_si(F_max, "force", "F_max") - to_si(F_min, "force", "F_min")) / 2, "N"),
                                  spring.mean_diameter, spring.wire_diameter, f.tau_a, r"\tau_a"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
-        details={"tau_m": f.tau_m, "Ssu": f.Ssu, "Sse": f.Sse, "Ssy": f.Ssy, "n_f": f.n_f, "n_y": f.n_y})
+        details={"tau_m": f.tau_m, "Ssu": f.Ssu, "Sse": f.Sse, "Ssy": f.Ssy, "n_f": f.n_f, "n_y": f.n_y,
+                 "criterion": criterion, "tau_a": f.tau_a, "Ssa_zimmerli": f.zimmerli.Ssa.to("MPa"),
+                 "Ssm_zimmerli": f.zimmerli.Ssm.to("MPa")})
 
 
 @check("spring_clash", title='Spring clash allowance', sf_kind="deflection",

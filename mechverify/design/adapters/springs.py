@@ -3,7 +3,8 @@
 The checks are those of :mod:`mechverify.checks.springs`: compression springs (static and solid
 stress, buckling, fatigue, clash), extension springs (body, hook bending and torsion against Shigley
 10th ed. Table 10-7) and torsion springs (bending stress, Eq. (10-57); clearance on the arbor). This
-module maps design-file values onto them and adds the force-deflection figure data.
+module maps design-file values onto them and adds the other load cases' operating points to the
+force-deflection figure data; the shared wire fields are in :mod:`.spring_parsing`.
 """
 
 from __future__ import annotations
@@ -15,57 +16,19 @@ import pint
 
 from mechverify.checks import springs as sc
 from mechverify.checks.result import CheckResult
-from mechverify.components.spring_formulas import SPRING_CLASSES
 from mechverify.components.springs import CompressionSpring, ExtensionSpring, TorsionSpring
 from mechverify.design.adapters.common import pick
+from mechverify.design.adapters.spring_parsing import (
+    CRITERIA,
+    END_CONDITIONS,
+    END_TYPES,
+    nonnegative,
+    wire_fields,
+    wire_kwargs,
+)
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
 from mechverify.units import Q, fmt
-
-END_TYPES = ("squared-ground", "squared", "plain-ground", "plain")
-END_CONDITIONS = ("fixed-fixed", "fixed-pinned", "pinned-pinned", "fixed-guided", "fixed-free")
-CRITERIA = ("gerber", "goodman", "sines", "asme_elliptic", "soderberg")
-DIAMETERS = {"mean_diameter": "D", "outside_diameter": "OD", "inside_diameter": "ID"}
-
-
-# ------------------------------------------------------------------------------------------ shared fields
-def _wire_fields(coils: tuple[Field, ...]) -> tuple[Field, ...]:
-    return (
-        Field("wire_diameter", "length", "wire diameter d", required=True),
-        Field("mean_diameter", "length", "mean coil diameter D (or give outside_diameter or inside_diameter)"),
-        Field("outside_diameter", "length", "outside coil diameter OD = D + d"),
-        Field("inside_diameter", "length", "inside coil diameter ID = D - d"),
-        *coils,
-        Field("material", "material", "spring wire (Sut from its wire-strength table at d)",
-              default="ASTM A228 music wire"),
-        Field("shear_modulus", "pressure", "G, instead of the material's (Shigley Table 10-5 lists it by size)"),
-        Field("elastic_modulus", "pressure", "E, instead of the material's"),
-        Field("tensile_strength", "pressure", "minimum tensile strength Sut of the wire, instead of the table's"),
-        Field("spring_class", "choice", "Shigley Table 10-6 wire class, instead of the one found from the "
-                                        "material's ASTM code", choices=SPRING_CLASSES),
-    )
-
-
-def _common(p: dict[str, Any], *, shear: bool = True) -> dict[str, Any]:
-    given = [k for k in DIAMETERS if k in p]
-    if len(given) != 1:
-        raise InputError(f"give exactly one of mean_diameter, outside_diameter or inside_diameter "
-                         f"(got {', '.join(given) or 'none'})")
-    out = {"d": p["wire_diameter"], DIAMETERS[given[0]]: p[given[0]], "name": p["_name"]}
-    out.update(pick(p, "material", "spring_class", E="elastic_modulus", Sut="tensile_strength"))
-    if shear:
-        out.update(pick(p, G="shear_modulus"))
-    return out
-
-
-def _one_of(loads: dict[str, Any], *names: str) -> str:
-    return next(n for n in names if n in loads)
-
-
-def _nonnegative(q: pint.Quantity, what: str) -> pint.Quantity:
-    if q.magnitude < 0:
-        raise InputError(f"{what} must be >= 0, got {fmt(q)}")
-    return q
 
 
 # ------------------------------------------------------------------------------------- compression spring
@@ -82,7 +45,7 @@ class SpringInstallation:
 def _build_compression(p: dict[str, Any], ctx: dict[str, Any]) -> SpringInstallation:
     if ("active_coils" in p) == ("total_coils" in p):
         raise InputError("give exactly one of active_coils or total_coils")
-    spring = CompressionSpring(L0=p["free_length"], end=p["ends"], **_common(p),
+    spring = CompressionSpring(L0=p["free_length"], end=p["ends"], **wire_kwargs(p),
                                **pick(p, "set_removed", "peened", "density", Na="active_coils", Nt="total_coils"))
     return SpringInstallation(spring, p["end_condition"], p["fatigue_criterion"], p["clash_method"])
 
@@ -90,14 +53,14 @@ def _build_compression(p: dict[str, Any], ctx: dict[str, Any]) -> SpringInstalla
 def _max_force(s: CompressionSpring, loads: dict[str, Any]) -> pint.Quantity:
     """Largest working force: ``force``, or k·``deflection`` (a deflection beyond solid is an error)."""
     if "force" in loads:
-        return _nonnegative(loads["force"].to("N"), "force (compression)")
-    return s.force(_nonnegative(loads["deflection"], "deflection")).to("N")
+        return nonnegative(loads["force"].to("N"), "force (compression)")
+    return s.force(nonnegative(loads["deflection"], "deflection")).to("N")
 
 
 def _min_force(s: CompressionSpring, loads: dict[str, Any]) -> pint.Quantity:
     if "force_min" in loads:
-        return _nonnegative(loads["force_min"].to("N"), "force_min")
-    return s.force(_nonnegative(loads["deflection_min"], "deflection_min")).to("N")
+        return nonnegative(loads["force_min"].to("N"), "force_min")
+    return s.force(nonnegative(loads["deflection_min"], "deflection_min")).to("N")
 
 
 def _operating_points(inst: SpringInstallation, ctx: Any) -> dict[str, Any]:
@@ -114,16 +77,6 @@ def _operating_points(inst: SpringInstallation, ctx: Any) -> dict[str, Any]:
     return {"operating_cases": names, "operating_forces": Q(forces, "N")}
 
 
-def _figure_data(inst: SpringInstallation, ctx: Any, end: str) -> dict[str, Any]:
-    s = inst.spring
-    y_cr = s.critical_deflection(end)
-    data = {"rate": s.rate, "solid_deflection": s.solid_deflection, "solid_force": s.solid_force.to("N"),
-            "end_condition": end, **_operating_points(inst, ctx)}
-    if y_cr is not None:
-        data["critical_deflection"] = y_cr
-    return data
-
-
 def _static(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     return sc.check_spring_static_stress(inst.spring, _max_force(inst.spring, loads), required_sf=ctx.required_sf)
 
@@ -131,22 +84,13 @@ def _static(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckR
 def _buckling(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     end = loads.get("end_condition", inst.end_condition)
     r = sc.check_spring_buckling(inst.spring, _max_force(inst.spring, loads), end=end, required_sf=ctx.required_sf)
-    inputs = {k: (v.to("GPa") if k in ("E", "G") else v) for k, v in r.inputs.items()}
-    return dataclasses.replace(r, inputs=inputs, details={**r.details, **_figure_data(inst, ctx, end)})
+    return dataclasses.replace(r, details={**r.details, **_operating_points(inst, ctx)})  # for the figure
 
 
 def _fatigue(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
     s = inst.spring
-    r = sc.check_spring_fatigue(s, _min_force(s, loads), _max_force(s, loads), criterion=inst.fatigue_criterion,
-                          required_sf=ctx.required_sf)
-    f = s.fatigue(_min_force(s, loads), _max_force(s, loads), inst.fatigue_criterion)
-    # the check's formula has \text{...} with spaces, which the report's mathtext rewrite runs together
-    formula = (r"\tau_a = K_B \frac{8 F_a D}{\pi d^3},\ \tau_m = K_B \frac{8 F_m D}{\pi d^3},\ "
-               r"n_f = S_{sa}/\tau_a")
-    return dataclasses.replace(r, formula=formula,
-                               details={**r.details, "criterion": inst.fatigue_criterion, "tau_a": f.tau_a,
-                                           "Ssa_zimmerli": f.zimmerli.Ssa.to("MPa"),
-                                           "Ssm_zimmerli": f.zimmerli.Ssm.to("MPa")})
+    return sc.check_spring_fatigue(s, _min_force(s, loads), _max_force(s, loads), criterion=inst.fatigue_criterion,
+                                   required_sf=ctx.required_sf)
 
 
 def _clash(inst: SpringInstallation, loads: dict[str, Any], ctx: Any) -> CheckResult:
@@ -159,7 +103,7 @@ COMPRESSION = REGISTRY.register(ComponentType(
     doc="A helical compression spring of round wire (Shigley 10th ed. Ch. 10): wire and coil diameters, coils, "
         "end type, free length, wire material; mounted with an end condition for buckling.",
     fields=(
-        *_wire_fields((
+        *wire_fields((
             Field("active_coils", "float", "active coils Na (or give total_coils)"),
             Field("total_coils", "float", "total coils Nt (Na = Nt - end coils of the end type)"),
         )),
@@ -206,14 +150,14 @@ COMPRESSION = REGISTRY.register(ComponentType(
 
 # --------------------------------------------------------------------------------------- extension spring
 def _build_extension(p: dict[str, Any], ctx: dict[str, Any]) -> ExtensionSpring:
-    return ExtensionSpring(Nb=p["body_coils"], **_common(p),
+    return ExtensionSpring(Nb=p["body_coils"], **wire_kwargs(p),
                            **pick(p, Fi="initial_tension", r1="hook_bend_radius", r2="hook_side_radius"))
 
 
 def _extension_force(s: ExtensionSpring, loads: dict[str, Any]) -> pint.Quantity:
     if "force" in loads:
-        return _nonnegative(loads["force"].to("N"), "force (tension)")
-    return s.force(_nonnegative(loads["extension"], "extension")).to("N")
+        return nonnegative(loads["force"].to("N"), "force (tension)")
+    return s.force(nonnegative(loads["extension"], "extension")).to("N")
 
 
 EXTENSION = REGISTRY.register(ComponentType(
@@ -221,7 +165,7 @@ EXTENSION = REGISTRY.register(ComponentType(
     doc="A helical extension spring with full-loop hooks (Shigley 10th ed. Sec. 10-11): static body and hook "
         "stresses against Table 10-7.",
     fields=(
-        *_wire_fields((Field("body_coils", "float", "body coils Nb", required=True),)),
+        *wire_fields((Field("body_coils", "float", "body coils Nb", required=True),)),
         Field("initial_tension", "force", "initial tension Fi", default="0 N"),
         Field("hook_bend_radius", "length", "mean radius r1 of the hook bend at A (default D/2, full loop)"),
         Field("hook_side_radius", "length", "side-bend radius r2 at B (the hook torsion check needs it)"),
@@ -250,10 +194,10 @@ class TorsionInstallation:
 
 
 def _build_torsion(p: dict[str, Any], ctx: dict[str, Any]) -> TorsionInstallation:
-    s = TorsionSpring(Nb=p["body_turns"], **_common(p, shear=False), **pick(p, l1="leg1_length", l2="leg2_length"))
+    s = TorsionSpring(Nb=p["body_turns"], **wire_kwargs(p, shear=False), **pick(p, l1="leg1_length", l2="leg2_length"))
     arbor = p.get("arbor_diameter")
     if arbor is not None:
-        inside = Q(s._si["D"] - s._si["d"], "m").to("mm")
+        inside = (s.mean_diameter - s.wire_diameter).to("mm")
         if arbor.magnitude <= 0 or arbor >= inside:
             raise InputError(f"arbor_diameter {fmt(arbor.to('mm'))} must be positive and below the coil's inside "
                              f"diameter {fmt(inside)}")
@@ -262,8 +206,8 @@ def _build_torsion(p: dict[str, Any], ctx: dict[str, Any]) -> TorsionInstallatio
 
 def _moment(s: TorsionSpring, loads: dict[str, Any]) -> pint.Quantity:
     if "moment" in loads:
-        return _nonnegative(loads["moment"].to("N*m"), "moment (winding up the coils)")
-    theta = _nonnegative(loads["angle"].to("rad"), "angle (winding up the coils)")
+        return nonnegative(loads["moment"].to("N*m"), "moment (winding up the coils)")
+    theta = nonnegative(loads["angle"].to("rad"), "angle (winding up the coils)")
     return Q(s.rate().m_as("N*m/rad") * theta.m_as("rad"), "N*m")
 
 
@@ -272,7 +216,7 @@ TORSION = REGISTRY.register(ComponentType(
     doc="A helical torsion spring (Shigley 10th ed. Sec. 10-12): static bending stress against S_y (Eq. 10-57) "
         "and, with an arbor, the clearance of the wound-up coil on it.",
     fields=(
-        *[f for f in _wire_fields((Field("body_turns", "float", "body turns Nb", required=True),))
+        *[f for f in wire_fields((Field("body_turns", "float", "body turns Nb", required=True),))
           if f.name != "shear_modulus"],
         Field("leg1_length", "length", "length of leg 1 from the coil centre to the load", default="0 mm"),
         Field("leg2_length", "length", "length of leg 2", default="0 mm"),
