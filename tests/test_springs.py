@@ -97,7 +97,7 @@ def test_end_types_table_10_1():
 def test_buckling_matches_en13906_form():
     """EN 13906-1 Eq. for s_K equals Shigley Eq. (10-10) with nu = alpha."""
     s = spring(L0="200 mm", Na=30)
-    E, G = s._si["E"], s._si["G"]
+    E, G = s.si["E"], s.si["G"]
     L0, D, nu = 0.2, 0.03, 2.0
     arg = 1 - (1 - G / E) / (0.5 + G / E) * (math.pi * D / (nu * L0)) ** 2
     sK = L0 * 0.5 / (1 - G / E) * (1 - math.sqrt(arg))
@@ -113,7 +113,7 @@ def test_timoshenko_rigidities_closed_forms():
     s = spring()
     r0 = s.rigidities()
     assert (r0.alpha / s.free_length).m_as("N/m") == pytest.approx(s.rate.m_as("N/m"))
-    E, G, I = s._si["E"], s._si["G"], math.pi * 0.003**4 / 64
+    E, G, I = s.si["E"], s.si["G"], math.pi * 0.003**4 / 64
     assert r0.beta.m_as("N*m**2") == pytest.approx(2 * E * G * I * 0.1 / (math.pi * 10 * 0.015 * (E + 2 * G)))
     assert r0.gamma.m_as("N") == pytest.approx(E * I * 0.1 / (math.pi * 10 * 0.015**3))
     r = s.rigidities("80 mm")

@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 import tomllib
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from typing import Any
 
@@ -264,10 +264,84 @@ def end_condition_constant(end: str) -> float:
     return float(table[end])
 
 
+class HelicalSpring:
+    """What the three helical spring classes share (compression, extension, torsion: one copy).
+
+    A subclass is a frozen dataclass with the fields ``d``, ``D``/``OD``/``ID``, ``material``,
+    ``spring_class`` and ``name``; it defines ``_si_values()`` (its inputs in SI, validated) and
+    calls ``self.validate()`` at the end of ``__post_init__``, so bad input fails at construction.
+    The values are ``functools.cached_property`` (see :mod:`mechverify.frozen`): not fields, so ``==``,
+    ``hash`` and ``repr`` ignore them, and ``pickle`` carries them.
+    """
+
+    name: str
+    material: str | Material
+    spring_class: str | None
+
+    def _si_values(self) -> dict[str, float]:  # pragma: no cover - every subclass defines it
+        raise NotImplementedError
+
+    def validate(self) -> None:
+        """Compute the derived values once (their errors are construction errors)."""
+        self.si  # noqa: B018
+        self.wire_class  # noqa: B018
+
+    @cached_property
+    def si(self) -> dict[str, float]:
+        """The spring's inputs in SI units [m, Pa, N] after validation (``d``, ``D``, coils, moduli,
+        ``Sut``, ...); read it, do not change it."""
+        return self._si_values()
+
+    @cached_property
+    def material_record(self) -> Material:
+        """The wire's :class:`~mechverify.materials.material.Material`."""
+        return resolve_material(self.material)
+
+    @cached_property
+    def wire_class(self) -> str:
+        """Shigley Table 10-6 class of the wire (``cold_drawn``, ``hardened_tempered``, ...)."""
+        return spring_wire_class(self.material_record, self.spring_class)
+
+    @property
+    def wire_diameter(self) -> pint.Quantity:
+        """Wire diameter d [mm]."""
+        return Q(self.si["d"], "m").to("mm")
+
+    @property
+    def mean_diameter(self) -> pint.Quantity:
+        """Mean coil diameter D [mm]."""
+        return Q(self.si["D"], "m").to("mm")
+
+    @property
+    def outside_diameter(self) -> pint.Quantity:
+        """Outside coil diameter D + d [mm]."""
+        return Q(self.si["D"] + self.si["d"], "m").to("mm")
+
+    @property
+    def inside_diameter(self) -> pint.Quantity:
+        """Inside coil diameter D - d [mm]."""
+        return Q(self.si["D"] - self.si["d"], "m").to("mm")
+
+    @property
+    def index(self) -> float:
+        """Spring index C = D/d [-]."""
+        return self.si["D"] / self.si["d"]
+
+    @property
+    def elastic_modulus(self) -> pint.Quantity:
+        """Young's modulus E of the wire used [GPa]."""
+        return Q(self.si["E"], "Pa").to("GPa")
+
+    @property
+    def tensile_strength(self) -> pint.Quantity:
+        """Minimum tensile strength S_ut of the wire at this diameter [MPa]."""
+        return Q(self.si["Sut"], "Pa").to("MPa")
+
+
 __all__ = [
     "ZimmerliData", "spring_index", "direct_shear_factor", "wahl_factor", "bergstrasser_factor",
     "curvature_factor", "torsion_spring_factors", "helical_rate", "helical_shear_stress", "mean_diameter_for_rate",
     "active_coils_for_rate", "active_coil_mass", "surge_frequency", "torsional_ultimate_strength", "zimmerli",
     "end_condition_constant", "spring_wire_class", "class_fraction", "wire_tensile_strength", "resolve_material",
-    "spring_data", "SPRING_CLASSES",
+    "spring_data", "SPRING_CLASSES", "HelicalSpring",
 ]

@@ -14,7 +14,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from enum import StrEnum
 from typing import Any
 
@@ -23,6 +23,7 @@ import pint
 from mechverify.components import spring_formulas as sf
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue import criteria
+from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
 
@@ -95,7 +96,7 @@ class SpringRigidities:
 
 
 @dataclass(frozen=True)
-class CompressionSpring:
+class CompressionSpring(sf.HelicalSpring):
     """A helical compression spring of round wire.
 
     Give the wire diameter ``d``, one of ``D`` (mean), ``OD`` (outside) or ``ID`` (inside) coil
@@ -123,10 +124,12 @@ class CompressionSpring:
     set_removed: bool = False
     peened: bool = False
     name: str = "spring"
-    _si: dict[str, float] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        s = object.__setattr__
+        set_fields(self, end=EndType.of(self.end))
+        self.validate()
+
+    def _si_values(self) -> dict[str, float]:
         d, D = sf.coil_geometry(self.name, self.d, self.D, self.OD, self.ID)
         end = EndType.of(self.end)
         if (self.Na is None) == (self.Nt is None):
@@ -141,7 +144,7 @@ class CompressionSpring:
         if L0 <= Ls:
             raise InputError(f"{self.name}: solid length {fmt(Q(Ls, 'm'), 'mm')} is not below the free length "
                              f"L0 = {fmt(Q(L0, 'm'), 'mm')}; the spring cannot be compressed")
-        mat = sf.resolve_material(self.material)
+        mat = self.material_record
         G = to_si(self.G, "pressure", "G") if self.G is not None else to_si(mat.require("G"), "pressure", "G")
         E = to_si(self.E, "pressure", "E") if self.E is not None else to_si(mat.require("E"), "pressure", "E")
         for nm, v in (("G", G), ("E", E)):
@@ -151,75 +154,36 @@ class CompressionSpring:
                else to_si(sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut"))
         rho = (to_si(self.density, "density", "density") if self.density is not None
                else (to_si(mat.density, "density", "density") if mat.density is not None else float("nan")))
-        cls = sf.spring_wire_class(mat, self.spring_class)
-        s(self, "end", end)
-        s(self, "_si", dict(d=d, D=D, Na=Na, Nt=Nt, L0=L0, Ls=Ls, G=G, E=E, Sut=Sut, rho=rho))
-        s(self, "_material", mat)
-        s(self, "_class", cls)
+        return dict(d=d, D=D, Na=Na, Nt=Nt, L0=L0, Ls=Ls, G=G, E=E, Sut=Sut, rho=rho)
 
     # ------------------------------------------------------------------------------ geometry
     @property
-    def wire_diameter(self) -> pint.Quantity:
-        return Q(self._si["d"], "m").to("mm")
-
-    @property
-    def mean_diameter(self) -> pint.Quantity:
-        return Q(self._si["D"], "m").to("mm")
-
-    @property
-    def elastic_modulus(self) -> pint.Quantity:
-        """Young's modulus E of the wire used [GPa]."""
-        return Q(self._si["E"], "Pa").to("GPa")
-
-    @property
     def shear_modulus(self) -> pint.Quantity:
         """Shear modulus G of the wire used [GPa]."""
-        return Q(self._si["G"], "Pa").to("GPa")
-
-    @property
-    def outside_diameter(self) -> pint.Quantity:
-        return Q(self._si["D"] + self._si["d"], "m").to("mm")
-
-    @property
-    def inside_diameter(self) -> pint.Quantity:
-        return Q(self._si["D"] - self._si["d"], "m").to("mm")
+        return Q(self.si["G"], "Pa").to("GPa")
 
     @property
     def active_coils(self) -> float:
-        return self._si["Na"]
+        return self.si["Na"]
 
     @property
     def total_coils(self) -> float:
-        return self._si["Nt"]
+        return self.si["Nt"]
 
     @property
     def free_length(self) -> pint.Quantity:
-        return Q(self._si["L0"], "m").to("mm")
+        return Q(self.si["L0"], "m").to("mm")
 
     @property
     def solid_length(self) -> pint.Quantity:
         """Lₛ by end type (Shigley [1] Table 10-1)."""
-        return Q(self._si["Ls"], "m").to("mm")
+        return Q(self.si["Ls"], "m").to("mm")
 
     @property
     def pitch(self) -> pint.Quantity:
         """Coil pitch p by end type (Shigley [1] Table 10-1)."""
-        s = self._si
+        s = self.si
         return Q(self.end.pitch(s["L0"], s["d"], s["Na"]), "m").to("mm")
-
-    @property
-    def material_record(self) -> Material:
-        return self._material  # type: ignore[attr-defined]
-
-    @property
-    def wire_class(self) -> str:
-        """Shigley Table 10-6 class of the wire (``cold_drawn``, ``hardened_tempered``, ...)."""
-        return self._class  # type: ignore[attr-defined]
-
-    @property
-    def index(self) -> float:
-        """Spring index C = D/d."""
-        return self._si["D"] / self._si["d"]
 
     @property
     def bergstrasser_factor(self) -> float:
@@ -242,22 +206,22 @@ class CompressionSpring:
     @property
     def rate(self) -> pint.Quantity:
         """k = d⁴G/(8D³Nₐ) (Shigley [1] Eq. (10-9))."""
-        s = self._si
+        s = self.si
         return from_si(sf.helical_rate.si(s["d"], s["D"], s["Na"], s["G"]), "force_per_length").to("N/mm")
 
     def _k(self) -> float:
-        s = self._si
+        s = self.si
         return sf.helical_rate.si(s["d"], s["D"], s["Na"], s["G"])
 
     @property
     def solid_deflection(self) -> pint.Quantity:
         """Deflection from free to solid length, L₀ - Lₛ."""
-        return Q(self._si["L0"] - self._si["Ls"], "m").to("mm")
+        return Q(self.si["L0"] - self.si["Ls"], "m").to("mm")
 
     @property
     def solid_force(self) -> pint.Quantity:
         """Force to close the spring solid, k(L₀ - Lₛ)."""
-        return from_si(self._k() * (self._si["L0"] - self._si["Ls"]), "force")
+        return from_si(self._k() * (self.si["L0"] - self.si["Ls"]), "force")
 
     def force(self, deflection: QuantityLike) -> pint.Quantity:
         """F = k·y for a deflection y up to the solid deflection."""
@@ -279,7 +243,7 @@ class CompressionSpring:
     def _within_travel(self, y: float) -> None:
         if y < 0:
             raise InputError(f"{self.name}: deflection must be >= 0 (compression), got {fmt(Q(y, 'm'), 'mm')}")
-        if y > self._si["L0"] - self._si["Ls"] * (1 - 1e-12):
+        if y > self.si["L0"] - self.si["Ls"] * (1 - 1e-12):
             raise InputError(f"{self.name}: deflection {fmt(Q(y, 'm'), 'mm')} exceeds the travel to solid "
                              f"{fmt(self.solid_deflection)} (solid force {fmt(self.solid_force, 'N')})")
 
@@ -292,7 +256,7 @@ class CompressionSpring:
         """
         F = to_si(force, "force", "force")
         K = self._factor(factor)
-        return from_si(sf.helical_shear_stress.si(F, self._si["D"], self._si["d"], K), "pressure").to("MPa")
+        return from_si(sf.helical_shear_stress.si(F, self.si["D"], self.si["d"], K), "pressure").to("MPa")
 
     def _factor(self, factor: str) -> float:
         table = {"auto": self.stress_factor, "bergstrasser": self.bergstrasser_factor, "wahl": self.wahl_factor,
@@ -305,11 +269,6 @@ class CompressionSpring:
     def solid_stress(self) -> pint.Quantity:
         """Shear stress when closed solid (force k(L₀ - Lₛ))."""
         return self.shear_stress(self.solid_force)
-
-    @property
-    def tensile_strength(self) -> pint.Quantity:
-        """Minimum tensile strength S_ut of the wire at this diameter."""
-        return Q(self._si["Sut"], "Pa").to("MPa")
 
     @property
     def allowable_static_stress(self) -> pint.Quantity:
@@ -331,7 +290,7 @@ class CompressionSpring:
         ``pinned-pinned``, ``fixed-guided``, ``fixed-free``) or is α itself.
         """
         alpha = self._alpha(end)
-        s = self._si
+        s = self.si
         E, G = s["E"], s["G"]
         lam = alpha * s["L0"] / s["D"]
         C1 = E / (2 * (E - G))
@@ -347,7 +306,7 @@ class CompressionSpring:
         Shigley [1] Eq. (10-13) (for steels L₀ < 2.63 D/α, Eq. (10-14)).
         """
         alpha = self._alpha(end)
-        s = self._si
+        s = self.si
         E, G = s["E"], s["G"]
         return Q(math.pi * s["D"] / alpha * math.sqrt(2 * (E - G) / (2 * G + E)), "m").to("mm")
 
@@ -368,7 +327,7 @@ class CompressionSpring:
     # ------------------------------------------------------------------------------ dynamics
     @property
     def active_mass(self) -> pint.Quantity:
-        s = self._si
+        s = self.si
         if not math.isfinite(s["rho"]):
             raise InputError(f"material {self.material_record.name!r} has no density; give density=")
         return from_si(sf.active_coil_mass.si(s["d"], s["D"], s["Na"], s["rho"]), "mass").to("g")
@@ -393,12 +352,12 @@ class CompressionSpring:
             raise InputError(f"{self.name}: need 0 <= F_min <= F_max, got F_min = {fmt(Q(F1, 'N'))}, "
                              f"F_max = {fmt(Q(F2, 'N'))}")
         self._within_travel(F2 / self._k())
-        z = sf.zimmerli(self.peened, Q(self._si["d"], "m"))
+        z = sf.zimmerli(self.peened, Q(self.si["d"], "m"))
         KB = self.bergstrasser_factor
-        D, d = self._si["D"], self._si["d"]
+        D, d = self.si["D"], self.si["d"]
         ta = sf.helical_shear_stress.si((F2 - F1) / 2, D, d, KB)
         tm = sf.helical_shear_stress.si((F2 + F1) / 2, D, d, KB)
-        Ssu = 0.67 * self._si["Sut"]
+        Ssu = 0.67 * self.si["Sut"]
         Ssy = to_si(self.allowable_static_stress, "pressure")
         Ssa_z, Ssm_z = z.Ssa.m_as("Pa"), z.Ssm.m_as("Pa")
         if criterion == "sines":
@@ -428,7 +387,7 @@ class CompressionSpring:
         Compressed to L the coils per unit length grow by L₀/L, so each rigidity scales by L/L₀.
         α₀/L₀ is the axial rate k; β is the spring's flexural rigidity ("EI").
         """
-        s = self._si
+        s = self.si
         L = s["L0"] if length is None else to_si(length, "length", "length")
         if not (s["Ls"] <= L <= s["L0"]):
             raise InputError(f"{self.name}: length {fmt(Q(L, 'm'), 'mm')} outside solid..free "

@@ -10,7 +10,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import pint
@@ -36,7 +36,7 @@ def hook_torsion_factor(C2: float) -> float:
 
 
 @dataclass(frozen=True)
-class ExtensionSpring:
+class ExtensionSpring(sf.HelicalSpring):
     """A helical extension spring with full-loop hooks.
 
     ``d`` wire, one of ``D``/``OD``/``ID``, ``Nb`` body coils, ``Fi`` initial tension, ``r1`` the
@@ -58,9 +58,11 @@ class ExtensionSpring:
     Sut: Any = None
     spring_class: str | None = None
     name: str = "extension spring"
-    _si: dict[str, float] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        self.validate()
+
+    def _si_values(self) -> dict[str, float]:
         d, D = sf.coil_geometry(self.name, self.d, self.D, self.OD, self.ID)
         Nb = float(self.Nb)
         if Nb <= 0:
@@ -70,91 +72,76 @@ class ExtensionSpring:
             raise InputError(f"{self.name}: initial tension must be >= 0")
         r1 = D / 2 if self.r1 is None else to_si(self.r1, "length", "r1")
         r2 = math.nan if self.r2 is None else to_si(self.r2, "length", "r2")
-        mat = sf.resolve_material(self.material)
+        mat = self.material_record
         G = to_si(self.G if self.G is not None else mat.require("G"), "pressure", "G")
         E = to_si(self.E if self.E is not None else mat.require("E"), "pressure", "E")
         Sut = to_si(self.Sut if self.Sut is not None else sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut")
-        object.__setattr__(self, "_si", dict(d=d, D=D, Nb=Nb, Fi=Fi, r1=r1, r2=r2, G=G, E=E, Sut=Sut))
-        object.__setattr__(self, "_class", sf.spring_wire_class(mat, self.spring_class))
-
-    @property
-    def wire_diameter(self) -> pint.Quantity:
-        """Wire diameter d [mm]."""
-        return Q(self._si["d"], "m").to("mm")
-
-    @property
-    def mean_diameter(self) -> pint.Quantity:
-        """Mean coil diameter D [mm]."""
-        return Q(self._si["D"], "m").to("mm")
+        return dict(d=d, D=D, Nb=Nb, Fi=Fi, r1=r1, r2=r2, G=G, E=E, Sut=Sut)
 
     @property
     def body_coils(self) -> float:
         """Body coils N_b [-]."""
-        return self._si["Nb"]
+        return self.si["Nb"]
 
     @property
     def hook_bend_radius(self) -> pint.Quantity:
         """Mean radius r1 of the hook bend at section A [mm] (default D/2, a full loop)."""
-        return Q(self._si["r1"], "m").to("mm")
+        return Q(self.si["r1"], "m").to("mm")
 
     @property
     def hook_side_radius(self) -> pint.Quantity | None:
         """Side-bend radius r2 at section B [mm], or ``None`` when not given."""
-        return None if self._si["r2"] is None else Q(self._si["r2"], "m").to("mm")
-
-    @property
-    def index(self) -> float:
-        return self._si["D"] / self._si["d"]
+        return None if self.si["r2"] is None else Q(self.si["r2"], "m").to("mm")
 
     @property
     def active_coils(self) -> float:
         """Nₐ = N_b + G/E (the hooks add G/E coils; Shigley [1] Sec. 10-11)."""
-        s = self._si
+        s = self.si
         return s["Nb"] + s["G"] / s["E"]
 
     @property
     def free_length(self) -> pint.Quantity:
         """Free length inside the hooks L₀ = 2(D - d) + (N_b + 1)d = (2C - 1 + N_b)d ([1] Sec. 10-11)."""
-        s = self._si
+        s = self.si
         return Q(2 * (s["D"] - s["d"]) + (s["Nb"] + 1) * s["d"], "m").to("mm")
 
     @property
     def rate(self) -> pint.Quantity:
-        s = self._si
+        s = self.si
         return sf.helical_rate(Q(s["d"], "m"), Q(s["D"], "m"), self.active_coils, Q(s["G"], "Pa")).to("N/mm")
 
     @property
     def initial_tension(self) -> pint.Quantity:
-        return Q(self._si["Fi"], "N")
+        return Q(self.si["Fi"], "N")
 
     def force(self, extension: QuantityLike) -> pint.Quantity:
         """F = F_i + k·y."""
         y = to_si(extension, "length", "extension")
         if y < 0:
             raise InputError(f"{self.name}: extension must be >= 0")
-        return Q(self._si["Fi"] + self.rate.m_as("N/m") * y, "N")
+        return Q(self.si["Fi"] + self.rate.m_as("N/m") * y, "N")
 
     def extension(self, force: QuantityLike) -> pint.Quantity:
         """y = (F - F_i)/k; zero below the initial tension."""
         F = to_si(force, "force", "force")
-        return Q(max(F - self._si["Fi"], 0.0) / self.rate.m_as("N/m"), "m").to("mm")
+        return Q(max(F - self.si["Fi"], 0.0) / self.rate.m_as("N/m"), "m").to("mm")
 
     def body_stress(self, force: Any) -> pint.Quantity:
         """Body shear stress τ = K_B·8FD/(πd³) ([1] Eq. (10-7))."""
-        s = self._si
+        s = self.si
         KB = sf.bergstrasser_factor(self.index)
         return sf.helical_shear_stress(force, Q(s["D"], "m"), Q(s["d"], "m"), KB).to("MPa")
 
     def hook_bending_stress(self, force: QuantityLike) -> pint.Quantity:
         """Bending + tension at hook section A: σ_A = F[(K)_A·16D/(πd³) + 4/(πd²)], C₁ = 2r₁/d ([1] Sec. 10-11)."""
-        s = self._si
+        s = self.si
         F = to_si(force, "force", "force")
         KA = hook_bending_factor(2 * s["r1"] / s["d"])
         return Q(F * (KA * 16 * s["D"] / (math.pi * s["d"] ** 3) + 4 / (math.pi * s["d"] ** 2)), "Pa").to("MPa")
 
     def hook_torsion_stress(self, force: Any) -> pint.Quantity:
         """Torsion at hook section B: τ_B = (K)_B·8FD/(πd³), C₂ = 2r₂/d ([1] Sec. 10-11)."""
-        s = self._si
+        s = self.si
         if math.isnan(s["r2"]):
             raise InputError(f"{self.name}: the hook torsion stress needs the side-bend radius r2")
         KB = hook_torsion_factor(2 * s["r2"] / s["d"])
@@ -163,7 +150,7 @@ class ExtensionSpring:
     @property
     def initial_stress(self) -> pint.Quantity:
         """Uncorrected initial torsional stress τᵢ = 8FᵢD/(πd³) (as plotted in [1] Fig. 10-7)."""
-        s = self._si
+        s = self.si
         return sf.helical_shear_stress(Q(s["Fi"], "N"), Q(s["D"], "m"), Q(s["d"], "m"), 1.0).to("MPa")
 
     def initial_stress_range(self) -> tuple[pint.Quantity, pint.Quantity]:
@@ -180,15 +167,11 @@ class ExtensionSpring:
         if where not in key:
             from mechverify.errors import UnknownNameError
             raise UnknownNameError("extension-spring stress location", where, key)
-        return (sf.class_fraction(self._class, key[where]) * Q(self._si["Sut"], "Pa")).to("MPa")  # type: ignore[attr-defined]
-
-    @property
-    def tensile_strength(self) -> pint.Quantity:
-        return Q(self._si["Sut"], "Pa").to("MPa")
+        return (sf.class_fraction(self.wire_class, key[where]) * Q(self.si["Sut"], "Pa")).to("MPa")
 
     def __repr__(self) -> str:
-        return (f"<ExtensionSpring {self.name!r} d={fmt(Q(self._si['d'], 'm'), 'mm')} "
-                f"D={fmt(Q(self._si['D'], 'm'), 'mm')} Nb={self._si['Nb']:g} Fi={fmt(self.initial_tension)}>")
+        return (f"<ExtensionSpring {self.name!r} d={fmt(Q(self.si['d'], 'm'), 'mm')} "
+                f"D={fmt(Q(self.si['D'], 'm'), 'mm')} Nb={self.si['Nb']:g} Fi={fmt(self.initial_tension)}>")
 
 
 __all__ = ["ExtensionSpring", "hook_bending_factor", "hook_torsion_factor"]

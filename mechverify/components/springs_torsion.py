@@ -11,7 +11,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import pint
@@ -23,7 +23,7 @@ from mechverify.units import Q, QuantityLike, fmt, to_si
 
 
 @dataclass(frozen=True)
-class TorsionSpring:
+class TorsionSpring(sf.HelicalSpring):
     """A helical torsion spring: wire ``d``, one of ``D``/``OD``/``ID``, ``Nb`` body turns, straight legs
     ``l1``, ``l2`` (from the coil centre to the load, default 0), ``material`` (default A228)."""
 
@@ -39,9 +39,11 @@ class TorsionSpring:
     Sut: Any = None
     spring_class: str | None = None
     name: str = "torsion spring"
-    _si: dict[str, float] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        self.validate()
+
+    def _si_values(self) -> dict[str, float]:
         d, D = sf.coil_geometry(self.name, self.d, self.D, self.OD, self.ID)
         Nb = float(self.Nb)
         if Nb <= 0:
@@ -49,36 +51,21 @@ class TorsionSpring:
         l1, l2 = to_si(self.l1, "length", "l1"), to_si(self.l2, "length", "l2")
         if l1 < 0 or l2 < 0:
             raise InputError(f"{self.name}: leg lengths must be >= 0")
-        mat = sf.resolve_material(self.material)
+        mat = self.material_record
         E = to_si(self.E if self.E is not None else mat.require("E"), "pressure", "E")
         Sut = to_si(self.Sut if self.Sut is not None else sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut")
-        object.__setattr__(self, "_si", dict(d=d, D=D, Nb=Nb, l1=l1, l2=l2, E=E, Sut=Sut))
-        object.__setattr__(self, "_class", sf.spring_wire_class(mat, self.spring_class))
-
-    @property
-    def wire_diameter(self) -> pint.Quantity:
-        """Wire diameter d [mm]."""
-        return Q(self._si["d"], "m").to("mm")
-
-    @property
-    def mean_diameter(self) -> pint.Quantity:
-        """Mean coil diameter D [mm]."""
-        return Q(self._si["D"], "m").to("mm")
-
-    @property
-    def index(self) -> float:
-        return self._si["D"] / self._si["d"]
+        return dict(d=d, D=D, Nb=Nb, l1=l1, l2=l2, E=E, Sut=Sut)
 
     @property
     def active_turns(self) -> float:
         """Nₐ = N_b + (l₁ + l₂)/(3πD) (legs as equivalent turns, [1] Sec. 10-12)."""
-        s = self._si
+        s = self.si
         return s["Nb"] + (s["l1"] + s["l2"]) / (3 * math.pi * s["D"])
 
     def rate(self, friction_corrected: bool = True) -> pint.Quantity:
         """Angular rate [N·m/rad]: d⁴E/(10.8DNₐ) per turn (Shigley's friction-corrected Eq. (10-51)) divided
         by 2π, or the theoretical d⁴E/(64DNₐ) per radian with ``friction_corrected=False``."""
-        s = self._si
+        s = self.si
         if friction_corrected:
             k = s["d"] ** 4 * s["E"] / (10.8 * s["D"] * self.active_turns) / (2 * math.pi)
         else:
@@ -97,36 +84,32 @@ class TorsionSpring:
         if fibre not in ("inner", "outer"):
             raise InputError(f"fibre: 'inner' or 'outer', got {fibre!r}")
         K = Ki if fibre == "inner" else Ko
-        return Q(K * 32 * M / (math.pi * self._si["d"] ** 3), "Pa").to("MPa")
-
-    @property
-    def tensile_strength(self) -> pint.Quantity:
-        return Q(self._si["Sut"], "Pa").to("MPa")
+        return Q(K * 32 * M / (math.pi * self.si["d"] ** 3), "Pa").to("MPa")
 
     @property
     def yield_strength(self) -> pint.Quantity:
         """Static bending yield S_y = 0.78 S_ut (music wire, cold-drawn), 0.87 (hardened and tempered),
         0.61 (stainless, nonferrous) ([1] Eq. (10-57))."""
-        return (sf.class_fraction(self._class, "torsion_spring_bending") * self.tensile_strength).to("MPa")  # type: ignore[attr-defined]
+        return (sf.class_fraction(self.wire_class, "torsion_spring_bending") * self.tensile_strength).to("MPa")
 
     @property
     def yield_moment(self) -> pint.Quantity:
         """Moment at which the inner fibre reaches S_y: M_y = πd³S_y/(32K_i)."""
         Ki, _ = sf.torsion_spring_factors(self.index)
-        return Q(math.pi * self._si["d"] ** 3 * self.yield_strength.m_as("Pa") / (32 * Ki), "N*m")
+        return Q(math.pi * self.si["d"] ** 3 * self.yield_strength.m_as("Pa") / (32 * Ki), "N*m")
 
     def loaded_inside_diameter(self, moment: Any) -> pint.Quantity:
         """Inside diameter when wound up by M: D' = DN_b/(N_b + θ'_c) - d, θ'_c body turns ([1] Sec. 10-12).
 
         The body rotation excludes the legs: θ'_c = M/k'·N_b/Nₐ.
         """
-        s = self._si
+        s = self.si
         turns = to_si(self.angle(moment), "angle") / (2 * math.pi) * s["Nb"] / self.active_turns
         return Q(s["D"] * s["Nb"] / (s["Nb"] + turns) - s["d"], "m").to("mm")
 
     def __repr__(self) -> str:
-        return (f"<TorsionSpring {self.name!r} d={fmt(Q(self._si['d'], 'm'), 'mm')} "
-                f"D={fmt(Q(self._si['D'], 'm'), 'mm')} Nb={self._si['Nb']:g}>")
+        return (f"<TorsionSpring {self.name!r} d={fmt(Q(self.si['d'], 'm'), 'mm')} "
+                f"D={fmt(Q(self.si['D'], 'm'), 'mm')} Nb={self.si['Nb']:g}>")
 
 
 __all__ = ["TorsionSpring"]
