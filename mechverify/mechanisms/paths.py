@@ -203,7 +203,7 @@ class RPArm:
     the revolute axis, ``arm_mass`` m_a with its centre of mass at ``arm_com`` r_a."""
 
     reach_min: QuantityLike = "0 m"
-    reach_max: QuantityLike = "1 m"
+    reach_max: QuantityLike | None = "1 m"  # None: no limit
     carriage_mass: QuantityLike = "0 kg"
     arm_inertia: QuantityLike = "0 kg*m^2"
     arm_mass: QuantityLike = "0 kg"
@@ -214,7 +214,8 @@ class RPArm:
     q1_max: QuantityLike | None = None
 
     def _si(self) -> tuple[float, ...]:
-        return (to_si(self.reach_min, "length", "reach_min"), to_si(self.reach_max, "length", "reach_max"),
+        hi = math.inf if self.reach_max is None else to_si(self.reach_max, "length", "reach_max")
+        return (to_si(self.reach_min, "length", "reach_min"), hi,
                 to_si(self.carriage_mass, "mass", "carriage_mass"), to_si(self.arm_inertia, "inertia", "arm_inertia"),
                 to_si(self.arm_mass, "mass", "arm_mass"), to_si(self.arm_com, "length", "arm_com"),
                 to_si(self.gravity, "acceleration", "gravity"))

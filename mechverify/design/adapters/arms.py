@@ -246,9 +246,8 @@ def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
         J = J_a + (to_si(p["arm_inertia"], "inertia", "arm_inertia") if "arm_inertia" in p else 0.0)
         mc = to_si(p.get("carriage_mass", "0 kg"), "mass", "carriage_mass") + to_si(p.get("payload", "0 kg"), "mass",
                                                                                      "payload")
-        if "reach_max" not in p:
-            raise InputError("reach_max: missing (the prismatic joint's longest extension)")
-        arm = mp.RPArm(reach_min=p.get("reach_min", "0 m"), reach_max=p["reach_max"], carriage_mass=Q(mc, "kg"),
+        arm = mp.RPArm(reach_min=p.get("reach_min", "0 m"), reach_max=p.get("reach_max"),
+                       carriage_mass=Q(mc, "kg"),
                        arm_inertia=Q(J, "kg*m^2"), arm_mass=Q(m_a, "kg"), arm_com=Q(r_a, "m"), gravity=g, name=name,
                        **lim)
         motion = arm.inverse(path)
@@ -286,6 +285,12 @@ def _peak(i: int, what: str) -> Any:
     return fn
 
 
+def _q2_speed(a: ArmOnPath) -> Any:
+    if a.kinds[1] != "length":
+        raise InputError(f"{a.name}: q2 is revolute; q2_peak_speed is the prismatic joint's speed (RP arms)")
+    return Q(float(np.max(np.abs(a.motion.dq2))), "m/s")
+
+
 _LIMIT = "joint limit (an angle); the first path sample outside it is named"
 PLANAR_ARM = REGISTRY.register(ComponentType(
     name="planar_arm",
@@ -300,7 +305,7 @@ PLANAR_ARM = REGISTRY.register(ComponentType(
                                "acceleration (trapezoidal from rest to rest) and samples (default 400)",
               required=True),
         Field("reach_min", "length", "RP: shortest extension of the prismatic joint"),
-        Field("reach_max", "length", "RP: longest extension of the prismatic joint"),
+        Field("reach_max", "length", "RP: longest extension of the prismatic joint (default: no limit)"),
         Field("carriage_mass", "mass", "RP: the carriage with the tool, a point mass at the extension q2"),
         Field("arm_inertia", "inertia", "RP: inertia about q1 besides the bodies (e.g. a motor rotor)"),
         Field("l1", "length", "RR: first link length"),
@@ -321,6 +326,10 @@ PLANAR_ARM = REGISTRY.register(ComponentType(
         Output("q1_peak_torque", "torque", "largest |joint torque| of q1 along the path", _peak(0, "torque")),
         Output("q2_peak_force", "force", "RP: largest |joint force| of the prismatic joint", _peak(1, "force")),
         Output("q2_peak_torque", "torque", "RR: largest |joint torque| of q2", _peak(1, "torque")),
+        Output("q1_peak_speed", "angular_velocity", "largest |q1'| along the path",
+               lambda a, loads: Q(float(np.max(np.abs(a.motion.dq1))), "rad/s")),
+        Output("q2_peak_speed", "velocity", "RP: largest |q2'| of the prismatic joint along the path",
+               lambda a, loads: _q2_speed(a)),
         Output("q1_inertia", "inertia", "largest inertia about q1 on the path (links and payload)",
                lambda a, loads: Q(float(np.max(a.q1_inertia)), "kg*m^2")),
         Output("path_length", "length", "length of the path", lambda a, loads: Q(a.path.length, "m")),
