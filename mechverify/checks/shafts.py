@@ -306,10 +306,11 @@ def check_shaft_gear_deflection(shaft: s.Shaft, a: ShaftAnalysis, *, required_sf
 
 @check("shaft_critical_speed", title="Shaft first critical speed", sf_kind="speed",
        source=ref("shigley10", "Sec. 7-6, Eqs. 7-23, 7-24"),
-       explain=("The operating speed against the first lateral critical speed: the first natural frequency of the "
-                "shaft on its bearings from the consistent-mass beam eigenproblem K phi = omega^2 M phi (the "
-                "shaft's distributed mass and the mounted masses; Shigley Sec. 7-6 identifies the first critical "
-                "speed with it), with Rayleigh's estimate (Eq. 7-23, static deflections under the weights, an "
+       explain=("The operating speed against the first lateral critical speed: the first lateral natural frequency "
+                "of the shaft on its bearings from the frame's modal solution K phi = omega^2 M phi (consistent "
+                "mass of the shaft's members and the mounted masses; Shigley Sec. 7-6 identifies the first critical "
+                "speed with it; a shaft without its own mass uses the shaft's planar consistent-mass eigenproblem), "
+                "with Rayleigh's estimate (Eq. 7-23, static deflections under the weights, an "
                 "upper bound of the lumped system) and Dunkerley's (Eq. 7-24, influence coefficients, a lower "
                 "bound) from the same frame model as cross-checks; without the modal solution the lower of the "
                 "two closed forms decides. The margin omega_c/omega is asked to exceed the speed safety factor "
@@ -327,7 +328,7 @@ def check_shaft_critical_speed(shaft: s.Shaft, cs: CriticalSpeed, *, modal: Moda
     notes: tuple[str, ...] = ()
     if modal is not None:
         inputs = {"modal": Q(modal.first * rpm, "rpm"), **inputs}
-        notes = (f"capacity: first natural frequency of the consistent-mass beam model ({modal.elements} elements, "
+        notes = (f"capacity: first lateral natural frequency of the consistent-mass model ({modal.elements} elements, "
                  f"{modal.theory}); Rayleigh/Dunkerley on {len(cs.masses)} lumped masses as cross-checks",)
     return CheckResult(
         check="shaft_critical_speed", component=shaft.name, demand=Q(shaft.speed * rpm, "rpm"),

@@ -383,5 +383,57 @@ def modal_critical_speeds(shaft: Shaft, n_modes: int = 3, theory: str = "euler",
     return ModalCriticalSpeeds(tuple(float(v) for v in np.sqrt(w2)), x, w, len(x) - 1, theory)
 
 
+def frame_critical_speeds(shaft: Shaft, n_modes: int = 3, theory: str = "timoshenko",
+                          elements_per_member: int = 10) -> ModalCriticalSpeeds:
+    """Lateral critical speeds from the frame's modal solution (:func:`mechverify.fea.frame.modal.frame_modes`):
+    the shaft's frame model (the same members, supports and theory as the static analysis, the members' consistent
+    mass from the material's density, Timoshenko members with rotary inertia) with the load masses as point
+    masses. The 3D frame also has torsional and axial modes; the lateral ones are those whose largest motion is a
+    transverse translation, and each appears twice (y and z whirl of the round shaft), counted once here.
+
+    A shaft whose own mass is switched off (``shaft_mass = false``) has massless frame nodes, which the frame
+    solver rejects; :func:`modal_critical_speeds` (the shaft's own planar eigenproblem) handles that case.
+
+    Raises:
+        InputError: ``shaft_mass`` off (use :func:`modal_critical_speeds`); the frame's named errors.
+    """
+    from mechverify.fea.frame.modal import PointMass, frame_modes
+
+    if not shaft.shaft_mass:
+        raise InputError(f"shaft {shaft.name}: the frame's modal solution needs the shaft's own mass "
+                         "(shaft_mass = true); modal_critical_speeds handles a massless shaft")
+    lm = [(ld.x, ld.mass) for ld in shaft.loads if ld.mass > 0]
+    st = _stations(shaft, [x for x, _ in lm])
+    masses = [PointMass(Q([x, 0, 0], "m"), Q(m, "kg")) for x, m in lm]
+    rmax = max(seg.diameter for seg in shaft.segments) / 2
+    fr = _frame(shaft, st, theory)
+    ask = 4 * n_modes + 4
+    while True:
+        try:
+            fm = frame_modes(fr, min(ask, 6 * (len(st) - 1) * elements_per_member), masses=masses,
+                             elements_per_member=elements_per_member)
+        except (InputError, ModelError) as exc:
+            raise _wrap(shaft, exc) from None
+        lateral: list[tuple[float, np.ndarray]] = []
+        for k, w2 in enumerate(fm.omega2):
+            sh = fm.shapes[k]
+            lat = np.hypot(sh[:, 1], sh[:, 2])
+            other = max(float(np.abs(sh[:, 0]).max()), float(np.abs(sh[:, 3]).max()) * rmax)
+            if lat.max() > other:
+                w = math.sqrt(max(float(w2), 0.0))
+                if not lateral or w > lateral[-1][0] * (1 + 1e-6):
+                    lateral.append((w, sh[:, 1] if np.abs(sh[:, 1]).max() >= np.abs(sh[:, 2]).max() else sh[:, 2]))
+        if len(lateral) >= n_modes or ask >= 6 * (len(st) - 1) * elements_per_member:
+            break
+        ask *= 2
+    if not lateral:
+        raise ModelError(f"shaft {shaft.name}: no lateral mode among the {len(fm.omega2)} lowest frame modes")
+    lateral = lateral[:n_modes]
+    order = np.argsort(fm.points[:, 0])
+    x = fm.points[order, 0]
+    shapes = np.array([v[order] / np.abs(v).max() for _, v in lateral])
+    return ModalCriticalSpeeds(tuple(w for w, _ in lateral), x, shapes, len(fm.elements), f"frame, {theory}")
+
+
 __all__ = ["Reaction", "ShaftAnalysis", "CriticalSpeed", "ModalCriticalSpeeds", "analyse", "critical_speed",
-           "lumped_masses", "modal_critical_speeds"]
+           "frame_critical_speeds", "lumped_masses", "modal_critical_speeds"]

@@ -134,8 +134,9 @@ def _run(fn: Any, **kw: Any) -> Any:
 
 def _critical(c: ShaftDesign, loads: Any, ctx: Any) -> Any:
     sh, _ = c.solved(loads)
-    return cs.check_shaft_critical_speed(sh, fs.critical_speed(sh), modal=fs.modal_critical_speeds(sh),
-                                         required_sf=ctx.required_sf, load_case=ctx.load_case)
+    modal = fs.frame_critical_speeds(sh) if sh.shaft_mass else fs.modal_critical_speeds(sh)
+    return cs.check_shaft_critical_speed(sh, fs.critical_speed(sh), modal=modal, required_sf=ctx.required_sf,
+                                         load_case=ctx.load_case)
 
 
 def _reaction_named(support: str, which: str) -> Any:
