@@ -81,3 +81,12 @@ def test_temperature_differences_in_kelvin():
     assert quantity(Q(40, "degC")) == "40.0 °C" and quantity(Q(313.15, "K")) == "40.0 °C"
     r = CheckResult(check="rise", component="m", demand=Q(40, "delta_degC"), capacity=Q(50, "delta_degC"))
     assert r.utilisation == pytest.approx(0.8)
+
+
+def test_angles_in_degrees():
+    """An angle is shown in degrees (the self-locking lead angle 4.05° used to print as 0.0706, its radians)."""
+    from mechverify.reports.numbers import quantity
+
+    assert quantity(Q(4.046, "deg")) == "4.05°"
+    assert quantity(Q(0.2618, "rad")) == "15.0°"
+    assert quantity(Q(0.5, "")) == "0.500"

@@ -20,7 +20,7 @@ _REWRITES = [
     (re.compile(r"\\right\\\}"), r"\\}"),
     (re.compile(r"\\dfrac"), r"\\frac"),
     (re.compile(r"\\tfrac"), r"\\frac"),
-    (re.compile(r"\\,|\\;|\\!"), " "),
+    # \, \; \! are mathtext's own thin, thick and negative spaces: kept (a number and its unit stay apart)
     (re.compile(r"\\quad"), r"\\ \\ "),
     (re.compile(r"\\le(?![a-zA-Z])"), r"\\leq"),
     (re.compile(r"\\ge(?![a-zA-Z])"), r"\\geq"),

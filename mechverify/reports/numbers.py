@@ -101,6 +101,9 @@ def unit_symbol(u: str | pint.Unit) -> str:
     return "rpm" if text in ("turn/min", "rpm", "1/min") else text.replace(" ", "")
 
 
+_ANGLE_UNITS = {"degree", "radian", "arcminute", "arcsecond", "turn", "revolution", "gradian"}
+
+
 def is_temperature_difference(q: Any) -> bool:
     """True for a temperature difference: a quantity in ``delta_degC``/``delta_degF`` (pint's difference units).
     A value in plain kelvin stays an absolute temperature (shown in °C); give a rise as ``Q(40, "delta_degC")``."""
@@ -121,6 +124,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     if unit:
         return f"{number(float(q.m_as(unit)), digits or 3)} {unit_symbol(unit)}"
     if q.dimensionless:
+        if _ANGLE_UNITS & set(q.units._units):  # an angle: degrees, never its value in radians
+            return f"{number(float(q.m_as('deg')), digits or 3)}°"
         return number(float(q.m_as("")), digits or 3)
     kind = _dims().get(q.dimensionality)
     if kind is None:  # an uncommon kind (pv, N/mm², ...): in the units the check gave it
