@@ -9,6 +9,7 @@ formula named (not a printed value) unless it says "document".
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -195,3 +196,26 @@ def test_elastica_integrator_matches_the_postbuckled_cantilever(alpha_deg):
     assert th == pytest.approx(math.radians(alpha_deg), rel=1e-6)
     assert x == pytest.approx(x_cf, rel=1e-6)
     assert z == pytest.approx(z_cf, rel=1e-5, abs=1e-9)
+
+
+def test_cable_spine_checks_substituted():
+    """The spine's check lines (issue 25's substituted formulas): P_cr = P_e/(1 + P_e/gamma), P_e = pi^2 beta/(4 l^2)
+    and SF = T_rated/T evaluate back (tests/test_reports_substituted.py's parser) to the check's capacity and
+    safety factor; past buckling too (P_cr at the critical length). A consistency check, no published number."""
+    import importlib.util
+    from pathlib import Path
+
+    from mechverify.checks import cable_spine as cc
+
+    spec = importlib.util.spec_from_file_location("_subst", Path(__file__).parent / "test_reports_substituted.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    spine = CableSpine(spring(), weight="1.25 N", name="neck")
+    st = spine.at_tilt("20 deg", "elastica")
+    results = [cc.check_spine_buckling_ratio(spine, st), cc.check_cable_tension(spine, st, "50 N"),
+               cc.check_spine_past_buckling(spine, "test")]
+    for r in results:
+        mod.assert_substituted(r)
+    bad = dataclasses.replace(results[0], substituted=results[0].substituted.replace("^{2}", "", 1))
+    with pytest.raises(AssertionError):
+        mod.assert_substituted(bad)
