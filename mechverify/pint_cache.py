@@ -14,7 +14,9 @@ factor that pint has cached already. :func:`install` replaces, on one registry i
   bit-identical); anything else (offset units such as degC, contexts, Decimal or Fraction magnitudes,
   strings, keyword arguments, dimension errors) goes to pint's own ``convert``.
 
-A unit conversion by string drops from ~90-170 us to ~10 us and one study sample of the lift from ~27 ms to
+It also builds this registry's quantities from a float and a units container without pint's general
+argument analysis, and remembers the text of each unit per format (pint's formatter is slow). A unit
+conversion by string drops from ~90-170 us to ~10 us and one study sample of the lift from ~27 ms to
 ~8 ms CPU (docs/performance.md).
 """
 
@@ -80,7 +82,57 @@ def install(ureg: Any) -> None:
     ureg.parse_units_as_container = parse_units_as_container
     ureg.convert = fast_convert
     ureg.define = fast_define
+    _fast_quantities(ureg, UnitsContainer)
+    _cached_unit_text(ureg)
     ureg._mechverify_fast = True
+
+
+def _fast_quantities(ureg: Any, units_container: type) -> None:
+    """``Quantity(value, units)`` of this registry without pint's general argument analysis when ``value`` is a
+    float, an int or an ndarray and ``units`` a units container (what ``.to()``, arithmetic and ``Q(v, unit)``
+    pass): the same two attributes pint sets (its ``_to_magnitude`` returns such values unchanged while the
+    registry does not force arrays). Anything else goes to pint's ``__new__``."""
+    import numpy as np
+
+    cls = ureg.Quantity
+    base_new = cls.__new__
+    plain = (float, int, np.float64, np.ndarray)
+
+    def __new__(klass: Any, value: Any, units: Any = None) -> Any:
+        if type(units) is units_container and type(value) in plain and not (ureg.force_ndarray
+                                                                            or ureg.force_ndarray_like):
+            inst = object.__new__(klass)
+            inst._magnitude = value
+            inst._units = units
+            return inst
+        return base_new(klass, value, units)
+
+    cls.__new__ = __new__
+
+
+def _cached_unit_text(ureg: Any) -> None:
+    """``f"{unit:~P}"`` and ``str(unit)`` remembered per (units, format, sort function): pint's formatter takes
+    ~30-40 us a call and reports print a few hundred units per design."""
+    formatter = ureg.formatter
+    base = formatter.format_unit
+    texts: dict[tuple[Any, ...], str] = {}
+
+    def format_unit(unit: Any, uspec: str = "", sort_func: Any = None, **babel_kwds: Any) -> str:
+        units = getattr(unit, "_units", None)
+        if babel_kwds or units is None or not isinstance(unit, ureg.Unit):
+            return base(unit, uspec, sort_func, **babel_kwds)
+        key = (units, uspec or formatter.default_format, sort_func or formatter.default_sort_func,
+               getattr(formatter, "locale", None))
+        try:
+            return texts[key]
+        except (KeyError, TypeError):
+            pass
+        out = base(unit, uspec, sort_func)
+        if len(texts) < 4096:
+            texts[key] = out
+        return out
+
+    formatter.format_unit = format_unit
 
 
 def _factor(ureg: Any, src: Any, dst: Any) -> Any:

@@ -86,3 +86,29 @@ def test_parsed_strings_are_reused_and_define_clears_them() -> None:
     ureg.define("mechverify_test_unit = 3 * m")  # a failed parse is not cached; define clears the cache
     assert Q(2.0, "mechverify_test_unit").to("m").magnitude == 6.0
     assert ureg.parse_units_as_container("N*m/s**2") == a
+
+
+def test_quantities_built_fast_are_pints(plain: pint.UnitRegistry) -> None:
+    """A quantity made from a float and a units container has the attributes pint's constructor sets."""
+    plain.formatter.default_format = "~P"
+    plain.formatter.default_sort_func = None  # as mechverify's registry (units as written)
+    units = Q(1.0, "N*m")._units
+    for value in (2.5, 3, np.float64(0.25), np.array([1.0, 2.0])):
+        q = ureg.Quantity(value, units)
+        assert q.magnitude is value and q.units == ureg.Unit("N*m") and type(q) is ureg.Quantity
+        assert f"{q:~P}" == f"{plain.Quantity(value, 'N*m'):~P}"
+    with pytest.raises(TypeError):  # pint's own checks still apply to anything else
+        ureg.Quantity(True, units)
+    assert ureg.Quantity([1, 2], units).magnitude.tolist() == [1, 2]  # a list becomes an array (pint's path)
+    assert ureg.Quantity("3 mm").to("m").magnitude == plain.Quantity("3 mm").to("m").magnitude
+
+
+@pytest.mark.parametrize("unit", ["N*m", "m/s**2", "kg*m**2", "MPa", "rad/s", "1/s", "N*m*s/rad", "dimensionless"])
+def test_unit_texts_are_pints(plain: pint.UnitRegistry, unit: str) -> None:
+    plain.formatter.default_format = "~P"
+    plain.formatter.default_sort_func = None
+    ours, ref = ureg.Unit(unit), plain.Unit(unit)
+    for spec in ("", "~P", "~C", "~D", "P", "~L"):
+        for _ in range(2):  # the second answer comes from the cache
+            assert format(ours, spec) == format(ref, spec)
+    assert str(ours) == str(ref)
