@@ -132,6 +132,19 @@ def _run(fn: Any, **kw: Any) -> Any:
     return run
 
 
+def _governing(fn: Any) -> Any:
+    """A per-item check (each keyseat, each gear) as one result per load case: the governing item, the others'
+    utilisations as a note (the report keeps one result per check and case)."""
+    def run(c: ShaftDesign, loads: Any, ctx: Any) -> Any:
+        out = _run(fn)(c, loads, ctx)
+        if not out:
+            return []
+        g = max(out, key=lambda r: r.utilisation)
+        others = [f"{r.title}: u = {r.utilisation:.3g}" for r in out if r is not g]
+        return dataclasses.replace(g, notes=(*g.notes, "other items: " + "; ".join(others))) if others else g
+    return run
+
+
 def _critical(c: ShaftDesign, loads: Any, ctx: Any) -> Any:
     sh, _ = c.solved(loads)
     modal = fs.frame_critical_speeds(sh) if sh.shaft_mass else fs.modal_critical_speeds(sh)
@@ -217,10 +230,10 @@ SHAFT = REGISTRY.register(_ShaftType(
             cs.check_shaft_fatigue, criterion=c.params["fatigue_criterion"])(c, loads, ctx), needs=("torque",)),
         CheckSpec.of(cs.check_shaft_static_yield, _run(cs.check_shaft_static_yield), needs=("torque",)),
         CheckSpec.of(cs.check_shaft_bearing_slope, _run(cs.check_shaft_bearing_slope), needs=("torque",)),
-        CheckSpec.of(cs.check_shaft_gear_deflection, _run(cs.check_shaft_gear_deflection), needs=("torque",)),
+        CheckSpec.of(cs.check_shaft_gear_deflection, _governing(cs.check_shaft_gear_deflection), needs=("torque",)),
         CheckSpec.of(cs.check_shaft_critical_speed, _critical),
-        CheckSpec.of(cs.check_shaft_key_shear, _run(cs.check_shaft_key_shear), needs=("torque",)),
-        CheckSpec.of(cs.check_shaft_key_crushing, _run(cs.check_shaft_key_crushing), needs=("torque",)),
+        CheckSpec.of(cs.check_shaft_key_shear, _governing(cs.check_shaft_key_shear), needs=("torque",)),
+        CheckSpec.of(cs.check_shaft_key_crushing, _governing(cs.check_shaft_key_crushing), needs=("torque",)),
     ),
     outputs=tuple(Output(f"reaction_{L}_{w}", "force", f"{w} force on the support named {L}, else on the "
                          f"{i + 1}. support in order (reaction_<support name>_{w} for any support)",
