@@ -151,11 +151,13 @@ def check_eye_net_section(link: Link, axial: QuantityLike, *, required_sf: float
 
 
 def lug_checks(link: Link, force: QuantityLike, *, design_factor: float = 2.0,
-               load_case: str = "") -> list[CheckResult]:
+               load_case: str = "", allowable: bool = False) -> list[CheckResult]:
     """Lug strength after ASME BTH-1: tension through the pinhole, fracture beyond it, double-plane
     shear-out (each with required SF ``1.20 Nd``) and pin bearing (``Nd``).
 
-    ``design_factor`` Nd: 2.0 for BTH-1 Design Category A, 3.0 for Category B.
+    ``design_factor`` Nd: 2.0 for BTH-1 Design Category A, 3.0 for Category B. ``allowable=True``
+    folds the 1.20 of the plate modes into the capacity (P/1.20, BTH-1 Sec. 3-3.3.1: allowable =
+    P/(1.20 Nd)), so every mode's required SF is Nd (how a design file reports them).
     """
     if link.lug is None:
         raise InputError(f"{link.name}: lug_checks needs a lug (pin eye)")
@@ -197,17 +199,25 @@ def lug_checks(link: Link, force: QuantityLike, *, design_factor: float = 2.0,
         "lug_shear_out": rf"P_v = 0.70\cdot {Fu}\cdot {tex(s.shear_area, 'mm**2')}",
         "lug_bearing": rf"P_p = 1.25\cdot {Fy}\cdot {Dp}\cdot {t}",
     }
-    return [CheckResult(check=name, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
+    out = [CheckResult(check=name, component=link.name, demand=F, capacity=cap.to("N"), required_sf=sf,
                         substituted=f"{subs[name]} = {tex(cap, 'N')}",
                         title=title, formula=formula, source=f"{BTH1_SOURCE}: {eq}", inputs=inputs,
                         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
                         details={"b_eff": s.b_eff.to("mm"), "Av": s.shear_area.to("mm**2"), "Cr": s.Cr})
             for name, title, cap, sf, formula, eq in modes]
+    if allowable:
+        out = [r if r.check == "lug_bearing" else dataclasses.replace(
+            r, capacity=(r.capacity / 1.2).to("N"), required_sf=design_factor,
+            formula=r.formula + r",\ \ P_{allow} = P / (1.20\,N_d)",
+            notes=(*r.notes, "capacity = BTH-1 nominal strength / 1.20, so the required SF is Nd (BTH-1 "
+                             "Sec. 3-3.3.1: allowable = P / (1.20 Nd))")) for r in out]
+    return out
 
 
-def _lug_mode(name: str, link: Link, force: Any, design_factor: float, load_case: str) -> CheckResult:
-    return next(r for r in lug_checks(link, force, design_factor=design_factor, load_case=load_case)
-                if r.check == name)
+def _lug_mode(name: str, link: Link, force: Any, design_factor: float, load_case: str,
+              allowable: bool = False) -> CheckResult:
+    return next(r for r in lug_checks(link, force, design_factor=design_factor, load_case=load_case,
+                                      allowable=allowable) if r.check == name)
 
 
 _LUG_EXPLAIN = (" ASME BTH-1-2008 Sec. 3-3.3.1 pinned-plate strength with the design factor Nd (2.0 = Design "
@@ -218,34 +228,40 @@ _LUG_EXPLAIN = (" ASME BTH-1-2008 Sec. 3-3.3.1 pinned-plate strength with the de
 @check("lug_tension", title="Lug tension through the pinhole (BTH-1)", sf_kind="static", aliases=("link.lug",),
        source=ref("asme_bth1", "Sec. 3-3.3.1, Eq. (3-45)"),
        explain="Tensile strength through the pinhole P_t = C_r F_u 2 t b_eff." + _LUG_EXPLAIN)
-def check_lug_tension(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
-    """Lug tension through the pinhole after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
-    return _lug_mode("lug_tension", link, force, design_factor, load_case)
+def check_lug_tension(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "",
+                      allowable: bool = False) -> CheckResult:
+    """Lug tension through the pinhole after ASME BTH-1 (required SF ``1.20 Nd``, ``Nd`` with ``allowable``);
+    see :func:`lug_checks`."""
+    return _lug_mode("lug_tension", link, force, design_factor, load_case, allowable)
 
 
 @check("lug_fracture_beyond", title="Lug fracture beyond the pinhole (BTH-1)", sf_kind="static",
        source=ref("asme_bth1", "Sec. 3-3.3.1, Eq. (3-49)"),
        explain="Single-plane fracture (tear-out) strength beyond the pinhole, BTH-1 Eq. (3-49)." + _LUG_EXPLAIN)
 def check_lug_fracture_beyond(link: Link, force: Any, *, design_factor: float = 2.0,
-                              load_case: str = "") -> CheckResult:
-    """Lug fracture beyond the pinhole after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
-    return _lug_mode("lug_fracture_beyond", link, force, design_factor, load_case)
+                              load_case: str = "", allowable: bool = False) -> CheckResult:
+    """Lug fracture beyond the pinhole after ASME BTH-1 (required SF ``1.20 Nd``, or ``Nd`` with ``allowable``);
+    see :func:`lug_checks`."""
+    return _lug_mode("lug_fracture_beyond", link, force, design_factor, load_case, allowable)
 
 
 @check("lug_shear_out", title="Lug double-plane shear-out (BTH-1)", sf_kind="static",
        source=ref("asme_bth1", "Sec. 3-3.3.1, Eqs. (3-50) to (3-52)"),
        explain="Double-plane shear-out strength P_v = 0.70 F_u A_v, BTH-1 Eqs. (3-50) to (3-52)." + _LUG_EXPLAIN)
-def check_lug_shear_out(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
-    """Lug double-plane shear-out after ASME BTH-1 (required SF ``1.20 Nd``); see :func:`lug_checks`."""
-    return _lug_mode("lug_shear_out", link, force, design_factor, load_case)
+def check_lug_shear_out(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "",
+                        allowable: bool = False) -> CheckResult:
+    """Lug double-plane shear-out after ASME BTH-1 (required SF ``1.20 Nd``, ``Nd`` with ``allowable``);
+    see :func:`lug_checks`."""
+    return _lug_mode("lug_shear_out", link, force, design_factor, load_case, allowable)
 
 
 @check("lug_bearing", title="Pin bearing on the lug (BTH-1)", sf_kind="static",
        source=ref("asme_bth1", "Sec. 3-3.3.3"),
        explain="Bearing strength of the pin on the lug P_p = 1.25 F_y D_p t, BTH-1 Sec. 3-3.3.3." + _LUG_EXPLAIN)
-def check_lug_bearing(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "") -> CheckResult:
+def check_lug_bearing(link: Link, force: Any, *, design_factor: float = 2.0, load_case: str = "",
+                      allowable: bool = False) -> CheckResult:
     """Pin bearing on the lug after ASME BTH-1 (required SF ``Nd``); see :func:`lug_checks`."""
-    return _lug_mode("lug_bearing", link, force, design_factor, load_case)
+    return _lug_mode("lug_bearing", link, force, design_factor, load_case, allowable)
 
 
 @check("pin_shear", title="Pin shear", sf_kind="static",
@@ -306,7 +322,10 @@ def check_member_buckling(link: Link, compression: QuantityLike, *, required_sf:
         substituted=column_substituted(b, link.material.require("E"), link.yield_strength, link.section.area,
                                        link.section.I2, link.length),
         notes=tuple(notes), load_case=load_case,
-        details={"slenderness": b.slenderness, "transition_slenderness": b.transition_slenderness, "regime": b.regime})
+        details={"slenderness": b.slenderness, "transition_slenderness": b.transition_slenderness, "regime": b.regime,
+                 "C": b.C, "E": link.material.require("E").to("GPa"), "Sy": link.yield_strength.to("MPa"),
+                 "area": link.section.area.to("mm**2"),
+                 "critical_stress": (b.critical_load / link.section.area).to("MPa")})  # column-curve figure
 
 
 _FRACTION = re.compile(r"^\s*(?:l|L|span)\s*/\s*([0-9.]+)\s*$")
@@ -379,8 +398,12 @@ def check_link_deflection(link: Link, case: str, load: Any, limit: Any, *, axis:
     sub = (rf"\delta_{{max}} = \frac{{{tex(c.c_deflection)}\cdot {tex(P, unit or None)}\cdot "
            rf"({tex(link.length, 'mm')})^{{{n}}}}}{{{tex(link.material.require('E'), 'MPa')}\cdot {tex(I, 'mm**4')}}}"
            rf" = {tex(y, 'mm')}")
+    E = link.material.require("E")
     return dataclasses.replace(
         r, check="link_deflection", title="Link deflection",
+        inputs={**r.inputs, "load": load, "E": E.to("GPa"), "I": I.to("mm**4")},
+        details={**r.details, "beam_case": case, "load_si": P.magnitude, "length": link.length.to("mm"),
+                 "EI": (E * I).to("N*m**2"), "limit": r.capacity},  # beam-diagram figure
         substituted=sub + (rf",\quad {r.substituted}" if r.substituted else ""),
         formula=r"\delta_{max} = c\,\frac{F l^3}{E I}\ \mathrm{or}\ c\,\frac{w l^4}{E I} \le \delta_{lim}")
 

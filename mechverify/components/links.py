@@ -515,7 +515,8 @@ def link_section_forces(link: Link, axial_force: Any = "0 N", bending_moment: An
 
     A transverse point load [N] (mid-span; tip of a cantilever) or distributed load [N/m] across the
     link in the plane of the section's height adds the largest moment and end reaction of its Shigley
-    10th ed. Table A-9 case, chosen from the link's end condition (:data:`BEAM_SUPPORT`).
+    10th ed. Table A-9 case, chosen from the link's end condition (:data:`BEAM_SUPPORT`). With a
+    compressive axial force, a note gives the beam-column amplification 1/(1 - P/P_e) that is left out.
     """
     M = abs(to_si(bending_moment, "torque", "bending_moment"))
     V, notes, case, P = 0.0, [], None, None
@@ -535,6 +536,13 @@ def link_section_forces(link: Link, axial_force: Any = "0 N", bending_moment: An
             notes.append("bending_moment and the transverse load's largest moment added (conservative: they may "
                          "peak at different sections)")
         M += Mt
+        N = to_si(axial_force, "force", "axial_force")
+        if N < 0:
+            E, I = link.material.require("E"), link.section.Iy
+            pe = (math.pi**2 * E * I / link.length**2).m_as("N")  # Euler load in the plane of the transverse load
+            notes.append(f"compression with a transverse load: the beam-column amplification of the moment, about "
+                         f"1/(1 - P/P_e) = {1 / max(1 - abs(N) / pe, 1e-9):.3g} (P_e = pi^2 E I_y/l^2 = {pe:.4g} N; "
+                         "Timoshenko & Gere, Theory of Elastic Stability, Sec. 1.11), is not included")
     return LinkSectionForces(axial=from_si(to_si(axial_force, "force", "axial_force"), "force"),
                              moment_y=from_si(M, "torque"),
                              moment_z=from_si(to_si(lateral_moment, "torque", "lateral_moment"), "torque"),

@@ -7,17 +7,16 @@
   distributed load (Shigley Table A-9 case picked from the end condition), torsion, pin force.
 
 (The Roark ``plate`` type is in :mod:`mechverify.design.adapters.plates`; section parsing, shared with
-``frame``, in :mod:`mechverify.design.adapters.sections`.)
+``frame``, in :mod:`mechverify.design.adapters.sections`; the link's fields in :mod:`.link_parsing`.)
 
 The checks are those of :mod:`mechverify.checks.members`, the section forces those of
-:mod:`mechverify.components.links`; this module only maps design-file values onto them and adds plot
-data (beam diagram, column curve) to the results.
+:mod:`mechverify.components.links`; this module only maps design-file values onto them and adds the
+beam-diagram data of a transverse load to the body-strength result.
 """
 
 from __future__ import annotations
 
 import dataclasses
-import math
 from typing import Any
 
 import pint
@@ -26,13 +25,12 @@ from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
 from mechverify.components.links import (
     BEAM_SUPPORT,
-    Link,
-    Lug,
     beam_case,
     link_pin_force,
     link_section_forces,
     link_transverse_case,
 )
+from mechverify.design.adapters.link_parsing import LinkMember, build_link
 from mechverify.design.adapters.sections import (  # noqa: F401  (frame imports them from here)
     SECTION_ALIASES,
     SECTION_DIMENSIONS,
@@ -41,87 +39,7 @@ from mechverify.design.adapters.sections import (  # noqa: F401  (frame imports 
     why,
 )
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
-from mechverify.errors import InputError, MechverifyError
-from mechverify.materials import Material
-from mechverify.units import Q, fmt, to_si
-
-
-# ------------------------------------------------------------------------------------------ the link
-@dataclasses.dataclass(frozen=True)
-class LinkMember:
-    """A link as declared in a design file: the :class:`Link`, the pin's material and shear planes,
-    and the deflection limit (a length, ``"L/250"`` or a fraction of the length)."""
-
-    link: Link
-    pin_material: Material
-    pin_material_given: bool
-    shear_planes: int
-    deflection_limit: Any
-    lug_defaults: tuple[str, ...] = ()
-
-
-def _build_link(p: dict[str, Any], ctx: dict[str, Any]) -> LinkMember:
-    name = p["_name"]
-    if p["length"].magnitude <= 0:
-        raise InputError(f"length: must be positive, got {fmt(p['length'])}")
-    section = build_section(p)
-    lug_keys = ("lug_width", "lug_thickness", "edge_distance", "pin_diameter", "pin_material", "rounded_end")
-    lug = None
-    defaults: list[str] = []
-    if "hole_diameter" in p:
-        w, t = p.get("lug_width"), p.get("lug_thickness")
-        if w is None or t is None:
-            kind = SECTION_ALIASES.get(p["section"], p["section"])
-            if kind != "rectangle":
-                miss = "lug_width" if w is None else "lug_thickness"
-                raise InputError(f"{miss}: missing; give lug_width and lug_thickness of the eye (they default to "
-                                 "the bar's larger and smaller dimension only for a rectangle section)")
-            big, small = sorted((p["width"], p["height"]), key=lambda q: q.m_as("m"), reverse=True)
-            if w is None:
-                w = big
-                defaults.append(f"lug_width = {fmt(big, 'mm')} (the bar's larger dimension)")
-            if t is None:
-                t = small
-                defaults.append(f"lug_thickness = {fmt(small, 'mm')} (the bar's smaller dimension)")
-        R = p.get("edge_distance")
-        if R is None:
-            R = w / 2
-            defaults.append(f"edge_distance = {fmt(R.to('mm'), 'mm')} (half the lug width: a full round end)")
-        try:
-            lug = Lug(p["hole_diameter"], w, t, R, p["rounded_end"])
-        except InputError as exc:
-            msg = str(exc).removeprefix("lug: ")
-            key = "edge_distance" if "edge distance" in msg else "hole_diameter"
-            raise InputError(f"{key}: {msg}") from None
-    else:
-        given = [k for k in lug_keys if k in p and not (k == "rounded_end" and p[k] is True)]
-        if given:
-            raise InputError(f"{given[0]}: a pin eye needs hole_diameter (no hole given)")
-    if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
-        raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
-    limit: Any = p.get("deflection_limit")
-    if limit is None:
-        limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
-    try:
-        mc.deflection_limit(limit, p["length"])
-    except (MechverifyError, ZeroDivisionError) as exc:
-        key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
-        raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the length: "
-                         + why(exc, limit)) from None
-    if not 0 < p["strength_factor"] <= 1:
-        raise InputError(f"strength_factor: must lie in (0, 1], got {p['strength_factor']!r}")
-    if p["pin_shear_planes"] < 1:
-        raise InputError(f"pin_shear_planes: a positive whole number, got {p['pin_shear_planes']!r}")
-    try:
-        link = Link(p["length"], section, p["material"], lug=lug, pin_diameter=p.get("pin_diameter"), end=p["end"],
-                    strength_factor=p["strength_factor"], print_orientation=p.get("print_orientation", ""),
-                    name=name)
-    except InputError as exc:
-        msg = str(exc).removeprefix(f"{name}: ").removeprefix(f"{name}.")
-        key = "pin_diameter" if "pin diameter" in msg else "length" if "overlap" in msg else ""
-        raise InputError(f"{key}: {msg}" if key else msg) from None
-    return LinkMember(link, p.get("pin_material", p["material"]), "pin_material" in p, p["pin_shear_planes"], limit,
-                      tuple(defaults))
+from mechverify.units import Q, to_si
 
 
 def _transverse(m: LinkMember, loads: dict[str, Any]) -> tuple[str, float, pint.Quantity] | None:
@@ -168,16 +86,10 @@ def _body_strength(m: LinkMember, loads: dict[str, Any], ctx: Any) -> CheckResul
     tr = _transverse(m, loads)
     if V:
         inputs["V"] = Q(V, "N")
-    if tr is not None:
+    if tr is not None:  # beam-diagram figure
         E, I = m.link.material.require("E"), m.link.section.Iy
         details = {"beam_case": tr[0], "load_si": tr[1], "length": m.link.length.to("mm"),
                    "EI": (E * I).to("N*m**2")}
-        N = to_si(loads.get("axial_force", "0 N"), "force", "axial_force")
-        if N < 0:
-            pe = (math.pi**2 * E * I / m.link.length**2).m_as("N")  # Euler load in the plane of the transverse load
-            notes.append(f"compression with a transverse load: the beam-column amplification of the moment, about "
-                         f"1/(1 - P/P_e) = {1 / max(1 - abs(N) / pe, 1e-9):.3g} (P_e = pi^2 E I_y/l^2 = {pe:.4g} N; "
-                         "Timoshenko & Gere, Theory of Elastic Stability, Sec. 1.11), is not included")
     return _with(r, notes, details, inputs=inputs)
 
 
@@ -198,16 +110,10 @@ def _lug(m: LinkMember, loads: dict[str, Any], ctx: Any, mode: str) -> list[Chec
     if m.link.lug is None:
         return []
     F, how = _pin_force(m, loads)
-    r = next(r for r in mc.lug_checks(m.link, F, design_factor=ctx.required_sf) if r.check == mode)
-    if r.check == "lug_bearing":
-        r = _with(r, [how])
-    else:
-        r = _with(r, [how, "capacity = BTH-1 nominal strength / 1.20, so the required SF is Nd (BTH-1 "
-                           "Sec. 3-3.3.1: allowable = P / (1.20 Nd))"],
-                  capacity=(r.capacity / 1.2).to("N"), formula=r.formula + r",\ \ P_{allow} = P / (1.20\,N_d)")
+    r = next(r for r in mc.lug_checks(m.link, F, design_factor=ctx.required_sf, allowable=True) if r.check == mode)
     nd = (f"Nd = the required SF {ctx.required_sf:g} (BTH-1: 2.0 for Design Category A, 3.0 for Category B; "
           f"set it with checks.{mode} = {{ required_sf = ... }})")
-    return [dataclasses.replace(r, notes=tuple(nd if n.startswith("Nd =") else n for n in r.notes))]
+    return [dataclasses.replace(r, notes=(*(nd if n.startswith("Nd =") else n for n in r.notes), how))]
 
 
 def _pin(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
@@ -226,12 +132,7 @@ def _buckling(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResul
         return []
     N = to_si(loads["axial_force"], "force", "axial_force")
     r = mc.check_member_buckling(m.link, Q(-N, "N"), required_sf=ctx.required_sf)
-    b = m.link.buckling()
-    s = m.link.section
-    return [_with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"],
-                  details={"C": b.C, "E": m.link.material.require("E").to("GPa"),
-                           "Sy": m.link.yield_strength.to("MPa"), "area": s.area.to("mm**2"),
-                           "critical_stress": (b.critical_load / s.area).to("MPa")})]
+    return [_with(r, ["axial_force is positive in tension; a negative axial_force compresses the link"])]
 
 
 def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckResult]:
@@ -239,15 +140,11 @@ def _deflection(m: LinkMember, loads: dict[str, Any], ctx: Any) -> list[CheckRes
     if tr is None:
         return []
     case, P, q = tr
-    load = Q(P, "N" if _dim_of(case) == "force" else "N/m")
-    r = mc.check_link_deflection(m.link, case, load, m.deflection_limit)
-    E, I = m.link.material.require("E"), m.link.section.Iy
+    r = mc.check_link_deflection(m.link, case, Q(P, "N" if _dim_of(case) == "force" else "N/m"), m.deflection_limit)
     c = beam_case(case)
     return [_with(r, [f"{c.table_case} {case.replace('_', ' ')}: largest deflection at {c.where.split(';')[0]}",
                      "load in the plane of the section's height (bending about the section's y axis, I_y)"],
-                 inputs={**r.inputs, "load": q, "E": E.to("GPa"), "I": I.to("mm**4")},
-                 details={"beam_case": case, "load_si": P, "length": m.link.length.to("mm"), "EI": (E * I).to("N*m**2"),
-                          "limit": r.capacity})]
+                 inputs={**r.inputs, "load": q})]
 
 
 ANY_LINK_LOAD = "axial_force|bending_moment|lateral_moment|transverse_load|distributed_load|torque|pin_force"
@@ -292,7 +189,7 @@ LINK = REGISTRY.register(ComponentType(
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the length (0.01)"),
     ),
-    build=lambda p, ctx: _build_link(p, ctx),
+    build=lambda p, ctx: build_link(p, ctx),
     loads=(
         Field("axial_force", "force", "axial force, positive in tension, negative in compression"),
         Field("bending_moment", "torque", "bending moment in the plane of the section's height (about y)"),
