@@ -284,3 +284,49 @@ def test_reaction_of_a_support_the_shaft_does_not_have_is_a_named_error(tmp_path
     with pytest.raises(MechverifyError, match=r"(?s)load_cases\.run\.b\.radial_force.*no support named 'tail'.*"
                                               r"left, middle, right"):
         _design(tmp_path, "s.reaction_tail_radial").verify()
+
+
+def test_shaft_torque_read_from_another_components_torque_output(tmp_path: Path) -> None:
+    """A drive pulley shaft turning a Tr10x2 lift screw: the shaft's torque is the screw's output
+    ``lift_screw.drive_torque`` (raise torque at mu_max, Hamrock 3rd ed. Eq. 16.10) through a connection. Hand
+    calculation of the torque: T = F d2/2 (l + pi mu d2 sec(alpha_n)) / (pi d2 - mu l sec(alpha_n)) with
+    tan(alpha_n) = tan(15 deg) cos(lambda), F = 350 N, d2 = 9 mm, l = 2 mm, mu = 0.25; the shaft's key shear then is
+    2T/(d b l) with the DIN 6885-1 key of the 12 mm journal (4 x 4, t1 = 2.5 mm) and l = 15 mm."""
+    import mechverify.design
+
+    text = '''
+[design]
+name = "screw input shaft"
+[components.lift_screw]
+type = "lead_screw"
+thread = "Tr10x2"
+length = "450 mm"
+material = "Structural Steel"
+nut_length = "20 mm"
+mu_min = 0.09
+mu_max = 0.25
+nut_p_allow = "23 MPa"
+nut_pv_allow = "0.27 MPa*m/s"
+[components.s]
+type = "shaft"
+material = "AISI 1045 CD"
+speed = "540 rpm"
+segments = [{ length = "30 mm", diameter = "12 mm" }, { length = "100 mm", diameter = "15 mm" }]
+supports = [{ name = "front", at = "40 mm" }, { name = "rear", at = "120 mm" }]
+features = [{ kind = "keyseat", at = "15 mm", length = "15 mm", name = "pulley key" }]
+elements = [{ kind = "pulley", at = "15 mm", diameter = "60 mm", ratio = 3, torque_share = 1 },
+            { kind = "coupling", at = "130 mm", torque_share = -1 }]
+[load_cases.raise.lift_screw]
+axial_force = "350 N"
+speed = "18 mm/s"
+[load_cases.raise.s]
+torque = "lift_screw.drive_torque"
+'''
+    p = tmp_path / "d.toml"
+    p.write_text(text)
+    res = {(r.component, r.check): r for r in mechverify.design.load(p).verify()}
+    lam = math.atan(2 / (math.pi * 9))
+    sec = 1 / math.cos(math.atan(math.tan(math.radians(15)) * math.cos(lam)))
+    T = 350 * 0.009 / 2 * (0.002 + math.pi * 0.25 * 0.009 * sec) / (math.pi * 0.009 - 0.25 * 0.002 * sec)
+    tau = res[("s", "shaft_key_shear")].demand.m_as("Pa")
+    assert tau == pytest.approx(2 * T / (0.012 * 0.004 * 0.015), rel=1e-6)
