@@ -330,3 +330,36 @@ torque = "lift_screw.drive_torque"
     T = 350 * 0.009 / 2 * (0.002 + math.pi * 0.25 * 0.009 * sec) / (math.pi * 0.009 - 0.25 * 0.002 * sec)
     tau = res[("s", "shaft_key_shear")].demand.m_as("Pa")
     assert tau == pytest.approx(2 * T / (0.012 * 0.004 * 0.015), rel=1e-6)
+
+
+def test_modal_two_masses_equals_the_influence_coefficient_eigenproblem() -> None:
+    """The shaft of Shigley's Sec. 7-6 example (1 in steel shaft, E = 30 Mpsi, 31 in span, 35 and 55 lbf gears at
+    7 and 20 in, shaft mass neglected; inputs as in tests/validation/test_shigley10_shafts.py). Hand calculation,
+    not a printed value: influence coefficients from Table A-9-6, delta_ij = b_j x_i (l^2 - b_j^2 - x_i^2)/(6 E I l)
+    (x_i <= a_j, else by symmetry), and the exact 2-degree-of-freedom frequencies from det(delta m - I/omega^2) = 0.
+    The modal solution equals them (Euler-Bernoulli) within 1e-6; Dunkerley <= omega_1 <= Rayleigh (Sec. 7-6)."""
+    import numpy as np
+
+    inch, lbf = 0.0254, 4.4482216
+    E_ = 30e6 * 6894.757
+    I = math.pi * (1 * inch) ** 4 / 64
+    L = 31 * inch
+    xs, ms = (7 * inch, 20 * inch), (35 * lbf / 9.80665, 55 * lbf / 9.80665)
+
+    def delta(x: float, a: float) -> float:
+        if x > a:  # mirror: the load at l - a, the point at l - x
+            x, a = L - x, L - a
+        b = L - a
+        return b * x * (L**2 - b**2 - x**2) / (6 * E_ * I * L)
+
+    D = np.array([[delta(xi, aj) for aj in xs] for xi in xs])
+    mu = np.sort(np.linalg.eigvals(D @ np.diag(ms)).real)[::-1]  # 1/omega^2
+    exact = 1 / np.sqrt(mu)
+    m = M.with_(E=Q(30e6, "psi"))
+    sh = Shaft("ex", (Segment(L, 1 * inch),), m, (Support("A", 0.0), Support("B", L)),
+               tuple(force_load(f"w{i}", x, mass=mm) for i, (x, mm) in enumerate(zip(xs, ms, strict=True))),
+               shaft_mass=False)
+    w = modal_critical_speeds(sh, n_modes=2).omegas
+    assert w == pytest.approx(tuple(exact), rel=1e-6)
+    c = critical_speed(sh, theory="euler")
+    assert c.dunkerley <= w[0] <= c.rayleigh
