@@ -72,7 +72,7 @@ def test_figure_text_is_at_least_7pt_at_print_size(demo_html):
 def test_summary_bars_share_one_scale(demo_html):
     """Bar widths are u·SF / scale with one scale for the table: width ratios equal u·SF ratios."""
     rows = re.findall(r'<span style="width:([\d.]+)%;background:var\(--\w+\)"></span><i style="left:([\d.]+)%"></i>'
-                      r'</span>(▶?) ([\d.]+)</td>', demo_html)
+                      r'</span><span class="over">(▶?)</span><span class="fu">([\d.]+)</span></td>', demo_html)
     assert len(rows) > 5
     limits = {left for _, left, _, _ in rows}
     assert len(limits) == 1  # the limit (u·SF = 1) at the same place on every row
@@ -81,6 +81,23 @@ def test_summary_bars_share_one_scale(demo_html):
         expected = min(float(fu), scale) / scale * 100
         assert float(width) == pytest.approx(expected, abs=0.6 + 100 * 0.005 * float(fu) / scale)
         assert (over == "▶") == (float(fu) > scale)
+
+
+def test_summary_limit_line_at_one_place_on_the_page(demo_html):
+    """Rendered (WeasyPrint), the limit mark of every summary bar sits at the same x and every bar starts at the
+    same x, whatever the width of the value beside it (0.0141 and ▶ 5.94 used to shift the bar)."""
+    from weasyprint import HTML
+
+    doc = HTML(string=demo_html).render()
+    marks, starts = set(), set()
+    for page in doc.pages:
+        for b in _boxes(page._page_box):
+            el = getattr(b, "element", None)
+            if el is None or el.get("class") != "bar" or getattr(b, "element_tag", "") != "span":
+                continue
+            starts.add(round(b.border_box_x(), 1))
+            marks.update(round(c.border_box_x(), 1) for c in _boxes(b) if getattr(c, "element_tag", "") == "i")
+    assert len(marks) == 1 and len(starts) == 1, (marks, starts)
 
 
 def _na_result() -> CheckResult:

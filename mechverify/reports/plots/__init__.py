@@ -125,6 +125,9 @@ def utilisation_chart(results: list[CheckResult]) -> str:
     ax.barh(range(len(rs)), vals, color=[colours[r.verdict.value] for r in rs])
     ax.set_yticks(range(len(rs)), [f"{r.component}: {r.title or r.check}" for r in rs], fontsize=7)
     ax.axvline(1.0, color="k", lw=1)
+    for i, r in enumerate(rs):  # a value beyond the scale: its number at the bar's end
+        if r.factored_utilisation > 2.0:
+            ax.text(1.98, i, f"{r.factored_utilisation:.3g} ▶", va="center", ha="right", fontsize=7, color="white")
     ax.set_xlim(0, max(1.2, max(vals, default=1) * 1.05))
     more = len(results) - len(rs)
     ax.set_xlabel("utilisation × required SF (fail above 1)"
