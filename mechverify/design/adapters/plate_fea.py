@@ -10,7 +10,7 @@ point forces and moments, patch loads, a uniform pressure and self-weight.
 
 The plate is solved once per load case with :func:`mechverify.fea.plate.solve_plate` (Kirchhoff,
 Morley triangles) and the result is kept for both checks (:mod:`mechverify.checks.plates`) and the
-report figure:
+report figure (:mod:`mechverify.fea.plate_figure`):
 
 * ``plate_stress_fea`` — the largest von Mises stress at the plate surfaces (bending) against the yield
   strength, with the governing location in the notes;
@@ -172,103 +172,21 @@ def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
             f"at holes and cut-outs {hole}"]
 
 
-# ------------------------------------------------------------------------------------------------------ figure
-def plate_figure(c: PlateFEA, res: FieldResults, case: str, loads: tuple[Any, ...] = ()) -> Any:
-    """Von Mises contour (left) and deflection (right) on the plate, the maxima marked with a star; the
-    supports in magenta and where the ``loads`` act in red (point forces as triangles, patches hatched)."""
-    import matplotlib.pyplot as plt
-    from matplotlib.figure import Figure
-    from matplotlib.tri import Triangulation
-
-    del plt  # the object-oriented API only: no global figure state
-    x, y = res.points[:, 0] * 1e3, res.points[:, 1] * 1e3
-    tri = Triangulation(x, y, res.surface)
-    x0, y0, x1, y1 = c.plate.region.bounds
-    wide = (x1 - x0) >= (y1 - y0)
-    fig = Figure(figsize=(9.0, 3.6) if wide else (9.0, 5.0))
-    axes = fig.subplots(1, 2)
-    fields = ((res.von_mises.m_as("MPa"), "von Mises stress at the surfaces [MPa]", "turbo", True),
-              (res.u[:, 2] * 1e3, "deflection w [mm]", "viridis", False))
-    for ax, (vals, label, cmap, is_stress) in zip(axes, fields, strict=True):
-        cs = ax.tripcolor(tri, vals, shading="gouraud", cmap=cmap, rasterized=True)
-        k = int(np.argmax(vals if is_stress else np.abs(vals)))
-        for ring in (c.plate.region.exterior, *c.plate.region.interiors):
-            rx, ry = np.asarray(ring.coords).T * 1e3
-            ax.plot(rx, ry, color="k", lw=0.6)
-        for s in c.supports:
-            _draw_support(ax, c.plate, s)
-        for ld in loads:
-            _draw_load(ax, ld)
-        ax.plot(x[k], y[k], marker="*", color="white", mec="k", ms=14)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x [mm]")
-        ax.set_ylabel("y [mm]")
-        ax.set_title(f"max {abs(vals[k]):.3g} {'MPa' if is_stress else 'mm'} (★)", fontsize=9)
-        fig.colorbar(cs, ax=ax, label=label, shrink=0.8)
-    fig.suptitle(f"{c.name}, load case '{case}'", fontsize=10)
-    fig.tight_layout()
-    return fig
-
-
-def _draw_load(ax: Any, ld: Any) -> None:
-    """Where a load acts: a point force as a red triangle pointing along its sign (▼ along -z, ▲ along +z; a
-    pure moment as a red circle), a patch as its hatched red outline. Uniform pressure and self-weight act
-    everywhere and are named in the caption."""
-    if hasattr(ld, "point"):
-        f = float(getattr(ld, "force", 0.0) or 0.0)
-        marker = "v" if f < 0 else "^" if f > 0 else "o"
-        ax.plot(ld.point[0] * 1e3, ld.point[1] * 1e3, marker=marker, color="red", mec="k", ms=9, zorder=5)
-    elif getattr(ld, "polygon", None) is not None:
-        from matplotlib.patches import Polygon as MplPolygon
-
-        pts = np.asarray(ld.polygon) * 1e3
-        ax.add_patch(MplPolygon(pts, closed=True, fill=False, edgecolor="red", hatch="////", lw=1.2, zorder=5))
-
-
-def _loads_text(loads: tuple[Any, ...]) -> str:
-    """The caption's words for the loads: what is drawn and what acts over the whole plate."""
-    drawn = [ld for ld in loads if hasattr(ld, "point") or getattr(ld, "polygon", None) is not None]
-    spread = [type(ld).__name__ for ld in loads if ld not in drawn]
-    parts = []
-    if drawn:
-        parts.append("loads in red (▼ force along -z, ▲ along +z, ● moment only, hatched: patch load)")
-    if any("Pressure" in n for n in spread):
-        parts.append("uniform pressure over the whole plate")
-    if any("Weight" in n for n in spread):
-        parts.append("self-weight")
-    return "; ".join(parts)
-
-
-def _draw_support(ax: Any, plate: pl.Plate, s: Any) -> None:
-    style = {"color": "magenta", "lw": 2.5 if s.condition == "clamped" else 1.5,
-             "ls": "-" if s.condition == "clamped" else "--"}
-    if isinstance(s, pl.EdgeSupport):
-        edges = plate.edges()
-        for i in s.edge_indices(plate):
-            (ax_, ay), (bx, by) = edges[i]
-            ax.plot([ax_ * 1e3, bx * 1e3], [ay * 1e3, by * 1e3], **style)
-    elif isinstance(s, pl.PointSupport):
-        ax.plot(s.point[0] * 1e3, s.point[1] * 1e3, marker="^", color="magenta", mec="k", ms=8)
-    else:
-        for h in s.resolve(plate):
-            r = (s.washer_diameter or h.diameter) / 2
-            th = np.linspace(0, 2 * np.pi, 49)
-            ax.plot((h.center[0] + r * np.cos(th)) * 1e3, (h.center[1] + r * np.sin(th)) * 1e3, **style)
-
-
 def _figures(c: PlateFEA, results: list[CheckResult]) -> list[tuple[str, Any]]:
     gov = next((r for r in results if r.check == "plate_stress_fea"), None) or next(iter(results), None)
     if gov is None or gov.load_case not in c.solved:
         return []
+    from mechverify.fea.plate_figure import loads_caption, plate_figure
+
     model, res = c.solved[gov.load_case]
     vm, k = res.max_von_mises, int(res.max_von_mises.node)
     loads = tuple(getattr(model, "loads", ()) or ())
     caption = (f"{c.name}, load case '{gov.load_case}': von Mises stress at the plate surfaces (largest "
                f"{fmt(vm.value, 'MPa')} at {_mm(res.points[k, :2])}, ★) and deflection (largest "
                f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
-    if _loads_text(loads):
-        caption += f"; {_loads_text(loads)}"
-    return [(caption, plate_figure(c, res, gov.load_case, loads))]
+    if loads_caption(loads):
+        caption += f"; {loads_caption(loads)}"
+    return [(caption, plate_figure(c.plate, c.supports, res, f"{c.name}, load case '{gov.load_case}'", loads))]
 
 
 PLATE_FEA = REGISTRY.register(ComponentType(
