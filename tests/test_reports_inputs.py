@@ -90,3 +90,10 @@ def test_angles_in_degrees():
     assert quantity(Q(4.046, "deg")) == "4.05°"
     assert quantity(Q(0.2618, "rad")) == "15.0°"
     assert quantity(Q(0.5, "")) == "0.500"
+
+
+def test_traced_inputs_are_not_repeated_in_the_notes(html):
+    """The derived-input note of a value the inputs table already traces ("← payload") is not repeated below it;
+    the bearing's derived speed, which no bearing-life input row names by key, may still be noted."""
+    assert "derived input (raise): axial_force = 300 N ← payload" not in html
+    assert "← payload (axial_force)" in html

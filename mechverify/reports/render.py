@@ -160,11 +160,14 @@ def _check_view(r: CheckResult, scale: float = 1.25, detail: bool = True,
         "limit": f"{100 / scale:.1f}", "load_case": r.load_case, "detail": detail,
     }
     if detail:  # the expensive parts (typeset formulas, figures) only for checks shown in detail
+        inputs = _inputs_view(r, ctx)
+        traced = {i["derived_key"] for i in inputs if i["origin"]}
         view.update({
             "formula": Markup(formula_html(r.formula)),
             "substituted": Markup(formula_html(substituted_latex(r))) if substituted_latex(r) else "",
-            "inputs": _inputs_view(r, ctx),
-            "notes": [_truncate(n) for n in r.notes if n != na], "warnings": [_truncate(w) for w in r.warnings],
+            "inputs": inputs,
+            "notes": [_truncate(n) for n in r.notes if n != na and not _note_traced(n, traced)],
+            "warnings": [_truncate(w) for w in r.warnings],
             "source": r.source,
             "figure": None if na or (budget is not None and not budget.take()) else figure_for(r),
         })
@@ -183,10 +186,20 @@ def _inputs_view(r: CheckResult, ctx: _Context | None = None) -> list[dict[str, 
     rows = []
     for k, v in r.inputs.items():
         sym, desc = describe(r.check, k)
-        origin = next((f"← {src} ({key})" for key, src, val in derived if key == k or _same(v, val)), "")
+        hit = next(((key, src) for key, src, val in derived if key == k or _same(v, val)), None)
         rows.append({"key": k, "symbol": symbol_html(sym) if sym else "",
-                     "value": _value(v, ctx.units if ctx else None), "description": desc, "origin": origin})
+                     "value": _value(v, ctx.units if ctx else None), "description": desc,
+                     "origin": f"← {hit[1]} ({hit[0]})" if hit else "", "derived_key": hit[0] if hit else ""})
     return rows
+
+
+_DERIVED_NOTE = re.compile(r"^derived input(?: \([^)]*\))?: (\S+) = ")
+
+
+def _note_traced(note: str, keys: set[str]) -> bool:
+    """A "derived input: key = value ← expression" note whose key the inputs table already traces."""
+    m = _DERIVED_NOTE.match(note)
+    return bool(m and m.group(1) in keys)
 
 
 def _material_view(m: Material) -> dict[str, Any]:
