@@ -62,13 +62,26 @@ def _torque_per_newton(mu, lead=LEAD, d2=D2):
 
 def test_cli_check_exits_1_because_the_design_fails(capsys):
     assert main(["check", str(DESIGN)]) == 1
-    assert "3 fail" in capsys.readouterr().out
+    assert "4 fail" in capsys.readouterr().out
 
 
 def test_failing_checks_are_the_three_the_example_documents(results):
     failed = sorted((r.component, r.check) for r in results if r.verdict.value == "fail")
-    assert failed == [("lift", "motor_peak_torque"), ("lift_screw", "nut_pv"),
+    assert failed == [("carriage", "carriage_binding"), ("lift", "motor_peak_torque"), ("lift_screw", "nut_pv"),
                       ("screw_horizontal", "member_body_strength")]
+
+
+def test_carriage_binding_on_the_rod_bushings(results):
+    """The arms hang in front of the rods: 2 x (120 N x 400 mm + 30 N x 800 mm) = 144 N·m over 350 N is a 411 mm
+    offset. Carried by the bushing ends (L = 30 mm, assumed), N = 144/0.03 = 4800 N; their friction at mu 0.18
+    (Tabla 7) adds 2 mu M/L = 1728 N: the drive must push F = 350 (1 + 2 x 0.18 x 0.4114/0.03) = 2078 N, not the
+    350 N it was sized for (Slocum 1992 Sec. 8.2; hand calculation, the document has no guide check)."""
+    r = _one(results, "carriage", "carriage_binding")
+    a = 2 * (120 * 0.4 + 30 * 0.8) / F
+    assert r.demand.m_as("N") == pytest.approx(F * (1 + 2 * 0.18 * a / 0.03), rel=1e-9)
+    assert r.capacity.m_as("N") == pytest.approx(F)
+    assert r.details["edge_force"].m_as("N") == pytest.approx(144 / 0.03, rel=1e-9)
+    assert not r.passed
 
 
 def test_self_locking_angles(results):
@@ -173,7 +186,7 @@ def test_demo_writes_the_report_outside_the_example(tmp_path, capsys):
 
     assert demo.main(["--no-pdf", "--out", str(tmp_path)]) == 0
     assert (tmp_path / "report.html").stat().st_size > 10_000
-    assert "3 fail" in capsys.readouterr().out
+    assert "4 fail" in capsys.readouterr().out
 
 
 # ------------------------------------------------------------------ plates: plate-bending FEA (design_plates.toml)
