@@ -61,7 +61,9 @@ class Design:
                 errors.append((key, str(exc)))
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
-        return _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides})
+        variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides})
+        variant._reuse_base = self  # unchanged components take this design's results (mechverify/design/reuse.py)
+        return variant
 
     def with_parameters(self, **values: Any) -> Design:
         """A new design with ``[parameters]`` values replaced: ``design.with_parameters(payload="5 kg")``.
@@ -190,7 +192,17 @@ class Design:
         """
         results: list[CheckResult] = []
         errors: list[tuple[str, str]] = []
+        reusable = self._reusable()
+        done: dict[str, tuple[list[CheckResult], int]] = {}  # component -> its results, progress steps
         for entry in self.data.components.values():
+            if entry.name in reusable:  # inputs as in the design this one was made from: its results
+                rs_done, steps = reusable[entry.name]
+                results.extend(rs_done)
+                for _ in range(steps if progress is not None else 0):
+                    progress()
+                done[entry.name] = reusable[entry.name]
+                continue
+            start, n_err, steps = len(results), len(errors), 0
             for spec, sf in self.enabled_checks(entry):
                 path = f"components.{entry.name}.checks.{spec.name}"
                 cases = self._cases_for(entry, spec) if spec.needs else [("", None)]
@@ -209,6 +221,7 @@ class Design:
                         r = dataclasses.replace(r, component=entry.name, required_sf=sf, load_case=lc,
                                                 notes=(*r.notes, *self.derived_notes(entry.name, lc)))
                         found.setdefault(r.check, []).append(r)
+                    steps += 1
                     if progress is not None:
                         progress()
                 alias = entry.checks.get(spec.name, {}).get("alias")
@@ -221,10 +234,33 @@ class Design:
                         gov = dataclasses.replace(gov, notes=(*gov.notes, f"Governing of {len(rs)} load cases "
                                                                             f"(others: {others})."))
                     results.append(gov)
+            if len(errors) == n_err:
+                done[entry.name] = (results[start:], steps)
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
+        self.__dict__["_results_by_component"] = done
         label = f"{self.name} rev {self.revision}" if self.revision else self.name
         return ResultSet(results, label)
+
+    def _fingerprints(self) -> dict[str, Any]:
+        if "_fingerprints_cache" not in self.__dict__:
+            from mechverify.design.reuse import design_wide, fingerprints
+
+            self.__dict__["_fingerprints_cache"] = (design_wide(self.data), fingerprints(self.data))
+        return self.__dict__["_fingerprints_cache"]
+
+    def _reusable(self) -> dict[str, tuple[list[CheckResult], int]]:
+        """Component -> (results, progress steps) of the design this variant was made from, for the components
+        whose inputs are unchanged (:mod:`mechverify.design.reuse`); empty when there is nothing to reuse."""
+        base = self.__dict__.get("_reuse_base")
+        before = getattr(base, "__dict__", {}).get("_results_by_component")
+        if not before:
+            return {}
+        wide, mine = self._fingerprints()
+        base_wide, theirs = base._fingerprints()
+        if wide != base_wide:
+            return {}
+        return {k: v for k, v in before.items() if k in mine and k in theirs and mine[k] == theirs[k]}
 
 
 def _beyond_validity(spec: CheckSpec, component: str, case: str, exc: ValidityError) -> CheckResult:

@@ -60,6 +60,10 @@ def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
         design = _BASE.get(key)
     if design is None:
         design = Design(parse(copy.deepcopy(dict(doc)), Path(path) if path else None))
+        try:  # its results: a sample reuses those of every component whose inputs it leaves unchanged
+            design.verify()
+        except Exception:  # (the samples report their own errors)
+            pass
         with _BASE_LOCK:
             while len(_BASE) >= 4:
                 _BASE.pop(next(iter(_BASE)))

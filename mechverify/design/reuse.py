@@ -1,0 +1,99 @@
+"""Check results a variant of a design takes over from the design it was made from (issue 19).
+
+``Design.with_overrides`` builds a variant (a study sample, a sizing step); usually one or a few values
+change and most components see exactly the inputs they saw before. A component's checks depend on: its
+type, its table as written (after templates) and its check settings, its validated field values (after
+expressions and connections are resolved), its loads in every load case as written and as resolved, the
+components it names (a drive's screw, transitively), and the design-wide tables (requirements, safety
+factors, materials, templates, profiles). :func:`fingerprints` reduces these to comparable values; a
+component whose fingerprint equals the base design's reuses the base's results (the same objects: results
+are frozen). A value that cannot be compared exactly (NaN, an object that is not a dataclass) compares
+unequal, so its checks run again.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from mechverify.units import Quantity
+
+#: Top-level tables that hold per-component data; every other table is compared as a whole.
+_PER_COMPONENT = ("components", "load_cases", "parameters", "design")
+
+
+def _canon(v: Any) -> Any:
+    """A value reduced to plain, exactly comparable data (types kept: 1, 1.0 and True differ)."""
+    t = type(v)
+    if t is str or t is bool or t is int or t is float or v is None:
+        return (t.__name__, v)
+    if isinstance(v, Quantity):
+        return ("Q", _canon(v._magnitude), v._units)
+    if isinstance(v, np.ndarray):
+        return ("A", v.dtype.str, v.shape, v.tobytes())
+    if isinstance(v, Mapping):
+        return ("D", tuple((k, _canon(x)) for k, x in v.items()))
+    if isinstance(v, list | tuple):
+        return ("L", tuple(_canon(x) for x in v))
+    if isinstance(v, frozenset | set):
+        return ("S", frozenset(_canon(x) for x in v))
+    if isinstance(v, np.generic):
+        return ("G", v.dtype.str, v.tobytes())
+    if dataclasses.is_dataclass(v) and not isinstance(v, type):
+        return ("C", t.__qualname__, tuple((f.name, _canon(getattr(v, f.name))) for f in dataclasses.fields(v)))
+    return ("?", object())  # equal to nothing: the checks run again
+
+
+def _names(v: Any, known: Mapping[str, Any], out: set[str]) -> None:
+    if isinstance(v, str):
+        if v in known:
+            out.add(v)
+    elif isinstance(v, Mapping):
+        for x in v.values():
+            _names(x, known, out)
+    elif isinstance(v, list | tuple):
+        for x in v:
+            _names(x, known, out)
+
+
+def design_wide(data: Any) -> Any:
+    """The design-wide part every component depends on."""
+    raw = data.raw if isinstance(data.raw, Mapping) else {}
+    return (_canon({k: v for k, v in raw.items() if k not in _PER_COMPONENT}), _canon(data.requirements),
+            _canon(data.safety_factors))
+
+
+def fingerprints(data: Any) -> dict[str, Any]:
+    """Component name -> the fingerprint of everything its checks read (see the module docstring)."""
+    raw_cases = data.raw.get("load_cases", {}) if isinstance(data.raw, Mapping) else {}
+    own: dict[str, Any] = {}
+    refs: dict[str, set[str]] = {}
+    for name, entry in data.components.items():
+        cases = []
+        for case, comps in data.load_cases.items():
+            if name in comps:
+                table = raw_cases.get(case, {}) if isinstance(raw_cases, Mapping) else {}
+                written = table.get(name) if isinstance(table, Mapping) else None
+                cases.append((case, _canon(written), _canon(comps[name])))
+        own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), tuple(cases))
+        found: set[str] = set()
+        _names(entry.raw, data.components, found)
+        found.discard(name)
+        refs[name] = found
+    out: dict[str, Any] = {}
+    for name in data.components:
+        seen = {name}
+        todo = sorted(refs[name])
+        closure = []
+        while todo:
+            n = todo.pop()
+            if n in seen:
+                continue
+            seen.add(n)
+            closure.append((n, own[n]))
+            todo.extend(sorted(refs[n] - seen))
+        out[name] = (own[name], tuple(sorted(closure, key=lambda x: x[0])))
+    return out

@@ -1,0 +1,87 @@
+"""A variant of a design (Design.with_overrides) reuses the results of components whose inputs are unchanged
+(mechverify/design/reuse.py, issue 19).
+
+Oracle: the same variant built from scratch (no base to reuse from) must give identical results, field by field
+and in the JSON; the reused results are the base's own objects only for components whose inputs did not change.
+"""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+from pathlib import Path
+
+import pytest
+
+from mechverify.design import load
+from mechverify.design.design import _rebuild
+
+LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+
+
+def _rows(rs):
+    return [{f.name: repr(getattr(r, f.name)) for f in dataclasses.fields(r)} for r in rs]
+
+
+@pytest.fixture(scope="module")
+def base():
+    d = load(LIFT)
+    d.verify()
+    return d
+
+
+def _reused(variant, base) -> set[str]:
+    before = base._results_by_component
+    return {k for k, (rs, _) in variant._results_by_component.items()
+            if rs and k in before and before[k][0] and rs[0] is before[k][0][0]}
+
+
+@pytest.mark.parametrize(("override", "recomputed"), [
+    ({"components.lift.mass": "15.0 kg"}, {"lift"}),  # only the drive reads its mass
+    ({"components.lift_screw.length": "400 mm"}, {"lift_screw", "lift"}),  # the drive turns that screw
+    ({"load_cases.horizontal.screw_horizontal.transverse_load": "150 N"}, {"screw_horizontal"}),
+    ({"parameters.lifted_load": "300 N"}, {"lift_screw", "screw_bearing", "lift"}),  # through the connections
+    ({"requirements.bearing_life": "20000 h"}, None),  # design-wide: everything again
+])
+def test_variant_equals_a_fresh_build_and_reuses_only_unchanged_components(base, override, recomputed):
+    variant = base.with_overrides(override)
+    rs = variant.verify()
+    fresh = _rebuild(copy.deepcopy(variant.data.raw), variant.data.path, list(variant.data.files),
+                     variant.overrides).verify()
+    assert _rows(rs) == _rows(fresh)
+    assert rs.to_json() == fresh.to_json()
+    known = {"lift_screw", "screw_horizontal", "screw_bearing", "lift"}  # (the example may grow components)
+    with_results = {k for k, (r, _) in base._results_by_component.items() if r}
+    reused = _reused(variant, base)
+    if recomputed is None:
+        assert reused == set()
+    else:
+        assert not reused & recomputed
+        assert (known - recomputed) & with_results <= reused
+
+
+def test_changed_values_change_the_results(base):
+    """A reused result would hide the change: the drive's motor torque check must move with the mass."""
+    light = base.with_overrides({"components.lift.mass": "5 kg"}).verify()
+    heavy = base.with_overrides({"components.lift.mass": "30 kg"}).verify()
+    key = {(r.component, r.check) for r in light if r.component == "lift"}
+    assert key
+    u_light = {(r.component, r.check): r.utilisation for r in light}
+    u_heavy = {(r.component, r.check): r.utilisation for r in heavy}
+    assert any(u_heavy[k] > u_light[k] for k in key)
+
+
+def test_progress_steps_are_replayed(base):
+    steps_fresh, steps_reused = [], []
+    base.with_overrides({"components.lift.mass": "15 kg"}).verify()  # (no progress)
+    fresh = _rebuild(copy.deepcopy(base.data.raw), base.data.path, list(base.data.files), {})
+    fresh.verify(progress=lambda: steps_fresh.append(1))
+    base.with_overrides({"components.lift.mass": "15 kg"}).verify(progress=lambda: steps_reused.append(1))
+    assert len(steps_fresh) == len(steps_reused) > 0
+
+
+def test_an_unverified_base_reuses_nothing():
+    d = load(LIFT)
+    v = d.with_overrides({"components.lift.mass": "15 kg"})
+    assert v._reusable() == {}
+    assert v.verify().to_json() == _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify().to_json()
