@@ -23,6 +23,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError, UnitError
+from mechverify.frozen import set_fields
 from mechverify.units import Q, Quantity, fmt
 
 WARN_LEVEL = 0.9
@@ -66,7 +67,7 @@ class CheckResult:
         for name in ("demand", "capacity"):
             v = getattr(self, name)
             if not isinstance(v, Quantity):
-                object.__setattr__(self, name, Q(v))
+                set_fields(self, **{name: Q(v)})
         if self.demand.dimensionality != self.capacity.dimensionality:
             raise UnitError(
                 f"{self.component}/{self.check}: demand {fmt(self.demand)} and capacity "
@@ -80,10 +81,8 @@ class CheckResult:
                              f"(got {fmt(self.demand)}, {fmt(self.capacity)})")
         if not self.required_sf > 0:
             raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
-        object.__setattr__(self, "notes", tuple(self.notes))
-        object.__setattr__(self, "warnings", tuple(self.warnings))
-        object.__setattr__(self, "inputs", dict(self.inputs))
-        object.__setattr__(self, "details", dict(self.details))
+        set_fields(self, notes=tuple(self.notes), warnings=tuple(self.warnings), inputs=dict(self.inputs),
+                   details=dict(self.details))
 
     @property
     def utilisation(self) -> float:

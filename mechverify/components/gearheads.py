@@ -29,6 +29,7 @@ import pint
 from mechverify.components.catalogue import Catalogue
 from mechverify.components.transmissions import _Reduction, effort_to_input
 from mechverify.errors import InputError
+from mechverify.frozen import set_fields
 from mechverify.units import QuantityLike, fmt, from_si, to_si
 
 _DATA = Path(__file__).parent / "data" / "gearheads.toml"
@@ -101,15 +102,14 @@ class Gearhead(_Reduction):
                                      f"{exact:.8g}")
             if self.stages is not None and self.stages != len(stage):
                 raise InputError(f"gearhead {n!r}: stages = {self.stages} but {len(stage)} stage ratios given")
-            object.__setattr__(self, "stages", len(stage))
+            set_fields(self, stages=len(stage))
             ratio = exact
         elif self.ratio is not None:
             ratio = parse_ratio(self.ratio, f"{n}.ratio")
         else:
             raise InputError(f"gearhead {n!r}: give ratio or stage_ratios")
-        object.__setattr__(self, "stage_ratios", stage)
-        object.__setattr__(self, "ratio", ratio)
-        self._set_efficiencies(negative_backdrive=True)
+        set_fields(self, stage_ratios=stage, ratio=ratio)
+        self._normalise_efficiencies(negative_backdrive=True)
         dims = {"continuous_torque": "torque", "intermittent_torque": "torque", "max_input_speed": "angular_velocity",
                 "max_input_speed_intermittent": "angular_velocity", "inertia": "inertia", "backlash": "angle"}
         for f, d in dims.items():
@@ -118,14 +118,14 @@ class Gearhead(_Reduction):
                 x = to_si(v, d, f"{n}.{f}")
                 if x < 0 or (x == 0 and f != "backlash"):
                     raise InputError(f"{n}.{f}: must be positive")
-                object.__setattr__(self, f, from_si(x, d))
+                set_fields(self, **{f: from_si(x, d)})
         if (self.continuous_torque is not None and self.intermittent_torque is not None
                 and self.intermittent_torque < self.continuous_torque):
             raise InputError(f"gearhead {n!r}: intermittent torque {fmt(self.intermittent_torque)} below continuous "
                              f"{fmt(self.continuous_torque)}")
         if self.stages is not None and self.stages < 1:
             raise InputError(f"gearhead {n!r}: stages must be >= 1")
-        object.__setattr__(self, "notes", tuple(self.notes))
+        set_fields(self, notes=tuple(self.notes))
 
     ratio_si = property(lambda self: self.ratio)
     efficiency_forward = property(lambda self: self.efficiency)

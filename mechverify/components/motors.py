@@ -44,6 +44,7 @@ import pint
 
 from mechverify.components.catalogue import Catalogue
 from mechverify.errors import InputError, UnitError
+from mechverify.frozen import set_fields
 from mechverify.units import Q, QuantityLike, as_quantity, fmt, from_si, to_si
 
 _GRADIENT_UNIT = "rad/s/(N*m)"  # SI unit of the speed-torque gradient
@@ -144,18 +145,18 @@ class DCMotor:
         for f, d in dims.items():
             allow_zero = f in ("no_load_current",)
             positive = f != "max_winding_temperature"
-            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", positive=positive,
-                                             allow_zero=allow_zero))
+            set_fields(self, **{f: _opt(getattr(self, f), d, f"{n}.{f}", positive=positive,
+                                        allow_zero=allow_zero)})
         if self.nominal_voltage is None:
             raise InputError(f"{n}.nominal_voltage: required")
-        object.__setattr__(self, "speed_torque_gradient", _gradient(self.speed_torque_gradient,
-                                                                    f"{n}.speed_torque_gradient"))
-        object.__setattr__(self, "max_efficiency", _fraction_of(self.max_efficiency, f"{n}.max_efficiency"))
+        set_fields(self, speed_torque_gradient=_gradient(self.speed_torque_gradient,
+                                                         f"{n}.speed_torque_gradient"))
+        set_fields(self, max_efficiency=_fraction_of(self.max_efficiency, f"{n}.max_efficiency"))
         if not 0 < self.datasheet_tolerance < 1:
             raise InputError(f"{n}.datasheet_tolerance: must lie in (0, 1)")
-        object.__setattr__(self, "notes", tuple(self.notes))
+        set_fields(self, notes=tuple(self.notes))
         self._check_datasheet()
-        self._derive()
+        self._normalise_derived()
 
     # ------------------------------------------------------------------ datasheet relations
     def datasheet_relations(self) -> dict[str, tuple[float, float]]:
@@ -192,12 +193,13 @@ class DCMotor:
             raise InputError(f"motor {self.name!r}: inconsistent datasheet (tolerance "
                              f"{100 * self.datasheet_tolerance:g} %): " + "; ".join(bad))
 
-    def _derive(self) -> None:
+    def _normalise_derived(self) -> None:
+        """Fill the datasheet values that the others imply (named in ``derived``): construction only."""
         derived = set(self.derived)
         U = _si(self.nominal_voltage)
 
         def put(f: str, v: float, dim: str | None) -> None:
-            object.__setattr__(self, f, from_si(v, dim) if dim else Q(v, _GRADIENT_UNIT))
+            set_fields(self, **{f: from_si(v, dim) if dim else Q(v, _GRADIENT_UNIT)})
             derived.add(f)
 
         if self.terminal_resistance is None and self.stall_current is not None:
@@ -223,7 +225,7 @@ class DCMotor:
         if self.no_load_speed is None:
             put("no_load_speed", _si(self.speed_constant) * (U - R * (_si(self.no_load_current) or 0.0)),
                 "angular_velocity")
-        object.__setattr__(self, "derived", frozenset(derived))
+        set_fields(self, derived=frozenset(derived))
 
     # ------------------------------------------------------------------ physics (SI)
     @property
@@ -322,7 +324,7 @@ class StepperMotor:
                 "detent_torque": "torque", "rated_current": "current", "phase_resistance": "resistance",
                 "phase_inductance": "inductance", "rated_voltage": "voltage", "max_speed": "angular_velocity"}
         for f, d in dims.items():
-            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "detent_torque"))
+            set_fields(self, **{f: _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "detent_torque")})
         if self.step_angle is None or self.holding_torque is None:
             raise InputError(f"stepper {n!r}: step_angle and holding_torque are required")
         w = _quantity_list(self.pullout_speeds, "angular_velocity", f"{n}.pullout_speeds")
@@ -336,11 +338,11 @@ class StepperMotor:
         if len(t) and np.any(t > _si(self.holding_torque) * 1.0001):
             raise InputError(f"stepper {n!r}: a pull-out torque exceeds the holding torque "
                              f"{fmt(self.holding_torque)}; check the units of the curve")
-        object.__setattr__(self, "pullout_speeds", from_si(w, "angular_velocity") if len(w) else None)
-        object.__setattr__(self, "pullout_torques", from_si(t, "torque") if len(t) else None)
+        set_fields(self, pullout_speeds=from_si(w, "angular_velocity") if len(w) else None,
+                   pullout_torques=from_si(t, "torque") if len(t) else None)
         if self.max_speed is None and len(w):
-            object.__setattr__(self, "max_speed", from_si(float(w[-1]), "angular_velocity"))
-        object.__setattr__(self, "notes", tuple(self.notes))
+            set_fields(self, max_speed=from_si(float(w[-1]), "angular_velocity"))
+        set_fields(self, notes=tuple(self.notes))
 
     @property
     def steps_per_revolution(self) -> float:
@@ -415,10 +417,10 @@ class HobbyServo:
         n = self.name
         for f, d in {"stall_torque": "torque", "time_per_60deg": "time", "voltage": "voltage",
                      "rotation_range": "angle"}.items():
-            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}"))
+            set_fields(self, **{f: _opt(getattr(self, f), d, f"{n}.{f}")})
         if self.stall_torque is None:
             raise InputError(f"servo {n!r}: stall_torque is required")
-        object.__setattr__(self, "notes", tuple(self.notes))
+        set_fields(self, notes=tuple(self.notes))
 
     @property
     def no_load_speed(self) -> pint.Quantity | None:
@@ -475,7 +477,7 @@ class GearMotor:
         for f, d in {"no_load_speed": "angular_velocity", "stall_torque": "torque", "rated_torque": "torque",
                      "nominal_voltage": "voltage", "stall_current": "current", "no_load_current": "current",
                      "rotor_inertia": "inertia"}.items():
-            object.__setattr__(self, f, _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "no_load_current"))
+            set_fields(self, **{f: _opt(getattr(self, f), d, f"{n}.{f}", allow_zero=f == "no_load_current")})
         if self.no_load_speed is None or self.stall_torque is None:
             raise InputError(f"gear-motor {n!r}: no_load_speed and stall_torque are required")
         if self.rated_torque is not None and self.rated_torque > self.stall_torque:
@@ -483,7 +485,7 @@ class GearMotor:
                              f"{fmt(self.stall_torque)}")
         if self.ratio is not None and not float(self.ratio) > 0:
             raise InputError(f"gear-motor {n!r}: ratio must be positive")
-        object.__setattr__(self, "notes", tuple(self.notes))
+        set_fields(self, notes=tuple(self.notes))
 
     @property
     def continuous_torque(self) -> pint.Quantity | None:

@@ -26,7 +26,7 @@ import math
 import tomllib
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from typing import Any
 
@@ -37,6 +37,7 @@ from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from mechverify.errors import InputError, UnknownNameError, ValidityError, renamed
+from mechverify.frozen import set_fields
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.units import Q, QuantityLike, from_si, to_si
@@ -119,10 +120,9 @@ class Hole:
     unit: str | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "center", _point(self.center, f"hole {self.name or ''}.center".replace(" .", "."),
-                                                  self.unit))
-        object.__setattr__(self, "diameter", _length(self.diameter, "hole.diameter", self.unit))
-        object.__setattr__(self, "unit", None)
+        set_fields(self, center=_point(self.center, f"hole {self.name or ''}.center".replace(" .", "."),
+                                       self.unit))
+        set_fields(self, diameter=_length(self.diameter, "hole.diameter", self.unit), unit=None)
 
     @property
     def radius(self) -> float:
@@ -187,7 +187,6 @@ class Plate:
     cutouts: Sequence[Any] = ()
     name: str = "plate"
     unit: str | None = None
-    region: Any = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         u = self.unit
@@ -202,15 +201,13 @@ class Plate:
         dup = {n for n in names if names.count(n) > 1}
         if dup:
             raise InputError(f"{self.name}.holes: hole names must be unique, repeated: {sorted(dup)}")
-        object.__setattr__(self, "outline", outline)
-        object.__setattr__(self, "thickness", t)
-        object.__setattr__(self, "material", mat)
-        object.__setattr__(self, "holes", holes)
-        object.__setattr__(self, "cutouts", cutouts)
-        object.__setattr__(self, "unit", None)
-        object.__setattr__(self, "region", self._region())
+        set_fields(self, outline=outline, thickness=t, material=mat, holes=holes, cutouts=cutouts, unit=None)
+        self.region  # noqa: B018 - the geometry is checked at construction
 
-    def _region(self) -> ShapelyPolygon:
+    @cached_property
+    def region(self) -> ShapelyPolygon:
+        """The plate as a shapely polygon [m]: outline minus holes and cut-outs (checked: simple, holes and
+        cut-outs inside and apart)."""
         if _collinear(self.outline):
             raise InputError(f"{self.name}.outline: the outline encloses no area (its points are collinear)")
         ring = shapely.LinearRing(self.outline)
@@ -323,7 +320,7 @@ class EdgeSupport:
     condition: str = "simply_supported"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "condition", _condition(self.condition, "EdgeSupport"))
+        set_fields(self, condition=_condition(self.condition, "EdgeSupport"))
         if isinstance(self.edges, str):
             if self.edges != "all":
                 raise InputError(f"EdgeSupport.edges: expected 'all' or edge indices, got {self.edges!r}")
@@ -331,7 +328,7 @@ class EdgeSupport:
             idx = tuple(self.edges) if isinstance(self.edges, Sequence) else (self.edges,)
             if not idx or not all(isinstance(i, int) and not isinstance(i, bool) and i >= 0 for i in idx):
                 raise InputError(f"EdgeSupport.edges: expected non-negative edge indices, got {self.edges!r}")
-            object.__setattr__(self, "edges", idx)
+            set_fields(self, edges=idx)
 
     def edge_indices(self, plate: Plate) -> tuple[int, ...]:
         n = len(plate.outline)
@@ -352,9 +349,8 @@ class PointSupport:
     unit: str | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "point", _point(self.point, "PointSupport.point", self.unit))
-        object.__setattr__(self, "condition", _condition(self.condition, "PointSupport"))
-        object.__setattr__(self, "unit", None)
+        set_fields(self, point=_point(self.point, "PointSupport.point", self.unit),
+                   condition=_condition(self.condition, "PointSupport"), unit=None)
 
 
 @dataclass(frozen=True)
@@ -370,14 +366,14 @@ class HoleSupport:
     washer_diameter: Any = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "condition", _condition(self.condition, "HoleSupport"))
+        set_fields(self, condition=_condition(self.condition, "HoleSupport"))
         if self.holes != "all":
             hs = (self.holes,) if isinstance(self.holes, str | int) else tuple(self.holes)
             if not hs:
                 raise InputError("HoleSupport.holes: give at least one hole (index or name) or 'all'")
-            object.__setattr__(self, "holes", hs)
+            set_fields(self, holes=hs)
         if self.washer_diameter is not None:
-            object.__setattr__(self, "washer_diameter", _length(self.washer_diameter, "washer_diameter"))
+            set_fields(self, washer_diameter=_length(self.washer_diameter, "washer_diameter"))
 
     def resolve(self, plate: Plate) -> tuple[Hole, ...]:
         if self.holes == "all":
@@ -405,11 +401,10 @@ class PlatePointLoad:
     unit: str | None = None
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "point", _point(self.point, "PlatePointLoad.point", self.unit))
-        object.__setattr__(self, "force", to_si(self.force, "force", "PlatePointLoad.force"))
-        object.__setattr__(self, "moment_x", to_si(self.moment_x, "torque", "PlatePointLoad.moment_x"))
-        object.__setattr__(self, "moment_y", to_si(self.moment_y, "torque", "PlatePointLoad.moment_y"))
-        object.__setattr__(self, "unit", None)
+        set_fields(self, point=_point(self.point, "PlatePointLoad.point", self.unit),
+                   force=to_si(self.force, "force", "PlatePointLoad.force"),
+                   moment_x=to_si(self.moment_x, "torque", "PlatePointLoad.moment_x"),
+                   moment_y=to_si(self.moment_y, "torque", "PlatePointLoad.moment_y"), unit=None)
         if self.force == 0 and self.moment_x == 0 and self.moment_y == 0:
             raise InputError("PlatePointLoad: force and moments are all zero")
 
@@ -444,17 +439,14 @@ class PatchLoad:
                 raise InputError("PatchLoad.polygon: the patch outline crosses itself or encloses no area")
         if (self.force is None) == (self.pressure is None):
             raise InputError("PatchLoad: give exactly one of force (total) or pressure")
-        object.__setattr__(self, "polygon", poly)
-        object.__setattr__(self, "center", None)
-        object.__setattr__(self, "size", None)
         area = ShapelyPolygon(poly).area
         if self.force is not None:
-            object.__setattr__(self, "force", to_si(self.force, "force", "PatchLoad.force"))
-            object.__setattr__(self, "pressure", self.force / area)
+            force = to_si(self.force, "force", "PatchLoad.force")
+            pressure = force / area
         else:
-            object.__setattr__(self, "pressure", to_si(self.pressure, "pressure", "PatchLoad.pressure"))
-            object.__setattr__(self, "force", self.pressure * area)
-        object.__setattr__(self, "unit", None)
+            pressure = to_si(self.pressure, "pressure", "PatchLoad.pressure")
+            force = pressure * area
+        set_fields(self, polygon=poly, center=None, size=None, force=force, pressure=pressure, unit=None)
 
     @property
     def area(self) -> float:
@@ -468,7 +460,7 @@ class PressureLoad:
     pressure: QuantityLike
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "pressure", to_si(self.pressure, "pressure", "PressureLoad.pressure"))
+        set_fields(self, pressure=to_si(self.pressure, "pressure", "PressureLoad.pressure"))
 
 
 @dataclass(frozen=True)
@@ -480,7 +472,7 @@ class PlateSelfWeight:
     direction: int = -1
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "g", to_si(self.g, "acceleration", "PlateSelfWeight.g"))
+        set_fields(self, g=to_si(self.g, "acceleration", "PlateSelfWeight.g"))
         if self.direction not in (-1, 1):
             raise InputError(f"PlateSelfWeight.direction: -1 (down, -z) or +1, got {self.direction!r}")
         if not self.factor > 0:
@@ -511,8 +503,7 @@ class PlateModel:
     name: str = ""
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "supports", tuple(self.supports))
-        object.__setattr__(self, "loads", tuple(self.loads))
+        set_fields(self, supports=tuple(self.supports), loads=tuple(self.loads))
         if not self.supports:
             raise InputError(f"{self.plate.name}: a plate model needs at least one support")
         region = self.plate.region

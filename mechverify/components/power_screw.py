@@ -40,6 +40,7 @@ import pint
 from mechverify.components.columns import ColumnBuckling, column_buckling, end_condition
 from mechverify.components.threads import Thread, thread
 from mechverify.errors import InputError, ValidityError
+from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import QuantityLike, as_quantity, fmt, from_si, require_positive, si_function, to_si
 
@@ -420,22 +421,21 @@ class Nut:
 
     def __post_init__(self) -> None:
         mat = _material(self.material, self.name)
-        object.__setattr__(self, "material", mat)
+        set_fields(self, material=mat)
         if self.length is not None:
             q = as_quantity(self.length, "length", f"{self.name}.length")
             if q.magnitude <= 0:
                 raise InputError(f"{self.name}.length: must be positive, got {fmt(q)}")
-            object.__setattr__(self, "length", q)
+            set_fields(self, length=q)
         if self.engaged_threads is not None:
             n = _dimensionless(self.engaged_threads, f"{self.name}.engaged_threads")
             if n <= 0:
                 raise InputError(f"{self.name}.engaged_threads: must be positive, got {n:g}")
-            object.__setattr__(self, "engaged_threads", n)
+            set_fields(self, engaged_threads=n)
         if self.mu is not None:
             if self.mu_min is not None or self.mu_max is not None:
                 raise InputError(f"{self.name}: give either mu or the range mu_min..mu_max, not both")
-            object.__setattr__(self, "mu_min", self.mu)
-            object.__setattr__(self, "mu_max", self.mu)
+            set_fields(self, mu_min=self.mu, mu_max=self.mu)
         for attr in ("mu_min", "mu_max"):
             v = getattr(self, attr)
             if v is None and mat is not None and getattr(mat, attr) is not None:
@@ -445,7 +445,7 @@ class Nut:
                 if not 0 <= f < 1.5:
                     raise InputError(f"{self.name}.{attr}: friction coefficient must lie in [0, 1.5), got {f:g}")
                 v = f
-            object.__setattr__(self, attr, v)
+            set_fields(self, **{attr: v})
         if (self.mu_min is None) != (self.mu_max is None):
             raise InputError(f"{self.name}: give both ends of the friction range mu_min..mu_max")
         if self.mu_min is not None and self.mu_min > self.mu_max:
@@ -459,7 +459,7 @@ class Nut:
                 v = as_quantity(v, dim, f"{self.name}.{attr}")
                 if v.magnitude <= 0:
                     raise InputError(f"{self.name}.{attr}: must be positive, got {fmt(v)}")
-            object.__setattr__(self, attr, v)
+            set_fields(self, **{attr: v})
 
     def require_mu(self) -> tuple[float, float]:
         if self.mu_min is None:
@@ -502,13 +502,12 @@ class LeadScrew:
     name: str = "lead screw"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "thread", thread(self.thread))
+        set_fields(self, thread=thread(self.thread))
         q = as_quantity(self.length, "length", f"{self.name}.length")
         if q.magnitude <= 0:
             raise InputError(f"{self.name}.length: must be positive, got {fmt(q)}")
-        object.__setattr__(self, "length", q)
-        object.__setattr__(self, "material", _material(self.material, self.name))
-        object.__setattr__(self, "end_supports", end_case(self.end_supports))
+        set_fields(self, length=q, material=_material(self.material, self.name),
+                   end_supports=end_case(self.end_supports))
 
     # geometry -----------------------------------------------------------
     @property

@@ -43,6 +43,7 @@ from typing import Any
 import pint
 
 from mechverify.errors import InputError, UnknownNameError, ValidityError
+from mechverify.frozen import set_fields
 from mechverify.units import Q, QuantityLike, as_quantity, fmt, to_si
 
 _DATA = Path(__file__).parent / "data"
@@ -85,18 +86,18 @@ class Thread:
             q = as_quantity(v, "length", f"{self.designation}.{name}")
             if q.magnitude <= 0:
                 raise InputError(f"{self.designation}.{name}: must be positive, got {fmt(q)}")
-            object.__setattr__(self, name, q)
+            set_fields(self, **{name: q})
         fa = as_quantity(self.flank_angle, "angle", f"{self.designation}.flank_angle")
         if not (0 <= fa.m_as("deg") < 45):
             raise InputError(f"{self.designation}.flank_angle: must lie in [0, 45) deg, got {fmt(fa)}")
-        object.__setattr__(self, "flank_angle", fa)
+        set_fields(self, flank_angle=fa)
         if isinstance(self.starts, bool) or not isinstance(self.starts, int) or self.starts < 1:
             raise InputError(f"{self.designation}.starts: must be a whole number >= 1, got {self.starts!r}")
         d, d2, d3 = (to_si(getattr(self, n), "length") for n in ("d", "d2", "d3"))
         if not d3 < d2 <= d:
             raise InputError(f"{self.designation}: need d3 < d2 <= d, got d3 = {fmt(self.d3, 'mm')}, "
                              f"d2 = {fmt(self.d2, 'mm')}, d = {fmt(self.d, 'mm')}")
-        object.__setattr__(self, "notes", tuple(self.notes))
+        set_fields(self, notes=tuple(self.notes))
 
     # ------------------------------------------------------------------ derived geometry
     @property

@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, Protocol
 
 import numpy as np
 import pint
 
 from mechverify.errors import InputError
+from mechverify.frozen import set_fields
 from mechverify.units import Q, QuantityLike, from_si, to_si
 
 MOTORING, HOLDING = 1, 0
@@ -90,19 +92,18 @@ class _Reduction:
 
     inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.m_as("kg*m**2")))
 
-    def _set_inertia(self) -> None:
+    def _normalise_inertia(self) -> None:
         """``inertia`` (None or any inertia unit) as a quantity in SI, checked."""
         if self.inertia is not None:
-            object.__setattr__(self, "inertia", from_si(to_si(self.inertia, "inertia", f"{self.name}.inertia"),
-                                                        "inertia"))
+            set_fields(self, inertia=from_si(to_si(self.inertia, "inertia", f"{self.name}.inertia"), "inertia"))
 
-    def _set_efficiencies(self, *, negative_backdrive: bool = False) -> None:
+    def _normalise_efficiencies(self, *, negative_backdrive: bool = False) -> None:
         """``efficiency`` in (0, 1]; ``backdrive_efficiency`` defaults to it (may be negative: self-locking)."""
         eta = _eta(self.efficiency, f"{self.name}.efficiency")
-        object.__setattr__(self, "efficiency", eta)
-        object.__setattr__(self, "backdrive_efficiency", eta if self.backdrive_efficiency is None else
-                           _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency",
-                                allow_negative=negative_backdrive))
+        set_fields(self, efficiency=eta,
+                   backdrive_efficiency=eta if self.backdrive_efficiency is None else
+                   _eta(self.backdrive_efficiency, f"{self.name}.backdrive_efficiency",
+                        allow_negative=negative_backdrive))
 
     def input_speed(self, output_speed: QuantityLike) -> pint.Quantity:
         """ω_in = r·v_out."""
@@ -143,8 +144,8 @@ class DirectDrive(_Reduction):
     output_kind: str = field(default="angle", init=False)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "efficiency", _eta(self.efficiency, f"{self.name}.efficiency"))
-        self._set_inertia()
+        set_fields(self, efficiency=_eta(self.efficiency, f"{self.name}.efficiency"))
+        self._normalise_inertia()
 
     ratio_si = property(lambda self: 1.0)
     efficiency_forward = property(lambda self: self.efficiency)
@@ -171,6 +172,14 @@ class BeltDrive(_Reduction):
     output_kind: str = field(default="angle", init=False)
 
     def __post_init__(self) -> None:
+        self.ratio_si  # noqa: B018 - checks the pulleys at construction
+        self._normalise_efficiencies()
+        self._normalise_inertia()
+
+    @cached_property
+    def ratio_si(self) -> float:
+        """r = d_driven / d_driver [-] (pitch diameters or tooth counts)."""
+
         def size(v: QuantityLike, what: str) -> float:
             if isinstance(v, int | float) and not isinstance(v, bool):
                 if v <= 0:
@@ -184,15 +193,12 @@ class BeltDrive(_Reduction):
         a, b = size(self.driver, "driver"), size(self.driven, "driven")
         if isinstance(self.driver, int | float) != isinstance(self.driven, int | float):
             raise InputError(f"{self.name}: give both pulleys as diameters or both as tooth counts")
-        object.__setattr__(self, "_ratio", b / a)
-        self._set_efficiencies()
-        self._set_inertia()
+        return b / a
 
-    ratio_si = property(lambda self: self._ratio)
     efficiency_forward = property(lambda self: self.efficiency)
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
-        return effort_to_input(effort_out, direction, self._ratio, self.efficiency, self.backdrive_efficiency)
+        return effort_to_input(effort_out, direction, self.ratio_si, self.efficiency, self.backdrive_efficiency)
 
 
 @dataclass(frozen=True)
@@ -215,9 +221,9 @@ class Drum(_Reduction):
         d = to_si(self.diameter, "length", f"{self.name}.diameter")
         if d <= 0:
             raise InputError(f"{self.name}.diameter: must be positive")
-        object.__setattr__(self, "diameter", from_si(d, "length"))
-        self._set_efficiencies()
-        self._set_inertia()
+        set_fields(self, diameter=from_si(d, "length"))
+        self._normalise_efficiencies()
+        self._normalise_inertia()
 
     ratio_si = property(lambda self: 2.0 / float(self.diameter.magnitude))
     efficiency_forward = property(lambda self: self.efficiency)
@@ -251,27 +257,42 @@ class ScrewDrive(_Reduction):
         mu = to_si(self.mu, "dimensionless", f"{self.name}.mu")
         if not 0 <= mu < 1:
             raise InputError(f"{self.name}.mu: friction coefficient must lie in [0, 1), got {mu:g}")
-        object.__setattr__(self, "mu", mu)
-        lead = to_si(self.screw.lead, "length", f"{self.name}.screw.lead")
-        unit = Q(1.0, "N")
-        collar = (self.collar_mu, self.collar_diameter)
-        k_raise = to_si(self.screw.raise_torque(unit, mu, *collar), "torque", "raise_torque")
-        k_lower = to_si(self.screw.lower_torque(unit, mu, *collar), "torque", "lower_torque")
-        object.__setattr__(self, "_lead", lead)
-        object.__setattr__(self, "_eta_f", lead / (2 * math.pi * k_raise))
-        object.__setattr__(self, "_eta_b", -2 * math.pi * k_lower / lead)
-        self._set_inertia()
+        set_fields(self, mu=mu)
+        self.efficiency_forward, self.backdrive_efficiency  # noqa: B018 - the screw's torques (and errors) now
+        self._normalise_inertia()
 
-    ratio_si = property(lambda self: 2 * math.pi / self._lead)
-    efficiency_forward = property(lambda self: self._eta_f)
-    backdrive_efficiency = property(lambda self: self._eta_b)
+    @cached_property
+    def lead_si(self) -> float:
+        """Lead l of the screw [m]."""
+        return to_si(self.screw.lead, "length", f"{self.name}.screw.lead")
+
+    @cached_property
+    def ratio_si(self) -> float:
+        """r = 2π/l [rad/m]."""
+        return 2 * math.pi / self.lead_si
+
+    def _unit_torque(self, which: str) -> float:
+        """Raising or lowering torque [N·m] for a unit axial force at ``mu`` (collar friction included)."""
+        fn = self.screw.raise_torque if which == "raise" else self.screw.lower_torque
+        return to_si(fn(Q(1.0, "N"), self.mu, self.collar_mu, self.collar_diameter), "torque", f"{which}_torque")
+
+    @cached_property
+    def efficiency_forward(self) -> float:
+        """η = F·l/(2π·T_raise) [-]."""
+        return self.lead_si / (2 * math.pi * self._unit_torque("raise"))
+
+    @cached_property
+    def backdrive_efficiency(self) -> float:
+        """η' = −2π·T_lower/(F·l) [-]; negative when the screw is self-locking."""
+        return -2 * math.pi * self._unit_torque("lower") / self.lead_si
 
     @property
     def self_locking(self) -> bool:
-        return self._eta_b <= 0
+        return self.backdrive_efficiency <= 0
 
     def input_effort_si(self, effort_out: Any, direction: Any) -> np.ndarray:
-        return effort_to_input(effort_out, direction, self.ratio_si, self._eta_f, self._eta_b)
+        return effort_to_input(effort_out, direction, self.ratio_si, self.efficiency_forward,
+                               self.backdrive_efficiency)
 
 
 __all__ = ["Stage", "DirectDrive", "BeltDrive", "Drum", "ScrewDrive", "effort_to_input", "MOTORING", "HOLDING"]

@@ -25,6 +25,7 @@ from typing import Any
 
 from mechverify.errors import InputError, renamed
 from mechverify.fea.regions import MEASURE_RTOL, Region
+from mechverify.frozen import set_fields
 from mechverify.units import QuantityLike, to_si
 
 
@@ -163,8 +164,7 @@ class Fixed:
     def __post_init__(self) -> None:
         _region(self.region, "Fixed")
         a, ln = _expect(self.expect_area, self.expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
 
     @property
     def components(self) -> tuple[bool, bool, bool]:
@@ -185,8 +185,7 @@ class Restraint:
     def __post_init__(self) -> None:
         _region(self.region, "Restraint")
         a, ln = _expect(self.expect_area, self.expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
         if not (self.x or self.y or self.z):
             raise InputError("Restraint: hold at least one of x, y, z")
 
@@ -205,11 +204,9 @@ class Force:
     expect_length: float | None
 
     def __init__(self, region: Region, vector: Any, *, expect_area: Any = None, expect_length: Any = None):
-        object.__setattr__(self, "region", _region(region, "Force"))
-        object.__setattr__(self, "vector", _vector(vector, "force", "Force.vector"))
+        set_fields(self, region=_region(region, "Force"), vector=_vector(vector, "force", "Force.vector"))
         a, ln = _expect(expect_area, expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
 
 
 @dataclass(frozen=True, init=False)
@@ -225,14 +222,13 @@ class PinLoad:
     expect_length: float | None
 
     def __init__(self, region: Region, vector: Any, *, expect_area: Any = None, expect_length: Any = None):
-        object.__setattr__(self, "region", _region(region, "PinLoad"))
+        set_fields(self, region=_region(region, "PinLoad"))
         vec = _vector(vector, "force", "PinLoad.vector")
         if not any(vec):
             raise InputError("PinLoad.vector: the force must not be zero")
-        object.__setattr__(self, "vector", vec)
+        set_fields(self, vector=vec)
         a, ln = _expect(expect_area, expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
 
 
 @dataclass(frozen=True, init=False)
@@ -245,11 +241,9 @@ class Pressure:
     expect_length: float | None
 
     def __init__(self, region: Region, value: QuantityLike, *, expect_area: Any = None, expect_length: Any = None):
-        object.__setattr__(self, "region", _region(region, "Pressure"))
-        object.__setattr__(self, "value", to_si(value, "pressure", "Pressure.value"))
+        set_fields(self, region=_region(region, "Pressure"), value=to_si(value, "pressure", "Pressure.value"))
         a, ln = _expect(expect_area, expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
 
 
 @dataclass(frozen=True, init=False)
@@ -264,14 +258,13 @@ class Traction:
     expect_length: float | None
 
     def __init__(self, region: Region, function: Any, *, expect_area: Any = None, expect_length: Any = None):
-        object.__setattr__(self, "region", _region(region, "Traction"))
+        set_fields(self, region=_region(region, "Traction"))
         if not callable(function):
             raise InputError(f"Traction: function must be callable (points [dim, k] m -> tractions [dim, k] Pa), "
                              f"got {function!r}")
-        object.__setattr__(self, "function", function)
+        set_fields(self, function=function)
         a, ln = _expect(expect_area, expect_length)
-        object.__setattr__(self, "expect_area", a)
-        object.__setattr__(self, "expect_length", ln)
+        set_fields(self, expect_area=a, expect_length=ln)
 
     def evaluate(self, points: Any) -> Any:
         """Tractions ``[dim, k]`` at ``points[dim, k]``; an :class:`InputError` when the shape is wrong."""
@@ -294,7 +287,7 @@ class Gravity:
 
     def __init__(self, acceleration: Any = None):
         acc = None if acceleration is None else _vector(acceleration, "acceleration", "Gravity.acceleration")
-        object.__setattr__(self, "acceleration", acc)
+        set_fields(self, acceleration=acc)
 
 
 STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 (ISO 80000-3)

@@ -52,6 +52,7 @@ from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
 from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
+from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import QuantityLike, to_si
 
@@ -80,16 +81,14 @@ class PlaneModel:
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, MeshTri):
             raise InputError(f"mesh: expected a scikit-fem MeshTri (see plane.mesh_region), got {self.mesh!r}")
-        object.__setattr__(self, "thickness", to_si(self.thickness, "length", "thickness"))
+        set_fields(self, thickness=to_si(self.thickness, "length", "thickness"))
         if self.thickness <= 0:
             raise InputError("thickness: must be positive")
         if self.plane not in ("stress", "strain"):
             raise InputError(f"plane: 'stress' or 'strain', got {self.plane!r}")
-        object.__setattr__(self, "material", _as_material(self.material))
-        object.__setattr__(self, "supports", tuple(self.supports))
-        object.__setattr__(self, "loads", tuple(self.loads))
+        set_fields(self, material=_as_material(self.material), supports=tuple(self.supports), loads=tuple(self.loads))
         oriented = mesh2d.orient_triangles(self.mesh.p, self.mesh.t)
-        object.__setattr__(self, "mesh", mesh2d.tri_mesh(self.mesh.p, oriented, self.mesh))
+        set_fields(self, mesh=mesh2d.tri_mesh(self.mesh.p, oriented, self.mesh))
 
     @cached_property
     def basis(self) -> Basis:

@@ -42,6 +42,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.errors import InputError
+from mechverify.frozen import set_fields
 from mechverify.units import QuantityLike, to_si
 
 #: Relative difference between what a region caught and its known size above which a warning is given.
@@ -104,8 +105,7 @@ class Plane(Region):
             nrm = list(n / np.linalg.norm(n))
         else:
             raise InputError("Plane: give one coordinate (x=, y= or z=) or point= and normal=")
-        object.__setattr__(self, "point", tuple(pt))
-        object.__setattr__(self, "normal", tuple(nrm))
+        set_fields(self, point=tuple(pt), normal=tuple(nrm))
 
     def contains(self, points: np.ndarray, tol: float) -> np.ndarray:
         d = points.shape[0]
@@ -129,8 +129,7 @@ class Box(Region):
             raise InputError("Box: lo and hi must have the same number of components")
         if any(a > b for a, b in zip(lo_, hi_)):
             raise InputError(f"Box: lo must not exceed hi in any component, got lo={lo!r}, hi={hi!r}")
-        object.__setattr__(self, "lo", lo_)
-        object.__setattr__(self, "hi", hi_)
+        set_fields(self, lo=lo_, hi=hi_)
 
     def contains(self, points: np.ndarray, tol: float) -> np.ndarray:
         d = min(points.shape[0], len(self.lo))
@@ -164,10 +163,8 @@ class Cylinder(Region):
         a = np.asarray(_vec(axis, "axis", "dimensionless") + (0.0,) * (3 - len(axis)), float)
         if np.linalg.norm(a) == 0:
             raise InputError("Cylinder: axis must not be zero")
-        object.__setattr__(self, "center", c + (0.0,) * (3 - len(c)))
-        object.__setattr__(self, "radius", r)
-        object.__setattr__(self, "axis", tuple(a / np.linalg.norm(a)))
-        object.__setattr__(self, "rel_tol", float(rel_tol))
+        set_fields(self, center=c + (0.0,) * (3 - len(c)), radius=r, axis=tuple(a / np.linalg.norm(a)),
+                   rel_tol=float(rel_tol))
 
     def contains(self, points: np.ndarray, tol: float) -> np.ndarray:
         d = points.shape[0]
@@ -205,11 +202,7 @@ class Arc(Region):
                   for k, v in (("start", start), ("end", end)))
         if not 0 < a1 - a0 <= 2 * np.pi + 1e-12:
             raise InputError(f"Arc: end must exceed start by at most a full turn, got {start!r} to {end!r}")
-        object.__setattr__(self, "center", c + (0.0,) * (3 - len(c)))
-        object.__setattr__(self, "radius", r)
-        object.__setattr__(self, "start", a0)
-        object.__setattr__(self, "end", a1)
-        object.__setattr__(self, "rel_tol", float(rel_tol))
+        set_fields(self, center=c + (0.0,) * (3 - len(c)), radius=r, start=a0, end=a1, rel_tol=float(rel_tol))
 
     def contains(self, points: np.ndarray, tol: float) -> np.ndarray:
         dx = points[0] - self.center[0]
@@ -255,8 +248,7 @@ class Polyline(Region):
         length = float(np.linalg.norm(np.diff(np.asarray(pts), axis=0), axis=1).sum())
         if length <= 0:
             raise InputError("Polyline: the points must not all coincide")
-        object.__setattr__(self, "vertices", pts)
-        object.__setattr__(self, "tol", 0.01 * length if tol is None else to_si(tol, "length", "tol"))
+        set_fields(self, vertices=pts, tol=0.01 * length if tol is None else to_si(tol, "length", "tol"))
 
     def distance(self, points: np.ndarray) -> np.ndarray:
         """Distance [m] of each point ``[dim, n]`` from the polyline."""

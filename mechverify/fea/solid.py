@@ -57,6 +57,7 @@ from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
+from mechverify.frozen import set_fields
 from mechverify.materials.database import get as get_material
 from mechverify.materials.material import Material
 
@@ -96,9 +97,7 @@ class SolidModel:
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, SolidMesh):
             raise InputError(f"mesh: expected a SolidMesh (mechverify.fea.mesh), got {type(self.mesh).__name__}")
-        object.__setattr__(self, "material", _as_material(self.material))
-        object.__setattr__(self, "supports", tuple(self.supports))
-        object.__setattr__(self, "loads", tuple(self.loads))
+        set_fields(self, material=_as_material(self.material), supports=tuple(self.supports), loads=tuple(self.loads))
         for s in self.supports:
             if not isinstance(s, Fixed | Restraint):
                 raise InputError(f"supports: expected Fixed or Restraint, got {s!r}")

@@ -15,6 +15,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError, ValidityError
+from mechverify.frozen import set_fields
 from mechverify.units import Q, as_quantity, fmt, to_si
 
 #: Property name -> dimension name, for every quantity-valued property of a Material.
@@ -120,7 +121,7 @@ class WireStrength:
     segments: tuple[tuple[float, float, float, float], ...] = ()  # further (A [Pa], m, d_min [m], d_max [m])
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "segments", tuple(tuple(float(x) for x in seg) for seg in self.segments))
+        set_fields(self, segments=tuple(tuple(float(x) for x in seg) for seg in self.segments))
         for A, _m, lo, hi in self.laws():
             if A <= 0 or not lo < hi:
                 raise InputError(f"wire strength: power law needs A > 0 and d_min < d_max (got A={A:g} Pa, "
@@ -202,7 +203,7 @@ class Material:
         for prop, dim in PROPERTY_DIMENSIONS.items():
             v = getattr(self, prop)
             if v is not None:
-                object.__setattr__(self, prop, as_quantity(v, dim, f"{self.name}.{prop}"))
+                set_fields(self, **{prop: as_quantity(v, dim, f"{self.name}.{prop}")})
         for prop in ("E", "G", "density", "yield_strength", "ultimate_strength", "p_max", "pv_max"):
             v = getattr(self, prop)
             if v is not None and v.magnitude <= 0:
@@ -217,15 +218,13 @@ class Material:
             raise InputError(f"{self.name}: friction range reversed (mu_min > mu_max)")
         derived = set(self.derived)
         if self.G is None and self.E is not None and self.nu is not None:
-            object.__setattr__(self, "G", (self.E / (2 * (1 + self.nu))).to(self.E.units))
+            set_fields(self, G=(self.E / (2 * (1 + self.nu))).to(self.E.units))
             derived.add("G")
         elif self.nu is None and self.E is not None and self.G is not None:
-            object.__setattr__(self, "nu", (self.E / (2 * self.G) - 1).to(""))
+            set_fields(self, nu=(self.E / (2 * self.G) - 1).to(""))
             derived.add("nu")
-        object.__setattr__(self, "derived", frozenset(derived))
-        object.__setattr__(self, "aliases", tuple(self.aliases))
-        object.__setattr__(self, "notes", tuple(self.notes))
-        object.__setattr__(self, "sources", dict(self.sources))
+        set_fields(self, derived=frozenset(derived), aliases=tuple(self.aliases), notes=tuple(self.notes),
+                   sources=dict(self.sources))
 
     def source_of(self, prop: str) -> str:
         """The reference for one property ("derived: G = E/(2(1+nu))" for computed ones)."""

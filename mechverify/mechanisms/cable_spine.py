@@ -36,7 +36,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
 
 import numpy as np
 
@@ -150,9 +152,14 @@ class CableSpine:
     weight: QuantityLike = "0 N"
     beta0: QuantityLike | None = None  # override of Timoshenko's beta0 (e.g. the document's wrong 0.554)
     name: str = "spine"
-    _si: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        self.si  # noqa: B018 - the inputs are checked at construction
+
+    @cached_property
+    def si(self) -> dict[str, Any]:
+        """The inputs in SI [m, rad, N] and the spring's values used by the model: ``a``, ``b`` (anchor radii),
+        ``g`` (cable angles), ``W``, ``k``, ``L0``, ``Ls``, ``beta0``, ``gamma0``; read it, do not change it."""
         if not isinstance(self.spring, CompressionSpring):
             raise InputError(f"{self.name}: spring must be a CompressionSpring")
         a = to_si(self.platform_radius, "length", "platform_radius")
@@ -169,16 +176,16 @@ class CableSpine:
         beta0 = r.beta.m_as("N*m**2") if self.beta0 is None else Q(self.beta0).m_as("N*m**2")
         if beta0 <= 0:
             raise InputError(f"{self.name}: beta0 must be > 0")
-        object.__setattr__(self, "_si", dict(
+        return dict(
             a=a, b=b, g=np.array(g), W=W, k=self.spring.rate.m_as("N/m"), L0=self.spring.free_length.m_as("m"),
-            Ls=self.spring.solid_length.m_as("m"), beta0=beta0, gamma0=r.gamma.m_as("N")))
+            Ls=self.spring.solid_length.m_as("m"), beta0=beta0, gamma0=r.gamma.m_as("N"))
 
     # ----------------------------------------------------------------------------------- kinematics
     def cable_geometry(self, tilt: QuantityLike, pan: QuantityLike = "0 deg", lateral: QuantityLike = "0 m",
                        height: QuantityLike | None = None) -> CableGeometry:
         """Inverse kinematics (Eqs. 4.1-4.7): platform at ``tilt``/``pan`` with its centre moved ``lateral``
         along the pan direction at ``height`` (default: the free length) -> cable lengths and directions."""
-        s = self._si
+        s = self.si
         th, ph = to_si(tilt, "angle", "tilt"), to_si(pan, "angle", "pan")
         yb = to_si(lateral, "length", "lateral")
         h = s["L0"] if height is None else to_si(height, "length", "height")
@@ -199,17 +206,17 @@ class CableSpine:
     def pulling_cable(self, pan: QuantityLike) -> int:
         """Index of the cable in the tilt plane on the side the platform tilts to (the planar model's T1)."""
         ph = to_si(pan, "angle", "pan")
-        diff = np.abs((self._si["g"] - ph + math.pi) % (2 * math.pi) - math.pi)
+        diff = np.abs((self.si["g"] - ph + math.pi) % (2 * math.pi) - math.pi)
         i = int(np.argmin(diff))
         if diff[i] > 1e-9:
             raise InputError(f"{self.name}: the planar spine model needs the pan along a cable "
-                             f"(cable angles {', '.join(f'{math.degrees(x):g}' for x in self._si['g'])} deg); "
+                             f"(cable angles {', '.join(f'{math.degrees(x):g}' for x in self.si['g'])} deg); "
                              f"got {math.degrees(ph):g} deg")
         return i
 
     # ---------------------------------------------------------------------------- linear beam-column
     def _lin_residual(self, x: Sequence[float], T: float) -> tuple[list[float], SpineState]:
-        s = self._si
+        s = self.si
         l, al, zy = x
         P = s["W"] + T * math.cos(al)
         if P <= 0 or l <= 0:
@@ -240,7 +247,7 @@ class CableSpine:
         """Small-deflection beam-column equilibrium for a pulling-cable tension T ([1] Sec. 1.2-1.3; the
         document's Eqs. (3.9)-(3.19) with beta(l) = beta0 l/L0, l = L0 - P/k, z_y = 1/2 Int y'^2)."""
         T = tension if isinstance(tension, float) else to_si(tension, "force", "tension")
-        s = self._si
+        s = self.si
         starts = [[s["L0"] - s["W"] / s["k"], 0.0, 0.0]]
         if guess is not None:  # continuation from a neighbouring equilibrium first
             starts.insert(0, list(guess))
@@ -259,7 +266,7 @@ class CableSpine:
     # ------------------------------------------------------------------------------------- elastica
     def _shoot(self, T: float, guess: Sequence[float]) -> tuple[np.ndarray, SpineState]:
         """Residual of the elastica for top state guess (x_t, z_t, theta_t)."""
-        s = self._si
+        s = self.si
         xt, zt, tht = guess
         a = s["a"]
         Bx, Bz = xt + a * math.cos(tht), zt - a * math.sin(tht)
@@ -296,11 +303,11 @@ class CableSpine:
             raise InputError(f"{self.name}: method must be 'linear' or 'elastica', got {method!r}")
         if target < 0:
             raise InputError(f"{self.name}: tilt must be >= 0 (the pan gives the direction)")
-        if target == 0 or self._si["W"] >= self.critical_load():
+        if target == 0 or self.si["W"] >= self.critical_load():
             try:
                 return self.linear_state(0.0)
             except SpineBucklingError as exc:
-                raise UnreachableTiltError(f"{self.name}: the weight {self._si['W']:.4g} N alone buckles the spine "
+                raise UnreachableTiltError(f"{self.name}: the weight {self.si['W']:.4g} N alone buckles the spine "
                                            f"(P_cr = {self.critical_load():.4g} N); reachable: no tilt") from exc
         guess: list[float] | None = None
 
@@ -346,7 +353,7 @@ class CableSpine:
     def critical_load(self) -> float:
         """Axial load at which the spine buckles as a fixed-free column (SI, N): P = P_e(l)/(1 + P_e(l)/gamma(l)),
         P_e = pi^2 beta(l)/(4 l^2), l = L0 - P/k ([1] Sec. 2.18 with Eq. 2-46), solved for P."""
-        s = self._si
+        s = self.si
 
         def f(P: float) -> float:
             l = s["L0"] - P / s["k"]

@@ -41,6 +41,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError
+from mechverify.frozen import set_fields
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.mechanisms.statics import GROUND, AppliedForce, Body, Mechanism, Pin, point_si, vector_si
 from mechverify.units import from_si, require_positive, to_si
@@ -139,17 +140,17 @@ class FiveBar:
         for f in ("base", "proximal_left", "distal_left", "distal_right", "proximal_right"):
             v = to_si(getattr(self, f), "length", f)
             require_positive(v, f)
-            object.__setattr__(self, f, from_si(v, "length"))
+            set_fields(self, **{f: from_si(v, "length")})
         if len(self.masses) != 4 or len(self.com_fractions) != 4:
             raise InputError("masses and com_fractions: give four values (left crank, left distal, right distal, "
                              "right crank)")
         ms = tuple(from_si(require_positive(to_si(m, "mass", "masses"), "masses", allow_zero=True), "mass")
                    for m in self.masses)
-        object.__setattr__(self, "masses", ms)
+        set_fields(self, masses=ms)
         fr = tuple(float(f) for f in self.com_fractions)
         if any(not 0 <= f <= 1 for f in fr):
             raise InputError(f"com_fractions: each must lie in [0, 1], got {fr}")
-        object.__setattr__(self, "com_fractions", fr)
+        set_fields(self, com_fractions=fr)
 
     # ---------------------------------------------------------------- SI geometry
     @property

@@ -38,6 +38,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError
+from mechverify.frozen import set_fields
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.mechanisms.statics import GROUND, AppliedForce, Body, Mechanism, Pin
 from mechverify.units import from_si, require_positive, to_si
@@ -89,7 +90,7 @@ class LeverArm:
         for f in ("b", "c", "d", "p", "q", "r"):
             v = to_si(getattr(self, f), "length", f)
             require_positive(v, f)
-            object.__setattr__(self, f, from_si(v, "length"))
+            set_fields(self, **{f: from_si(v, "length")})
 
     def _dims(self) -> tuple[float, ...]:
         return tuple(float(getattr(self, f).m_as("m")) for f in ("b", "c", "d", "p", "q", "r"))

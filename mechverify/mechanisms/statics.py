@@ -32,6 +32,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError, ModelError, UnknownNameError, renamed
+from mechverify.frozen import set_fields
 from mechverify.units import as_quantity, from_si, to_si
 
 GROUND = "ground"
@@ -91,13 +92,13 @@ class Body:
         if not self.name or self.name == GROUND:
             raise InputError(f"body name must be non-empty and not {GROUND!r}, got {self.name!r}")
         pts = {str(k): point_si(v, f"body {self.name!r} point {k!r}") for k, v in dict(self.points).items()}
-        object.__setattr__(self, "points", pts)
+        set_fields(self, points=pts)
         m = to_si(self.mass, "mass", f"body {self.name!r} mass")
         if m < 0:
             raise InputError(f"body {self.name!r} mass: must be zero or positive, got {m} kg")
-        object.__setattr__(self, "mass", from_si(m, "mass"))
+        set_fields(self, mass=from_si(m, "mass"))
         if self.com is not None:
-            object.__setattr__(self, "com", point_si(self.com, f"body {self.name!r} com"))
+            set_fields(self, com=point_si(self.com, f"body {self.name!r} com"))
         segs = self.segments if self.segments is not None else _default_segments(pts)
         segs = tuple((str(a), str(b)) for a, b in segs)
         for a, b in segs:
@@ -107,7 +108,7 @@ class Body:
             if np.linalg.norm(pts[a] - pts[b]) == 0:
                 raise InputError(f"body {self.name!r}: segment ({a}, {b}) has zero length")
         _check_tree(self.name, segs)
-        object.__setattr__(self, "segments", segs)
+        set_fields(self, segments=segs)
         if m > 0 and self.com is None and not segs:
             raise InputError(f"body {self.name!r}: give com (centre of mass) for its mass, or segments to spread it on")
 
@@ -226,9 +227,7 @@ class Mechanism:
     name: str = "mechanism"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "bodies", tuple(self.bodies))
-        object.__setattr__(self, "joints", tuple(self.joints))
-        object.__setattr__(self, "loads", tuple(self.loads))
+        set_fields(self, bodies=tuple(self.bodies), joints=tuple(self.joints), loads=tuple(self.loads))
         names = [b.name for b in self.bodies]
         if len(set(names)) != len(names):
             raise InputError(f"{self.name}: body names must be unique, got {names}")

@@ -19,6 +19,7 @@ import pint
 
 from mechverify.components.sections import Section
 from mechverify.errors import InputError, renamed, suggest
+from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import BOUNDS, QuantityLike, from_si, to_si
 
@@ -176,7 +177,7 @@ class Member:
         if not isinstance(self.section, Section):
             raise InputError(f"member {self.name}: section must be a Section (mechverify.components.sections), "
                              f"got {type(self.section).__name__}")
-        object.__setattr__(self, "material", _material(self.material, f"member {self.name}: material"))
+        set_fields(self, material=_material(self.material, f"member {self.name}: material"))
         if self.theory is not None and self.theory not in THEORIES:
             raise InputError(f"member {self.name}: theory must be one of {THEORIES}, got {self.theory!r}")
         if not isinstance(self.divisions, int) or self.divisions < 1:
@@ -186,10 +187,10 @@ class Member:
             if o.shape != (3,) or not np.linalg.norm(o) > 0:
                 raise InputError(f"member {self.name}: orientation must be a non-zero 3-vector, "
                                  f"got {self.orientation!r}")
-            object.__setattr__(self, "orientation", tuple(float(c) for c in o))
-        object.__setattr__(self, "releases_start", Release.parse(self.releases_start,
-                                                                 f"member {self.name}: releases_start"))
-        object.__setattr__(self, "releases_end", Release.parse(self.releases_end, f"member {self.name}: releases_end"))
+            set_fields(self, orientation=tuple(float(c) for c in o))
+        set_fields(self, releases_start=Release.parse(self.releases_start,
+                                                      f"member {self.name}: releases_start"))
+        set_fields(self, releases_end=Release.parse(self.releases_end, f"member {self.name}: releases_end"))
 
     def renamed(self, name: str) -> Member:
         import dataclasses
@@ -294,9 +295,7 @@ class FrameSupport:
             if DOF_NAMES.index(kk) in self._held(hold):
                 raise InputError(f"support one_way.{kk}: that motion is held rigidly by the support kind")
             one[kk] = 1 if v == "+" else -1
-        object.__setattr__(self, "hold", hold)
-        object.__setattr__(self, "springs", springs)
-        object.__setattr__(self, "one_way", one)
+        set_fields(self, hold=hold, springs=springs, one_way=one)
 
     def _held(self, hold: tuple[str, ...]) -> tuple[int, ...]:
         if self.kind == "fixed":
@@ -351,7 +350,7 @@ class Spring:
             k = to_si(self.axial, "force_per_length", f"{what}: axial")
             if not k > 0:
                 raise InputError(f"{what}: axial stiffness must be positive, got {self.axial!r}")
-            object.__setattr__(self, "axial", k)
+            set_fields(self, axial=k)
         comps: dict[str, float] = {}
         for key, v in dict(self.stiffness).items():
             i = _dof(key, f"{what}: stiffness")
@@ -359,7 +358,7 @@ class Spring:
             if not val > 0:
                 raise InputError(f"{what}: stiffness.{DOF_NAMES[i]} must be positive, got {v!r}")
             comps[DOF_NAMES[i]] = val
-        object.__setattr__(self, "stiffness", comps)
+        set_fields(self, stiffness=comps)
 
 
 # -------------------------------------------------------------------------------------------- loads
@@ -464,7 +463,7 @@ class SupportDisplacement:
         for k, v in dict(self.values).items():
             i = _dof(k, "support displacement")
             vals[DOF_NAMES[i]] = _dof_value(i, v, f"support displacement.{DOF_NAMES[i]}", "displacement")
-        object.__setattr__(self, "values", vals)
+        set_fields(self, values=vals)
 
 
 Load = FramePointLoad | MemberPointLoad | DistributedLoad | FrameSelfWeight | SupportDisplacement
@@ -485,7 +484,7 @@ class LoadCombination:
             if isinstance(v, bool) or not isinstance(v, int | float) or not math.isfinite(v):
                 raise InputError(f"load combination {self.name!r}: factor of {k!r} must be a number, got {v!r}")
             out[str(k)] = float(v)
-        object.__setattr__(self, "factors", out)
+        set_fields(self, factors=out)
 
 
 __all__ = ["DOF_NAMES", "RELEASE_NAMES", "SUPPORT_KINDS", "THEORIES", "STANDARD_GRAVITY", "Where", "Release",
