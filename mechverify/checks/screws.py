@@ -7,8 +7,9 @@ torsional stress in the screw). Every result says in its notes which value it us
 
 References
 ----------
-Citations come from :mod:`mechverify.references`: ``shigley10`` Sec. 8-2 (power screws; equation numbers
-8-1..8-6 as printed in the 9th ed. text, the same section of the 10th) and Secs. 4-11 to 4-13 (columns),
+Citations come from :mod:`mechverify.references`: ``shigley10`` Sec. 8-2 (power screws; the formulas were
+checked in the 9th ed. text, where they are Eqs. 8-1..8-6; the 10th-ed. numbers are not cited because that text
+was not available) and Secs. 4-11 to 4-13 (columns),
 ``hamrock3`` Sec. 16.3, ``blevins`` Table 8-1, ``thk`` (permissible speed 0.8 n_c, compressive load 0.5 P_cr),
 ``din103`` and ``roloff_matek`` (flank pressure).
 """

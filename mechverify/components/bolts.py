@@ -432,7 +432,7 @@ def bolt_goodman_strength(S_e: float, S_ut: float, sigma_i: float) -> float:
 @si_function(returns="pressure", S_e="pressure", S_ut="pressure", sigma_i="pressure")
 def bolt_gerber_strength(S_e: float, S_ut: float, sigma_i: float) -> float:
     """Strength amplitude on the Gerber parabola: S_a = [S_ut sqrt(S_ut^2 + 4 S_e (S_e + sigma_i)) - S_ut^2
-    - 2 sigma_i S_e] / (2 S_e). Source: Shigley 10th ed., Sec. 8-11 (Gerber, Eq. 8-42 of the 9th ed.)."""
+    - 2 sigma_i S_e] / (2 S_e). Source: Shigley 10th ed., Sec. 8-11 (Gerber fatigue criterion)."""
     return (S_ut * math.sqrt(S_ut**2 + 4 * S_e * (S_e + sigma_i)) - S_ut**2 - 2 * sigma_i * S_e) / (2 * S_e)
 
 

@@ -15,7 +15,7 @@ Public API (quantities in, quantities out; each factor is dimensionless)::
 References
 ----------
 1. Budynas, Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed., 2015, Secs. 6-7 and 6-9:
-   Eq. (6-8) (Se' of steels), Eqs. (6-18)..(6-29), Tables 6-2..6-5 (same numbering in the 9th ed.).
+   Eq. (6-8) (Se' of steels), Eqs. (6-18)..(6-29), Tables 6-2..6-5.
 2. Norton, *Machine Design: An Integrated Approach*, 4th ed., 2011, Sec. 6.6: wrought aluminium has no
    endurance limit; its fatigue strength at 5e8 cycles is about 0.4 Sut (Sut < 330 MPa), else 130 MPa.
 """

@@ -16,7 +16,7 @@ fully reversed; convert a cycle with a mean stress first with
 
 References
 ----------
-1. Budynas, Nisbett, *Shigley's Mechanical Engineering Design*, 9th ed. 2011 / 10th ed. 2015, Sec. 6-8:
+1. Budynas, Nisbett, *Shigley's Mechanical Engineering Design*, 10th ed. 2015 (``shigley10``), Sec. 6-8:
    Eqs. (6-13)..(6-17) (S = a N^b with a = (f Sut)^2/Se, b = -(1/3) log(f Sut/Se); low-cycle line),
    Fig. 6-18 (f); 10th ed. Eq. (6-10) fit of f; Sec. 6-16, Eq. (6-58) (Palmgren-Miner).
 """
