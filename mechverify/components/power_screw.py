@@ -15,7 +15,8 @@ negative value means the load back-drives the screw, and ``-T_L`` is the torque 
 
 References
 ----------
-1. Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., McGraw-Hill 2011, Sec. 8-2
+1. R. G. Budynas, J. K. Nisbett, Shigley's Mechanical Engineering Design, 10th ed., McGraw-Hill Education, 2015,
+   Sec. 8-2
    (Eqs. 8-1 to 8-6; body and thread stresses, pp. 418-419; Example 8-1).
 2. Hamrock, Schmid & Jacobson, Fundamentals of Machine Elements, 3rd ed., CRC 2014, Sec. 16.3
    (normal-plane flank angle theta_n, Eqs. 16.8-16.12).
@@ -97,7 +98,7 @@ def _mu(mu: float, name: str = "mu") -> float:
 
 @si_function(returns="angle", lead="length", d2="length")
 def lead_angle(lead: float, d2: float) -> float:
-    """Lead angle ``lambda = atan(l / (pi d2))`` [rad] (Shigley 9th ed., Sec. 8-2, Fig. 8-6)."""
+    """Lead angle ``lambda = atan(l / (pi d2))`` [rad] (Shigley 10th ed., Sec. 8-2)."""
     return _lam(lead, d2)
 
 
@@ -110,7 +111,7 @@ def normal_flank_angle(flank_angle: float, lead_angle: float) -> float:
 @si_function(returns="angle", mu="dimensionless", normal_flank_angle="angle")
 def friction_angle(mu: float, normal_flank_angle: float = 0.0) -> float:
     """Effective friction angle ``rho' = atan(mu / cos(alpha_n))`` [rad]; the thread self-locks while
-    ``lambda < rho'`` (Shigley 9th ed., Sec. 8-2; Roloff-Matek)."""
+    ``lambda < rho'`` (Shigley 10th ed., Sec. 8-2; Roloff-Matek)."""
     _mu(mu)
     return math.atan(mu / math.cos(normal_flank_angle))
 
@@ -145,7 +146,7 @@ def _collar(mu_collar: float, d_collar: float | None) -> float:
 
 @si_function(returns="torque", F="force", mu_collar="dimensionless", d_collar="length")
 def collar_torque(F: float, mu_collar: float, d_collar: float) -> float:
-    """Thrust-collar friction torque ``T_c = F mu_c d_c / 2`` [N m] (Shigley 9th ed., Eq. 8-6)."""
+    """Thrust-collar friction torque ``T_c = F mu_c d_c / 2`` [N m] (Shigley 10th ed., Sec. 8-2, collar torque)."""
     return F * _collar(mu_collar, d_collar)
 
 
@@ -156,7 +157,8 @@ def raise_torque(F: float, d2: float, lead: float, mu: float, flank_angle: float
     """Torque to move the load against its force (raise) [N m].
 
     ``T_R = F d2/2 (cos(alpha_n) tan(lambda) + mu) / (cos(alpha_n) - mu tan(lambda)) + F mu_c d_c/2``
-    (Hamrock 3rd ed., Eq. 16.10; for alpha = 0 Shigley 9th ed., Eq. 8-1, with 8-6).
+    (Hamrock 3rd ed., Eq. 16.10; for alpha = 0 Shigley 10th ed., Sec. 8-2, raising torque with
+    the collar torque).
     """
     return F * (_thread_ratio_raise(lead, d2, mu, flank_angle) + _collar(mu_collar, d_collar))
 
@@ -168,7 +170,8 @@ def lower_torque(F: float, d2: float, lead: float, mu: float, flank_angle: float
     """Torque to move the load with its force (lower) [N m]; negative when the load back-drives the screw.
 
     ``T_L = F d2/2 (mu - cos(alpha_n) tan(lambda)) / (cos(alpha_n) + mu tan(lambda)) + F mu_c d_c/2``
-    (Hamrock 3rd ed., Eq. 16.12; for alpha = 0 Shigley 9th ed., Eq. 8-2, with 8-6).
+    (Hamrock 3rd ed., Eq. 16.12; for alpha = 0 Shigley 10th ed., Sec. 8-2, lowering torque with
+    the collar torque).
     """
     return F * (_thread_ratio_lower(lead, d2, mu, flank_angle) + _collar(mu_collar, d_collar))
 
@@ -177,7 +180,7 @@ def lower_torque(F: float, d2: float, lead: float, mu: float, flank_angle: float
              mu_collar="dimensionless", d_collar="length")
 def efficiency(d2: float, lead: float, mu: float, flank_angle: float,
                mu_collar: float = 0.0, d_collar: float | None = None) -> float:
-    """Efficiency of driving the screw against the load, ``e = F l / (2 pi T_R)`` [-] (Shigley 9th ed., Eq. 8-4).
+    """Efficiency of driving the screw against the load, ``e = F l / (2 pi T_R)`` [-] (Shigley 10th ed., Sec. 8-2).
 
     Without collar friction ``e = tan(lambda) (cos(alpha_n) - mu tan(lambda)) / (cos(alpha_n) tan(lambda) + mu)``.
     """
@@ -201,7 +204,8 @@ def backdrive_efficiency(d2: float, lead: float, mu: float, flank_angle: float,
 def self_locking_mu(d2: float, lead: float, flank_angle: float) -> float:
     """Friction coefficient below which the load back-drives the thread, ``mu* = cos(alpha_n) tan(lambda)`` [-].
 
-    The thread alone self-locks for ``mu > mu*`` (Hamrock 3rd ed., Sec. 16.3.3; Shigley 9th ed., Eq. 8-3
+    The thread alone self-locks for ``mu > mu*`` (Hamrock 3rd ed., Sec. 16.3.3; Shigley 10th ed., Sec. 8-2,
+    self-locking condition
     for alpha = 0: ``mu > tan(lambda)``). Collar friction is not counted: it is not present in every
     holding situation.
     """
@@ -232,7 +236,7 @@ def engaged_threads(nut_length: float, pitch: float) -> float:
 
 @si_function(returns="pressure", F="force", d2="length", H1="length", engaged_threads="dimensionless")
 def flank_pressure(F: float, d2: float, H1: float, engaged_threads: float) -> float:
-    """Mean flank pressure ``p = F / (pi d2 H1 n)`` [Pa] (DIN 103 / Roloff-Matek; Shigley 9th ed. bearing
+    """Mean flank pressure ``p = F / (pi d2 H1 n)`` [Pa] (DIN 103 / Roloff-Matek; Shigley 10th ed. bearing
     stress ``2F/(pi d_m n_t p)`` with ``H1 = p/2``)."""
     require_positive(F, "F", allow_zero=True)
     for v, n in ((d2, "d2"), (H1, "H1"), (engaged_threads, "engaged_threads")):
@@ -289,7 +293,7 @@ def thread_shear_stress(F: float, diameter: float, tooth_width: float, engaged_t
 def thread_bending_stress(F: float, d3: float, root_width: float, height: float, engaged_threads: float = 1.0) -> float:
     """Bending stress at the thread root, cantilever loaded at mid-height: ``3 F h / (pi d3 n w^2)`` [Pa].
 
-    For the square thread (``w = h = p/2``) this is Shigley's ``6F/(pi d_r n_t p)`` (9th ed., p. 419).
+    For the square thread (``w = h = p/2``) this is Shigley's ``6F/(pi d_r n_t p)`` (10th ed., Sec. 8-2).
     """
     for v, n in ((d3, "d3"), (root_width, "root_width"), (height, "height"), (engaged_threads, "engaged_threads")):
         require_positive(v, n)
@@ -307,7 +311,7 @@ class ScrewStresses:
 
 def screw_stresses(F: QuantityLike, torque: QuantityLike, d3: QuantityLike) -> ScrewStresses:
     """Axial ``4F/(pi d3^2)``, torsional ``16T/(pi d3^3)`` and von Mises ``sqrt(s^2 + 3 t^2)`` stress [Pa]
-    at the minor diameter (Shigley 9th ed., Sec. 8-2, p. 418, and Eq. 5-15)."""
+    at the minor diameter (Shigley 10th ed., Secs. 8-2 and 5-5)."""
     f, t, d = to_si(F, "force", "F"), to_si(torque, "torque", "torque"), to_si(d3, "length", "d3")
     require_positive(d, "d3")
     s = 4 * abs(f) / (math.pi * d**2)
@@ -319,7 +323,8 @@ def screw_stresses(F: QuantityLike, torque: QuantityLike, d3: QuantityLike) -> S
 @si_function(returns="pressure", sigma_x="pressure", sigma_y="pressure", tau_yz="pressure")
 def thread_root_von_mises(sigma_x: float, sigma_y: float, tau_yz: float) -> float:
     """Von Mises stress at the thread root with ``sigma_z = tau_xy = tau_zx = 0`` [Pa]:
-    ``(1/sqrt2) sqrt((sx - sy)^2 + sy^2 + sx^2 + 6 tyz^2)`` (Shigley 9th ed., Eq. 5-14; Example 8-1 g)."""
+    ``(1/sqrt2) sqrt((sx - sy)^2 + sy^2 + sx^2 + 6 tyz^2)`` (Shigley 10th ed., Sec. 5-5; the power-screw
+    example of Sec. 8-2)."""
     return math.sqrt(((sigma_x - sigma_y) ** 2 + sigma_y**2 + sigma_x**2 + 6 * tau_yz**2) / 2)
 
 

@@ -25,7 +25,8 @@ References
 1. ISO 2902:1977, ISO metric trapezoidal screw threads - General plan.
 2. ISO 2904:1977, ISO metric trapezoidal screw threads - Basic dimensions (= DIN 103-4).
 3. ASME B1.5-1997, Acme Screw Threads.
-4. Budynas & Nisbett, Shigley's Mechanical Engineering Design, 9th ed., 2011, Sec. 8-1, Fig. 8-3, Table 8-3.
+4. R. G. Budynas, J. K. Nisbett, Shigley's Mechanical Engineering Design, 10th ed., McGraw-Hill Education, 2015,
+   Sec. 8-1 (thread profiles, preferred Acme pitches).
 5. THK General Catalog, Ball Screw (efficiency with friction coefficient 0.003..0.01).
 """
 
@@ -44,6 +45,7 @@ import pint
 
 from mechverify.errors import InputError, UnknownNameError, ValidityError
 from mechverify.frozen import set_fields
+from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, as_quantity, fmt, to_si
 
 _DATA = Path(__file__).parent / "data"
@@ -107,7 +109,7 @@ class Thread:
 
     @property
     def lead_angle(self) -> pint.Quantity:
-        """Lead angle at the pitch diameter, ``lambda = atan(l / (pi d2))`` (Shigley 9th ed., Sec. 8-2)."""
+        """Lead angle at the pitch diameter, ``lambda = atan(l / (pi d2))`` (Shigley 10th ed., Sec. 8-2)."""
         return Q(math.degrees(math.atan(to_si(self.lead, "length") / (math.pi * to_si(self.d2, "length")))), "deg")
 
     @property
@@ -269,7 +271,7 @@ def acme(d: QuantityLike, tpi: float | None = None, *, pitch: QuantityLike | Non
          left_hand: bool = False) -> Thread:
     """General-purpose Acme thread (ASME B1.5) by nominal diameter and threads per inch (or ``pitch``).
 
-    Basic dimensions (Shigley 9th ed., Fig. 8-3c): depth ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``.
+    Basic dimensions (Shigley 10th ed., Sec. 8-1, Acme profile): depth ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``.
     ``d`` must be a tabulated size with its standard pitch.
     """
     dq = as_quantity(d, "length", "d")
@@ -297,14 +299,15 @@ def acme(d: QuantityLike, tpi: float | None = None, *, pitch: QuantityLike | Non
 
 
 def square(d: QuantityLike, pitch: QuantityLike, starts: int = 1) -> Thread:
-    """Square thread (Shigley 9th ed., Fig. 8-3a): depth = width = ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``."""
+    """Square thread (Shigley 10th ed., Sec. 8-1): depth = width = ``P/2``, ``d2 = d - P/2``, ``d3 = d - P``."""
     dm, P = to_si(d, "length", "d") * 1e3, to_si(pitch, "length", "pitch") * 1e3
     if dm <= 0 or P <= 0 or P >= dm:
         raise InputError(f"square thread: need 0 < P < d, got d = {dm:g} mm, P = {P:g} mm")
     name = f"Sq{_num(dm)}x{_num(P)}" + (f" {starts}-start" if starts > 1 else "")
     return Thread(designation=name, form="square", d=Q(dm, "mm"), pitch=Q(P, "mm"), starts=starts,
                   flank_angle=Q(0.0, "deg"), d2=Q(dm - P / 2, "mm"), d3=Q(dm - P, "mm"), D1=Q(dm - P, "mm"),
-                  D4=Q(dm, "mm"), H1=Q(P / 2, "mm"), standard="square", source="Shigley 9th ed., Fig. 8-3a")
+                  D4=Q(dm, "mm"), H1=Q(P / 2, "mm"), standard="square",
+                  source=ref("shigley10", "Sec. 8-1, square thread"))
 
 
 def generic(lead: QuantityLike, starts: int, d2: QuantityLike, flank_angle: QuantityLike = "15 deg", *,
