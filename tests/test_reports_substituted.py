@@ -300,10 +300,6 @@ ALLOW_NO_SUBSTITUTION = {
 # Checks owned by other issues that had no substituted line when this test was written (issue 25's table);
 # the test still evaluates their line as soon as one exists. Remove an entry when its check prints one.
 PENDING_ELSEWHERE = {
-    "bearing_life": "issue 24", "bearing_static_safety": "issue 24", "bearing_speed": "issue 24",
-    "motor_peak_torque": "issue 24", "motor_rms_torque": "issue 24", "motor_max_speed": "issue 24",
-    "motor_supply_voltage": "issue 24", "inertia_ratio": "issue 24", "gearhead_continuous_torque": "issue 24",
-    "gearhead_intermittent_torque": "issue 24", "gearhead_input_speed": "issue 24",
     "shaft_static_yield": "issue 21", "shaft_fatigue": "issue 21", "shaft_bearing_slope": "issue 21",
     "shaft_critical_speed": "issue 21", "spine_buckling_ratio": "issue 20",
 }

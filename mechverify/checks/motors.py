@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult, ResultSet
+from mechverify.checks.result import CheckResult, ResultSet, tex
 from mechverify.components.gearheads import Gearhead
 from mechverify.components.motors import ALPHA_CU, thermal_data, winding_temperature_cycle
 from mechverify.errors import InputError
@@ -71,6 +71,15 @@ def _plot(demand: TorqueDemand, motor: Any, voltage: float | None = None) -> dic
 
 def _case(demand: TorqueDemand, i: int) -> str:
     return demand.describe(i)
+
+
+def _sf_line(capacity: Any, demand: Any, unit: str | None = None) -> str:
+    """S = capacity/demand with both numbers and units (the check's safety factor); "" when demand is 0."""
+    d = float(Q(demand).to(unit).magnitude if unit else Q(demand).magnitude)
+    c = float(Q(capacity).to(unit).magnitude if unit else Q(capacity).magnitude)
+    if not d > 0:
+        return ""
+    return rf"S = \frac{{{tex(Q(capacity), unit)}}}{{{tex(Q(demand), unit)}}} = {tex(c / d)}"
 
 
 @check("motor_peak_torque", title="Motor peak torque", sf_kind="motor",
@@ -124,7 +133,8 @@ def check_motor_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: 
         formula=r"|T(t)| \le T_{avail}(\omega(t)) / S_f",
         source=_SRC_MAXON if m.kind == "dc" else _SRC_ORIENTAL,
         inputs={"peak torque": demand.peak_torque, "peak speed": demand.peak_speed.to("rpm")},
-        notes=tuple(notes), warnings=tuple(warnings), load_case=_case(demand, i), details=_plot(demand, m, U))
+        notes=tuple(notes), warnings=tuple(warnings), load_case=_case(demand, i), details=_plot(demand, m, U),
+        substituted=_sf_line(from_si(float(avail[i]), "torque"), from_si(float(T[i]), "torque"), "N*m"))
 
 
 @check("motor_rms_torque", title="Motor RMS torque", sf_kind="motor",
@@ -157,7 +167,8 @@ def check_motor_rms_torque(demand: TorqueDemand, motor: Any = None, *, component
         check="motor_rms_torque", component=component or m.name, demand=Trms, capacity=cap,
         title="RMS torque within the continuous torque", formula=r"T_{rms} = \sqrt{\frac{1}{t_c}\int T^2\,dt} \le T_N",
         source=_SRC_MAXON, inputs={"cycle time": Q(demand.cycle_time, "s")}, notes=tuple(notes),
-        warnings=tuple(warnings), load_case=f"whole cycle (peak at {_case(demand, i)})", details=_plot(demand, m))
+        warnings=tuple(warnings), load_case=f"whole cycle (peak at {_case(demand, i)})", details=_plot(demand, m),
+        substituted=_sf_line(cap, Trms, "N*m"))
 
 
 @check("motor_max_speed", title="Motor speed", sf_kind="limit",
@@ -178,7 +189,8 @@ def check_motor_max_speed(demand: TorqueDemand, motor: Any = None, *, component:
         capacity=cap.to("rpm"), title="Motor speed within its limit", formula=r"\max|\omega| \le \omega_{max}",
         source=_SRC_MAXON, notes=("capacity: " + ("limit speed" if m.kind == "dc" and m.max_speed is not None
                                                   else "no-load speed / last curve point"),),
-        load_case=_case(demand, i), details=_plot(demand, m))
+        load_case=_case(demand, i), details=_plot(demand, m),
+        substituted=_sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
 
 
 def _gearheads(demand: TorqueDemand, gearhead: Any) -> list[Any]:
@@ -211,7 +223,8 @@ def check_gearhead_continuous_torque(demand: TorqueDemand, gearhead: Any = None,
         inputs={"ratio": Q(g.ratio), "efficiency": Q(g.efficiency)},
         notes=("output torque includes the load's inertia, gravity and friction, reflected through the stages "
                "beyond the gearhead",), load_case=f"whole cycle (peak at {_case(demand, i)})",
-        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")})
+        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
+        substituted=_sf_line(g.continuous_torque, from_si(Trms, "torque"), "N*m"))
 
 
 @check("gearhead_intermittent_torque", title="Gearhead intermittent torque", sf_kind="motor",
@@ -232,7 +245,8 @@ def check_gearhead_intermittent_torque(demand: TorqueDemand, gearhead: Any = Non
         check="gearhead_intermittent_torque", component=component or g.name, demand=from_si(float(T[i]), "torque"),
         capacity=g.intermittent_torque, title="Gearhead peak output torque within its intermittent torque",
         formula=r"\max|T_{out}| \le T_{int}", source=_SRC_MAXON, load_case=_case(demand, i),
-        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")})
+        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
+        substituted=_sf_line(g.intermittent_torque, from_si(float(T[i]), "torque"), "N*m"))
 
 
 @check("gearhead_input_speed", title="Gearhead input speed", sf_kind="limit",
@@ -255,7 +269,8 @@ def check_gearhead_input_speed(demand: TorqueDemand, gearhead: Any = None, *,
         check="gearhead_input_speed", component=component or g.name,
         demand=from_si(float(w[i]), "angular_velocity").to("rpm"), capacity=cap.to("rpm"),
         title="Gearhead input speed within its limit", formula=r"\max|\omega_{in}| \le \omega_{in,max}",
-        source=_SRC_MAXON, notes=tuple(notes), load_case=_case(demand, i))
+        source=_SRC_MAXON, notes=tuple(notes), load_case=_case(demand, i),
+        substituted=_sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
 
 
 @check("inertia_ratio", title="Inertia ratio", sf_kind="limit",
@@ -285,7 +300,9 @@ def check_inertia_ratio(demand: TorqueDemand, motor: Any = None, *, max_ratio: f
                 "rotor inertia": m.rotor_inertia.to("g*cm**2")},
         notes=(f"limit {limit:g} ({'default for steppers and servos' if max_ratio is None else 'given'}); "
                "inertia reflected with the square of each ratio, no efficiency",),
-        load_case="whole cycle")
+        load_case="whole cycle",
+        substituted=(rf"\frac{{J_L}}{{J_M}} = \frac{{{tex(demand.load_inertia, 'g*cm**2')}}}"
+                     rf"{{{tex(m.rotor_inertia, 'g*cm**2')}}} = {tex(ratio)}"))
 
 
 @check("motor_supply_voltage", title="Supply voltage", sf_kind="limit",
@@ -306,7 +323,19 @@ def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: QuantityLik
         capacity=from_si(to_si(supply_voltage, "voltage", "supply_voltage"), "voltage"),
         title="Supply voltage covers the worst operating point", formula=r"U = R\,(|T|/k_t + I_0) + |\omega|/k_n",
         source=_SRC_MAXON, notes=("conservative when braking (generating), where the needed voltage is lower",),
-        load_case=_case(demand, i), details=_plot(demand, m, to_si(supply_voltage, "voltage", "supply_voltage")))
+        load_case=_case(demand, i), details=_plot(demand, m, to_si(supply_voltage, "voltage", "supply_voltage")),
+        substituted=_voltage_line(m, float(demand.motor_torque[i]), float(demand.motor_speed[i]), float(U[i])))
+
+
+def _voltage_line(m: Any, T: float, w: float, U: float) -> str:
+    """U = R (|T|/k_t + I_0) + |omega|/k_n with the motor's constants (maxon)."""
+    R = from_si(to_si(m.terminal_resistance, "resistance"), "resistance")
+    kt = from_si(to_si(m.torque_constant, "torque_constant"), "torque_constant")
+    kn = from_si(to_si(m.speed_constant, "speed_constant"), "speed_constant")
+    I0 = Q(to_si(m.no_load_current, "current") if m.no_load_current is not None else 0.0, "A")
+    return (rf"U = {tex(R, 'ohm')}\cdot \left(\frac{{{tex(Q(abs(T), 'N*m'), 'mN*m')}}}{{{tex(kt, 'mN*m/A')}}} + "
+            rf"{tex(I0, 'A')}\right) + \frac{{{tex(Q(abs(w), 'rad/s'), 'rpm')}}}{{{tex(kn, 'rpm/V')}}} = "
+            rf"{tex(Q(U, 'V'), 'V')}")
 
 
 @check("driver_current", title="Driver current", sf_kind="motor",
@@ -329,7 +358,9 @@ def check_driver_current(demand: TorqueDemand, max_current: QuantityLike, motor:
         title="Driver current covers the worst operating point",
         formula={"dc": r"I = |T|/k_t + I_0 \le I_{driver}", "stepper": r"I = I_{rated,phase} \le I_{driver}"}.get(
             m.kind, r"I = I_0 + (I_H - I_0)\,|T|/T_H"),
-        source=_SRC_MAXON, load_case=_case(demand, i))
+        source=_SRC_MAXON, load_case=_case(demand, i),
+        substituted=_sf_line(from_si(to_si(max_current, "current", "max_current"), "current"),
+                             from_si(float(current[i]), "current"), "A"))
 
 
 def _celsius(value: QuantityLike, name: str) -> float:
@@ -383,6 +414,8 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
                "the duty cycle repeats without pause beyond the given cycle time; iron and friction losses "
                "are not in the model (I_0 heats the winding as current)"),
         load_case=f"whole cycle (peak at {_case(demand, th.peak_index)})",
+        substituted=(rf"\frac{{T_w - T_U}}{{T_{{max}} - T_U}} = \frac{{{tex(th.peak_winding)} - {tex(Ta)}}}"
+                     rf"{{{tex(Tmax)} - {tex(Ta)}}} = {tex((th.peak_winding - Ta) / (Tmax - Ta))}"),
         details={"time": Q(th.t, "s"), "winding_temperature": Q(th.winding, "degC"),
                  "housing_temperature": Q(th.housing, "degC")})
 
@@ -439,7 +472,9 @@ def check_drive_regeneration(demand: TorqueDemand, supply_voltage: QuantityLike,
         source=f"{_SRC_MAXON}; capacitor energy E = C (U^2 - U0^2)/2",
         inputs={"U0": Q(U0, "V"), "C": Q(C * 1e6, "uF"), "U_max": Q(Ulim, "V")}, notes=tuple(notes),
         load_case=_case(demand, min(worst_end, len(t) - 1)) if events else "no braking in the cycle",
-        details={"time": Q(t, "s"), "regenerated_power": Q(P, "W")})
+        details={"time": Q(t, "s"), "regenerated_power": Q(P, "W")},
+        substituted=(rf"U = \sqrt{{({tex(Q(U0, 'V'), 'V')})^{{2}} + \frac{{2\cdot {tex(Q(E, 'J'), 'J')}}}"
+                     rf"{{{tex(Q(C, 'F'), 'F')}}}}} = {tex(Q(U, 'V'), 'V')}"))
 
 
 def motor_fit_checks(demand: TorqueDemand, *, supply_voltage: Any = None, driver_current: Any = None,
