@@ -91,6 +91,16 @@ def test_weight_above_the_critical_load_is_a_fail_not_a_crash(tmp_path):
     assert any("alone buckles" in n for n in b.notes)
 
 
-def test_pan_between_cables_is_a_named_error(tmp_path):
-    with pytest.raises(DesignFileError, match="pan along a cable"):
+def test_pan_between_cables(tmp_path):
+    """A pan between cables is the 3D rod (mechverify.mechanisms.cable_spine_3d): the design's cable tension is
+    its most loaded cable; midway (60 deg) both pulling cables carry the same tension. The linear model is planar:
+    a named error."""
+    from mechverify.mechanisms.cable_spine_3d import state_3d
+
+    with pytest.raises(DesignFileError, match="pan between cables .* method = \"elastica\""):
         _design(tmp_path, pan='pan = "60 deg"').verify()
+    d = _design(tmp_path, pan='pan = "60 deg"', method="elastica")
+    r = d.verify().get("neck", "cable_tension")
+    st = state_3d(d["neck"].spine, "20 deg", "60 deg")
+    assert st.tensions[0] == pytest.approx(st.tensions[1], rel=1e-8) and st.tensions[2] == 0
+    assert r.demand.m_as("N") == pytest.approx(float(max(st.tensions)), rel=1e-9)

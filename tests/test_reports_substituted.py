@@ -51,7 +51,7 @@ def latex_to_python(s: str) -> str:
         else:
             for latex, py in ((r"\left(", "("), (r"\right)", ")"), (r"\cdot", "*"), (r"\pi", "pi"),
                               (r"\arctan", "atan"), (r"\cos", "cos"), (r"\tan", "tan"), (r"\sin", "sin"),
-                              (r"\max", "max"), (r"\;", " ")):
+                              (r"\max", "max"), (r"\ln", "log"), (r"\;", " ")):
                 if s.startswith(latex, i):
                     out.append(py)
                     i += len(latex)
@@ -141,7 +141,7 @@ def assert_substituted(r) -> None:
     the first printed result (within the 4-significant-digit rounding of the printed inputs) and one printed
     result is the check's demand, capacity or (dimensionless results) safety factor."""
     assert r.substituted, f"{r.component}/{r.check}: no substituted formula"
-    env = {"Q": Q, "pi": math.pi, "atan": np.arctan, "cos": np.cos, "tan": np.tan, "sin": np.sin}
+    env = {"Q": Q, "pi": math.pi, "atan": np.arctan, "cos": np.cos, "tan": np.tan, "sin": np.sin, "log": np.log}
     printed: list = []
     for line in r.substituted.split(r",\quad "):  # a check may print one equation per side (lambda, rho')
         parts = line.split(" = ")
@@ -343,3 +343,25 @@ def test_allow_list_entries_are_real_checks():
     names = {d.name for d in registry.all_checks()}
     assert set(ALLOW_NO_SUBSTITUTION) <= names
     assert set(PENDING_ELSEWHERE) <= names
+
+
+def test_roark_plate_stress_and_deflection_substituted():
+    """Roark 8th ed. Tables 11.4 (cases 1a, 1b, 8a, 8b) and 11.2 (10a, 10b, 16, 17) through the plate checks: the
+    governing stress's line evaluates back for every case (rectangle 200 x 150 x 6 mm, circle r = 100 mm, 10 kPa or
+    500 N on a 5 mm radius)."""
+    from mechverify.checks.plates import check_plate_deflection_roark, check_plate_stress_roark
+    from mechverify.components.plates import Plate, roark_circular_plate, roark_rectangular_plate
+
+    plate = Plate.rectangle("200 mm", "150 mm", "6 mm", "Inventor Aluminum 6061", name="p")
+    seen = set()
+    for edges in ("simply_supported", "clamped"):
+        for loading, load in (("uniform", "10 kPa"), ("central", "500 N")):
+            for est in (roark_rectangular_plate("200 mm", "150 mm", "6 mm", "70 GPa", load, edges, loading, "5 mm"),
+                        roark_circular_plate("100 mm", "6 mm", "70 GPa", 0.3, load, edges, loading, "5 mm")):
+                r = check_plate_stress_roark(plate, est)
+                assert_substituted(r)
+                d = check_plate_deflection_roark(plate, est, "L/250", span="150 mm")
+                assert_substituted(d)
+                assert d.substituted.count(r"\quad") == 1  # the deflection and the limit
+                seen.add(est.source.rsplit(" ", 1)[-1] + est.stress_location)
+    assert len(seen) == 8

@@ -52,8 +52,45 @@ def check_plate_stress_roark(plate: pl.Plate, estimate: pl.PlateEstimate, *, req
         check="plate_stress_roark", component=plate.name, demand=estimate.max_stress.to("MPa"),
         capacity=sy.to("MPa"), required_sf=required_sf, title="Plate bending stress (Roark)",
         formula=r"\sigma_{max} \le S_y", source=estimate.source, inputs={"t": Q(plate.thickness, "m").to("mm")},
+        substituted=roark_stress_substituted(estimate),
         notes=(estimate.case, f"largest stress at the {estimate.stress_location}"), warnings=tuple(warnings),
         load_case=load_case, details={k: v.to("MPa") for k, v in estimate.stresses.items()})
+
+
+def roark_stress_substituted(est: pl.PlateEstimate) -> str:
+    """The governing Roark stress with the numbers (Roark 8th ed. Table 11.4 cases 1a, 1b, 8a, 8b; Table 11.2
+    cases 10a, 10b, 16, 17; the formulas of :func:`~mechverify.components.plates.roark_rectangular_plate` and
+    :func:`~mechverify.components.plates.roark_circular_plate`); empty for an estimate without its inputs."""
+    i, c, where = est.inputs, est.coefficients, est.stress_location
+    if not i:
+        return ""
+    t, nu, kind = tex(Q(i["t"] * 1e3, "mm")), tex(i["nu"]), i["kind"]
+    load = tex(Q(i["load"], "Pa"), "kPa") if kind == "uniform" else tex(Q(i["load"], "N"))
+    result = tex(est.max_stress, "MPa")
+    if i["shape"] == "rectangle":
+        b = tex(Q(i["b"] * 1e3, "mm"))
+        if kind == "uniform":
+            beta = c["beta_edge"] if where != "centre" else c["beta"]
+            return rf"\sigma_{{max}} = \frac{{{tex(beta)}\cdot {load}\cdot ({b})^{{2}}}}{{({t})^{{2}}}} = {result}"
+        if where != "centre":
+            return rf"\sigma_{{max}} = \frac{{{tex(c['beta_edge'])}\cdot {load}}}{{({t})^{{2}}}} = {result}"
+        r0 = tex(Q(c["r0_equivalent"] * 1e3, "mm"))
+        return (rf"\sigma_{{max}} = \frac{{3\cdot {load}}}{{2\cdot \pi\cdot ({t})^{{2}}}}\cdot \left((1 + {nu})\cdot "
+                rf"\ln\frac{{2\cdot {b}}}{{\pi\cdot {r0}}} + {tex(c['beta'])}\right) = {result}")
+    a = tex(Q(i["a"] * 1e3, "mm"))
+    if kind == "uniform":
+        if where == "edge":  # 10b
+            return rf"\sigma_{{max}} = \frac{{3\cdot {load}\cdot ({a})^{{2}}}}{{4\cdot ({t})^{{2}}}} = {result}"
+        k = f"(3 + {nu})" if i["edge"] == "simply_supported" else f"(1 + {nu})"
+        return rf"\sigma_{{max}} = \frac{{3\cdot {k}\cdot {load}\cdot ({a})^{{2}}}}{{8\cdot ({t})^{{2}}}} = {result}"
+    if where == "edge":  # 17
+        return rf"\sigma_{{max}} = \frac{{3\cdot {load}}}{{2\cdot \pi\cdot ({t})^{{2}}}} = {result}"
+    r0 = tex(Q(c["r0_equivalent"] * 1e3, "mm"))
+    if i["edge"] == "simply_supported":  # 16
+        return (rf"\sigma_{{max}} = \frac{{3\cdot {load}}}{{2\cdot \pi\cdot ({t})^{{2}}}}\cdot \left((1 + {nu})\cdot "
+                rf"\ln\frac{{{a}}}{{{r0}}} + 1\right) = {result}")
+    return (rf"\sigma_{{max}} = \frac{{3\cdot {load}\cdot (1 + {nu})}}{{2\cdot \pi\cdot ({t})^{{2}}}}\cdot "
+            rf"\ln\frac{{{a}}}{{{r0}}} = {result}")
 
 
 @check("plate_deflection_roark", title="Plate deflection (Roark)", sf_kind="deflection",
@@ -66,8 +103,35 @@ def check_plate_deflection_roark(plate: pl.Plate, estimate: pl.PlateEstimate, li
     ``span``, the shorter side or the diameter)."""
     r = deflection_check(estimate.max_deflection, limit, span=span, component=plate.name, load_case=load_case,
                          source=estimate.source)
+    sub = roark_deflection_substituted(estimate)
     return dataclasses.replace(r, check="plate_deflection_roark", title="Plate deflection (Roark)",
-                               notes=(*r.notes, estimate.case), warnings=tuple(estimate.warnings))
+                               notes=(*r.notes, estimate.case), warnings=tuple(estimate.warnings),
+                               substituted=r",\quad ".join(x for x in (sub, r.substituted) if x))
+
+
+def roark_deflection_substituted(est: pl.PlateEstimate) -> str:
+    """The Roark deflection with the numbers (Table 11.4: ``alpha q b^4/(E t^3)``, ``alpha W b^2/(E t^3)``;
+    Table 11.2 with ``D = E t^3/(12 (1 - nu^2))``)."""
+    i = est.inputs
+    if not i:
+        return ""
+    t, nu, E, kind = tex(Q(i["t"] * 1e3, "mm")), tex(i["nu"]), tex(Q(i["E"] / 1e9, "GPa")), i["kind"]
+    load = tex(Q(i["load"], "Pa"), "kPa") if kind == "uniform" else tex(Q(i["load"], "N"))
+    y = tex(est.max_deflection, "mm")
+    if i["shape"] == "rectangle":
+        b, alpha = tex(Q(i["b"] * 1e3, "mm")), tex(est.coefficients["alpha"])
+        n = 4 if kind == "uniform" else 2
+        return rf"y_{{max}} = \frac{{{alpha}\cdot {load}\cdot ({b})^{{{n}}}}}{{{E}\cdot ({t})^{{3}}}} = {y}"
+    a = tex(Q(i["a"] * 1e3, "mm"))
+    D = rf"\frac{{{E}\cdot ({t})^{{3}}}}{{12\cdot (1 - ({nu})^{{2}})}}"
+    ss = i["edge"] == "simply_supported"
+    if kind == "uniform":
+        num = rf"{load}\cdot ({a})^{{4}}" + (rf"\cdot (5 + {nu})" if ss else "")
+        den = rf"64\cdot {D}" + (rf"\cdot (1 + {nu})" if ss else "")
+    else:
+        num = rf"{load}\cdot ({a})^{{2}}" + (rf"\cdot (3 + {nu})" if ss else "")
+        den = rf"16\cdot \pi\cdot {D}" + (rf"\cdot (1 + {nu})" if ss else "")
+    return rf"y_{{max}} = \frac{{{num}}}{{{den}}} = {y}"
 
 
 # -------------------------------------------------------------------------------------------------- FEA

@@ -582,6 +582,9 @@ class PlateEstimate:
     coefficients: dict[str, float] = field(default_factory=dict)
     stresses: dict[str, pint.Quantity] = field(default_factory=dict)  # by location
     warnings: tuple[str, ...] = ()
+    #: the case's inputs (SI floats; for the report's substituted formula): shape ("rectangle"/"circle"), kind
+    #: ("uniform"/"central"), edge, load (q [Pa] or W [N]), span b (rectangle, shorter side) or radius a, t, nu, E
+    inputs: dict[str, Any] = field(default_factory=dict)
 
 
 def equivalent_contact_radius(r0: float, t: float) -> float:
@@ -677,7 +680,9 @@ def roark_rectangular_plate(a: QuantityLike, b: QuantityLike, thickness: Quantit
     return PlateEstimate(max_stress=from_si(stresses[where], "pressure"), max_deflection=from_si(y, "length"),
                          stress_location=where, case=case, source=f"{ROARK_SOURCE}, Table 11.4 case {row['case']}",
                          coefficients=coefs, stresses={k: from_si(v, "pressure") for k, v in stresses.items()},
-                         warnings=_plate_warnings(y, t, B))
+                         warnings=_plate_warnings(y, t, B),
+                         inputs={"shape": "rectangle", "kind": kind, "edge": edge, "nu": nu, "t": t, "b": B, "E": e,
+                                 "load": abs(q) if kind == "uniform" else W})
 
 
 def roark_circular_plate(radius: QuantityLike, thickness: QuantityLike, E: QuantityLike, nu: QuantityLike,
@@ -737,7 +742,9 @@ def roark_circular_plate(radius: QuantityLike, thickness: QuantityLike, E: Quant
                          case=f"Table 11.2 case {case}: circular plate, edge {edge.replace('_', ' ')}, {kind} load",
                          source=f"{ROARK_SOURCE}, Table 11.2 case {case}", coefficients=coefs,
                          stresses={k: from_si(x, "pressure") for k, x in stresses.items()},
-                         warnings=_plate_warnings(y, t, 2 * a))
+                         warnings=_plate_warnings(y, t, 2 * a),
+                         inputs={"shape": "circle", "kind": kind, "edge": edge, "nu": v, "t": t, "a": a, "E": e,
+                                 "load": q if kind == "uniform" else W})
 
 
 __all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PlatePointLoad",

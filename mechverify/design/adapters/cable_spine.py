@@ -10,6 +10,7 @@ pose, for the compression-spring stress and fatigue checks of the same spring).
 from __future__ import annotations
 
 import dataclasses
+import math
 from typing import Any
 
 from mechverify.checks import cable_spine as cc
@@ -18,6 +19,7 @@ from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
 from mechverify.mechanisms.cable_spine import CableSpine, SpineState, UnreachableTiltError
+from mechverify.mechanisms.cable_spine_3d import as_spine_state, bracketing_cables, spine_parameters, state_3d
 from mechverify.units import Q
 
 DIAMETERS = {"mean_diameter": "D", "outside_diameter": "OD", "inside_diameter": "ID"}
@@ -33,13 +35,21 @@ class SpineInstallation:
     cache: dict = dataclasses.field(default_factory=dict, compare=False, repr=False)
 
     def state(self, loads: Any) -> SpineState:
-        """Equilibrium at the case's tilt (pan along the pulling cable; default the first cable's angle)."""
+        """Equilibrium at the case's tilt. Pan along a cable (default the first cable's angle): the planar model
+        (``method``); a pan between cables: the 3D rod (:mod:`mechverify.mechanisms.cable_spine_3d`), its most
+        loaded cable as the pulling cable's tension."""
         tilt = loads["tilt"].m_as("rad")
-        pan = loads["pan"] if "pan" in loads else self.spine.cable_angles[0]
-        self.spine.pulling_cable(pan)
-        key = (round(tilt, 12), self.method)
+        pan = Q(loads["pan"] if "pan" in loads else self.spine.cable_angles[0]).m_as("rad")
+        _i, j = bracketing_cables(spine_parameters(self.spine)["g"], pan)
+        key = (round(tilt, 12), self.method if j is None else "3d", 0.0 if j is None else round(pan, 12))
         if key not in self.cache:
-            self.cache[key] = self.spine.at_tilt(Q(tilt, "rad"), self.method)
+            if j is None:
+                self.cache[key] = self.spine.at_tilt(Q(tilt, "rad"), self.method)
+            elif self.method != "elastica":
+                raise InputError(f"{self.spine.name}: a pan between cables ({math.degrees(pan):g} deg) is solved as a "
+                                 "3D elastic rod; set method = \"elastica\" (the linear model is planar)")
+            else:
+                self.cache[key] = as_spine_state(self.spine, state_3d(self.spine, Q(tilt, "rad"), Q(pan, "rad")))
         return self.cache[key]
 
 
@@ -103,14 +113,15 @@ CABLE_SPINE = REGISTRY.register(ComponentType(
     build=lambda p, ctx: _build(p, ctx),
     loads=(
         Field("tilt", "angle", "platform tilt"),
-        Field("pan", "angle", "direction of the tilt about the spine axis (along a cable; default the first)"),
+        Field("pan", "angle", "direction of the tilt about the spine axis (default the first cable's angle; between "
+                              "cables: the 3D rod, method elastica)"),
     ),
     checks=(
         CheckSpec.of(cc.check_spine_buckling_ratio, _buckling, needs=("tilt",)),
         CheckSpec.of(cc.check_cable_tension, _rating, needs=("tilt",)),
     ),
     outputs=(
-        Output("cable_tension", "force", "tension of the pulling cable that holds the case's tilt",
+        Output("cable_tension", "force", "tension of the (most loaded) pulling cable that holds the case's tilt",
                lambda c, loads: Q(c.state(loads).tension, "N"), needs=("tilt",)),
         Output("axial_force", "force", "compressive load on the spring at the case's tilt (P = W + T cos alpha)",
                lambda c, loads: Q(c.state(loads).axial_force, "N"), needs=("tilt",)),
