@@ -40,6 +40,7 @@ from mechverify.components import columns
 from mechverify.components.sections import Section, make_section
 from mechverify.errors import InputError, UnknownNameError
 from mechverify.fatigue.notch import kt_plate_hole
+from mechverify.frozen import set_fields
 from mechverify.materials import Material
 from mechverify.materials import get as get_material
 from mechverify.references import ref
@@ -117,8 +118,8 @@ class Lug:
         if R <= D / 2:
             raise InputError(f"lug: edge distance {R * 1e3:g} mm must exceed the hole radius {D * 500:g} mm "
                              "(the hole would break through the end)")
-        for k, v in (("hole_diameter", D), ("width", w), ("thickness", t), ("edge_distance", R)):
-            object.__setattr__(self, k, from_si(v, "length"))
+        set_fields(self, hole_diameter=from_si(D, "length"), width=from_si(w, "length"), thickness=from_si(t, "length"),
+                   edge_distance=from_si(R, "length"))
 
     @property
     def be(self) -> pint.Quantity:
@@ -350,34 +351,34 @@ class Link:
     name: str = "link"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "length", from_si(_pos(self.length, "length", f"{self.name}.length"), "length"))
+        set_fields(self, length=from_si(_pos(self.length, "length", f"{self.name}.length"), "length"))
         sec = self.section
         if isinstance(sec, dict):
             sec = make_section(sec.get("kind", ""), **{k: v for k, v in sec.items() if k != "kind"})
         if not isinstance(sec, Section):
             raise InputError(f"{self.name}.section: expected a Section or a table with 'kind', "
                              f"got {type(sec).__name__}")
-        object.__setattr__(self, "section", sec)
+        set_fields(self, section=sec)
         mat = self.material if isinstance(self.material, Material) else get_material(self.material)
-        object.__setattr__(self, "material", mat)
+        set_fields(self, material=mat)
         lug = self.lug
         if isinstance(lug, dict):
             lug = Lug(**lug)
         if lug is not None and not isinstance(lug, Lug):
             raise InputError(f"{self.name}.lug: expected a Lug or a table, got {type(lug).__name__}")
-        object.__setattr__(self, "lug", lug)
+        set_fields(self, lug=lug)
         if self.pin_diameter is not None:
             dp = from_si(_pos(self.pin_diameter, "length", f"{self.name}.pin_diameter"), "length")
             if lug is not None and dp > lug.hole_diameter:
                 raise InputError(f"{self.name}: pin diameter {dp.to('mm'):~P} exceeds the hole "
                                  f"{lug.hole_diameter.to('mm'):~P}")
-            object.__setattr__(self, "pin_diameter", dp)
+            set_fields(self, pin_diameter=dp)
         elif lug is not None:
-            object.__setattr__(self, "pin_diameter", lug.hole_diameter)
+            set_fields(self, pin_diameter=lug.hole_diameter)
         f = float(self.strength_factor)
         if not 0 < f <= 1:
             raise InputError(f"{self.name}.strength_factor: must lie in (0, 1], got {self.strength_factor!r}")
-        object.__setattr__(self, "strength_factor", f)
+        set_fields(self, strength_factor=f)
         columns.end_condition_constant(self.end)  # validates the name now
         if self.lug is not None and 2 * self.lug.edge_distance > self.length:
             raise InputError(f"{self.name}: the two eyes (edge distance {self.lug.edge_distance.to('mm'):~P}) "

@@ -122,7 +122,7 @@ class Hole:
     def __post_init__(self) -> None:
         set_fields(self, center=_point(self.center, f"hole {self.name or ''}.center".replace(" .", "."),
                                        self.unit))
-        set_fields(self, diameter=_length(self.diameter, "hole.diameter", self.unit), unit=None)
+        set_fields(self, diameter=_length(self.diameter, "hole.diameter", self.unit), unit="m")
 
     @property
     def radius(self) -> float:
@@ -201,7 +201,7 @@ class Plate:
         dup = {n for n in names if names.count(n) > 1}
         if dup:
             raise InputError(f"{self.name}.holes: hole names must be unique, repeated: {sorted(dup)}")
-        set_fields(self, outline=outline, thickness=t, material=mat, holes=holes, cutouts=cutouts, unit=None)
+        set_fields(self, outline=outline, thickness=t, material=mat, holes=holes, cutouts=cutouts, unit="m")
         self.region  # noqa: B018 - the geometry is checked at construction
 
     @cached_property
@@ -350,7 +350,7 @@ class PointSupport:
 
     def __post_init__(self) -> None:
         set_fields(self, point=_point(self.point, "PointSupport.point", self.unit),
-                   condition=_condition(self.condition, "PointSupport"), unit=None)
+                   condition=_condition(self.condition, "PointSupport"), unit="m")
 
 
 @dataclass(frozen=True)
@@ -404,7 +404,7 @@ class PlatePointLoad:
         set_fields(self, point=_point(self.point, "PlatePointLoad.point", self.unit),
                    force=to_si(self.force, "force", "PlatePointLoad.force"),
                    moment_x=to_si(self.moment_x, "torque", "PlatePointLoad.moment_x"),
-                   moment_y=to_si(self.moment_y, "torque", "PlatePointLoad.moment_y"), unit=None)
+                   moment_y=to_si(self.moment_y, "torque", "PlatePointLoad.moment_y"), unit="m")
         if self.force == 0 and self.moment_x == 0 and self.moment_y == 0:
             raise InputError("PlatePointLoad: force and moments are all zero")
 
@@ -446,7 +446,7 @@ class PatchLoad:
         else:
             pressure = to_si(self.pressure, "pressure", "PatchLoad.pressure")
             force = pressure * area
-        set_fields(self, polygon=poly, center=None, size=None, force=force, pressure=pressure, unit=None)
+        set_fields(self, polygon=poly, center=None, size=None, force=force, pressure=pressure, unit="m")
 
     @property
     def area(self) -> float:

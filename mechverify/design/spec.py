@@ -16,6 +16,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any
 
 from mechverify.checks.registry import DEFAULT_SAFETY_FACTORS  # noqa: F401  (the design's safety-factor classes)
+from mechverify.frozen import set_fields
 from mechverify.units import DIMENSIONS
 
 #: Field kinds besides the dimension names of :data:`mechverify.units.DIMENSIONS`.
@@ -142,7 +143,7 @@ class ComponentType:
             d = c.definition or CHECKS.get(c.name)
             local = d.local_aliases(self.name) if d is not None else ()
             specs.append(replace(c, aliases=tuple(dict.fromkeys((*c.aliases, *local)))) if local else c)
-        object.__setattr__(self, "checks", tuple(specs))
+        set_fields(self, checks=tuple(specs))
 
     def checks_named(self, key: str) -> list[CheckSpec]:
         """The checks a design file's ``checks.<key>`` sets: the one named ``key``, or those with ``key``

@@ -25,12 +25,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
 import pint
 
 from mechverify.errors import InputError, UnitError
+from mechverify.frozen import set_fields
 from mechverify.motion.profiles import Profile, ProfileSamples, SampledProfile
 from mechverify.units import Q, fmt, from_si, to_si
 
@@ -75,25 +77,31 @@ class LinearLoad:
     kind: str = field(default="length", init=False)
 
     def __post_init__(self) -> None:
+        self.si  # noqa: B018 - the inputs are checked at construction
+
+    @cached_property
+    def si(self) -> dict[str, float]:
+        """The inputs in SI [kg, rad, N, N·s/m]: ``m``, ``theta``, ``mu``, ``Fc``, ``c``, ``Fe``; read it, do not
+        change it."""
         m = to_si(self.mass, "mass", f"{self.name}.mass")
         if m < 0:
             raise InputError(f"{self.name}.mass: must be zero or positive")
         mu = to_si(self.friction_coefficient, "dimensionless", f"{self.name}.friction_coefficient")
         if mu < 0:
             raise InputError(f"{self.name}.friction_coefficient: must be zero or positive")
-        object.__setattr__(self, "_si", {
+        return {
             "m": m, "theta": to_si(self.incline, "angle", f"{self.name}.incline"), "mu": mu,
             "Fc": _q_opt(self.coulomb_friction, "force", f"{self.name}.coulomb_friction"),
             "c": _viscous(self.viscous_friction, "N*s/m", f"{self.name}.viscous_friction"),
-            "Fe": _q_opt(self.external_force, "force", f"{self.name}.external_force", signed=True)})
+            "Fe": _q_opt(self.external_force, "force", f"{self.name}.external_force", signed=True)}
 
     @property
     def mass_or_inertia_si(self) -> float:
-        return self._si["m"]
+        return self.si["m"]
 
     def effort_si(self, x: np.ndarray, v: np.ndarray, a: np.ndarray, direction: np.ndarray) -> np.ndarray:
         """Force [N] the drive must apply to the load along +x."""
-        p = self._si
+        p = self.si
         friction = p["Fc"] + p["mu"] * p["m"] * G0 * math.cos(p["theta"])
         return (p["m"] * a + p["m"] * G0 * math.sin(p["theta"]) + direction * friction + p["c"] * v + p["Fe"])
 
@@ -115,23 +123,29 @@ class RotaryLoad:
     kind: str = field(default="angle", init=False)
 
     def __post_init__(self) -> None:
+        self.si  # noqa: B018 - the inputs are checked at construction
+
+    @cached_property
+    def si(self) -> dict[str, float]:
+        """The inputs in SI [kg·m², N·m, rad, N·m·s/rad]: ``J``, ``Tg``, ``phase``, ``Tc``, ``c``, ``Te``; read it,
+        do not change it."""
         J = to_si(self.inertia, "inertia", f"{self.name}.inertia")
         if J < 0:
             raise InputError(f"{self.name}.inertia: must be zero or positive")
-        object.__setattr__(self, "_si", {
+        return {
             "J": J, "Tg": _q_opt(self.gravity_torque, "torque", f"{self.name}.gravity_torque"),
             "phase": to_si(self.gravity_phase, "angle", f"{self.name}.gravity_phase"),
             "Tc": _q_opt(self.coulomb_friction, "torque", f"{self.name}.coulomb_friction"),
             "c": _viscous(self.viscous_friction, "N*m*s/rad", f"{self.name}.viscous_friction"),
-            "Te": _q_opt(self.external_torque, "torque", f"{self.name}.external_torque", signed=True)})
+            "Te": _q_opt(self.external_torque, "torque", f"{self.name}.external_torque", signed=True)}
 
     @property
     def mass_or_inertia_si(self) -> float:
-        return self._si["J"]
+        return self.si["J"]
 
     def effort_si(self, x: np.ndarray, v: np.ndarray, a: np.ndarray, direction: np.ndarray) -> np.ndarray:
         """Torque [N·m] the drive must apply to the load along +x."""
-        p = self._si
+        p = self.si
         return (p["J"] * a + p["Tg"] * np.cos(x + p["phase"]) + direction * p["Tc"] + p["c"] * v + p["Te"])
 
 
@@ -258,9 +272,9 @@ class DriveTrain:
     name: str = ""
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "stages", tuple(self.stages))
+        set_fields(self, stages=tuple(self.stages))
         if not self.name:
-            object.__setattr__(self, "name", getattr(self.motor, "name", "") or "drive train")
+            set_fields(self, name=getattr(self.motor, "name", "") or "drive train")
         expected = "angle"
         for i, s in enumerate(self.stages):
             if getattr(s, "input_kind", None) != expected:
