@@ -26,6 +26,9 @@ $(STAMP): $(BASE_STAMP)
 
 sysdeps:
 	@bash scripts/system-deps.sh
+	@# optional CHOLMOD (mechverify[direct]) for the FEA's direct solves: it builds against the system's SuiteSparse
+	@test ! -x $(BIN)/python || $(BIN)/python -c "import sksparse.cholmod" 2>/dev/null || \
+	  $(BIN)/python -m pip install -q 'scikit-sparse>=0.4.12,<0.5' || echo "scikit-sparse not installed: FEA uses SuperLU"
 
 demo: $(BASE_STAMP) sysdeps
 	$(BIN)/python -m mechverify.demo

@@ -10,11 +10,13 @@ models (:class:`~mechverify.fea.plane.PlaneModel`): the generalized eigenproblem
 - :func:`stiffness_matrix`, :func:`mass_matrix` - the P2 stiffness and the *consistent* mass
   ``M = ∫ ρ Nᵀ N dV`` (ref. 1, sec. 16.2; degree-4 rule, exact for straight P2 elements; curved
   elements through the isoparametric map), density from the material (``density``).
-- :func:`modal` - the first ``n_modes`` eigenpairs by Lanczos in shift-invert mode on one sparse LU
-  factorisation of ``K - σ M`` (ARPACK through ``scipy.sparse.linalg.eigsh``, ref. 2). A model with
-  supports must be fully supported (the rigid motion left free is named, as in statics); a model with
-  *no* supports is analysed free-free, its rigid-body modes (6 in 3D, 3 in 2D) come out at zero
-  frequency and are counted in :attr:`ModalResults.rigid_body_modes`.
+- :func:`modal` - the first ``n_modes`` eigenpairs by Lanczos in shift-invert mode on one sparse
+  factorisation of ``K - σ M`` (CHOLMOD or SuperLU, :mod:`mechverify.fea.factor`; ARPACK through
+  ``scipy.sparse.linalg.eigsh``, ref. 2). A model with supports must be fully supported (the rigid motion
+  left free is named, as in statics); a model with *no* supports is analysed free-free: its rigid-body
+  modes (6 in 3D, 3 in 2D) are the exact rigid motions at zero frequency, set apart so that Lanczos seeks
+  the elastic modes M-orthogonal to them (a six-fold zero eigenvalue is where Lanczos may miss a copy),
+  and are counted in :attr:`ModalResults.rigid_body_modes`.
 - :class:`ModalResults` - frequencies, mass-normalised mode shapes, effective modal masses along x,
   y, z (ref. 3, sec. 13.2), VTU export of every mode.
 
@@ -42,7 +44,8 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
-from mechverify.fea.linsolve import check_supported
+from mechverify.fea.factor import factorize, one_blas_thread
+from mechverify.fea.linsolve import check_supported, rigid_modes
 from mechverify.units import Q
 
 
@@ -63,10 +66,11 @@ def _pattern(model: Any, dim: int, ed: np.ndarray) -> asm.BlockPattern:
     return asm.block_pattern(ed, n)
 
 
-def stiffness_matrix(model: Any) -> sp.bsr_matrix:
-    """The P2 stiffness matrix ``[dim*n, dim*n]`` [N/m] of a solid or plane model (node-interleaved DOFs)."""
+def stiffness_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.bsr_matrix:
+    """The P2 stiffness matrix ``[dim*n, dim*n]`` [N/m] of a solid or plane model (node-interleaved DOFs);
+    ``pattern`` the sparsity pattern when already built (it is shared with the mass matrix)."""
     dim, ed, t, (lam, mu) = _parts(model)
-    pattern = _pattern(model, dim, ed)
+    pattern = pattern if pattern is not None else _pattern(model, dim, ed)
     if model.is_curved:
         blocks, _ = iso.stiffness_blocks(model.nodes, ed, lam, mu, t)
     else:
@@ -83,7 +87,7 @@ def density(model: Any) -> float:
         raise InputError(f"modal analysis needs the material's density: {exc}") from None
 
 
-def mass_matrix(model: Any) -> sp.bsr_matrix:
+def mass_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.bsr_matrix:
     """The consistent mass matrix ``M_ab = ∫ ρ t N_a N_b dV · I`` [kg] (ref. 1, sec. 16.2)."""
     dim, ed, t, _ = _parts(model)
     rho = density(model)
@@ -99,7 +103,7 @@ def mass_matrix(model: Any) -> sp.bsr_matrix:
     blocks = np.zeros((nb * nb, ne, dim * dim))
     for i in range(dim):
         blocks[:, :, i * dim + i] = me.reshape(nb * nb, ne)
-    return asm.assemble_blocks(blocks, _pattern(model, dim, ed), dim)
+    return asm.assemble_blocks(blocks, pattern if pattern is not None else _pattern(model, dim, ed), dim)
 
 
 def free_dofs(model: Any) -> np.ndarray:
@@ -173,12 +177,14 @@ def _default_shift(K: sp.spmatrix, M: sp.spmatrix) -> float:
     return -1e-4 * float(np.median(d[d > 0]))
 
 
-def modal(model: Any, n_modes: int = 6, shift: Any = None) -> ModalResults:
+def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto") -> ModalResults:
     """The ``n_modes`` natural frequencies of ``model`` nearest above ``shift`` (a frequency; default: the
     lowest ones) with mass-normalised mode shapes.
 
-    One sparse LU factorisation of ``K - σ M`` (σ = (2π shift)², or a small negative number that keeps a
-    free body's matrix regular) drives ARPACK's Lanczos iteration (ref. 2). Asking for as many modes as
+    One sparse factorisation of ``K - σ M`` (σ = (2π shift)², or a small negative number that keeps a
+    free body's matrix regular) drives ARPACK's Lanczos iteration (ref. 2): CHOLMOD when scikit-sparse is
+    installed (``method="auto"``/``"cholmod"``), else SuperLU (``"superlu"``; always for a positive shift,
+    where ``K - σM`` is indefinite); :mod:`mechverify.fea.factor`. Asking for as many modes as
     the model has free DOFs, or more, is an :class:`InputError`.
     """
     n_modes = int(n_modes)
@@ -189,26 +195,50 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None) -> ModalResults:
     if n_modes >= free.size:
         raise InputError(f"n_modes: {n_modes} modes asked, but the model has only {free.size} free degrees of "
                          f"freedom (at most {free.size - 1} modes can be computed); refine the mesh or ask fewer")
-    K = stiffness_matrix(model).tocsr()
-    M = mass_matrix(model).tocsr()
-    Kf, Mf = K[free][:, free].tocsc(), M[free][:, free].tocsc()
+    pattern = _pattern(model, dim, _parts(model)[1])
+    K = stiffness_matrix(model, pattern).tocsr()
+    M = mass_matrix(model, pattern).tocsr()
+    Kf, Mf = K[free][:, free].tocsc(), M[free][:, free].tocsr()  # CSR: the faster product in ARPACK's loop
     if shift is None:
         sigma = _default_shift(Kf, Mf) if not model.supports else 0.0
     else:
         f0 = Q(shift).m_as("Hz") if not isinstance(shift, int | float) else float(shift)
         sigma = (2 * np.pi * f0) ** 2
+    # K - σM is positive definite for σ <= 0 (CHOLMOD when installed); above the first eigenvalue it is indefinite
     try:
-        lu = spl.splu((Kf - sigma * Mf).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                      options={"SymmetricMode": True})
-    except RuntimeError as exc:
-        raise ModelError(f"K - σM is singular at σ = {sigma:.4g} rad²/s² ({exc}): the shift is an eigenvalue "
-                         "or the model has a mechanism; give another shift") from None
-    op = spl.LinearOperator(Kf.shape, matvec=lu.solve, dtype=float)
+        fac = factorize((Kf - sigma * Mf).tocsc(), method if sigma <= 0 else "superlu", what="K - σM")
+    except ModelError as exc:
+        raise ModelError(f"{exc} (σ = {sigma:.4g} rad²/s²; a shift on an eigenvalue: give another shift)") from None
     rng = np.random.default_rng(0)
     v0 = rng.standard_normal(free.size)
-    w, V = spl.eigsh(Kf, k=n_modes, M=Mf, sigma=sigma, which="LM", OPinv=op, v0=v0, tol=1e-10)
-    order = np.argsort(w)
-    w, V = w[order], V[:, order]
+    n_rigid = 0
+    if not model.supports:
+        # free body: the rigid-body modes (a multiple eigenvalue at zero, which Lanczos may not resolve) are
+        # set apart exactly and the elastic modes sought in their M-orthogonal complement
+        B, _ = rigid_modes(model.nodes)
+        B = B[free]
+        C = np.linalg.cholesky(B.T @ (Mf @ B))
+        B = np.linalg.solve(C, B.T).T  # M-orthonormal
+        n_rigid = B.shape[1]
+
+        def project(x: np.ndarray) -> np.ndarray:
+            return x - B @ (B.T @ (Mf @ x))
+
+        op = spl.LinearOperator(Kf.shape, matvec=lambda x: project(fac.solve(x)), dtype=float)
+        v0 = project(v0)
+    else:
+        op = fac.operator()
+    k = n_modes - n_rigid
+    if k > 0:
+        with one_blas_thread():  # ARPACK's reorthogonalisation: BLAS-2, slower with threads on a loaded machine
+            w, V = spl.eigsh(Kf, k=k, M=Mf, sigma=sigma, which="LM", OPinv=op, v0=v0, tol=1e-10)
+        order = np.argsort(w)
+        w, V = w[order], V[:, order]
+    else:
+        w, V = np.zeros(0), np.zeros((free.size, 0))
+    if n_rigid:
+        w = np.concatenate([np.zeros(n_rigid), w])[:n_modes]
+        V = np.column_stack([B, V])[:, :n_modes]
     V = V / np.sqrt(np.einsum("ik,ik->k", V, Mf @ V))[None, :]  # mass-normalised
     n = model.nodes.shape[1]
     shapes = np.zeros((n_modes, n, 3))
@@ -225,9 +255,7 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None) -> ModalResults:
     eff[:, :dim] = gamma ** 2
     tot = np.zeros(3)
     tot[:dim] = np.einsum("ij,ij->j", R[free], MR)
-    # rigid-body modes: eigenvalues at zero to round-off, judged against the stiffness scale
-    scale = abs(_default_shift(Kf, Mf)) * 1e4
-    rigid = int(np.sum(np.abs(w) < 1e-8 * scale)) if not model.supports else 0
+    rigid = min(n_rigid, n_modes)
     if dim == 2:
         pts = np.column_stack([model.nodes.T, np.zeros(n)])
         cells = [("triangle6", model.basis.element_dofs.T.copy())]
