@@ -27,6 +27,7 @@ References
 
 from __future__ import annotations
 
+import copy
 import time
 from typing import Any
 
@@ -36,7 +37,7 @@ from skfem import Basis, BilinearForm, ElementTriMorley, LinearForm, MeshTri, as
 from skfem.helpers import dd, ddot, eye, trace
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea import mesh2d
+from mechverify.fea import factorcache, mesh2d
 from mechverify.fea.linsolve import SolveInfo
 from mechverify.fea.results import FieldResults
 from mechverify.units import QuantityLike
@@ -280,22 +281,24 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
     h = None if mesh_size is None else to_si(mesh_size, "length", "mesh_size")
     hh = None if hole_mesh_size is None else to_si(hole_mesh_size, "length", "hole_mesh_size")
     t0 = time.perf_counter()
-    mesh = plate_mesh(model.plate, h, hh)
-    sys_ = _PlateSystem(model, mesh)
-    K = _stiffness(sys_)
-    f, total = _load_vector(sys_)
-    held, held_pts, normals, _ = _supports(sys_)
-    check_plate_supported(held_pts, normals)
-    t_asm = time.perf_counter() - t0
-    t1 = time.perf_counter()
-    free = np.setdiff1d(np.arange(K.shape[0]), held)
-    Kff = K[free][:, free].tocsc()
+    # mesh, stiffness, supports and factorisation depend on the plate, its supports and the mesh sizes only:
+    # kept per process and reused while only the loads change (mechverify/fea/factorcache.py)
+    cache = factorcache.CACHE
+    key = factorcache.key_of("plate", model.plate, tuple(model.supports), h, hh)
+    item, _ = cache.entry(key)
     try:
-        import scipy.sparse.linalg as spl
-
-        lu = spl.splu(Kff, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
-    except RuntimeError as exc:
-        raise ModelError(f"the plate stiffness is singular ({exc}); check the supports") from None
+        mesh, sys0, K = cache.part(item, "system", lambda: _system(model, h, hh))
+        sys_ = copy.copy(sys0)
+        sys_.model = model  # this model's loads
+        f, total = _load_vector(sys_)
+        held = cache.part(item, "supports", lambda: _checked_supports(sys_))
+        t_asm = time.perf_counter() - t0
+        t1 = time.perf_counter()
+        free, Kff, lu = cache.part(item, "factor", lambda: _factorise(K, held))
+    except Exception:
+        if "factor" not in item:
+            cache.forget(key)
+        raise
     w = np.zeros(K.shape[0])
     w[free] = lu.solve(f[free])
     res_norm = float(np.linalg.norm(Kff @ w[free] - f[free]) / max(np.linalg.norm(f[free]), 1e-300))
@@ -333,6 +336,30 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
                "von_mises_bottom_Pa": von_mises(-sigma_top), "moment_xx_N": moments[:, 0],
                "moment_yy_N": moments[:, 1], "moment_xy_N": moments[:, 2]},
         notes=tuple(notes), warnings=tuple(warns))
+
+
+def _system(model: Any, h: float | None, hh: float | None) -> tuple[MeshTri, _PlateSystem, sp.csr_matrix]:
+    mesh = plate_mesh(model.plate, h, hh)
+    sys_ = _PlateSystem(model, mesh)
+    return mesh, sys_, _stiffness(sys_)
+
+
+def _checked_supports(sys_: _PlateSystem) -> np.ndarray:
+    held, held_pts, normals, _ = _supports(sys_)
+    check_plate_supported(held_pts, normals)
+    return held
+
+
+def _factorise(K: sp.csr_matrix, held: np.ndarray) -> tuple[np.ndarray, sp.csc_matrix, Any]:
+    free = np.setdiff1d(np.arange(K.shape[0]), held)
+    Kff = K[free][:, free].tocsc()
+    try:
+        import scipy.sparse.linalg as spl
+
+        lu = spl.splu(Kff, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
+    except RuntimeError as exc:
+        raise ModelError(f"the plate stiffness is singular ({exc}); check the supports") from None
+    return free, Kff, lu
 
 
 def _surface_stress(sys_: _PlateSystem, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

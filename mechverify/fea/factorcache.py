@@ -1,0 +1,81 @@
+"""One factorised stiffness matrix per model geometry, reused while only the loads change (issue 19).
+
+A study that varies loads only (a Monte Carlo over a plate's load, a sweep of a frame's payload) solves
+``K u = f`` again and again with the same ``K``: meshing, assembling and factorising are the same work every
+time. :data:`CACHE` keeps the last few systems of this process (a study worker), keyed on the inputs that
+determine the mesh, the stiffness and the supports (their pickled bytes: equal bytes, equal inputs); a solver
+stores what it built under that key and re-solves with each new right-hand side. The counters say how many
+systems were built (factorised) and how many solves reused one, so tests and benchmarks can count them.
+
+Results are bit-identical to a solve without the cache: the same matrices and the same factorisation solve
+the same right-hand side.
+"""
+
+from __future__ import annotations
+
+import pickle
+import threading
+from collections import OrderedDict
+from collections.abc import Callable, Hashable
+from typing import Any
+
+
+class FactorCache:
+    """A small least-recently-used store of built systems (mesh, stiffness, factorisation ...)."""
+
+    def __init__(self, size: int = 8):
+        self.size = size
+        self._items: OrderedDict[Hashable, dict[str, Any]] = OrderedDict()
+        self._lock = threading.Lock()
+        self.builds = 0  # systems built (meshed, assembled, factorised)
+        self.hits = 0  # solves that reused a system
+
+    def entry(self, key: Hashable | None) -> tuple[dict[str, Any], bool]:
+        """The stored parts of ``key`` (a dict the solver fills on first use) and whether they were there.
+        ``key=None`` (inputs that cannot be compared) gives a fresh dict that is not stored."""
+        if key is None:
+            with self._lock:
+                self.builds += 1
+            return {}, False
+        with self._lock:
+            item = self._items.get(key)
+            if item is not None:
+                self._items.move_to_end(key)
+                self.hits += 1
+                return item, True
+            self.builds += 1
+            item = {}
+            self._items[key] = item
+            while len(self._items) > self.size:
+                self._items.popitem(last=False)
+            return item, False
+
+    def part(self, item: dict[str, Any], name: str, build: Callable[[], Any]) -> Any:
+        """``item[name]``, built by ``build()`` on first use (an error is raised again next time, never stored)."""
+        if name not in item:
+            item[name] = build()
+        return item[name]
+
+    def forget(self, key: Hashable | None) -> None:
+        """Drop ``key`` (a build that failed half-way must not leave parts behind)."""
+        if key is not None:
+            with self._lock:
+                self._items.pop(key, None)
+
+    def clear(self) -> None:
+        with self._lock:
+            self._items.clear()
+            self.builds = self.hits = 0
+
+
+#: The cache of this process (study workers each have their own).
+CACHE = FactorCache()
+
+
+def key_of(*parts: Any) -> bytes | None:
+    """A key for ``parts``: their pickled bytes (equal bytes mean equal inputs), or None when they cannot be
+    pickled (no caching then)."""
+    try:
+        return pickle.dumps(parts, protocol=pickle.HIGHEST_PROTOCOL)
+    except Exception:  # an unpicklable input: solve without the cache
+        return None

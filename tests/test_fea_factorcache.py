@@ -1,0 +1,96 @@
+"""One factorised plate stiffness per process while only the loads change (mechverify/fea/factorcache.py, issue 19).
+
+Oracles: the same solves without the cache (bit-identical fields), linearity of the elastic plate (twice the
+pressure, exactly twice the deflection and stresses: a closed-form property of K u = f), and Roark's printed
+coefficient for one case: Roark's Formulas for Stress and Strain, 7th ed., Table 11.4 case 1a, a/b = 2,
+alpha = 0.1110 (printed); y_max = alpha q b^4 / (E t^3) = 0.3964 mm for 400 x 200 x 4 mm, 10 kPa, E = 70 GPa
+(hand calculation from the printed alpha).
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+
+import numpy as np
+import pytest
+
+from mechverify.components import plates as pl
+from mechverify.fea import factorcache
+from mechverify.fea.plate import solve_plate
+from mechverify.materials import default_library
+from mechverify.units import Q
+
+PLATE = {
+    "design": {"name": "plate"},
+    "materials": {"al": {"base": "Inventor Aluminum 6061", "E": "70 GPa", "nu": 0.3}},
+    "components": {"p": {"type": "plate_fea", "width": "400 mm", "height": "200 mm", "thickness": "4 mm",
+                         "material": "al", "supports": [{"edges": "all", "type": "pinned"}], "mesh_size": "20 mm",
+                         "deflection_limit": "0.5 mm"}},
+    "load_cases": {"q": {"p": {"pressure": "10 kPa"}}},
+}
+
+
+def _model(q_kpa: float, t_mm: float = 4.0) -> pl.PlateModel:
+    al = default_library().get("Inventor Aluminum 6061").with_(E=Q(70, "GPa"), nu=Q(0.3))
+    plate = pl.Plate.rectangle(Q(400, "mm"), Q(200, "mm"), thickness=Q(t_mm, "mm"), material=al)
+    return pl.PlateModel(plate, supports=[pl.EdgeSupport("all", "pinned")], loads=[pl.PressureLoad(Q(q_kpa, "kPa"))])
+
+
+def _fields(res):
+    return [res.u, res.sigma, res.reaction, res.applied, *(res.extra[k] for k in sorted(res.extra))]
+
+
+@pytest.fixture()
+def cache():
+    factorcache.CACHE.clear()
+    yield factorcache.CACHE
+    factorcache.CACHE.clear()
+
+
+def test_load_only_changes_factorise_once_and_match_uncached_solves(cache, monkeypatch):
+    loads = [5.0, 10.0, 12.5, 20.0]
+    cached = [solve_plate(_model(q), Q(20, "mm")) for q in loads]
+    assert (cache.builds, cache.hits) == (1, len(loads) - 1)
+    monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)  # every solve builds its own system
+    for q, res in zip(loads, cached, strict=True):
+        fresh = solve_plate(_model(q), Q(20, "mm"))
+        for a, b in zip(_fields(res), _fields(fresh), strict=True):
+            assert np.array_equal(a, b)
+        assert res.info.residual == fresh.info.residual
+    assert cache.builds == 1 + len(loads)
+
+
+def test_cached_solves_are_linear_and_match_roark(cache):
+    r10, r20 = solve_plate(_model(10.0), Q(10, "mm")), solve_plate(_model(20.0), Q(10, "mm"))
+    assert cache.builds == 1 and cache.hits == 1
+    np.testing.assert_allclose(r20.u, 2 * r10.u, rtol=1e-12, atol=1e-18)
+    np.testing.assert_allclose(r20.sigma, 2 * r10.sigma, rtol=1e-12, atol=1e-6)
+    roark = 0.1110 * 1e4 * 0.2**4 / (70e9 * 0.004**3)  # [m], Table 11.4 case 1a
+    assert float(np.max(np.abs(r10.u[:, 2]))) == pytest.approx(roark, rel=0.01)
+
+
+def test_a_new_thickness_or_mesh_builds_a_new_system(cache):
+    solve_plate(_model(10.0), Q(20, "mm"))
+    solve_plate(_model(10.0, t_mm=5.0), Q(20, "mm"))  # stiffness changes
+    solve_plate(_model(10.0), Q(25, "mm"))  # mesh changes
+    solve_plate(_model(15.0), Q(20, "mm"))  # load only: reused
+    assert (cache.builds, cache.hits) == (3, 1)
+
+
+def test_a_study_over_the_pressure_factorises_once_per_worker(cache, monkeypatch):
+    """A serial study is one worker: its base design and every sample share one factorisation; the study's
+    result equals the same study with the cache off, byte for byte."""
+    from mechverify.studies import Study
+
+    vary = {"load_cases.q.p.pressure": "5 kPa:15 kPa:6"}
+    res = Study(copy.deepcopy(PLATE), vary=vary).run("serial")
+    assert cache.builds == 1 and cache.hits == 6  # base verify builds; 6 samples re-solve
+    monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)
+    from mechverify.studies import execution
+
+    execution._BASE.clear()  # the worker's base design is rebuilt without the cache
+    off = Study(copy.deepcopy(PLATE), vary=vary).run("serial")
+    assert res.to_json() == off.to_json()
+    fu = [s["checks"]["p.plate_deflection_fea"]["fu"] for s in json.loads(res.to_json())["samples"]]
+    assert fu == sorted(fu) and fu[-1] == pytest.approx(3 * fu[0], rel=1e-9)  # linear in the pressure
