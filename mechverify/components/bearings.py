@@ -37,7 +37,7 @@ import math
 import re
 import tomllib
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from typing import Any
 
@@ -45,6 +45,7 @@ import numpy as np
 import pint
 
 from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityError
+from mechverify.frozen import set_fields
 from mechverify.materials import database as _materials
 from mechverify.materials.material import Material
 from mechverify.units import Q, QuantityLike, fmt, from_si, si_function, to_si
@@ -602,10 +603,7 @@ class PlainBushing:
         for nm in ("d", "length"):
             if to_si(getattr(self, nm), "length", nm) <= 0:
                 raise InputError(f"{self.name}: {nm} must be positive")
-        mat = self.material
-        if isinstance(mat, str):
-            mat = _materials.get(mat)
-        object.__setattr__(self, "_material", mat)
+        mat = self.material_record  # an unknown name fails here, at construction
         for nm, dim in (("p_max", "pressure"), ("v_max", "velocity"), ("pv_max", "pv")):
             v = getattr(self, nm)
             if v is None and mat is not None:
@@ -614,11 +612,12 @@ class PlainBushing:
                 v = from_si(to_si(v, dim, nm), dim).to({"pressure": "MPa", "velocity": "m/s", "pv": "MPa*m/s"}[dim])
                 if v.magnitude <= 0:
                     raise InputError(f"{self.name}: {nm} must be positive")
-            object.__setattr__(self, nm, v)
+            set_fields(self, **{nm: v})
 
-    @property
+    @cached_property
     def material_record(self) -> Material | None:
-        return self._material  # type: ignore[attr-defined]
+        """The bushing's :class:`Material` (``material`` looked up when given by name), or ``None``."""
+        return _materials.get(self.material) if isinstance(self.material, str) else self.material
 
     def pressure(self, F: Any) -> pint.Quantity:
         return bushing_pressure(F, self.d, self.length).to("MPa")
