@@ -4,7 +4,9 @@ Every combination of a catalogue motor (``components/data/motors.toml``) with no
 gearhead replaces the drive's ``motor``/``gearhead`` and runs every check of the drive over its profile and
 load cases. Those that pass all of them are ranked by margin (the smallest capacity/(demand·SF) of the
 drive's checks, highest first); when none passes, the three nearest are shown with the check that fails.
-Servos and gear-motors are tried without a gearhead (they are sold as one unit).
+Servos and gear-motors are tried without a gearhead (they are sold as one unit). ``--catalogue FILE`` adds a
+user's motors and gearheads (``[[motor]]``/``[[gearhead]]`` entries as in the built-in data files), validated
+entry by entry with the key path of any error.
 """
 
 from __future__ import annotations
@@ -29,6 +31,9 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                    help="only these catalogue motors (repeatable; default: all)")
     p.add_argument("--gearhead", action="append", default=None, metavar="NAME",
                    help="only these catalogue gearheads (repeatable; 'none' for none; default: none and all)")
+    p.add_argument("--catalogue", action="append", default=None, metavar="FILE", type=Path,
+                   help="a catalogue file of your own ([[motor]] and [[gearhead]] entries, the layout of "
+                        "components/data/motors.toml and gearheads.toml), tried with the built-in ones (repeatable)")
     from mechverify.cli._common import add_allow_outside
     add_allow_outside(p)
     p.set_defaults(run=run)
@@ -46,9 +51,61 @@ class Combination:
     error: str = ""  # why the combination could not be evaluated
 
 
+@dataclass(frozen=True)
+class UserEntries:
+    """Motors and gearheads of users' catalogue files: name -> the raw entry (an inline datasheet table)."""
+
+    motors: dict[str, dict[str, Any]]
+    gearheads: dict[str, dict[str, Any]]
+    kinds: dict[str, str]  # motor name -> kind (dc, stepper, servo, gearmotor)
+
+
+def read_user_catalogues(paths: list[Path]) -> UserEntries:
+    """Validated entries of the users' catalogue files (:func:`mechverify.components.catalogue.read_catalogue_file`);
+    a name that is also a built-in catalogue name, or in two files, is an :class:`InputError`."""
+    from mechverify.components.catalogue import normalise, read_catalogue_file
+    from mechverify.components.gearheads import gearhead_from_dict, gearhead_names
+    from mechverify.components.motors import motor_from_dict, motor_names
+    from mechverify.errors import InputError
+
+    builtin = {normalise(n) for n in (*motor_names(), *gearhead_names())}
+
+    def is_builtin(name: str) -> bool:  # a primary name or an alias of a catalogue entry
+        from mechverify.components.gearheads import gearhead
+        from mechverify.components.motors import motor
+        from mechverify.errors import UnknownNameError
+        if normalise(name) in builtin:
+            return True
+        for get in (motor, gearhead):
+            try:
+                get(name)
+                return True
+            except UnknownNameError:
+                pass
+        return False
+    motors: dict[str, dict[str, Any]] = {}
+    gearheads: dict[str, dict[str, Any]] = {}
+    kinds: dict[str, str] = {}
+    for path in paths:
+        data = read_catalogue_file(path, {"motor": motor_from_dict, "gearhead": gearhead_from_dict})
+        for table, store in (("motor", motors), ("gearhead", gearheads)):
+            for i, (name, raw, item) in enumerate(data.get(table, [])):
+                if is_builtin(name) or name in motors or name in gearheads:
+                    raise InputError(f"{path.name}: {table}[{i}].name: {name!r} is already a catalogue name "
+                                     "(built-in or another file): rename it")
+                raw = {k: v for k, v in raw.items() if k not in ("aliases", "name")}
+                if "source" in raw:
+                    raw["source"] = str(item.source) if getattr(item, "source", None) else raw["source"]
+                store[name] = raw
+                if table == "motor":
+                    kinds[name] = item.kind
+    return UserEntries(motors, gearheads, kinds)
+
+
 def combinations(design: Any, drive: str, motors: list[str] | None = None,
-                 gearheads: list[str | None] | None = None) -> list[Combination]:
-    """Evaluate every combination on ``drive`` of ``design`` (a :class:`~mechverify.design.Design`)."""
+                 gearheads: list[str | None] | None = None, user: UserEntries | None = None) -> list[Combination]:
+    """Evaluate every combination on ``drive`` of ``design`` (a :class:`~mechverify.design.Design`), the
+    built-in catalogues' and ``user``'s motors and gearheads (user entries run as inline datasheet tables)."""
     import copy
     import math
 
@@ -62,21 +119,28 @@ def combinations(design: Any, drive: str, motors: list[str] | None = None,
         raise UnknownNameError("component", drive, list(comps))
     if comps[drive].type.name != "drive":
         raise InputError(f"component {drive!r} is a {comps[drive].type.name}, not a drive")
-    motors = motor_names() if motors is None else [motor(m).name for m in motors]
+    user = user or UserEntries({}, {}, {})
+    if motors is None:
+        motors = [*motor_names(), *user.motors]
+    else:
+        motors = [m if m in user.motors else motor(m).name for m in motors]
     if gearheads is None:
-        gearheads = [None, *gearhead_names()]
+        gearheads = [None, *gearhead_names(), *user.gearheads]
     out = []
     for mname in motors:
-        kind = motor(mname).kind
+        kind = user.kinds[mname] if mname in user.motors else motor(mname).kind
         for g in gearheads if kind in ("dc", "stepper") else [None]:
             doc = copy.deepcopy(design.data.raw)
             entry = doc["components"][drive]
-            entry.pop("motor_data", None)
-            entry.pop("gearhead_data", None)
-            entry["motor"] = mname
-            if g is None:
-                entry.pop("gearhead", None)
+            for k in ("motor", "motor_data", "gearhead", "gearhead_data"):
+                entry.pop(k, None)
+            if mname in user.motors:
+                entry["motor_data"] = {"name": mname, **user.motors[mname]}
             else:
+                entry["motor"] = mname
+            if g is not None and g in user.gearheads:
+                entry["gearhead_data"] = {"name": g, **user.gearheads[g]}
+            elif g is not None:
                 entry["gearhead"] = g
             try:
                 d = _rebuild(doc, design.data.path, list(design.data.files), {})
@@ -108,7 +172,8 @@ def run(args: argparse.Namespace) -> int:
         raise Invalid("--top: give a positive number")
     gh = None if args.gearhead is None else [None if g.lower() == "none" else g for g in args.gearhead]
     try:
-        found = combinations(design, args.drive, args.motor, gh)
+        user = read_user_catalogues(args.catalogue) if args.catalogue else None
+        found = combinations(design, args.drive, args.motor, gh, user)
     except MechverifyError as exc:
         raise Invalid(str(exc)) from exc
     passing = sorted((c for c in found if c.passed), key=lambda c: -c.margin)

@@ -13,7 +13,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import Any, Generic, TypeVar
 
-from mechverify.errors import InputError, UnknownNameError
+from mechverify.errors import InputError, MechverifyError, UnknownNameError
 
 T = TypeVar("T")
 
@@ -71,3 +71,69 @@ class Catalogue(Generic[T]):
         """Primary names, sorted."""
         _, _, entries, _ = self._index
         return sorted({str(e["name"]) for e in entries})
+
+
+# ------------------------------------------------------------------------------ a user's catalogue file
+def read_catalogue_file(path: str | Path, builders: Mapping[str, Callable[[Mapping[str, Any], Mapping[str, str]], Any]]
+                        ) -> dict[str, list[tuple[str, dict[str, Any], Any]]]:
+    """A user's catalogue file (TOML, the layout of ``components/data/motors.toml``: ``[[motor]]`` and
+    ``[[gearhead]]`` entries with a ``name``, optional ``[references]``), validated entry by entry.
+
+    ``builders`` maps each allowed table name to the function that builds an entry (``motor_from_dict``).
+    Returns table -> [(name, raw entry, built item)]. Every problem is an :class:`InputError` naming the file
+    and the key path (``my_motors.toml: motor[2].torque_konstant: unknown key; did you mean
+    'torque_constant'?``): a missing file, TOML syntax, an unknown table, an entry without ``name``, a name
+    used twice, an entry its builder rejects, a file without entries.
+    """
+    p = Path(path)
+    label = p.name
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise InputError(f"catalogue file {str(p)!r} not found") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"catalogue file {str(p)!r} cannot be read: {exc}") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"{label}: not valid TOML: {exc}") from None
+    allowed = (*builders, "references")
+    for key in data:
+        if key not in allowed:
+            from mechverify.errors import suggest
+            hint = suggest(key, allowed, 1)
+            raise InputError(f"{label}: {key}: unknown table" + (f"; did you mean {hint[0]!r}?" if hint else
+                                                                  f" (allowed: {', '.join(allowed)})"))
+    refs = data.get("references", {})
+    if not isinstance(refs, dict) or not all(isinstance(v, str) for v in refs.values()):
+        raise InputError(f"{label}: references: give a table of key = \"full reference\" strings")
+    out: dict[str, list[tuple[str, dict[str, Any], Any]]] = {}
+    seen: dict[str, str] = {}
+    for table, build in builders.items():
+        entries = data.get(table, [])
+        if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+            raise InputError(f"{label}: {table}: give [[{table}]] entries (an array of tables)")
+        rows = []
+        for i, entry in enumerate(entries):
+            where = f"{label}: {table}[{i}]"
+            name = entry.get("name")
+            if not isinstance(name, str) or not name.strip():
+                raise InputError(f"{where}.name: missing (every entry needs a name)")
+            for key in [name, *entry.get("aliases", [])]:
+                k = normalise(str(key))
+                if k in seen:
+                    raise InputError(f"{where}.name: {key!r} is used twice (also {seen[k]})")
+                seen[k] = f"{table}[{i}]"
+            try:
+                item = build(entry, refs)
+            except MechverifyError as exc:
+                msg = str(exc)
+                for prefix in (f"{table} {name!r}.", f"{name}."):
+                    if msg.startswith(prefix):
+                        raise InputError(f"{where}.{msg[len(prefix):]}") from None
+                raise InputError(f"{where} ({name}): {msg}") from None
+            rows.append((name, dict(entry), item))
+        out[table] = rows
+    if not any(out.values()):
+        raise InputError(f"{label}: no entries (give [[{'], [['.join(builders)}]] tables)")
+    return out
