@@ -42,6 +42,7 @@ def _reused(variant, base) -> set[str]:
     ({"load_cases.horizontal.screw_horizontal.transverse_load": "150 N"}, {"screw_horizontal"}),
     ({"parameters.lifted_load": "300 N"}, {"lift_screw", "screw_bearing", "lift"}),  # through the connections
     ({"requirements.bearing_life": "20000 h"}, None),  # design-wide: everything again
+    ({"profiles.raise.acceleration": "0.2 m/s^2"}, {"lift"}),  # the drive names the profile
 ])
 def test_variant_equals_a_fresh_build_and_reuses_only_unchanged_components(base, override, recomputed):
     variant = base.with_overrides(override)
@@ -85,3 +86,26 @@ def test_an_unverified_base_reuses_nothing():
     v = d.with_overrides({"components.lift.mass": "15 kg"})
     assert v._reusable() == {}
     assert v.verify().to_json() == _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify().to_json()
+
+
+def test_values_written_as_expressions_outside_components_invalidate(tmp_path):
+    """A parameter read by a material or a profile changes results although no component table changes."""
+    text = LIFT.read_text()
+    text = text.replace('[parameters]', '[parameters]\nmod = "200 GPa"\nacc = "0.1 m/s^2"', 1)
+    text = text.replace('acceleration = "0.1 m/s^2"', 'acceleration = "acc"', 1)
+    text += '\n[materials.steel_p]\nbase = "Inventor Steel"\nE = "mod"\n'
+    text = text.replace('material = "Inventor Steel"', 'material = "steel_p"', 1)  # the lead screw's
+    f = tmp_path / "lift.toml"
+    f.write_text(text)
+    d = load(f)
+    d.verify()
+    assert d.data.components["lift_screw"].params["material"].name == "steel_p"
+    for ov in ({"parameters.mod": "150 GPa"}, {"parameters.acc": "0.2 m/s^2"}):
+        v = d.with_overrides(ov)
+        rs = v.verify()
+        fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify()
+        assert rs.to_json() == fresh.to_json()
+        assert rs.to_json() != d.verify().to_json()
+    v = d.with_overrides({"parameters.mod": "150 GPa"})
+    v.verify()
+    assert "lift_screw" not in _reused(v, d)

@@ -4,8 +4,9 @@
 change and most components see exactly the inputs they saw before. A component's checks depend on: its
 type, its table as written (after templates) and its check settings, its validated field values (after
 expressions and connections are resolved), its loads in every load case as written and as resolved, the
-components it names (a drive's screw, transitively), and the design-wide tables (requirements, safety
-factors, materials, templates, profiles). :func:`fingerprints` reduces these to comparable values; a
+components it names (a drive's screw, transitively), the profiles it or its load cases name (as written and
+resolved), and the design-wide tables (requirements and safety factors as resolved, the design's materials as
+built, templates and any other table as written). :func:`fingerprints` reduces these to comparable values; a
 component whose fingerprint equals the base design's reuses the base's results (the same objects: results
 are frozen). A value that cannot be compared exactly (NaN, an object that is not a dataclass) compares
 unequal, so its checks run again.
@@ -21,8 +22,9 @@ import numpy as np
 
 from mechverify.units import Quantity
 
-#: Top-level tables that hold per-component data; every other table is compared as a whole.
-_PER_COMPONENT = ("components", "load_cases", "parameters", "design")
+#: Top-level tables compared per component (components, load cases, the profiles a component names), by their
+#: resolved values (parameters, materials) or not read by checks (design); every other table is compared whole.
+_PER_COMPONENT = ("components", "load_cases", "parameters", "design", "profiles", "materials")
 
 
 def _canon(v: Any) -> Any:
@@ -60,10 +62,38 @@ def _names(v: Any, known: Mapping[str, Any], out: set[str]) -> None:
 
 
 def design_wide(data: Any) -> Any:
-    """The design-wide part every component depends on."""
+    """The design-wide part every component depends on: requirements and safety factors as resolved, the
+    design's own materials as built (their values may be expressions over parameters), the other tables."""
     raw = data.raw if isinstance(data.raw, Mapping) else {}
-    return (_canon({k: v for k, v in raw.items() if k not in _PER_COMPONENT}), _canon(data.requirements),
-            _canon(data.safety_factors))
+    mats = raw.get("materials")
+    own = []
+    for name in mats if isinstance(mats, Mapping) else ():
+        try:
+            own.append((name, _canon(data.materials.get(name))))
+        except Exception:  # (an invalid material never reaches a verify)
+            own.append((name, ("?", object())))
+    return (_canon({k: v for k, v in raw.items() if k not in _PER_COMPONENT}), _canon(mats), tuple(own),
+            _canon(data.requirements), _canon(data.safety_factors))
+
+
+def _profiles(tables: list[Any], data: Any) -> tuple[Any, ...]:
+    """The profiles named in ``tables`` (and in those profiles, transitively): as written and as resolved."""
+    found: set[str] = set()
+    for t in tables:
+        _names(t, data.profiles, found)
+    out, seen = [], set()
+    todo = sorted(found)
+    while todo:
+        n = todo.pop()
+        if n in seen:
+            continue
+        seen.add(n)
+        e = data.profiles[n]
+        out.append((n, _canon(e.raw), _canon(e.params)))
+        more: set[str] = set()
+        _names(e.raw, data.profiles, more)
+        todo.extend(sorted(more - seen))
+    return tuple(sorted(out, key=lambda x: x[0]))
 
 
 def fingerprints(data: Any) -> dict[str, Any]:
@@ -73,14 +103,18 @@ def fingerprints(data: Any) -> dict[str, Any]:
     refs: dict[str, set[str]] = {}
     for name, entry in data.components.items():
         cases = []
+        tables = [entry.raw]
         for case, comps in data.load_cases.items():
             if name in comps:
                 table = raw_cases.get(case, {}) if isinstance(raw_cases, Mapping) else {}
                 written = table.get(name) if isinstance(table, Mapping) else None
                 cases.append((case, _canon(written), _canon(comps[name])))
-        own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), tuple(cases))
+                tables.append(written)
+        own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), tuple(cases),
+                     _profiles(tables, data))
         found: set[str] = set()
-        _names(entry.raw, data.components, found)
+        for t in tables:
+            _names(t, data.components, found)
         found.discard(name)
         refs[name] = found
     out: dict[str, Any] = {}
