@@ -147,3 +147,20 @@ def test_design_file_bad_input(tmp_path):
     p.write_text(bad2)
     with pytest.raises((DesignFileError, InputError), match="matched-pair"):
         load(p).verify()
+
+
+def test_select_rolling_bearing_by_life():
+    """Smallest tapered roller bearing for Fr = 5 kN at 1000 rpm: 30205 (C 38 kN) gives (38/5)^(10/3) 10^6/60000
+    = 14 384 h (hand calculation), so it is chosen for 10 000 h, and 30206 (C 49.5 kN) alone for 30 000 h; none of a
+    thrust bearing under a radial load; none beyond the catalogue."""
+    from mechverify.components.bearings_rolling import select_rolling_bearing
+
+    assert (38 / 5) ** (10 / 3) * 1e6 / 60000 == pytest.approx(14384, rel=1e-3)
+    sel = select_rolling_bearing("tapered_roller", "5 kN", "0 N", "1000 rpm", "10000 h")
+    assert [b.designation for b in sel] == ["30205", "30206"]
+    sel = select_rolling_bearing("tapered_roller", "5 kN", "0 N", "1000 rpm", "30000 h")
+    assert [b.designation for b in sel] == ["30206"]
+    assert select_rolling_bearing("thrust_ball", "1 kN", "1 kN", "100 rpm", "1000 h") == []
+    assert select_rolling_bearing("cylindrical_roller", "50 kN", "0 N", "1000 rpm", "10000 h") == []
+    with pytest.raises(UnknownNameError):
+        select_rolling_bearing("spherical_roller", "5 kN", "0 N", "1000 rpm", "10000 h")

@@ -285,6 +285,38 @@ def rolling_bearing(name: str, arrangement: str = "single") -> RollingBearing:
     return b.paired(arrangement)
 
 
+def rolling_bearing_catalogue(kind: str | None = None) -> list[RollingBearing]:
+    """Every catalogue bearing once (optionally of one kind), in catalogue order."""
+    if kind is not None and kind not in KINDS:
+        raise UnknownNameError("bearing kind", kind, list(KINDS))
+    rows = list({id(b): b for b in _catalogue().values()}.values())
+    return [b for b in rows if kind is None or b.kind == kind]
+
+
+def select_rolling_bearing(kind: str, Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike,
+                           required_life: QuantityLike, *, required_s0: float = 1.0, reliability: float = 0.9,
+                           arrangement: str = "single", min_bore: QuantityLike | None = None) -> list[RollingBearing]:
+    """Catalogue bearings of ``kind`` that meet the rating life L_nh = a1 (C/P)^p/(60 n), the static safety s0 and
+    the limiting speed for the loads, smallest first (outside diameter, then width): ``[0]`` is the selection.
+    Bearings whose type cannot carry the load (radial on a thrust bearing, axial on NU/needle) are skipped."""
+    req_h = to_si(required_life, "time", "required_life") / 3600
+    n = abs(to_si(speed, "angular_velocity", "speed"))
+    dmin = to_si(min_bore, "length", "min_bore") if min_bore is not None else 0.0
+    out = []
+    for b in rolling_bearing_catalogue(kind):
+        if to_si(b.d, "length") < dmin - 1e-12:
+            continue
+        try:
+            b = b.paired(arrangement)
+            if n > to_si(b.limiting_speed, "angular_velocity") or b.static_safety(Fr, Fa) < required_s0:
+                continue
+            if life_hours(b.rating_life(Fr, Fa, reliability), speed).m_as("hour") >= req_h:
+                out.append(b)
+        except (ValidityError, InputError):
+            continue
+    return sorted(out, key=lambda b: (b.D.m_as("mm"), b.B.m_as("mm"), b.d.m_as("mm")))
+
+
 # ------------------------------------------------------------------ two bearings adjusted against each other
 @dataclass(frozen=True)
 class AdjustedPairLoads:
@@ -336,4 +368,5 @@ def adjusted_pair_loads(A: RollingBearing, B: RollingBearing, Fr_A: QuantityLike
 
 
 __all__ = ["KINDS", "ARRANGEMENTS", "LoadFactors", "RollingBearing", "rolling_bearing", "rolling_bearing_names",
+           "rolling_bearing_catalogue", "select_rolling_bearing",
            "AdjustedPairLoads", "adjusted_pair_axial_loads", "adjusted_pair_loads"]
