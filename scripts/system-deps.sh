@@ -6,6 +6,7 @@
 #   libpango*        WeasyPrint (PDF reports) needs Pango
 #   libglu1-mesa ... shared libraries the gmsh wheel links against
 #   fonts-noto-core, fonts-noto-cjk  fallback fonts: non-Latin names and notes (CJK, Greek, ...) in PDF reports
+#   fonts-noto-color-emoji  emoji in names and notes (found by fontconfig's fallback, never named in the CSS)
 #   libsuitesparse-dev, libopenblas0-pthread  CHOLMOD for scikit-sparse (mechverify[direct]) and a BLAS that
 #                    makes its supernodal factorisation fast (the reference BLAS is ~3x slower)
 set -euo pipefail
@@ -15,6 +16,7 @@ command -v chromium >/dev/null 2>&1 || need+=(chromium)
 command -v pdftoppm >/dev/null 2>&1 || need+=(poppler-utils)
 fc-list 2>/dev/null | grep -qi "Noto Sans CJK" || need+=(fonts-noto-cjk)
 fc-list 2>/dev/null | grep -qi "NotoSans-Regular" || need+=(fonts-noto-core)
+fc-list 2>/dev/null | grep -qi "Noto Color Emoji" || need+=(fonts-noto-color-emoji)
 [ -e /usr/include/suitesparse/cholmod.h ] || need+=(libsuitesparse-dev)
 ldconfig -p | grep -q "libopenblas.so.0" || need+=(libopenblas0-pthread)
 for lib in libpango-1.0.so.0:libpango-1.0-0 libpangoft2-1.0.so.0:libpangoft2-1.0-0 libGLU.so.1:libglu1-mesa \

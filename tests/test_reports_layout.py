@@ -151,3 +151,15 @@ def test_big_design_summary_lists_the_worst_problems_and_counts_the_rest(monkeyp
     n_problems = sum(r.verdict.value != "pass" for r in rs)
     assert f"… and {n_problems - 5} more failing and warning checks" in html
     assert f"… and {40 - n_problems} more checks that pass" in html
+
+
+def test_font_stack_names_no_colour_emoji_font():
+    """With "Noto Color Emoji" in the CSS font-family list, WeasyPrint (Pango) drew every digit of the PDF from the
+    emoji font ("2 0 2 6 - 1 1 - 2 4", seen with fonts-noto-color-emoji installed in a private fontconfig); emoji
+    render from fontconfig's fallback without it. The stack must keep naming the CJK fallbacks."""
+    from importlib import resources
+
+    css = resources.files("mechverify.reports").joinpath("templates", "report.css").read_text(encoding="utf-8")
+    stack = re.search(r"body \{ font-family: ([^;]+);", css).group(1)
+    assert "emoji" not in stack.lower()
+    assert "Noto Sans CJK SC" in stack
