@@ -4,7 +4,9 @@ moment-to-load conversion, the THK bushing row factor, and the binding of a slid
 No catalogue worked example with printed numbers was found (searched THK, HIWIN, IKO pages): the expected
 values are hand calculations from the formulas the catalogues print (THK LM Guide and Linear Bushing pages:
 L = (fH fT fC/fW C/P)^3 50 km, C50 = C100 2^(1/3) by ISO 14728-1; Table 1 row factors as on thk.com), from
-rigid-body statics (block loads) and from Slocum's sliding-carriage equilibrium (jamming at 2 mu e/L = 1).
+rigid-body statics (block loads) and from the sliding-carriage equilibrium; its jamming limit 2 mu e/L = 1 is
+checked against the published igus 2:1 rule (drylin design tips: jamming at a drive offset of twice the bearing
+spacing with static friction 0.25; PBC Linear's binding ratio).
 """
 
 from __future__ import annotations
@@ -149,3 +151,12 @@ def test_design_file(tmp_path):
     assert life.capacity.m_as("km") == pytest.approx((10 / 0.708333333) ** 3 * 50, rel=1e-6)
     assert rs[("slide", "carriage_binding")].demand.m_as("N") == pytest.approx(350 * (1 + 2 * 0.18 * 0.411 / 0.03))
     assert ("table", "linear_guide_static_safety") in rs
+
+
+def test_jamming_reproduces_the_published_2_to_1_rule():
+    """igus (drylin R design tips, eccentric forces): a drive offset of more than twice the bearing spacing jams
+    with static friction 0.25 (PBC Linear: the 2:1 binding ratio). The code's limit 2 mu e/L = 1 at mu = 0.25 is
+    e/L = 2 exactly, whatever the load: 1.99 L moves (with a large but finite force), 2.01 L jams."""
+    for R in ("10 N", "1000 N"):
+        assert not sliding_carriage_drive_force(R, mu=0.25, length="50 mm", drive_offset="99.5 mm").jammed
+        assert sliding_carriage_drive_force(R, mu=0.25, length="50 mm", drive_offset="100.5 mm").jammed

@@ -1,7 +1,7 @@
 """Checks of linear guides: rated life and static safety of profile-rail carriages and linear ball bushings,
 and the drive force (binding) of a carriage on plain bushings under a moment.
 
-Formulas in :mod:`mechverify.components.linear_guides` (THK, HIWIN catalogues; Slocum 1992 Sec. 8.2).
+Formulas in :mod:`mechverify.components.linear_guides` (THK, HIWIN catalogues; the igus / PBC Linear 2:1 rule).
 """
 
 from __future__ import annotations
@@ -19,7 +19,8 @@ from mechverify.units import Q, QuantityLike, fmt, to_si
 
 GUIDE_LIFE = f"{ref('thk_lm', 'rated life, equivalent factor K, load of four blocks')}; " \
              f"{ref('hiwin_lg', 'Secs. 1-3 to 1-5')}"
-BINDING = ref("slocum1992", "Sec. 8.2 (sliding carriage: drive offset, edge loads, jamming)")
+BINDING = (f"{ref('igus_drylin', 'eccentric forces, 2:1 rule')}; {ref('pbc_binding', 'binding ratio')}; "
+           "edge-force equilibrium of a rigid carriage")
 
 
 @dataclass(frozen=True)
@@ -113,8 +114,9 @@ class SlidingGuide:
 @check("carriage_binding", title="Sliding carriage drive force (binding)", sf_kind="limit",
        source=BINDING,
        explain=("A carriage on plain bushings carries the moment of an offset load or drive as two edge forces "
-                "N = |M|/L; their friction 2 mu |M|/L adds to the load, F = R + 2 mu |F e - R a|/L (Slocum, "
-                "Precision Machine Design, Sec. 8.2). The drive force needed is compared with the force the drive "
+                "N = |M|/L; their friction 2 mu |M|/L adds to the load, F = R + 2 mu |F e - R a|/L (equilibrium of the "
+                "rigid carriage; it reproduces the makers' 2:1 rule: with mu = 0.25 a drive offset of twice the "
+                "bearing length jams, igus, PBC Linear). The drive force needed is compared with the force the drive "
                 "provides; with 2 mu e/L >= 1 no force moves it (the carriage jams: keep L > 2 mu e)."))
 def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Drive force needed against the available drive force; a jammed carriage is a ValidityError (FAIL)."""

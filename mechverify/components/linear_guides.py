@@ -15,17 +15,18 @@ Rolling guides [1, 2]:
   centre of the block pattern (x across the rails, y along them): P_i = F/4 ± F·y/(2L) ± F·x/(2W) [1];
 * static safety f_S = C0/P0 (THK: 1..2 normal, 2..3 with vibration or shock) [1].
 
-Sliding carriage on plain bushings [3]: a carriage driven along its guide by a force F at lateral offset e
-from the guide axis, against a resisting force R (load, weight) acting at offset a, with the contact length
-L (bushing length, or the span of two bushings on one rod) and friction coefficient mu. The net moment
-M = F·e − R·a is carried by two edge contacts N = |M|/L, whose friction 2·mu·|M|/L adds to R:
+Sliding carriage on plain bushings (equilibrium of a rigid carriage; [3]): a carriage driven along its guide by a
+force F at lateral offset e from the guide axis, against a resisting force R (load, weight) acting at offset a,
+with the contact length L (bushing length, or the span of two bushings on one rod) and friction coefficient mu.
+The net moment M = F·e − R·a is carried by two edge contacts N = |M|/L, whose friction 2·mu·|M|/L adds to R:
 
     F = R + 2 mu |F e − R a| / L  ->  F = R (1 − 2 mu a/L)/(1 − 2 mu e/L)  (F e >= R a)
                                      F = R (1 + 2 mu a/L)/(1 + 2 mu e/L)  (F e <  R a)
 
 The carriage jams (no finite drive force moves it) when neither branch is consistent: with the drive alone
-off-axis (a = 0) that is 2·mu·e/L >= 1 — Slocum's rule that the contact length must exceed 2·mu times the
-drive offset ("length-to-offset" or drawer rule) [3]. Several parallel rods share the moment but not the
+off-axis (a = 0) that is 2·mu·e/L >= 1, the contact length must exceed 2·mu times the
+drive offset. With mu = 0.25 that is the makers' "2:1 rule" (a drive offset of twice the bearing length jams)
+[3]. Several parallel rods share the moment but not the
 friction sum, so the result does not depend on their number (rigid carriage, equal bushings).
 
 References
@@ -36,8 +37,9 @@ References
     C_50 = 1.26 C_100, L = (f_h f_t C/(f_w P))^3·50 km), 1-5 (acting load).
 [4] THK, Linear Bushing, Rated Load and Nominal Life (thk.com, Linear Bushing selection): Table 1 (rated
     load by ball-row position), nominal life based on 50 km, conversion C_50/C_100 by ISO 14728-1.
-[3] A. H. Slocum, Precision Machine Design, Prentice Hall, 1992, Sec. 8.2 (sliding contact bearings: the
-    drive force at an offset and the jamming of a carriage; keep L > 2 mu e).
+[3] igus, drylin R design tips, eccentric forces: "if the distance between the driving force point and the fixed
+    bearings is more than twice the bearing spacing (2:1 rule), a static coefficient of friction of 0.25 can
+    theoretically result in jamming"; J. R. Schroeder, Demystifying the 2:1 Ratio, PBC Linear, 2010.
 """
 
 from __future__ import annotations
@@ -194,7 +196,8 @@ class SlidingCarriage:
 def sliding_carriage_drive_force(R: QuantityLike, *, mu: float, length: QuantityLike, load_offset: QuantityLike = "0 m",
                                  drive_offset: QuantityLike = "0 m") -> SlidingCarriage:
     """Drive force F moving a carriage on plain bushings against R acting at ``load_offset`` a, driven at
-    ``drive_offset`` e (both signed, on the same axis across the guide), contact length L, friction mu ([3])."""
+    ``drive_offset`` e (both signed, on the same axis across the guide), contact length L, friction mu (rigid-body
+    equilibrium; jamming as in [3])."""
     r = to_si(R, "force", "R")
     L = to_si(length, "length", "length")
     a, e = to_si(load_offset, "length", "load_offset"), to_si(drive_offset, "length", "drive_offset")
@@ -221,5 +224,6 @@ def sliding_carriage_drive_force(R: QuantityLike, *, mu: float, length: Quantity
                            jam_number=jam_number, jammed=False)
 
 
-__all__ = ["BUSHING_ROW_FACTOR", "guide_block_loads", "convert_rating", "guide_life", "life_hours_reciprocating", "block_equivalent_load", "four_block_loads",
-           "pair_moment_loads", "SlidingCarriage", "sliding_carriage_drive_force"]
+__all__ = ["BUSHING_ROW_FACTOR", "guide_block_loads", "convert_rating", "guide_life", "life_hours_reciprocating",
+           "block_equivalent_load", "four_block_loads", "pair_moment_loads", "SlidingCarriage",
+           "sliding_carriage_drive_force"]

@@ -75,7 +75,7 @@ def test_carriage_binding_on_the_rod_bushings(results):
     """The arms hang in front of the rods: 2 x (120 N x 400 mm + 30 N x 800 mm) = 144 N·m over 350 N is a 411 mm
     offset. Carried by the bushing ends (L = 30 mm, assumed), N = 144/0.03 = 4800 N; their friction at mu 0.18
     (Tabla 7) adds 2 mu M/L = 1728 N: the drive must push F = 350 (1 + 2 x 0.18 x 0.4114/0.03) = 2078 N, not the
-    350 N it was sized for (Slocum 1992 Sec. 8.2; hand calculation, the document has no guide check)."""
+    350 N it was sized for (edge-force equilibrium; hand calculation, the document has no guide check)."""
     r = _one(results, "carriage", "carriage_binding")
     a = 2 * (120 * 0.4 + 30 * 0.8) / F
     assert r.demand.m_as("N") == pytest.approx(F * (1 + 2 * 0.18 * a / 0.03), rel=1e-9)

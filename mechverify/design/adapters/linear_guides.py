@@ -148,7 +148,7 @@ def _drive_force(c: lc.SlidingGuide, loads: Any) -> pint.Quantity:
 SLIDING = REGISTRY.register(ComponentType(
     name="sliding_carriage",
     doc="A carriage on plain bushings (rods or rails): the drive force needed when the load or the drive acts off "
-        "the guide axis (edge loads N = |M|/L, friction 2 mu |M|/L; Slocum 1992 Sec. 8.2), against the force the "
+        "the guide axis (edge loads N = |M|/L, friction 2 mu |M|/L; the igus/PBC 2:1 rule), against the force the "
         "drive provides; jamming when 2 mu e/L >= 1.",
     fields=(
         Field("friction", "float", "friction coefficient of the bushings on the rods (the upper value of a range: "
