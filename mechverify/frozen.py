@@ -29,12 +29,15 @@ def set_fields(obj: Any, **values: Any) -> None:
     that is not a field of ``obj`` raises :class:`TypeError` (a derived value is a
     ``functools.cached_property``, not a hidden attribute).
     """
-    fields = obj.__dataclass_fields__
-    for name, value in values.items():
-        if name not in fields:
-            raise TypeError(f"{type(obj).__name__}.{name} is not a dataclass field; derived values are "
-                            "functools.cached_property (mechverify.frozen)")
-        object.__setattr__(obj, name, value)
+    if not values.keys() <= obj.__dataclass_fields__.keys():
+        name = next(iter(values.keys() - obj.__dataclass_fields__.keys()))
+        raise TypeError(f"{type(obj).__name__}.{name} is not a dataclass field; derived values are "
+                        "functools.cached_property (mechverify.frozen)")
+    if hasattr(obj, "__dict__"):  # what the dataclass __init__ does, in one step
+        obj.__dict__.update(values)
+    else:  # a slots dataclass
+        for name, value in values.items():
+            object.__setattr__(obj, name, value)
 
 
 __all__ = ["set_fields"]
