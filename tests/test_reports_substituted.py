@@ -136,10 +136,10 @@ def test_spring_stress_substituted_line_evaluates_to_result(tmp_path):
 
 
 # ------------------------------------------------------------------ every check: the line evaluates back
-def assert_substituted(r) -> None:
+def assert_substituted(r, match_result: bool = True) -> None:
     """``r.substituted`` = ``lhs = expression = result [= result in other units]``: the expression evaluates to
-    the first printed result (within the 4-significant-digit rounding of the printed inputs) and one printed
-    result is the check's demand, capacity or (dimensionless results) safety factor."""
+    the first printed result (within the 4-significant-digit rounding of the printed inputs) and, with
+    ``match_result``, one printed result is the check's demand, capacity or (dimensionless) safety factor."""
     assert r.substituted, f"{r.component}/{r.check}: no substituted formula"
     env = {"Q": Q, "pi": math.pi, "atan": np.arctan, "cos": np.cos, "tan": np.tan, "sin": np.sin, "log": np.log}
     printed: list = []
@@ -156,6 +156,8 @@ def assert_substituted(r) -> None:
             first = first.magnitude
         assert value == pytest.approx(first, rel=3e-3, abs=1e-9), f"{r.check}: {line}"
         printed += results
+    if not match_result:
+        return
     targets = [r.demand, r.capacity, Q(r.safety_factor, "")]
     for p in printed:
         p = Q(p)
@@ -296,6 +298,8 @@ ALLOW_NO_SUBSTITUTION = {
     "solid_deflection": "largest displacement of a solid FEA field: no closed form",
     "natural_frequency": "eigenvalue of the FE model: no closed form",
     "buckling_load_factor": "eigenvalue of the FE model: no closed form",
+    "shaft_critical_speed": "capacity = first eigenvalue of the shaft's modal model: no closed form; the printed line "
+                            "is Rayleigh's cross-check (Shigley Eq. 7-23), evaluated but not matched to the capacity",
 }
 # Checks owned by other issues that had no substituted line when this test was written (issue 25's table);
 # the test still evaluates their line as soon as one exists. Remove an entry when its check prints one.
@@ -316,8 +320,8 @@ def _example_designs():
 @pytest.mark.parametrize("design", _example_designs())
 def test_every_example_check_has_a_substituted_line(design):
     """Every result of every example design (each run through its design file) prints a substituted line that
-    evaluates back to its result, except the allow-listed field results and the checks still pending in other
-    issues (listed with the issue)."""
+    evaluates back to its result, except the allow-listed field results (a line they print must still evaluate to
+    its own printed value) and the checks still pending in other issues (listed with the issue)."""
     from pathlib import Path
 
     from mechverify.design import load
@@ -331,7 +335,7 @@ def test_every_example_check_has_a_substituted_line(design):
             if r.check not in ALLOW_NO_SUBSTITUTION and r.check not in PENDING_ELSEWHERE:
                 missing.append(f"{r.component}/{r.check}")
             continue
-        assert_substituted(r)
+        assert_substituted(r, match_result=r.check not in ALLOW_NO_SUBSTITUTION)
     assert not missing, f"no substituted line: {missing}"
 
 
