@@ -155,3 +155,51 @@ def test_trapezoidal_walk_starts_and_ends_at_rest(tmp_path):
     assert abs(arm.motion.dq1[0]) < 1e-12 and abs(arm.motion.dq1[-1]) < 1e-9
     L = arm.path.length
     assert arm.path.t[-1] == pytest.approx(L / 0.014 + 0.014 / 0.01, rel=1e-9)  # T = L/v + v/a
+
+
+FIVE_BAR = """
+[design]
+name = "five-bar path"
+
+[profiles.left]
+type = "joint_motion"
+mechanism = "fb"
+joint = "q1"
+
+[components.fb]
+type = "planar_arm"
+kind = "five_bar"
+base = "100 mm"
+proximal_left = "100 mm"
+distal_left = "100 mm"
+distal_right = "100 mm"
+proximal_right = "100 mm"
+payload = "0.5 kg"
+path = { curve = "polar", r = "3 cm", centre = ["5 cm", "12 cm"], speed = "10 cm/s", samples = 200 }
+
+[components.left_motor]
+type = "drive"
+motor = "maxon 6V 10.3 mNm"
+gearhead = "GP 22 850:1"
+inertia = "0 kg*m^2"
+profile = "left"
+"""
+
+
+def test_five_bar_arm_feeds_its_drive(tmp_path):
+    """kind = "five_bar" (seed 002's 100 mm links, a 0.5 kg payload on a 3 cm circle): the left drive's gearhead
+    output torque is the payload's virtual-work torque on the left motor, checked at rest-equivalent samples by
+    the five-bar's own holding_torques (massless links, gravity + d'Alembert); q2 limits name the first sample."""
+    from mechverify.mechanisms.fivebar import FiveBar
+
+    d = load(_write(tmp_path, FIVE_BAR))
+    arm = d.data.components["fb"].obj
+    fb = FiveBar("100 mm", "100 mm", "100 mm", "100 mm", "100 mm")
+    i = 37
+    pose = fb.inverse((f"{arm.path.x[i]} m", f"{arm.path.y[i]} m"))
+    tl, _ = fb.holding_torques(pose, (f"{-0.5 * arm.path.ax[i]} N", f"{-0.5 * (arm.path.ay[i] + 9.80665)} N"))
+    assert arm.efforts[0][i] == pytest.approx(tl.m_as("N*m"), rel=1e-9)
+    g = d.verify().get("left_motor", "gearhead_intermittent_torque")
+    assert g.demand.m_as("N*m") == pytest.approx(float(np.max(np.abs(arm.efforts[0]))), rel=1e-3)
+    with pytest.raises(DesignFileError, match=r"sample \d+ .*theta_right"):
+        load(_write(tmp_path, FIVE_BAR.replace('payload = "0.5 kg"', 'payload = "0.5 kg"\nq2_max = "60 deg"')))

@@ -203,3 +203,41 @@ def test_link_bodies_standard_forms():
     assert J == pytest.approx(2 * 0.09 + (3 * 0.05**2 + 0.04) / 12 + 0.01)
     with pytest.raises(Exception, match="radius"):
         compose_bodies([LinkBody("tube", "1 kg", "0.2 m")])
+
+
+# ---------------------------------------------------------------- five-bar along a path
+def test_five_bar_along_a_circle_rates_and_payload_power():
+    """Seed 002's five-bar (all links 100 mm) on a circle: the exact motor rates and accelerations (velocity
+    equation and its derivative) agree with finite differences of the inverse kinematics (second order in the
+    800-sample step: 2e-3 of the peak rate, 1e-2 of the peak acceleration); the payload
+    torques (virtual work, d'Alembert force m (g - a)) satisfy tau . q' = d/dt (m v^2/2 + m g y) (1e-3)."""
+    from mechverify.mechanisms.fivebar import FiveBar
+    from mechverify.mechanisms.paths import five_bar_inverse, five_bar_payload_torques
+
+    fb = FiveBar("100 mm", "100 mm", "100 mm", "100 mm", "100 mm")
+    p = walk_polar(lambda ph: 0.03 + 0.01 * np.cos(3 * ph), "10 cm/s", centre=(0.05, 0.12), samples=800)
+    j = five_bar_inverse(fb, p)
+    for q, dq, ddq in ((j.q1, j.dq1, j.ddq1), (j.q2, j.dq2, j.ddq2)):
+        assert np.max(np.abs(np.gradient(q, j.t, edge_order=2) - dq)) < 2e-3 * np.max(np.abs(dq))
+        assert np.max(np.abs(np.gradient(dq, j.t, edge_order=2) - ddq)[2:-2]) < 1e-2 * np.max(np.abs(ddq))
+    tl, tr = five_bar_payload_torques(fb, p, j, "0.5 kg")
+    E = 0.5 * 0.5 * (p.vx**2 + p.vy**2) + 0.5 * 9.80665 * p.y
+    P = tl * j.dq1 + tr * j.dq2
+    assert np.max(np.abs(P - np.gradient(E, p.t, edge_order=2))) < 1e-3 * np.max(np.abs(P))
+
+
+def test_five_bar_path_errors_name_the_sample():
+    """A circle leaving the reach (|P - A1| > 200 mm) and a limit on the left motor: the first sample is named."""
+    from mechverify.mechanisms.fivebar import FiveBar
+    from mechverify.mechanisms.paths import five_bar_inverse
+
+    fb = FiveBar("100 mm", "100 mm", "100 mm", "100 mm", "100 mm")
+    far = walk_polar(lambda ph: np.full_like(ph, 0.06), "10 cm/s", centre=(0.05, 0.15), samples=100)
+    with pytest.raises(UnreachablePoseError, match=r"sample \d+ \(t = .* is out of reach"):
+        five_bar_inverse(fb, far)
+    p = walk_polar(lambda ph: np.full_like(ph, 0.03), "10 cm/s", centre=(0.05, 0.12), samples=100)
+    j = five_bar_inverse(fb, p)
+    top = float(np.degrees(np.max(j.q1)))
+    first = int(np.argmax(np.degrees(j.q1) > top - 5))
+    with pytest.raises(UnreachablePoseError, match=rf"sample {first} .*theta_left"):
+        five_bar_inverse(fb, p, limits={"theta_left": ("0 deg", f"{top - 5} deg")})

@@ -31,7 +31,7 @@ import numpy as np
 
 from mechverify.errors import InputError
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
-from mechverify.units import QuantityLike, to_si
+from mechverify.units import Q, QuantityLike, to_si
 
 G_STANDARD = 9.80665  # [m/s^2]
 
@@ -482,3 +482,86 @@ def compose_bodies(bodies: tuple[LinkBody, ...] | list[LinkBody]) -> tuple[float
         bm, bmr, bJ = b.properties()
         m, mr, J = m + bm, mr + bmr, J + bJ
     return m, (mr / m if m > 0 else 0.0), J
+
+
+@dataclass(frozen=True)
+class FiveBarJointMotion:
+    """Motor angles (q1 left, q2 right), rates and accelerations of a five-bar along a path (SI)."""
+
+    t: np.ndarray
+    q1: np.ndarray
+    q2: np.ndarray
+    dq1: np.ndarray
+    dq2: np.ndarray
+    ddq1: np.ndarray
+    ddq2: np.ndarray
+
+
+def _perp(v: np.ndarray) -> np.ndarray:
+    return np.array([-v[1], v[0]])
+
+
+def _cross2(a: np.ndarray, b: np.ndarray) -> float:
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def five_bar_inverse(fb: object, path: PathSamples, working_mode: str = "-+",
+                     limits: dict[str, tuple[QuantityLike, QuantityLike]] | None = None,
+                     singular_tol: float = 1e-3) -> FiveBarJointMotion:
+    """Inverse kinematics of a :class:`~mechverify.mechanisms.fivebar.FiveBar` along a path: the motor angles at
+    every sample, their rates from A P' = B theta' (the five-bar's velocity equation, ``jacobian_parts``) and
+    accelerations from its time derivative A' P' + A P'' = B' theta' + B theta'' (exact in the path's derivatives).
+    ``limits`` {"theta_left": (lo, hi), "theta_right": ...}; the first unreachable, out-of-limit or singular sample
+    (a measure at or below ``singular_tol``) is named."""
+    name = getattr(fb, "name", "five-bar")
+    lim = {k: _angle_limits(v[0], v[1], k) for k, v in (limits or {}).items()}
+    n = len(path.t)
+    q = np.zeros((n, 2))
+    dq = np.zeros((n, 2))
+    ddq = np.zeros((n, 2))
+    for i in range(n):
+        where = f"sample {i} (t = {path.t[i]:.4g} s, x = {path.x[i] * 1e3:.4g} mm, y = {path.y[i] * 1e3:.4g} mm)"
+        try:
+            pose = fb.inverse((Q(path.x[i], "m"), Q(path.y[i], "m")), working_mode)  # type: ignore[attr-defined]
+        except UnreachablePoseError as exc:
+            raise UnreachablePoseError(f"{name}: {where} is out of reach ({exc})") from None
+        m = fb.singularity_measures(pose)  # type: ignore[attr-defined]
+        worst = min(m, key=lambda k: m[k])
+        if m[worst] <= singular_tol:
+            raise SingularPoseError(f"{name}: {where} is at a {worst.replace('_', ' ')} singularity "
+                                    f"(sin = {m[worst]:.3g} <= {singular_tol:g})")
+        A1, B1, P, B2, A2 = pose.A1, pose.B1, pose.P, pose.B2, pose.A2
+        t = np.array([pose.theta_left.m_as("rad"), pose.theta_right.m_as("rad")])
+        v, a = np.array([path.vx[i], path.vy[i]]), np.array([path.ax[i], path.ay[i]])
+        A = np.vstack([P - B1, P - B2])
+        b = np.array([_cross2(B1 - A1, P - B1), _cross2(B2 - A2, P - B2)])
+        w = (A @ v) / b
+        dB1, dB2 = w[0] * _perp(B1 - A1), w[1] * _perp(B2 - A2)
+        dA = np.vstack([v - dB1, v - dB2])
+        db = np.array([_cross2(dB1, P - B1) + _cross2(B1 - A1, v - dB1),
+                       _cross2(dB2, P - B2) + _cross2(B2 - A2, v - dB2)])
+        q[i], dq[i], ddq[i] = t, w, (dA @ v + A @ a - db * w) / b
+    for k, key in enumerate(("theta_left", "theta_right")):
+        q[:, k] = np.unwrap(q[:, k])
+        if key in lim:
+            q[:, k] = _within_limits(q[:, k], lim[key], key, name, path)
+    unknown = set(lim) - {"theta_left", "theta_right"}
+    if unknown:
+        raise InputError(f"{name}: unknown joint {sorted(unknown)[0]!r} in limits (theta_left, theta_right)")
+    return FiveBarJointMotion(path.t, q[:, 0], q[:, 1], dq[:, 0], dq[:, 1], ddq[:, 0], ddq[:, 1])
+
+
+def five_bar_payload_torques(fb: object, path: PathSamples, motion: FiveBarJointMotion, payload: QuantityLike,
+                             gravity: QuantityLike = "9.80665 m/s^2", working_mode: str = "-+"
+                             ) -> tuple[np.ndarray, np.ndarray]:
+    """Motor torques (left, right) [N m] that move a point ``payload`` at the tool along the path against gravity
+    (-y), massless links: the d'Alembert force on the tool F = m (g - a) held by virtual work, tau = -J^T F
+    (:meth:`FiveBar.holding_torques`)."""
+    m, g = to_si(payload, "mass", "payload"), to_si(gravity, "acceleration", "gravity")
+    out = np.zeros((len(path.t), 2))
+    for i in range(len(path.t)):
+        pose = fb.inverse((Q(path.x[i], "m"), Q(path.y[i], "m")), working_mode)  # type: ignore[attr-defined]
+        F = (Q(-m * path.ax[i], "N"), Q(-m * (path.ay[i] + g), "N"))
+        tl, tr = fb.holding_torques(pose, F)  # type: ignore[attr-defined]
+        out[i] = tl.m_as("N*m"), tr.m_as("N*m")
+    return out[:, 0], out[:, 1]

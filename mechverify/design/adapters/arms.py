@@ -19,159 +19,12 @@ from typing import Any
 
 import numpy as np
 
-from mechverify.design.expressions import ExpressionError
-from mechverify.design.expressions import parse as parse_expression
+from mechverify.design.adapters.path_parsing import walk_path
 from mechverify.design.spec import REGISTRY, ComponentType, Field, Output
 from mechverify.errors import InputError, MechverifyError
 from mechverify.mechanisms import paths as mp
 from mechverify.motion.profiles import ProfileSamples
 from mechverify.units import Q, Quantity, to_si
-
-PATH_KEYS = {"curve": "str", "r": "str", "centre": "list", "phi": "list", "x": "str", "y": "str", "u": "list",
-             "points": "list", "closed": "bool", "speed": "velocity", "acceleration": "acceleration",
-             "samples": "int"}
-
-
-# ------------------------------------------------------------------------------------------ expressions of a curve
-
-def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> Any:
-    """A vectorised SI function of the curve parameter (radians for phi) from an expression with units."""
-    try:
-        e = parse_expression(expr_text)
-    except ExpressionError as exc:
-        raise InputError(f"{where}: {exc}") from None
-    unknown = sorted(n for n in e.names if n != var and n not in params)
-    if unknown:
-        raise InputError(f"{where}: unknown name {unknown[0]!r} (the curve's variable is {var!r}; parameters: "
-                         f"{', '.join(params) or 'none'})")
-    code = e._code
-
-    def f(w: np.ndarray) -> np.ndarray:
-        env = {**params, var: Q(np.asarray(w, float), "rad" if var == "phi" else "")}
-        stack: list[Any] = []
-        for op, arg in code:
-            if op == "const":
-                stack.append(arg)
-            elif op == "name":
-                stack.append(env[arg])
-            elif op == "neg":
-                stack.append(-stack.pop())
-            elif op == "op":
-                b, a = stack.pop(), stack.pop()
-                stack.append(a + b if arg == "+" else a - b if arg == "-" else a * b if arg == "*"
-                             else a / b if arg == "/" else a ** _plain(b))
-            else:
-                fname, n = arg
-                args = stack[len(stack) - n:]
-                del stack[len(stack) - n:]
-                stack.append(_call(fname, args))
-        (v,) = stack
-        return np.asarray(Q(v).to_base_units().magnitude if isinstance(v, Quantity) else v, float)
-
-    try:
-        f(np.array([0.1, 0.2]))
-    except Exception as exc:  # pint raises several types for mismatched units
-        raise InputError(f"{where}: {expr_text!r} cannot be evaluated ({exc})") from None
-    return f, e
-
-
-def _plain(v: Any) -> Any:
-    return v.to("dimensionless").magnitude if isinstance(v, Quantity) else v
-
-
-def _call(fname: str, args: list[Any]) -> Any:
-    if fname in ("sin", "cos", "tan"):
-        x = args[0].to("rad").magnitude if isinstance(args[0], Quantity) else args[0]
-        return {"sin": np.sin, "cos": np.cos, "tan": np.tan}[fname](x)
-    if fname == "sqrt":
-        return args[0] ** 0.5
-    if fname == "abs":
-        return abs(args[0])
-    if fname == "atan2":
-        y, x = (Q(a) for a in args)
-        return Q(np.arctan2(y.magnitude, x.to(y.units).magnitude), "rad")
-    red = np.minimum if fname == "min" else np.maximum
-    out = args[0]
-    for a in args[1:]:
-        out = Q(red(Q(out).magnitude, Q(a).to(Q(out).units).magnitude), Q(out).units)
-    return out
-
-
-def _length(v: Any, where: str) -> float:
-    return to_si(v, "length", where)
-
-
-def _pair(v: Any, where: str, kind: str) -> tuple[float, float]:
-    if not isinstance(v, list) or len(v) != 2:
-        raise InputError(f"{where}: expected two values [from, to] or [x, y], got {v!r}")
-    if kind == "number":
-        return tuple(float(to_si(x, "angle", where)) if isinstance(x, str) else float(x) for x in v)  # type: ignore
-    return to_si(v[0], kind, f"{where}[0]"), to_si(v[1], kind, f"{where}[1]")
-
-
-def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSamples:
-    """The path table of a ``planar_arm`` walked in time (key paths start at ``path``)."""
-    from mechverify.errors import suggest
-
-    for k in table:
-        if k not in PATH_KEYS:
-            hint = suggest(k, PATH_KEYS, 1)
-            raise InputError(f"path.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint
-                                                          else f" (allowed: {', '.join(PATH_KEYS)})"))
-    curve = table.get("curve")
-    if curve not in ("polar", "cartesian", "points"):
-        raise InputError(f"path.curve: expected 'polar', 'cartesian' or 'points', got {curve!r}")
-    samples = int(table.get("samples", 400))
-    if samples < 2:
-        raise InputError(f"path.samples: must be >= 2, got {samples}")
-    if "speed" not in table:
-        raise InputError("path.speed: missing (the tangential speed, constant or the cruise speed with acceleration)")
-    speed = to_si(table["speed"], "velocity", "path.speed")
-    if not speed > 0:
-        raise InputError(f"path.speed: must be > 0, got {table['speed']!r}")
-    if curve == "polar":
-        if "r" not in table:
-            raise InputError("path.r: missing (r as an expression in phi, e.g. \"8 cm - 1.5 cm * cos(4*phi)\")")
-        r, _ = _vector(str(table["r"]), "phi", params, "path.r")
-        xc, yc = _pair(table.get("centre", ["0 m", "0 m"]), "path.centre", "length")
-        rng = _pair(table.get("phi", ["0 deg", "360 deg"]), "path.phi", "angle")
-
-        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-            rr = r(w)
-            return xc + rr * np.cos(w), yc + rr * np.sin(w)
-    elif curve == "cartesian":
-        if "x" not in table or "y" not in table:
-            raise InputError("path.x, path.y: a Cartesian curve needs both, as expressions in u")
-        fx, _ = _vector(str(table["x"]), "u", params, "path.x")
-        fy, _ = _vector(str(table["y"]), "u", params, "path.y")
-        rng = _pair(table.get("u", [0.0, 1.0]), "path.u", "number")
-
-        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-            return fx(w), fy(w)
-    else:
-        pts = table.get("points")
-        if not isinstance(pts, list):
-            raise InputError("path.points: expected a list of [x, y] pairs with units")
-        xy = np.array([_pair(p, f"path.points[{i}]", "length") for i, p in enumerate(pts)])
-        fn, rng = mp.spline_through(xy, bool(table.get("closed", False)))
-    for k in (("r",) if curve != "polar" else ()) + (("x", "y") if curve != "cartesian" else ()) + \
-            (("points",) if curve != "points" else ()):
-        if k in table:
-            raise InputError(f"path.{k}: not a key of a {curve} curve")
-    if "acceleration" in table:
-        acc = to_si(table["acceleration"], "acceleration", "path.acceleration")
-
-        def timing(length: float) -> mp.Timing:
-            from mechverify.motion.profiles import trapezoidal
-
-            prof = trapezoidal(Q(length, "m"), max_velocity=Q(speed, "m/s"), acceleration=Q(acc, "m/s**2"))
-            t = np.linspace(0.0, prof.duration.m_as("s"), samples + 1)
-            st = prof.at(Q(t, "s"))
-            return mp.Timing(t, st["x"].m_as("m"), st["v"].m_as("m/s"), st["a"].m_as("m/s**2"))
-
-        return mp.walk_curve(fn, rng, timing=timing, samples=samples)
-    return mp.walk_curve(fn, rng, Q(speed, "m/s"), samples=samples)
-
 
 # ------------------------------------------------------------------------------------------ the arm
 
@@ -186,6 +39,7 @@ class ArmOnPath:
     efforts: tuple[np.ndarray, np.ndarray]
     q1_inertia: np.ndarray  # inertia about the first joint at every sample [kg m^2]
     kinds: tuple[str, str]  # "angle" / "length" of q1, q2
+    q2_inertia: np.ndarray | None = None  # five-bar: the payload's inertia about the right motor
 
     def joint(self, name: str) -> tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(kind, q, q', q'', effort) of joint ``q1`` or ``q2``."""
@@ -238,6 +92,13 @@ def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
         msg = str(exc)
         raise InputError(msg if msg.startswith("path") else f"path: {msg}") from None
     lim = {k: p[k] for k in ("q1_min", "q1_max") if k in p}
+    fb_keys = ("base", "proximal_left", "distal_left", "distal_right", "proximal_right", "working_mode")
+    if kind != "five_bar":
+        for k in fb_keys:
+            if k in p:
+                raise InputError(f"{k}: a key of a five_bar arm, not of an {kind.upper()} arm")
+    else:
+        return _five_bar_on_path(p, path, g)
     if kind == "rp":
         for k in ("l1", "l2", "elbow", "q2_min", "q2_max"):
             if k in p:
@@ -276,6 +137,34 @@ def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
     return ArmOnPath(name, arm, path, motion, arm.joint_loads(motion), np.asarray(J1, float), kinds)
 
 
+def _five_bar_on_path(p: Mapping[str, Any], path: mp.PathSamples, g: Any) -> ArmOnPath:
+    """A five-bar (massless links, the payload a point mass at the tool) along the path: q1 = left motor,
+    q2 = right motor; torques by virtual work of the payload's d'Alembert force."""
+    from mechverify.mechanisms.fivebar import FiveBar
+
+    for k in ("reach_min", "reach_max", "carriage_mass", "arm_inertia", "l1", "l2", "elbow", "bodies"):
+        if k in p:
+            raise InputError(f"{k}: not a key of a five_bar arm (links base, proximal_left, distal_left, "
+                             "distal_right, proximal_right; payload at the tool)")
+    missing = [k for k in ("base", "proximal_left", "distal_left", "distal_right", "proximal_right") if k not in p]
+    if missing:
+        raise InputError(f"{missing[0]}: a five_bar arm needs its five lengths")
+    fb = FiveBar(p["base"], p["proximal_left"], p["distal_left"], p["distal_right"], p["proximal_right"],
+                 name=p["_name"])
+    mode = p.get("working_mode", "-+")
+    limits = {j: (p.get(f"{q}_min"), p.get(f"{q}_max"))
+              for j, q in (("theta_left", "q1"), ("theta_right", "q2")) if f"{q}_min" in p or f"{q}_max" in p}
+    motion = mp.five_bar_inverse(fb, path, mode, limits)
+    payload = p.get("payload", Q(0, "kg"))
+    efforts = mp.five_bar_payload_torques(fb, path, motion, payload, g, mode)
+    m = to_si(payload, "mass", "payload")
+    J = np.zeros((len(path.t), 2))
+    for i in range(len(path.t)):  # the payload's inertia about each motor: m |dP/dtheta_k|^2
+        jac = fb.jacobian(fb.inverse((Q(path.x[i], "m"), Q(path.y[i], "m")), mode)).m_as("m")
+        J[i] = m * np.sum(jac**2, axis=0)
+    return ArmOnPath(p["_name"], fb, path, motion, efforts, J[:, 0], ("angle", "angle"), J[:, 1])
+
+
 def _peak(i: int, what: str) -> Any:
     def fn(a: ArmOnPath, loads: Any) -> Any:
         if (what == "force") != (a.kinds[i] == "length"):
@@ -298,8 +187,8 @@ PLANAR_ARM = REGISTRY.register(ComponentType(
         "kinematics with joint limits, joint rates and accelerations, joint torques and forces from Lagrange's "
         "equations (inertial, Coriolis, centripetal, gravity). Drives get a joint through a joint_motion profile.",
     fields=(
-        Field("kind", "choice", "rp (revolute + prismatic) or rr (two revolute joints)", required=True,
-              choices=("rp", "rr")),
+        Field("kind", "choice", "rp (revolute + prismatic), rr (two revolute joints) or five_bar (q1, q2 = left, "
+                                "right motor; massless links)", required=True, choices=("rp", "rr", "five_bar")),
         Field("path", "table", "the tool path: curve = polar (r in phi, centre, phi = [from, to]) | cartesian (x, y "
                                "in u, u = [from, to]) | points (points = [[x, y], ...], closed); speed; optional "
                                "acceleration (trapezoidal from rest to rest) and samples (default 400)",
@@ -311,6 +200,12 @@ PLANAR_ARM = REGISTRY.register(ComponentType(
         Field("l1", "length", "RR: first link length"),
         Field("l2", "length", "RR: second link length"),
         Field("elbow", "choice", "RR: elbow down (q2 > 0) or up (q2 < 0)", choices=("down", "up")),
+        *(Field(k, "length", f"five_bar: {d}") for k, d in (
+            ("base", "distance between the motor axes"), ("proximal_left", "left crank"),
+            ("distal_left", "left distal link"), ("distal_right", "right distal link"),
+            ("proximal_right", "right crank"))),
+        Field("working_mode", "choice", "five_bar: inverse-kinematics branch per leg (default -+)",
+              choices=("++", "+-", "-+", "--")),
         Field("bodies", "list", "bodies on the links: tables with shape = rod | cylinder | tube | point, mass, length, "
                                 "radius, inner_radius, start (distance from the joint), link (RR: 1 or 2)",
               item="table"),
@@ -318,8 +213,8 @@ PLANAR_ARM = REGISTRY.register(ComponentType(
         Field("gravity", "acceleration", "gravity in the plane, along -y (default requirements.g)"),
         Field("q1_min", "angle", "q1 " + _LIMIT),
         Field("q1_max", "angle", "q1 " + _LIMIT),
-        Field("q2_min", "angle", "RR: q2 " + _LIMIT),
-        Field("q2_max", "angle", "RR: q2 " + _LIMIT),
+        Field("q2_min", "angle", "RR, five_bar: q2 " + _LIMIT),
+        Field("q2_max", "angle", "RR, five_bar: q2 " + _LIMIT),
     ),
     build=lambda p, ctx: _build_arm(p, ctx),
     outputs=(
@@ -402,6 +297,8 @@ class JointMotionProfile:
         a = self._resolve()
         if self.joint == "q1":
             return float(np.max(a.q1_inertia))
+        if a.q2_inertia is not None:
+            return float(np.max(a.q2_inertia))
         if a.kinds[1] == "length":
             return to_si(a.arm.carriage_mass, "mass", "carriage_mass")
         _l1, _l2, _m1, _lc1, _I1, M2, lc2, I2, _g = a.arm._si()

@@ -1,0 +1,164 @@
+"""Parsing of a ``planar_arm``'s ``path`` table (no component type here): curves from expressions with units
+(evaluated vectorised: the expression's postfix program on numpy arrays), sampled points, constant speed or a
+trapezoidal walk; kinematics in :mod:`mechverify.mechanisms.paths`."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from mechverify.design.expressions import ExpressionError
+from mechverify.design.expressions import parse as parse_expression
+from mechverify.errors import InputError
+from mechverify.mechanisms import paths as mp
+from mechverify.units import Q, Quantity, to_si
+
+PATH_KEYS = {"curve": "str", "r": "str", "centre": "list", "phi": "list", "x": "str", "y": "str", "u": "list",
+             "points": "list", "closed": "bool", "speed": "velocity", "acceleration": "acceleration",
+             "samples": "int"}
+
+
+# ------------------------------------------------------------------------------------------ expressions of a curve
+
+def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> Any:
+    """A vectorised SI function of the curve parameter (radians for phi) from an expression with units."""
+    try:
+        e = parse_expression(expr_text)
+    except ExpressionError as exc:
+        raise InputError(f"{where}: {exc}") from None
+    unknown = sorted(n for n in e.names if n != var and n not in params)
+    if unknown:
+        raise InputError(f"{where}: unknown name {unknown[0]!r} (the curve's variable is {var!r}; parameters: "
+                         f"{', '.join(params) or 'none'})")
+    code = e._code
+
+    def f(w: np.ndarray) -> np.ndarray:
+        env = {**params, var: Q(np.asarray(w, float), "rad" if var == "phi" else "")}
+        stack: list[Any] = []
+        for op, arg in code:
+            if op == "const":
+                stack.append(arg)
+            elif op == "name":
+                stack.append(env[arg])
+            elif op == "neg":
+                stack.append(-stack.pop())
+            elif op == "op":
+                b, a = stack.pop(), stack.pop()
+                stack.append(a + b if arg == "+" else a - b if arg == "-" else a * b if arg == "*"
+                             else a / b if arg == "/" else a ** _plain(b))
+            else:
+                fname, n = arg
+                args = stack[len(stack) - n:]
+                del stack[len(stack) - n:]
+                stack.append(_call(fname, args))
+        (v,) = stack
+        return np.asarray(Q(v).to_base_units().magnitude if isinstance(v, Quantity) else v, float)
+
+    try:
+        f(np.array([0.1, 0.2]))
+    except Exception as exc:  # pint raises several types for mismatched units
+        raise InputError(f"{where}: {expr_text!r} cannot be evaluated ({exc})") from None
+    return f, e
+
+
+def _plain(v: Any) -> Any:
+    return v.to("dimensionless").magnitude if isinstance(v, Quantity) else v
+
+
+def _call(fname: str, args: list[Any]) -> Any:
+    if fname in ("sin", "cos", "tan"):
+        x = args[0].to("rad").magnitude if isinstance(args[0], Quantity) else args[0]
+        return {"sin": np.sin, "cos": np.cos, "tan": np.tan}[fname](x)
+    if fname == "sqrt":
+        return args[0] ** 0.5
+    if fname == "abs":
+        return abs(args[0])
+    if fname == "atan2":
+        y, x = (Q(a) for a in args)
+        return Q(np.arctan2(y.magnitude, x.to(y.units).magnitude), "rad")
+    red = np.minimum if fname == "min" else np.maximum
+    out = args[0]
+    for a in args[1:]:
+        out = Q(red(Q(out).magnitude, Q(a).to(Q(out).units).magnitude), Q(out).units)
+    return out
+
+
+def _length(v: Any, where: str) -> float:
+    return to_si(v, "length", where)
+
+
+def _pair(v: Any, where: str, kind: str) -> tuple[float, float]:
+    if not isinstance(v, list) or len(v) != 2:
+        raise InputError(f"{where}: expected two values [from, to] or [x, y], got {v!r}")
+    if kind == "number":
+        return tuple(float(to_si(x, "angle", where)) if isinstance(x, str) else float(x) for x in v)  # type: ignore
+    return to_si(v[0], kind, f"{where}[0]"), to_si(v[1], kind, f"{where}[1]")
+
+
+def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSamples:
+    """The path table of a ``planar_arm`` walked in time (key paths start at ``path``)."""
+    from mechverify.errors import suggest
+
+    for k in table:
+        if k not in PATH_KEYS:
+            hint = suggest(k, PATH_KEYS, 1)
+            raise InputError(f"path.{k}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint
+                                                          else f" (allowed: {', '.join(PATH_KEYS)})"))
+    curve = table.get("curve")
+    if curve not in ("polar", "cartesian", "points"):
+        raise InputError(f"path.curve: expected 'polar', 'cartesian' or 'points', got {curve!r}")
+    samples = int(table.get("samples", 400))
+    if samples < 2:
+        raise InputError(f"path.samples: must be >= 2, got {samples}")
+    if "speed" not in table:
+        raise InputError("path.speed: missing (the tangential speed, constant or the cruise speed with acceleration)")
+    speed = to_si(table["speed"], "velocity", "path.speed")
+    if not speed > 0:
+        raise InputError(f"path.speed: must be > 0, got {table['speed']!r}")
+    if curve == "polar":
+        if "r" not in table:
+            raise InputError("path.r: missing (r as an expression in phi, e.g. \"8 cm - 1.5 cm * cos(4*phi)\")")
+        r, _ = _vector(str(table["r"]), "phi", params, "path.r")
+        xc, yc = _pair(table.get("centre", ["0 m", "0 m"]), "path.centre", "length")
+        rng = _pair(table.get("phi", ["0 deg", "360 deg"]), "path.phi", "angle")
+
+        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            rr = r(w)
+            return xc + rr * np.cos(w), yc + rr * np.sin(w)
+    elif curve == "cartesian":
+        if "x" not in table or "y" not in table:
+            raise InputError("path.x, path.y: a Cartesian curve needs both, as expressions in u")
+        fx, _ = _vector(str(table["x"]), "u", params, "path.x")
+        fy, _ = _vector(str(table["y"]), "u", params, "path.y")
+        rng = _pair(table.get("u", [0.0, 1.0]), "path.u", "number")
+
+        def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            return fx(w), fy(w)
+    else:
+        pts = table.get("points")
+        if not isinstance(pts, list):
+            raise InputError("path.points: expected a list of [x, y] pairs with units")
+        xy = np.array([_pair(p, f"path.points[{i}]", "length") for i, p in enumerate(pts)])
+        fn, rng = mp.spline_through(xy, bool(table.get("closed", False)))
+    for k in (("r",) if curve != "polar" else ()) + (("x", "y") if curve != "cartesian" else ()) + \
+            (("points",) if curve != "points" else ()):
+        if k in table:
+            raise InputError(f"path.{k}: not a key of a {curve} curve")
+    if "acceleration" in table:
+        acc = to_si(table["acceleration"], "acceleration", "path.acceleration")
+
+        def timing(length: float) -> mp.Timing:
+            from mechverify.motion.profiles import trapezoidal
+
+            prof = trapezoidal(Q(length, "m"), max_velocity=Q(speed, "m/s"), acceleration=Q(acc, "m/s**2"))
+            t = np.linspace(0.0, prof.duration.m_as("s"), samples + 1)
+            st = prof.at(Q(t, "s"))
+            return mp.Timing(t, st["x"].m_as("m"), st["v"].m_as("m/s"), st["a"].m_as("m/s**2"))
+
+        return mp.walk_curve(fn, rng, timing=timing, samples=samples)
+    return mp.walk_curve(fn, rng, Q(speed, "m/s"), samples=samples)
+
+
+__all__ = ["walk_path", "PATH_KEYS"]
