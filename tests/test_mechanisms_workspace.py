@@ -150,3 +150,17 @@ def test_design_file_check_and_sizing(tmp_path):
     assert main(["size", str(p), "--vary", "parameters.W", "--until", "fb.workspace_payload",
                  "--bounds", "0.01 N:100 N"]) == 0
     assert d["fb"].capacity.fraction < 1  # the grid's corners are out of reach
+
+
+def test_workspace_payload_substituted_line(tmp_path):
+    """W_max = T/|tau per unit load| with the numbers evaluates back to the check's capacity (issue 25's parser)."""
+    import importlib.util
+    from pathlib import Path
+
+    spec = importlib.util.spec_from_file_location("_subst", Path(__file__).parent / "test_reports_substituted.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    p = tmp_path / "fb.toml"
+    p.write_text(DESIGN, encoding="utf-8")
+    r = load(p).verify().get("fb", "workspace_payload")
+    mod.assert_substituted(r)
