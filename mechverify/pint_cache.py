@@ -89,16 +89,19 @@ def install(ureg: Any) -> None:
 
 def _fast_quantities(ureg: Any, units_container: type) -> None:
     """``Quantity(value, units)`` of this registry without pint's general argument analysis when ``value`` is a
-    float, an int or an ndarray and ``units`` a units container (what ``.to()``, arithmetic and ``Q(v, unit)``
-    pass): the same two attributes pint sets (its ``_to_magnitude`` returns such values unchanged while the
-    registry does not force arrays). Anything else goes to pint's ``__new__``."""
+    float, an int or an ndarray and ``units`` a units container or a unit of this registry (what ``.to()``,
+    arithmetic and ``Q(v, unit)`` pass): the same two attributes pint sets (its ``_to_magnitude`` returns such
+    values unchanged while the registry does not force arrays). Anything else goes to pint's ``__new__``."""
     import numpy as np
 
     cls = ureg.Quantity
+    unit_cls = ureg.Unit
     base_new = cls.__new__
     plain = (float, int, np.float64, np.ndarray)
 
     def __new__(klass: Any, value: Any, units: Any = None) -> Any:
+        if type(units) is unit_cls:  # pint takes a unit's container (Q(v, "mm") passes a parsed unit)
+            units = units._units
         if type(units) is units_container and type(value) in plain and not (ureg.force_ndarray
                                                                             or ureg.force_ndarray_like):
             inst = object.__new__(klass)

@@ -97,6 +97,8 @@ def test_quantities_built_fast_are_pints(plain: pint.UnitRegistry) -> None:
         q = ureg.Quantity(value, units)
         assert q.magnitude is value and q.units == ureg.Unit("N*m") and type(q) is ureg.Quantity
         assert f"{q:~P}" == f"{plain.Quantity(value, 'N*m'):~P}"
+    q = ureg.Quantity(2.5, ureg.Unit("mm"))  # a parsed unit (Q(v, "mm"))
+    assert q._units == Q(1.0, "mm")._units and q.to("m").magnitude == plain.Quantity(2.5, "mm").to("m").magnitude
     with pytest.raises(TypeError):  # pint's own checks still apply to anything else
         ureg.Quantity(True, units)
     assert ureg.Quantity([1, 2], units).magnitude.tolist() == [1, 2]  # a list becomes an array (pint's path)
