@@ -510,12 +510,16 @@ def plate_resilience(l_K: float, d_W: float, d_h: float, E_P: float, D_A: float 
                      through: bool = True) -> float:
     """Resilience delta_P of the clamped parts (one material) by the substitute deformation cone [m/N, SI float].
 
-    Cone only (D_A >= D_A,Gr = d_W + w l_K tan phi, or D_A not given):
+    Cone only (D_A >= D_A,Gr = d_W + w l_K tan phi, or D_A not given)::
+
         delta_P = 2 ln[(d_W + d_h)(d_W + w l_K tan phi - d_h) / ((d_W - d_h)(d_W + w l_K tan phi + d_h))]
                   / (w E_P pi d_h tan phi)
-    Cone and sleeve (d_W < D_A < D_A,Gr):
+
+    Cone and sleeve (d_W < D_A < D_A,Gr)::
+
         delta_P = [2/(w d_h tan phi) ln((d_W + d_h)(D_A - d_h)/((d_W - d_h)(D_A + d_h)))
                    + 4/(D_A^2 - d_h^2) (l_K - (D_A - d_W)/(w tan phi))] / (E_P pi)
+
     with w = 1 through-bolted (DSV), w = 2 tapped (ESV). Source: VDI 2230 Part 1:2015, Sec. 5.1.2.2, Eqs. (5.1/24),
     (5.1/25). Valid d_W > d_h.
     """

@@ -3,23 +3,23 @@
 The section lies in the local **y-z plane**; the beam axis is **x** (the convention of the FEA
 beam model). Every constructor returns a frozen :class:`Section` whose attributes are quantities:
 
-=================  ==============================================================================
-``area``           A [m^2]
-``centroid_y/_z``  centroid in the coordinates the shape was drawn in [m] (``centroid`` = both)
-``Iy, Iz, Iyz``    centroidal second moments ``Iy = ∫z² dA`` (bending about y), ``Iz = ∫y² dA``,
-                   product ``Iyz = ∫yz dA`` [m^4]
-``I1, I2``         principal second moments (``I1 >= I2``) [m^4]; ``principal_angle`` from +y to
-                   the axis of ``I1``, counter-clockwise [rad]
-``J``              Saint-Venant torsion constant [m^4] (equal to the polar moment only for round
-                   sections); ``Wt`` torsion modulus, ``tau_max = T / Wt`` [m^3]
-``Asy, Asz``       shear areas for shear forces along y and z (Timoshenko beam) [m^2]
-``Wel_y, Wel_z``   elastic section moduli, the smaller of the two fibres: ``Iy / c_z``, ``Iz / c_y`` [m^3]
-``Wpl_y, Wpl_z``   plastic section moduli about axes parallel to y and z [m^3]
-``c_y_pos`` ...    distances from the centroid to the extreme fibres in +y, -y, +z, -z (all >= 0);
-                   ``c_y``/``c_z`` the larger of each pair [m]
-``ry, rz, r_min``  radii of gyration [m]; ``I_min`` the least principal second moment
+=====================  ==============================================================================
+``area``               A [m^2]
+``centroid_y/_z``      centroid in the coordinates the shape was drawn in [m] (``centroid`` = both)
+``Iy, Iz, Iyz``        centroidal second moments ``Iy = ∫z² dA`` (bending about y), ``Iz = ∫y² dA``,
+                       product ``Iyz = ∫yz dA`` [m^4]
+``I1, I2``             principal second moments (``I1 >= I2``) [m^4]; ``principal_angle`` from +y to
+                       the axis of ``I1``, counter-clockwise [rad]
+``J``                  Saint-Venant torsion constant [m^4] (equal to the polar moment only for round
+                       sections); ``Wt`` torsion modulus, ``tau_max = T / Wt`` [m^3]
+``Asy, Asz``           shear areas for shear forces along y and z (Timoshenko beam) [m^2]
+``Wel_y, Wel_z``       elastic section moduli, the smaller of the two fibres: ``Iy / c_z``, ``Iz / c_y`` [m^3]
+``Wpl_y, Wpl_z``       plastic section moduli about axes parallel to y and z [m^3]
+``c_y_pos`` ...        distances from the centroid to the extreme fibres in +y, -y, +z, -z (all >= 0);
+                       ``c_y``/``c_z`` the larger of each pair [m]
+``ry, rz, r_min``      radii of gyration [m]; ``I_min`` the least principal second moment
 ``shear_center_y/_z``  shear centre [m] (same coordinates as the centroid)
-=================  ==============================================================================
+=====================  ==============================================================================
 
 Solid rectangles and round sections use closed forms (exact); the torsion constant of a rectangle
 is the exact series of Saint-Venant's solution. Hollow rectangles and I/T/L/C profiles (with their

@@ -29,7 +29,8 @@ so the map is the identity once every tet is positively oriented (``mesh.orient`
 References
 ----------
 1. G. Dhondt, CalculiX CrunchiX User's Manual, version 2.20, sections 6.2.3 (CPS6), 6.2.5 (CPE6),
-   6.2.6 (C3D10), 7 (input deck keywords: *NODE, *CLOAD, *NODE PRINT) and 11 (.frd result format).
+   6.2.6 (C3D10), 7 (input deck keywords: ``*NODE``, ``*CLOAD``,
+   ``*NODE PRINT``) and 11 (.frd result format).
 """
 
 from __future__ import annotations
@@ -179,7 +180,7 @@ class Deck:
 
 
 def read_inp(path: Path) -> Deck:
-    """Read the keyword blocks this module writes (*NODE, *ELEMENT, *BOUNDARY, *CLOAD) back from a deck,
+    """Read the keyword blocks this module writes (``*NODE``, ``*ELEMENT``, ``*BOUNDARY``, ``*CLOAD``) back from a deck,
     each number through the 20-character field rule of CalculiX (:func:`_ccx_float`)."""
     nodes: dict[int, list[float]] = {}
     elements: list[list[int]] = []

@@ -74,8 +74,14 @@ class Drive:
         profile: the move: a profile of :mod:`mechverify.motion.profiles`, or its name in ``profiles``
             of :meth:`demands`.
         cycle_time: duty cycle for the RMS torque [s] (standstill after the move included).
-        supply_voltage, driver_current, inertia_ratio_limit, ambient_temperature, bus_capacitance,
-            overvoltage_limit: the ratings the motor-fit checks compare with (None: that check is skipped).
+        supply_voltage: DC motors: the supply (driver output) voltage [V].
+        driver_current: the driver's maximum current [A].
+        inertia_ratio_limit: the allowed load-to-rotor inertia ratio (None: the check's default).
+        ambient_temperature: the motor's ambient temperature (winding-temperature check).
+        bus_capacitance: the bus capacitance [F] (regeneration check, with overvoltage_limit).
+        overvoltage_limit: the driver's overvoltage limit [V].
+
+    A rating left None skips the check that needs it.
     """
 
     name: str
