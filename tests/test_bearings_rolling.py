@@ -164,3 +164,16 @@ def test_select_rolling_bearing_by_life():
     assert select_rolling_bearing("cylindrical_roller", "50 kN", "0 N", "1000 rpm", "10000 h") == []
     with pytest.raises(UnknownNameError):
         select_rolling_bearing("spherical_roller", "5 kN", "0 N", "1000 rpm", "10000 h")
+
+
+def test_life_plot_uses_the_roller_exponent():
+    """The bearing_life figure's curve L(P) passes through the check's operating point for a roller bearing
+    (exponent 10/3), i.e. it is not drawn with the ball exponent."""
+    import numpy as np
+
+    from mechverify.reports.plots.bearings import life_load_plot
+
+    r = bc.check_bearing_life(rolling_bearing("NU 205"), "5 kN", "0 N", "1000 rpm", "10000 h")
+    x, y = life_load_plot(r).axes[0].lines[0].get_data()
+    L = float(np.exp(np.interp(np.log(5000.0), np.log(x), np.log(y))))
+    assert L == pytest.approx(r.capacity.m_as("hour"), rel=1e-6)

@@ -10,8 +10,8 @@ from mechverify.reports.plots import new_figure, plotter
 
 @plotter("bearing_life")
 def life_load_plot(r: CheckResult) -> Any:
-    """L_nh = a1 (C/P)^3 10^6/(60 n) over P (log-log), the operating point, the required life and the
-    largest equivalent load that meets it."""
+    """L_nh = a1 (C/P)^p 10^6/(60 n) over P (log-log; p = 3 ball, 10/3 roller), the operating point, the required
+    life and the largest equivalent load that meets it."""
     import numpy as np
 
     d, inp = r.details, r.inputs
@@ -22,12 +22,14 @@ def life_load_plot(r: CheckResult) -> Any:
     req, Lh = r.demand.m_as("hour"), r.capacity.m_as("hour")
     if n <= 0 or P <= 0:
         return None
-    life = lambda p: a1 * (C / p) ** 3 * 1e6 / (60 * n)  # noqa: E731
-    P_allow = C * (a1 * 1e6 / (60 * n * req)) ** (1 / 3)
+    e = float(inp.get("p", 3.0))
+    life = lambda p: a1 * (C / p) ** e * 1e6 / (60 * n)  # noqa: E731
+    P_allow = C * (a1 * 1e6 / (60 * n * req)) ** (1 / e)
     lo, hi = min(P, P_allow, C) / 10, max(P, P_allow, C) * 1.5
     p = np.geomspace(lo, hi, 200)
     fig, ax = new_figure()
-    ax.loglog(p, life(p), color="#0969da", lw=1.5, label=f"L = a1 (C/P)³ at {n:.4g} r/min, C = {C:.4g} N")
+    exp = "³" if e == 3 else "^(10/3)"
+    ax.loglog(p, life(p), color="#0969da", lw=1.5, label=f"L = a1 (C/P){exp} at {n:.4g} r/min, C = {C:.4g} N")
     ax.axhline(req, color="k", lw=1.1, label=f"required {req:.4g} h")
     ax.axvline(P_allow, color="#cf222e", ls="--", lw=1, label=f"largest P for it: {P_allow:.4g} N")
     ax.plot([P], [Lh], "o", color="#2da44e" if Lh >= req else "#cf222e", ms=6,
