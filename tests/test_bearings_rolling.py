@@ -177,3 +177,17 @@ def test_life_plot_uses_the_roller_exponent():
     x, y = life_load_plot(r).axes[0].lines[0].get_data()
     L = float(np.exp(np.interp(np.log(5000.0), np.log(x), np.log(y))))
     assert L == pytest.approx(r.capacity.m_as("hour"), rel=1e-6)
+
+
+def test_cli_lists_the_other_types(capsys):
+    """`mechverify bearings` lists the other types with their verification status; a name of either catalogue
+    shows that bearing; an unknown one is exit 2 with suggestions from both."""
+    from mechverify.cli import main
+
+    assert main(["bearings"]) == 0
+    out = capsys.readouterr().out
+    assert "other rolling bearings" in out and "7206 B" in out and "608" in out
+    assert main(["bearings", "NU 205 ECP"]) == 0
+    assert "cylindrical roller" in capsys.readouterr().out
+    assert main(["bearings", "3020"]) == 2
+    assert "30205" in capsys.readouterr().err

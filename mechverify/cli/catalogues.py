@@ -88,7 +88,29 @@ def run_threads(args: argparse.Namespace) -> int:
 def run_bearings(args: argparse.Namespace) -> int:
     from mechverify.cli._console import opt, out, table
     from mechverify.components.bearings import bearing, bearing_names
+    from mechverify.components.bearings_rolling import rolling_bearing, rolling_bearing_catalogue
+    from mechverify.errors import UnknownNameError
 
+    other = rolling_bearing_catalogue()
+    if args.name:
+        try:
+            bearing(args.name)
+            other = []
+        except UnknownNameError:
+            try:
+                other = [rolling_bearing(args.name)]
+            except UnknownNameError:
+                raise UnknownNameError("bearing", args.name, [*bearing_names(), *(b.designation for b in other)]) \
+                    from None
+    if other:  # angular contact, thrust, tapered, cylindrical, needle (components/data/bearings_rolling.toml)
+        table("other rolling bearings", ["designation", "kind", "d", "D", "B", "C", "C0", "Pu", "limit speed",
+                                         "verified"],
+              [[b.designation, b.kind.replace("_", " "), opt(b.d, "mm"), opt(b.D, "mm"), opt(b.B, "mm"),
+                opt(b.C, "kN"), opt(b.C0, "kN"), opt(b.Pu, "kN"), opt(b.limiting_speed, "rpm", 5),
+                "no" if b.unverified else "yes"] for b in other])
+        if args.name:
+            out.print(f"source: {other[0].source}")
+            return 0
     rows, seen = [], set()
     for n in [args.name] if args.name else bearing_names():
         b = bearing(n)
