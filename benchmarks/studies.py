@@ -1,7 +1,9 @@
 """Study throughput on the lead-screw lift (issue 19): samples per second per core, and Dask's overhead.
 
 Measured: a warm ``verify()`` of the lift (same design object, repeated), one study sample
-(``Design.with_overrides`` + ``verify``, what a worker does), a Monte Carlo study on the local
+(``Design.with_overrides`` + ``verify``, what a worker does: one input changed, then a Monte Carlo draw of
+the three inputs of VARY), the marginal cost of a plate-FEA sample that changes only the pressure with and
+without the reused factorisation (mechverify/fea/factorcache.py), a Monte Carlo study on the local
 process pool (one worker per core) and the same study on a Dask ``LocalCluster`` with as many
 single-threaded worker processes. Dask overhead per sample = (t_dask - t_pool) / n. Also the cost
 of a unit conversion by string (``q.to("kN")``) against a parsed unit, the share the issue names.
@@ -53,6 +55,53 @@ def _load() -> float:
     return os.getloadavg()[0]
 
 
+PLATE = {
+    "design": {"name": "plate"},
+    "materials": {"al": {"base": "Inventor Aluminum 6061", "E": "70 GPa", "nu": 0.3}},
+    "components": {"p": {"type": "plate_fea", "width": "400 mm", "height": "200 mm", "thickness": "4 mm",
+                         "material": "al", "supports": [{"edges": "all", "type": "pinned"}], "mesh_size": "5 mm",
+                         "deflection_limit": "0.5 mm"}},
+    "load_cases": {"q": {"p": {"pressure": "10 kPa"}}},
+}
+
+
+def _plate_rows(samples: int = 12) -> dict:
+    """Marginal CPU per sample of a plate-FEA study whose samples vary only the pressure: with the factorised
+    system reused (mechverify/fea/factorcache.py) and with the cache off (every sample meshes, assembles and
+    factorises)."""
+    import copy
+
+    from mechverify.fea import factorcache
+    from mechverify.studies import Study, execution
+
+    vary = {"load_cases.q.p.pressure": f"5 kPa:15 kPa:{samples}"}
+
+    def run() -> float:
+        execution._BASE.clear()
+        factorcache.CACHE.clear()
+        study = Study(copy.deepcopy(PLATE), vary=vary)
+        t0 = time.process_time()
+        study.run("serial")
+        return (time.process_time() - t0) / samples
+
+    cached = min(run() for _ in range(3))
+    builds = factorcache.CACHE.builds
+    key_of = factorcache.key_of
+    factorcache.key_of = lambda *parts: None
+    try:
+        uncached = min(run() for _ in range(2))
+    finally:
+        factorcache.key_of = key_of
+    from mechverify.design.design import Design
+    from mechverify.design.loader import parse
+
+    d = Design(parse(copy.deepcopy(PLATE)))
+    d.verify()
+    dofs = d["p"].solved["q"][1].info.unknowns
+    return {"plate_samples": samples, "plate_builds": builds, "plate_dofs": dofs,
+            "plate_sample_cpu_ms": cached * 1e3, "plate_sample_uncached_cpu_ms": uncached * 1e3}
+
+
 def main(argv: list[str]) -> dict:
     from mechverify.design import load
     from mechverify.studies import Study
@@ -66,7 +115,16 @@ def main(argv: list[str]) -> dict:
     warm = _per_call(d.verify, 20)
     one = lambda: d.with_overrides({"components.lift.mass": "15.0 kg"}).verify()  # noqa: E731
     sample = _per_call(one, 20)
-    sample_cpu = _cpu_per_call(one, 40)
+    sample_cpu = min(_cpu_per_call(one, 40) for _ in range(5))
+    # a Monte Carlo sample: the three inputs of VARY drawn (mass, lifted load, the profile's acceleration),
+    # so that only the horizontal screw's check is unchanged (design/reuse.py)
+    draws = Study(LIFT, vary=VARY, samples=40, seed=3)
+    mc_ovs = [draws.overrides(x) for x in draws.inputs()]
+    mc_iter = iter(mc_ovs * 100)
+    mc = lambda: d.with_overrides(next(mc_iter)).verify()  # noqa: E731
+    mc_cpu = min(_cpu_per_call(mc, 40) for _ in range(5))
+    override_cpu = min(_cpu_per_call(lambda: d.with_overrides(mc_ovs[0]), 40) for _ in range(5))
+    plate = _plate_rows()
     q, unit = Q(1234.0, "N"), ureg.Unit("kN")
     to_str = _per_call(lambda: q.to("kN"), 2000)
     to_unit = _per_call(lambda: q.to(unit), 2000)
@@ -78,7 +136,10 @@ def main(argv: list[str]) -> dict:
     t_pool, cpu_pool = time.perf_counter() - t0, _children_cpu() - c0
     row = {"samples": n, "cores": cores, "warm_verify_ms": warm * 1e3, "sample_ms": sample * 1e3,
            "serial_samples_per_s": 1 / sample,
-           "sample_cpu_ms": sample_cpu * 1e3, "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_s": t_pool,
+           "sample_cpu_ms": sample_cpu * 1e3, "samples_per_cpu_s": 1 / sample_cpu,
+           "mc_sample_cpu_ms": mc_cpu * 1e3, "mc_samples_per_cpu_s": 1 / mc_cpu,
+           "mc_override_cpu_ms": override_cpu * 1e3, **plate,
+           "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_s": t_pool,
            "pool_samples_per_s_per_core": n / t_pool / cores, "load_average": _load(),
            "to_string_unit_us": to_str * 1e6, "to_parsed_unit_us": to_unit * 1e6, "target_per_core": 200}
     try:
@@ -109,6 +170,11 @@ def main(argv: list[str]) -> dict:
     print(f"lift: warm verify {warm * 1e3:.1f} ms, one sample (override + verify) {sample * 1e3:.1f} ms "
           f"= {1 / sample:.0f} samples/s on one core (target 200)")
     print(f"  CPU per sample: {sample_cpu * 1e3:.1f} ms in this process = {1 / sample_cpu:.0f} samples per CPU-second")
+    print(f"  Monte Carlo sample (3 inputs drawn): {mc_cpu * 1e3:.1f} ms CPU = {1 / mc_cpu:.0f} samples per "
+          f"CPU-second (with_overrides alone {override_cpu * 1e3:.1f} ms)")
+    print(f"plate FEA study over a pressure ({plate['plate_dofs']} DOF): {plate['plate_sample_cpu_ms']:.1f} ms CPU per "
+          f"sample with the factorisation reused, {plate['plate_sample_uncached_cpu_ms']:.1f} ms without "
+          f"({plate['plate_builds']} build for {plate['plate_samples']} samples)")
     print(f"process pool, {cores} workers, {n} samples: {t_pool:.2f} s = {row['pool_samples_per_s_per_core']:.1f} "
           f"samples/s per core (wall; load average {_load():.1f}); worker CPU {cpu_pool / n * 1e3:.1f} ms per sample")
     if "dask_s" in row:
