@@ -277,14 +277,15 @@ def verify(design_path: str | Path = DESIGN) -> tuple[Any, ResultSet]:
 def write_reports(out_dir: str | Path = HERE, pdf: bool = True, run: tuple[Any, ResultSet] | None = None,
                   plates_run: tuple[Any, ResultSet] | None = None) -> list[Path]:
     """Write report.html (and report.pdf) of the verified example (design.toml, then design_plates.toml)."""
-    from mechverify.reports import write_report
+    from mechverify.reports import render_html, write_report
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     runs = [run or verify(), plates_run or verify(PLATES)]
-    paths = [write_report(runs, out / "report.html")]
+    html = render_html(runs)  # once for both files
+    paths = [write_report(runs, out / "report.html", html=html)]
     if pdf:
-        paths.append(write_report(runs, out / "report.pdf"))
+        paths.append(write_report(runs, out / "report.pdf", html=html))
     return paths
 
 

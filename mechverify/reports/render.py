@@ -339,13 +339,18 @@ def render_html(runs: list[tuple[Any, ResultSet]], date: str | None = None, deta
     )
 
 
-def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path, detail: str = "all") -> Path:
-    """Write ``path`` (.html or .pdf) atomically; return it. ``detail``: see :func:`render_html`."""
+def write_report(runs: list[tuple[Any, ResultSet]], path: str | Path, detail: str = "all",
+                 html: str | None = None) -> Path:
+    """Write ``path`` (.html or .pdf) atomically; return it. ``detail``: see :func:`render_html`.
+
+    ``html``: the report already rendered by :func:`render_html` for these runs (writing the HTML and
+    the PDF of one review renders its formulas and figures once).
+    """
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".html", ".htm", ".pdf"):
         raise InputError(f"report: expected a .html or .pdf file name, got {str(path)!r}")
-    text = render_html(runs, detail=detail)
+    text = render_html(runs, detail=detail) if html is None else html
     if suffix != ".pdf":
         return atomic_write(path, text)
 
