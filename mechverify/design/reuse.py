@@ -45,8 +45,20 @@ def _canon(v: Any) -> Any:
     if isinstance(v, np.generic):
         return ("G", v.dtype.str, v.tobytes())
     if dataclasses.is_dataclass(v) and not isinstance(v, type):
-        return ("C", t.__qualname__, tuple((f.name, _canon(getattr(v, f.name))) for f in dataclasses.fields(v)))
+        frozen = v.__dataclass_params__.frozen  # type: ignore[attr-defined]
+        hit = _FROZEN.get(id(v)) if frozen else None
+        if hit is not None and hit[0] is v:
+            return hit[1]
+        out = ("C", t.__qualname__, tuple((f.name, _canon(getattr(v, f.name))) for f in dataclasses.fields(v)))
+        if frozen:  # library materials are shared by every design of the process: reduced once
+            if len(_FROZEN) >= 512:
+                _FROZEN.clear()
+            _FROZEN[id(v)] = (v, out)
+        return out
     return ("?", object())  # equal to nothing: the checks run again
+
+
+_FROZEN: dict[int, tuple[Any, Any]] = {}  # id -> (the frozen dataclass, its reduced value); holds the object
 
 
 def _names(v: Any, known: Mapping[str, Any], out: set[str]) -> None:
