@@ -363,3 +363,45 @@ def test_modal_two_masses_equals_the_influence_coefficient_eigenproblem() -> Non
     assert w == pytest.approx(tuple(exact), rel=1e-6)
     c = critical_speed(sh, theory="euler")
     assert c.dunkerley <= w[0] <= c.rayleigh
+
+
+def test_drive_output_torque_becomes_the_shaft_torque(tmp_path: Path) -> None:
+    """A belt-and-drum linear axis (the drive example of tests/test_design_drives.py: 0.5 kg, mu = 0.1, a = 2 m/s^2,
+    drum D = 20 mm, eta_drum = 0.9, belt 20:40): the drive's output ``output_torque_peak`` is the torque on the drum
+    shaft, T = (m a + mu m g) (D/2) / eta_drum (hand calculation; drum inertia 0), and the shaft reads it as its
+    ``torque``: the pulley key's shear 2T/(d b l) (DIN 6885-1 4 x 4 key for d = 12 mm, l = 15 mm)."""
+    import mechverify.design
+
+    text = '''
+[design]
+name = "drum axis"
+[profiles.move]
+type = "trapezoidal"
+distance = "300 mm"
+max_velocity = "0.2 m/s"
+acceleration = "2 m/s^2"
+[components.slide]
+type = "drive"
+motor = "maxon 6V 10.3 mNm"
+transmission = [{ type = "belt", driver = 20, driven = 40, efficiency = 0.95 },
+                { type = "drum", diameter = "20 mm", efficiency = 0.9 }]
+mass = "0.5 kg"
+friction_coefficient = 0.1
+profile = "move"
+[components.s]
+type = "shaft"
+material = "AISI 1045 CD"
+segments = [{ length = "30 mm", diameter = "12 mm" }, { length = "60 mm", diameter = "15 mm" }]
+supports = [{ name = "front", at = "40 mm" }, { name = "rear", at = "80 mm" }]
+features = [{ kind = "keyseat", at = "15 mm", length = "15 mm", name = "pulley key" }]
+elements = [{ kind = "pulley", at = "15 mm", diameter = "50 mm", ratio = 3, torque_share = 1 },
+            { kind = "coupling", at = "90 mm", torque_share = -1 }]
+[load_cases.run.s]
+torque = "slide.output_torque_peak"
+'''
+    p = tmp_path / "d.toml"
+    p.write_text(text)
+    res = {(r.component, r.check): r for r in mechverify.design.load(p).verify()}
+    T = (0.5 * 2 + 0.1 * 0.5 * 9.80665) * 0.010 / 0.9
+    tau = res[("s", "shaft_key_shear")].demand.m_as("Pa")
+    assert tau == pytest.approx(2 * T / (0.012 * 0.004 * 0.015), rel=1e-6)

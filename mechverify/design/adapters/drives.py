@@ -22,7 +22,7 @@ from typing import Any
 from mechverify.checks import drives as dc
 from mechverify.checks.result import CheckResult
 from mechverify.design.adapters.drive_parsing import parse_gearhead, parse_motor, parse_stages
-from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
+from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError, MechverifyError
 from mechverify.motion.drive import LINEAR_KEYS, ROTARY_KEYS, CaseDemands, Drive, load_kind
 from mechverify.units import Q
@@ -79,6 +79,7 @@ def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
               p.get("cycle_time"), p.get("supply_voltage"), p.get("driver_current"), limit,
               ambient_temperature=p.get("ambient_temperature"), bus_capacitance=p.get("bus_capacitance"),
               overvoltage_limit=p.get("overvoltage_limit"))
+    d.memo["profiles"] = dict(ctx.get("profile_objects", {}))  # for outputs, which get no design context
     # validate the chain (linear/rotary) and the own profile now, so the errors carry the drive's key path
     tr = d.trains()[0][1]
     prof = ctx.get("profile_objects", {}).get(p["profile"])
@@ -91,6 +92,21 @@ def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
                          f"({prof.duration:~P})")
     return d
 
+
+
+def _output_torque_peak(d: Drive, loads: Any) -> Any:
+    """Largest |torque| over the profile (and the friction variants) at the output of the last stage with a rotary
+    output - the shaft that drives the last linear stage (a drum, a screw) or carries a rotary load - or at the motor
+    shaft when no stage has a rotary output. Read by a ``shaft`` as its ``torque`` (issue 21)."""
+    import numpy as np
+
+    cases = [("", dict(loads))] if loads else []
+    ((_, _, variants),) = d.demands(cases, d.memo.get("profiles", {}))
+    peak = 0.0
+    for _, dem in variants:
+        rotary = [s for s in dem.stages if s.output_kind == "angle"]
+        peak = max(peak, float(np.max(np.abs(rotary[-1].output_effort if rotary else dem.motor_torque))))
+    return Q(peak, "N*m")
 
 
 def _run(fn: Callable[..., CheckResult]) -> Callable[[Drive, Any, Any], list[CheckResult]]:
@@ -154,4 +170,7 @@ DRIVE = REGISTRY.register(ComponentType(
         Field("load_factor", "float", "multiplies mass or inertia, external force or torque and gravity torque"),
     ),
     checks=tuple(CheckSpec.of(fn, _run(fn)) for fn in dc.DRIVE_CHECKS),  # in report order
+    outputs=(Output("output_torque_peak", "torque", "largest torque at the output of the last rotary stage (the shaft "
+                    "driving a drum or screw, or carrying a rotary load) over the profile; the motor torque without "
+                    "a rotary stage", _output_torque_peak),),
 ))
