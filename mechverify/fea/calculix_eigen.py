@@ -46,12 +46,13 @@ def _deck(model: Any, work: Path, step: str, n: int, loads: bool) -> tuple[int, 
     return model.nodes.shape[1], ed.shape[1]
 
 
-def _run(model: Any, step: str, n: int, loads: bool, keep: str | Path | None) -> tuple[np.ndarray, float]:
+def _run(model: Any, step: str, n: int, loads: bool, keep: str | Path | None,
+         threads: int = 1) -> tuple[np.ndarray, float]:
     with tempfile.TemporaryDirectory(prefix="mv-ccx-") as tmp:
         work = Path(keep) if keep else Path(tmp)
         work.mkdir(parents=True, exist_ok=True)
         nn, ne = _deck(model, work, step, n, loads)
-        res = cx.run_deck(work, nn, ne)
+        res = cx.run_deck(work, nn, ne, threads=threads)
         dat = (work / "job.dat").read_text()
     return _table(dat, step), res.wall_time
 
@@ -73,9 +74,11 @@ def _table(dat: str, step: str) -> np.ndarray:
     return np.array([r[:5] for r in rows if len(r) >= 2], dtype=object)
 
 
-def frequencies(model: Any, n_modes: int, keep: str | Path | None = None) -> tuple[np.ndarray, float]:
-    """CalculiX's first ``n_modes`` natural frequencies [Hz] of ``model`` and ccx's wall time [s]."""
-    tab, wall = _run(model, "*FREQUENCY", n_modes, False, keep)
+def frequencies(model: Any, n_modes: int, keep: str | Path | None = None, threads: int = 1
+                ) -> tuple[np.ndarray, float]:
+    """CalculiX's first ``n_modes`` natural frequencies [Hz] of ``model`` and ccx's wall time [s] (``threads``
+    for its equation solver)."""
+    tab, wall = _run(model, "*FREQUENCY", n_modes, False, keep, threads)
     # columns: mode, eigenvalue (rad²/s²), real part (rad/s), cycles/time (Hz), imaginary part
     return np.array([float(r[3]) for r in tab]), wall
 

@@ -2,7 +2,8 @@
 and a two-mesh convergence check of the governing result.
 
 - :class:`SharedSolve` / :func:`solve_cases` - the load cases of one mesh, material and supports solved on
-  one sparse LU factorisation (small and mid-size models) or one multigrid hierarchy reused by CG for
+  one sparse factorisation (CHOLMOD or SuperLU, :mod:`mechverify.fea.factor`; small and mid-size models;
+  :meth:`SharedSolve.solve_many` solves a block of load vectors at once) or one multigrid hierarchy reused by CG for
   every case (large 3D models): the marginal cost of a case is a pair of triangular solves (or one CG run),
   not a new factorisation (``benchmarks/fea_load_cases.py`` measures it).
 - :func:`estimate_dofs`, :func:`require_memory` - the unknowns of a P2 tetrahedral mesh of a volume at an
@@ -29,9 +30,9 @@ from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
-import scipy.sparse.linalg as spl
 
 from mechverify.errors import InputError, ModelError
+from mechverify.fea.factor import factorize
 from mechverify.fea.linsolve import (
     ITERATIVE_THRESHOLD_3D,
     SolveInfo,
@@ -80,12 +81,7 @@ class SharedSolve:
         if method == "auto":
             method = "amg" if dim == 3 and free.size > ITERATIVE_THRESHOLD_3D else "direct"
         if method == "direct":
-            try:
-                lu = spl.splu(Kff.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                              options={"SymmetricMode": True})
-            except RuntimeError as exc:
-                raise ModelError(f"the stiffness matrix is singular ({exc}); the model has a mechanism") from None
-            apply = lu.solve
+            apply = factorize(Kff, "auto").solve  # CHOLMOD when installed, else SuperLU
         elif method == "amg":
             m = model.mesh.mesh
             P = p1_prolongation(m.nvertices, m.edges, 3)
@@ -93,6 +89,29 @@ class SharedSolve:
         else:
             raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
         return cls(K, held, method, apply, Kff, free, time.perf_counter() - t0)
+
+    def solve_many(self, F: np.ndarray) -> tuple[np.ndarray, SolveInfo]:
+        """``U[n, k]`` with ``K U = F`` for the ``k`` load vectors ``F[n, k]`` (zero at the held DOFs): one block
+        solve on the factorisation (BLAS-3: a fraction of ``k`` single solves), or one CG run per column on the
+        shared multigrid hierarchy. The studies of many samples that change only loads call this once."""
+        F = np.asarray(F, dtype=float)
+        if F.ndim != 2 or F.shape[0] != self.K.shape[0]:
+            raise InputError(f"F: expected [{self.K.shape[0]}, k] load vectors, got shape {F.shape}")
+        t0 = time.perf_counter()
+        R = F[self._free]
+        iters = 0
+        if self.method == "direct":
+            X = self._apply(R)
+        else:
+            X = np.empty_like(R)
+            for j in range(R.shape[1]):
+                X[:, j], it = pcg(self._Kff, R[:, j], self._apply, self.rtol)
+                iters = max(iters, it)
+        U = np.zeros_like(F)
+        U[self._free] = X
+        res = float(np.linalg.norm(self._Kff @ X - R) / max(np.linalg.norm(R), 1e-300))
+        return U, SolveInfo(f"{self.method} (shared, block of {F.shape[1]})", int(self._free.size), iters, res,
+                            time.perf_counter() - t0)
 
     def solve(self, f: np.ndarray, held: np.ndarray | None = None) -> tuple[np.ndarray, SolveInfo]:
         """``u`` with ``K u = f`` at the free DOFs, zero at the held ones, and how it was solved."""

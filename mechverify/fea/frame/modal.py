@@ -4,7 +4,8 @@
     >>> from mechverify.fea.frame import Frame, Member, FrameSupport as Support
     >>> from mechverify.fea.frame.modal import frame_modes
     >>> fr = Frame({"A": ["0 mm"] * 3, "B": ["500 mm", "0 mm", "0 mm"]},
-    ...            [Member("A", "B", sections.circle("20 mm"), "Structural Steel")], [Support("A", "fixed")], theory="euler")
+    ...            [Member("A", "B", sections.circle("20 mm"), "Structural Steel")], [Support("A", "fixed")],
+    ...            theory="euler")
     >>> round(float(frame_modes(fr, 2).frequencies.m[0]), 1)   # Euler-Bernoulli: 1.8751² √(EI/(ρA)) / (2π L²)
     56.5
 
