@@ -21,6 +21,7 @@ from typing import Any, TypeAlias
 import numpy as np
 import pint
 
+from mechverify import pint_cache as _pint_cache
 from mechverify.errors import InputError, UnitError
 
 
@@ -74,6 +75,7 @@ QuantityLike: TypeAlias = pint.Quantity | str
 ureg.define("mega_psi = 1e6 * psi = Mpsi")
 ureg.define("@alias turn = rev")  # "5000 rev": revolutions (a count of turns, i.e. an angle)
 pint.set_application_registry(ureg)
+_pint_cache.install(ureg)  # parsed unit strings and conversion factors cached (issue 19; mechverify/pint_cache.py)
 
 #: Dimension name -> (pint dimensionality, SI unit used inside the package).
 DIMENSIONS: dict[str, tuple[str, str]] = {
