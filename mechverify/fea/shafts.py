@@ -167,6 +167,8 @@ def analyse(shaft: Shaft, theory: str = "timoshenko") -> ShaftAnalysis:
         InputError: the bearings do not hold the shaft (the frame names the free motion).
     """
     st = _stations(shaft)
+    if all(not any(ld.force) and not ld.moment[1] and not ld.moment[2] for ld in shaft.loads):
+        return _pure_torsion(shaft, st)
     try:
         fr = _frame(shaft, st, theory)
         res = fr.solve(_point_loads(shaft), name="shaft")
@@ -199,6 +201,30 @@ def analyse(shaft: Shaft, theory: str = "timoshenko") -> ShaftAnalysis:
     slopes = {k: node_slopes[x] for k, x in near.items()}
     return ShaftAnalysis(shaft, arr["x"], arr["N"], arr["Vy"], arr["Vz"], arr["My"], arr["Mz"], arr["T"], arr["uy"],
                          arr["uz"], reactions, slopes, node_slopes, {k: node_rot[x] for k, x in near.items()})
+
+
+def _pure_torsion(shaft: Shaft, st: list[float]) -> ShaftAnalysis:
+    """A shaft loaded by balanced torques only (no force, no bending moment): no bending, no reactions, the torque
+    diagram T(x) = -(sum of the torques applied at or left of x) in the frame's sign convention. Exact statics;
+    solved directly because the frame's equilibrium check has no scale for self-equilibrated moments.
+
+    Raises:
+        ModelError: one pinned or spring bearing only (the shaft could tilt; the frame would name that too).
+    """
+    if len(shaft.supports) < 2 and shaft.supports[0].kind != "fixed":
+        raise ModelError(f"shaft {shaft.name}: one {shaft.supports[0].kind} bearing ({shaft.supports[0].name}) leaves "
+                         "the shaft free to tilt about it; give two bearings or a fixed one")
+    xs, Ts = [], []
+    for a, b in zip(st[:-1], st[1:], strict=True):
+        T = -sum(ld.torque for ld in shaft.loads if ld.x <= a + 1e-12)
+        xs.append(np.linspace(a, b, 21))
+        Ts.append(np.full(21, T))
+    x, T = np.concatenate(xs), np.concatenate(Ts)
+    z = np.zeros_like(x)
+    reactions = {sp.name: Reaction(sp.name, sp.x, (0.0, 0.0, 0.0)) for sp in shaft.supports}
+    return ShaftAnalysis(shaft, x, z.copy(), z.copy(), z.copy(), z.copy(), z.copy(), T, z.copy(), z.copy(), reactions,
+                         {sp.name: 0.0 for sp in shaft.supports}, dict.fromkeys(st, 0.0),
+                         {sp.name: (0.0, 0.0) for sp in shaft.supports})
 
 
 @dataclass(frozen=True)
