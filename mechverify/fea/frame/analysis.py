@@ -12,7 +12,6 @@ References
 
 from __future__ import annotations
 
-import copy
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -91,8 +90,7 @@ class Frame:
             if not isinstance(s, Spring):
                 raise InputError(f"springs[{i}]: expected a Spring, got {type(s).__name__}")
             if not s.name:
-                s = copy.copy(s)
-                object.__setattr__(s, "name", f"S{i + 1}")
+                s = s.renamed(f"S{i + 1}")
             self.springs.append(s)
         self.ends = [(self.point(m.start, f"member {m.name}: start"), self.point(m.end, f"member {m.name}: end"))
                      for m in self.members]

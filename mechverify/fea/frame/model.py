@@ -360,6 +360,15 @@ class Spring:
             comps[DOF_NAMES[i]] = val
         set_fields(self, stiffness=comps)
 
+    def renamed(self, name: str) -> Spring:
+        """This spring under another name (a new instance: the frame names unnamed springs S1, S2, ...)."""
+        import dataclasses
+
+        axial = None if self.axial is None else from_si(self.axial, "force_per_length")
+        stiffness = {k: from_si(v, "torsional_stiffness" if DOF_NAMES.index(k) >= 3 else "force_per_length")
+                     for k, v in self.stiffness.items()}
+        return dataclasses.replace(self, name=name, axial=axial, stiffness=stiffness)
+
 
 # -------------------------------------------------------------------------------------------- loads
 def _axes(axes: str, what: str) -> None:
