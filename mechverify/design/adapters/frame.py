@@ -2,13 +2,13 @@
 
 A load case with ``combination = {case = factor}`` is the factored sum of other cases; all cases and
 combinations of a frame are solved on one factorisation; checks (:mod:`mechverify.checks.frames`) run
-per case and the governing one is reported (the envelope). Keys: docs/design-files.md.
+per case and the governing one is reported (the envelope). Keys: docs/design-files.md; parsing in
+:mod:`.frame_parsing`.
 """
 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -16,17 +16,14 @@ import numpy as np
 from mechverify.checks import frames as fc
 from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
-from mechverify.components.sections import Section
-from mechverify.design.adapters.common import inline_table
-from mechverify.design.adapters.members import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS, build_section
+from mechverify.design.adapters.frame_parsing import case_loads, combination, items, make, parse_members, vec, where
+from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
 from mechverify.fea import frame as fe
-from mechverify.units import Q, as_quantity, fmt
+from mechverify.units import Q, fmt
 
 FATIGUE_CRITERIA = ("goodman", "gerber", "soderberg", "asme_elliptic", "morrow")
-PROPERTIES = {"area": "area", "Iy": "second_moment", "Iz": "second_moment", "J": "second_moment", "Asy": "area",
-              "Asz": "area", "c_y": "length", "c_z": "length", "Wt": "volume"}
 LOADS = "point_loads|member_loads|distributed_loads|self_weight|settlements|combination"
 
 
@@ -48,93 +45,24 @@ class FrameComponent:
         if ctx.load_case not in self.solved:
             name, g = self.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2"))
             mine = {c: comps[name] for c, comps in ctx.design.data.load_cases.items() if name in comps}
-            cases = {c: _loads(v, c, name, g) for c, v in mine.items() if "combination" not in v}
-            combos = [_combination(v, c, name, cases) for c, v in mine.items() if "combination" in v]
+            cases = {c: case_loads(v, c, name, g) for c, v in mine.items() if "combination" not in v}
+            combos = [combination(v, c, name, cases) for c, v in mine.items() if "combination" in v]
             self.solved.update(self.frame.analyse(cases, combos).results)
         return self.solved[ctx.load_case]
 
 
-# --------------------------------------------------------------------------------------------- parsing
-def _where(v: Any, path: str) -> Any:
-    if isinstance(v, str):
-        return v
-    if isinstance(v, list) and len(v) == 3:
-        return [as_quantity(c, "length", f"{path}[{i}]") for i, c in enumerate(v)]
-    raise InputError(f"{path}: expected a node name or three lengths [x, y, z], got {v!r}")
-
-
-def _vec(v: Any, dim: str, path: str) -> list[Any]:
-    if not isinstance(v, list) or len(v) != 3:
-        raise InputError(f"{path}: expected three components [x, y, z] with units, got {v!r}")
-    return [as_quantity(c, dim, f"{path}[{i}]") for i, c in enumerate(v)]
-
-
-def _make(path: str, fn: Any, *args: Any, **kw: Any) -> Any:
-    try:
-        return fn(*args, **kw)
-    except MechverifyError as exc:
-        raise InputError(f"{path}: {exc}") from None
-
-
-def _section_table(t: Any, path: str) -> Section:
-    if isinstance(t, dict) and t.get("kind") == "properties":
-        t = inline_table(t, path, ("kind", *PROPERTIES), ("kind", "area", "Iy", "Iz", "J"))
-        p = {k: as_quantity(v, PROPERTIES[k], f"{path}.{k}") for k, v in t.items() if k != "kind"}
-        return _make(path, fe.section_from_properties, p.pop("area"), p.pop("Iy"), p.pop("Iz"), p.pop("J"), **p)
-    t = inline_table(t, path, ("kind", *SECTION_DIMENSIONS), ("kind",))
-    if t["kind"] not in (*SECTION_KINDS, *SECTION_ALIASES):
-        raise InputError(f"{path}.kind: expected one of {', '.join(SECTION_KINDS)} or properties, got {t['kind']!r}")
-    p = {"section": t["kind"], **{k: as_quantity(v, "length", f"{path}.{k}") for k, v in t.items() if k != "kind"}}
-    return _make(path[:path.rindex(".")], build_section, p)
-
-
-MEMBER_KEYS = ("name", "start", "end", "section", "material", "orientation", "theory", "divisions", "releases_start",
-               "releases_end")
-
-
-def _members(p: dict[str, Any], ctx: dict[str, Any]) -> list[fe.Member]:
-    default = _make("section", build_section, p) if "section" in p else None
-    out = []
-    for i, t in enumerate(p["members"]):
-        path = f"members[{i}]"
-        t = inline_table(t, path, MEMBER_KEYS, ("start", "end"))
-        sec = _section_table(t["section"], f"{path}.section") if "section" in t else default
-        if sec is None:
-            raise InputError(f"{path}.section: missing, and the frame gives no default section (section = ...)")
-        mat = _make(f"{path}.material", ctx["materials"].get, t["material"]) if "material" in t else p.get("material")
-        if mat is None:
-            raise InputError(f"{path}.material: missing, and the frame gives no default material")
-        orient = t.get("orientation")
-        if orient is not None and (not isinstance(orient, list) or len(orient) != 3
-                                   or not all(isinstance(c, int | float) for c in orient)):
-            raise InputError(f"{path}.orientation: expected three numbers (a direction), got {orient!r}")
-        div = t.get("divisions", 1)
-        if not isinstance(div, int) or isinstance(div, bool) or div < 1:
-            raise InputError(f"{path}.divisions: expected a whole number >= 1, got {div!r}")
-        out.append(_make(path, fe.Member, _where(t["start"], f"{path}.start"), _where(t["end"], f"{path}.end"), sec,
-                         mat, str(t.get("name", f"M{i + 1}")), orient, t.get("theory"), div, t.get("releases_start"),
-                         t.get("releases_end")))
-    return out
-
-
-def _items(p: Mapping[str, Any], key: str, keys: tuple[str, ...], required: tuple[str, ...], base: str = ""
-           ) -> list[tuple[str, dict[str, Any]]]:
-    return [(f"{base}{key}[{i}]", inline_table(t, f"{base}{key}[{i}]", keys, required))
-            for i, t in enumerate(p.get(key, []))]
-
-
 def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
-    nodes = {str(k): _vec(v, "length", f"nodes.{k}") for k, v in p.get("nodes", {}).items()}
-    sups = [_make(path, fe.Support, _where(t["at"], f"{path}.at"), t.get("type", "fixed"), t.get("direction", "z"),
+    nodes = {str(k): vec(v, "length", f"nodes.{k}") for k, v in p.get("nodes", {}).items()}
+    sups = [make(path, fe.FrameSupport, where(t["at"], f"{path}.at"), t.get("type", "fixed"), t.get("direction", "z"),
                   tuple(t.get("hold", ())), t.get("springs", {}), t.get("one_way", {}))
-            for path, t in _items(p, "supports", ("at", "type", "direction", "hold", "springs", "one_way"), ("at",))]
-    hinges = [_make(path, fe.Hinge, _where(t["at"], f"{path}.at"), t.get("axis", "z"))
-              for path, t in _items(p, "hinges", ("at", "axis"), ("at",))]
-    springs = [_make(path, fe.Spring, _where(t["start"], f"{path}.start"), _where(t["end"], f"{path}.end"),
+            for path, t in items(p, "supports", ("at", "type", "direction", "hold", "springs", "one_way"), ("at",))]
+    hinges = [make(path, fe.Hinge, where(t["at"], f"{path}.at"), t.get("axis", "z"))
+              for path, t in items(p, "hinges", ("at", "axis"), ("at",))]
+    springs = [make(path, fe.Spring, where(t["start"], f"{path}.start"), where(t["end"], f"{path}.end"),
                      t.get("axial"), t.get("stiffness", {}), str(t.get("name", "")))
-               for path, t in _items(p, "springs", ("name", "start", "end", "axial", "stiffness"), ("start", "end"))]
-    members = _members(p, ctx) if p.get("members") else []
-    frame = _make(p["_name"], fe.Frame, nodes, members, sups, hinges, p["theory"], name=p["_name"], springs=springs)
+               for path, t in items(p, "springs", ("name", "start", "end", "axial", "stiffness"), ("start", "end"))]
+    members = parse_members(p, ctx) if p.get("members") else []
+    frame = make(p["_name"], fe.Frame, nodes, members, sups, hinges, p["theory"], name=p["_name"], springs=springs)
     if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
         raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
     limit: Any = p.get("deflection_limit")
@@ -161,48 +89,6 @@ def _reach(frame: fe.Frame) -> float:
     pts = [p for e in frame.ends + frame.spring_ends for p in e]
     sup = [frame.point(s.at) for s in frame.supports] or pts[:1]
     return max(float(np.linalg.norm(a - b)) for a in sup for b in pts)
-
-
-def _loads(loads: Mapping[str, Any], case: str, comp: str, g: Any) -> list[Any]:
-    b = f"load_cases.{case}.{comp}."
-    out: list[Any] = []
-    for path, t in _items(loads, "point_loads", ("at", "force", "moment"), ("at",), b):
-        if "force" not in t and "moment" not in t:
-            raise InputError(f"{path}: give force and/or moment")
-        out.append(fe.PointLoad(_where(t["at"], f"{path}.at"),
-                                _vec(t["force"], "force", f"{path}.force") if "force" in t else None,
-                                _vec(t["moment"], "torque", f"{path}.moment") if "moment" in t else None))
-    for path, t in _items(loads, "member_loads", ("member", "position", "force", "moment", "axes"),
-                          ("member", "position"), b):
-        out.append(_make(path, fe.MemberPointLoad, str(t["member"]), as_quantity(t["position"], "length", path),
-                         _vec(t["force"], "force", f"{path}.force") if "force" in t else None,
-                         _vec(t["moment"], "torque", f"{path}.moment") if "moment" in t else None,
-                         t.get("axes", "local")))
-    for path, t in _items(loads, "distributed_loads", ("member", "load", "axes", "start", "end", "load_end"),
-                          ("member", "load"), b):
-        w = _vec(t["load"], "force_per_length", f"{path}.load")
-        w1 = _vec(t["load_end"], "force_per_length", f"{path}.load_end") if "load_end" in t else None
-        out.append(_make(path, fe.DistributedLoad, str(t["member"]), w, t.get("axes", "global"), t.get("start"),
-                         t.get("end"), w1))
-    for path, t in _items(loads, "settlements", ("at", "values"), ("at", "values"), b):
-        out.append(_make(path, fe.SupportDisplacement, _where(t["at"], f"{path}.at"), t["values"]))
-    if loads.get("self_weight"):
-        out.append(fe.SelfWeight(g))
-    return out
-
-
-def _combination(loads: Mapping[str, Any], case: str, comp: str, cases: Mapping[str, Any]) -> fe.LoadCombination:
-    path = f"load_cases.{case}.{comp}"
-    others = [k for k in loads if k != "combination"]
-    if others:
-        raise InputError(f"{path}.{others[0]}: a combination case takes no loads of its own (add a load case)")
-    f = loads["combination"]
-    if not isinstance(f, dict) or not f:
-        raise InputError(f"{path}.combination: expected a table {{case = factor, ...}}, got {f!r}")
-    for k in f:
-        if k not in cases:
-            raise InputError(f"{path}.combination.{k}: not a load case of {comp} (without a combination of its own)")
-    return _make(f"{path}.combination", fe.LoadCombination, case, f)
 
 
 # ---------------------------------------------------------------------------------------------- checks
