@@ -5,7 +5,9 @@
 drive, the screw bent in the horizontal posture) and ``design_plates.toml`` (its arm and base plates, plate
 FEA) with the example's ``run.py``, prints the results table of each and one combined verdict, and writes
 ``out/lead_screw_lift/report.html`` and ``report.pdf`` (both designs) in the repository (``--out DIR``
-elsewhere, ``--no-pdf`` for the HTML only).
+elsewhere, ``--no-pdf`` for the HTML only). As ``mechverify check --report`` does, the reports give the
+formulas, inputs and figures of the failing and warning checks and summarise the passing ones
+(``--detail all`` details every check: 58 PDF pages instead of 22, twice the time).
 
 The demo writes into ``out/`` (ignored by git) and never over the committed ``examples/lead_screw_lift/report.*``:
 a report records the date and the git commit it was made from, so regenerating the committed copy on every
@@ -49,6 +51,9 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(prog="python -m mechverify.demo", description=__doc__.splitlines()[0])
     ap.add_argument("--out", type=Path, default=REPO / "out" / "lead_screw_lift", help="folder for the reports")
     ap.add_argument("--no-pdf", action="store_true", help="write the HTML report only")
+    ap.add_argument("--detail", choices=("problems", "all"), default="problems",
+                    help="per-check detail (formulas, inputs, figures) for the failing and warning checks "
+                         "(default, as `mechverify check --report`) or for all")
     args = ap.parse_args(argv)
     os.environ.setdefault("MPLBACKEND", "Agg")
 
@@ -67,7 +72,7 @@ def main(argv: list[str] | None = None) -> int:
         out.print(results_table(rs))
         out.print(verdict_line(rs) + "\n")
     out.print(combined_line([rs for _, rs in runs]) + " (the report holds both designs)")
-    paths = example.write_reports(args.out, pdf=not args.no_pdf, run=runs[0], plates_run=runs[1])
+    paths = example.write_reports(args.out, pdf=not args.no_pdf, run=runs[0], plates_run=runs[1], detail=args.detail)
     for p in paths:
         shown = p.relative_to(REPO) if p.is_relative_to(REPO) else p
         out.print(f"report: {shown}")

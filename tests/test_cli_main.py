@@ -196,3 +196,17 @@ def test_demo_prints_every_design_of_its_report_and_one_verdict(tmp_path, capsys
     assert "design.toml" in out and "design_plates.toml" in out
     assert out.count(" overall: 2 designs,") == 1 and "FAIL overall" in out
     assert (tmp_path / "report.html").is_file()
+
+
+def test_demo_details_the_problems_by_default_and_everything_on_request(tmp_path, capsys):
+    """`make demo` writes what `mechverify check --report` writes (the failing and warning checks in detail,
+    issue 25's default), `--detail all` every check: the committed example report is the latter."""
+    from mechverify.demo import main as demo
+
+    counts = {}
+    for detail in ("problems", "all"):
+        out = tmp_path / detail
+        assert demo(["--no-pdf", "--out", str(out), "--detail", detail]) == 0
+        counts[detail] = (out / "report.html").read_text(encoding="utf-8").count('class="formula"')
+    capsys.readouterr()
+    assert 0 < counts["problems"] < counts["all"]

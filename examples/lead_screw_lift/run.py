@@ -275,14 +275,18 @@ def verify(design_path: str | Path = DESIGN) -> tuple[Any, ResultSet]:
 
 
 def write_reports(out_dir: str | Path = HERE, pdf: bool = True, run: tuple[Any, ResultSet] | None = None,
-                  plates_run: tuple[Any, ResultSet] | None = None) -> list[Path]:
-    """Write report.html (and report.pdf) of the verified example (design.toml, then design_plates.toml)."""
+                  plates_run: tuple[Any, ResultSet] | None = None, detail: str = "all") -> list[Path]:
+    """Write report.html (and report.pdf) of the verified example (design.toml, then design_plates.toml).
+
+    ``detail``: ``"all"`` (every check in detail, the committed report) or ``"problems"`` (the failing
+    and warning checks, what ``mechverify check --report`` and the demo write).
+    """
     from mechverify.reports import render_html, write_report
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     runs = [run or verify(), plates_run or verify(PLATES)]
-    html = render_html(runs)  # once for both files
+    html = render_html(runs, detail=detail)  # once for both files
     paths = [write_report(runs, out / "report.html", html=html)]
     if pdf:
         paths.append(write_report(runs, out / "report.pdf", html=html))
