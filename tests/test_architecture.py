@@ -22,7 +22,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PKG = ROOT / "mechverify"
 
 LAYERS: dict[str, int] = {
-    "errors": 0, "frozen": 0,
+    "errors": 0, "frozen": 0, "pint_cache": 0,
     "units": 1, "references": 1, "fileio": 1,
     "materials": 2, "fatigue": 2,
     "components": 3,
