@@ -163,3 +163,36 @@ def test_font_stack_names_no_colour_emoji_font():
     stack = re.search(r"body \{ font-family: ([^;]+);", css).group(1)
     assert "emoji" not in stack.lower()
     assert "Noto Sans CJK SC" in stack
+
+
+def test_shrunk_figure_is_laid_out_again():
+    """A 10 in figure shrunk to the print width (the frame figure: 3D deformed shape beside the moments) keeps its
+    titles and labels apart and inside the figure: titles wrap to their axes' width and the layout is redone
+    (the five-bar report had the two titles running into each other and the x label cut off)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    from mechverify.reports.plots import PRINT_WIDTH_IN, _fit_print
+
+    fig = Figure(figsize=(10.0, 4.2))
+    ax1 = fig.add_subplot(1, 2, 1, projection="3d")
+    ax2 = fig.add_subplot(1, 2, 2)
+    ax1.set_title("deformed shape x46.4; max 0.4177 mm (★) in link3", fontsize=9)
+    ax2.set_title("bending moment along each member; max |M| 0.1462 N·m in link2", fontsize=9)
+    ax2.set_xlabel("position along the member from its start [mm]")
+    ax2.plot([0, 100], [0.15, 0.07])
+    fig.tight_layout()
+    _fit_print(fig)
+    assert fig.get_size_inches()[0] == pytest.approx(PRINT_WIDTH_IN)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    r = canvas.get_renderer()
+    W, H = fig.bbox.width, fig.bbox.height
+    boxes = [t.get_window_extent(r) for t in (ax1.title, ax2.title, ax2.xaxis.label)]
+    for b in boxes:
+        assert b.x0 >= -1 and b.x1 <= W + 1 and b.y0 >= -1 and b.y1 <= H + 1, (b, W, H)
+    assert boxes[0].x1 <= boxes[1].x0 + 1  # the two titles side by side, not overlapping

@@ -86,11 +86,17 @@ MIN_FONT_PT = 7.0  # smallest text size at print size
 
 def _fit_print(fig: Any) -> None:
     """Readable when printed: no wider than the page's content box (so it is not scaled down) and no
-    text below 7 pt. Constrained layout re-flows the axes after the change."""
+    text below 7 pt. A figure that shrinks has its axes titles wrapped to their axes' width and its layout
+    redone (tight layout; a constrained layout re-flows by itself), so titles and labels do not run into
+    each other or off the figure."""
+    import textwrap
+    import warnings
+
     from matplotlib.text import Text
 
     w, h = fig.get_size_inches()
-    if w > PRINT_WIDTH_IN:
+    shrunk = w > PRINT_WIDTH_IN
+    if shrunk:
         fig.set_size_inches(PRINT_WIDTH_IN, h * PRINT_WIDTH_IN / w)
     for t in fig.findobj(Text):
         if t.get_text() and t.get_fontsize() < MIN_FONT_PT:
@@ -101,6 +107,29 @@ def _fit_print(fig: Any) -> None:
                 if lab.get_fontsize() < MIN_FONT_PT:
                     axis.set_tick_params(labelsize=MIN_FONT_PT, which="both")
                     break
+    if not shrunk:
+        return
+    fig_w_pt, fig_h_pt = (x * 72 for x in fig.get_size_inches())
+    for ax in fig.axes:
+        pos = ax.get_position()
+        across = [(t, pos.width * fig_w_pt) for t in (ax.title, ax._left_title, ax._right_title, ax.xaxis.label)]
+        for label, room_pt in (*across, (ax.yaxis.label, pos.height * fig_h_pt)):  # y label: along the axes' height
+            text = label.get_text()
+            chars = max(12, int(room_pt / (0.62 * label.get_fontsize())))  # DejaVu Sans: ~0.6 em per character
+            if text and "\n" not in text and len(text) > chars:
+                label.set_text(textwrap.fill(text, chars))
+    if type(fig.get_layout_engine()).__name__ != "ConstrainedLayoutEngine":
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # a layout that cannot be redone is kept as it was
+            try:
+                fig.set_layout_engine("constrained")  # re-flows at draw time, 3D axes included
+            except (ValueError, RuntimeError):
+                pass
+            if type(fig.get_layout_engine()).__name__ != "ConstrainedLayoutEngine":  # colour bars made before
+                try:
+                    fig.tight_layout()
+                except (ValueError, RuntimeError):
+                    pass
 
 
 CHART_ROWS = 40  # the summary chart shows at most this many checks (the worst), so it fits one page
