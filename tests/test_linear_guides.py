@@ -160,3 +160,19 @@ def test_jamming_reproduces_the_published_2_to_1_rule():
     for R in ("10 N", "1000 N"):
         assert not sliding_carriage_drive_force(R, mu=0.25, length="50 mm", drive_offset="99.5 mm").jammed
         assert sliding_carriage_drive_force(R, mu=0.25, length="50 mm", drive_offset="100.5 mm").jammed
+
+
+def test_binding_figure_passes_through_the_operating_point():
+    """The carriage_binding figure: F(L) through the check's operating point; the jamming length 2 mu e marked."""
+    import numpy as np
+
+    from mechverify.reports.plots.linear_guides import drive_force_plot
+
+    c = lc.SlidingGuide(mu=0.25, length=Q(20, "mm"), drive_offset=Q(5, "mm"), load_offset=Q(30, "mm"),
+                        available_force=Q(500, "N"))
+    r = lc.check_carriage_binding(c, "100 N")
+    ax = drive_force_plot(r).axes[0]
+    x, y = ax.lines[0].get_data()
+    F = float(np.exp(np.interp(np.log(20.0), np.log(x), np.log(y))))
+    assert F == pytest.approx(r.demand.m_as("N"), rel=1e-3)
+    assert any(abs(line.get_xdata()[0] - 2.5) < 1e-9 for line in ax.lines[1:])  # 2 x 0.25 x 5 mm

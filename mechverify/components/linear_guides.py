@@ -181,6 +181,22 @@ def guide_block_loads(F: QuantityLike, *, offset_x: QuantityLike = "0 m", offset
     return Q(fr, "N"), Q(ft / n, "N"), Q(m_roll, "N*m"), Q(m_pitch, "N*m")
 
 
+def drive_force_si(R: float, mu: float, L: float, a: float, e: float) -> float:
+    """The drive force [N] of :func:`sliding_carriage_drive_force` in plain SI floats (R [N], L, a, e [m]);
+    ``math.inf`` when the carriage jams."""
+    r, k = R, 2 * mu / L
+    F = math.inf
+    den1 = 1 - k * e
+    if den1 > 0:
+        f1 = r * (1 - k * a) / den1
+        if f1 >= 0 and f1 * e >= r * a - 1e-12 * max(r, 1.0):
+            F = f1
+    f2 = r * (1 + k * a) / (1 + k * e) if 1 + k * e > 0 else math.inf
+    if math.isinf(F) and 0 <= f2 < math.inf and f2 * e < r * a + 1e-12 * max(r, 1.0):
+        F = f2
+    return F
+
+
 @dataclass(frozen=True)
 class SlidingCarriage:
     """Drive force of a carriage on plain bushings (see the module text, [3])."""
@@ -206,15 +222,7 @@ def sliding_carriage_drive_force(R: QuantityLike, *, mu: float, length: Quantity
     if not L > 0 or r < 0:
         raise InputError("contact length must be positive and the resisting force >= 0")
     k = 2 * mu / L
-    F = math.inf
-    den1 = 1 - k * e
-    if den1 > 0:
-        f1 = r * (1 - k * a) / den1
-        if f1 >= 0 and f1 * e >= r * a - 1e-12 * max(r, 1.0):
-            F = f1
-    f2 = r * (1 + k * a) / (1 + k * e) if 1 + k * e > 0 else math.inf
-    if math.isinf(F) and 0 <= f2 < math.inf and f2 * e < r * a + 1e-12 * max(r, 1.0):
-        F = f2
+    F = drive_force_si(r, mu, L, a, e)
     jam_number = k * abs(e)
     if math.isinf(F):
         return SlidingCarriage(F=Q(math.inf, "N"), R=Q(r, "N"), friction=Q(math.inf, "N"),
@@ -226,4 +234,4 @@ def sliding_carriage_drive_force(R: QuantityLike, *, mu: float, length: Quantity
 
 __all__ = ["BUSHING_ROW_FACTOR", "guide_block_loads", "convert_rating", "guide_life", "life_hours_reciprocating",
            "block_equivalent_load", "four_block_loads", "pair_moment_loads", "SlidingCarriage",
-           "sliding_carriage_drive_force"]
+           "sliding_carriage_drive_force", "drive_force_si"]
