@@ -191,3 +191,33 @@ def test_cli_lists_the_other_types(capsys):
     assert "cylindrical roller" in capsys.readouterr().out
     assert main(["bearings", "3020"]) == 2
     assert "30205" in capsys.readouterr().err
+
+
+def test_duty_cycle_uses_the_roller_exponent(tmp_path):
+    """A duty cycle on a roller bearing averages with p = 10/3 (Mott Eq. 14-11 with the roller exponent; hand
+    calculation): 8 kN for 30 % and 2 kN for 70 % of the time at one speed -> P = (0.3 x 8^(10/3) + 0.7 x
+    2^(10/3))^(3/10) kN."""
+    from mechverify.design import load
+
+    d = """
+[design]
+name = "dc"
+[requirements]
+bearing_life = "1000 h"
+[components.roller]
+type = "rolling_bearing"
+model = "NU 205 ECP"
+duty_cycle = { heavy = 0.3, light = 0.7 }
+[load_cases.heavy.roller]
+radial_force = "8 kN"
+speed = "1000 rpm"
+[load_cases.light.roller]
+radial_force = "2 kN"
+speed = "1000 rpm"
+"""
+    p = tmp_path / "d.toml"
+    p.write_text(d)
+    [r] = [x for x in load(p).verify() if x.check == "bearing_life"]
+    P = (0.3 * 8 ** (10 / 3) + 0.7 * 2 ** (10 / 3)) ** 0.3
+    assert r.details["P"].m_as("kN") == pytest.approx(P, rel=1e-9)
+    assert r.capacity.m_as("hour") == pytest.approx((28.6 / P) ** (10 / 3) * 1e6 / 60000, rel=1e-9)
