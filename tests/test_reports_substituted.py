@@ -267,20 +267,24 @@ def test_every_bolt_check_substituted():
 
 def test_fatigue_substituted_by_criterion():
     """check_fatigue (Shigley Sec. 6-12 criteria, AISI 1045 CD estimate of Se): the printed n_f or Langer n_y line
-    evaluates back to the result's safety factor for Goodman, Soderberg, Gerber, ASME elliptic and SWT on the
-    proportional line, Goodman/Soderberg at constant mean, a compressive mean, and a case where Langer governs."""
+    evaluates back to the result's safety factor for Goodman, Soderberg, Gerber, ASME elliptic, SWT, Morrow and
+    Walker on the proportional line, the Goodman family, Gerber and ASME at constant mean, a compressive mean,
+    and a case where Langer governs."""
     from mechverify.checks.fatigue import check_fatigue
 
     mat = "AISI 1045 CD"
     cases = [dict(criterion=c) for c in ("goodman", "soderberg", "gerber", "asme_elliptic", "smith_watson_topper")]
-    cases += [dict(criterion="goodman", load_line="constant_mean"), dict(criterion="soderberg",
-                                                                          load_line="constant_mean")]
+    cases += [dict(criterion=c, load_line="constant_mean") for c in ("goodman", "soderberg", "gerber", "asme_elliptic")]
+    cases += [dict(criterion="morrow", sigma_f="1000 MPa"), dict(criterion="morrow", sigma_f="1000 MPa",
+                                                                  load_line="constant_mean"),
+              dict(criterion="walker", gamma=0.65)]
     seen_modes = set()
     for kw in cases:
         r = check_fatigue("shaft", "120 MPa", "150 MPa", mat, Kf=1.3, **kw)
         assert_substituted(r)
         seen_modes.add(r.details["governing_mode"])
-    assert_substituted(check_fatigue("shaft", "120 MPa", "-80 MPa", mat))
+    for c in ("goodman", "smith_watson_topper"):  # a compressive mean counts as zero
+        assert_substituted(check_fatigue("shaft", "120 MPa", "-80 MPa", mat, criterion=c))
     langer = check_fatigue("shaft", "50 MPa", "500 MPa", mat)
     assert langer.details["governing_mode"].startswith("first-cycle")
     assert_substituted(langer)

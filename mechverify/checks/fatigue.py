@@ -222,44 +222,50 @@ def _common(component: str, st: _Strength, criterion: str, load_line: str, Kf: f
         title=f"Fatigue ({criterion.replace('_', ' ')}, {life_text})",
         formula=_FORMULA[criterion] + r",\quad " + _LANGER, source=f"{SHIGLEY}; strength: {st.source}",
         inputs=inputs, notes=tuple(notes), warnings=st.warnings, load_case=load_case, details=details,
-        substituted=_substituted(st, criterion, load_line, nf, ny, sa, sm, gamma))
+        substituted=_substituted(st, criterion, load_line, nf, ny, sa, sm, sigma_f, gamma))
 
 
 def _substituted(st: _Strength, criterion: str, load_line: str, nf: float, ny: float, sa: float, sm: float,
-                 gamma: Any) -> str:
+                 sigma_f: Any, gamma: Any) -> str:
     """The governing safety factor with the numbers: Langer's n_y when first-cycle yield governs, else the
-    criterion's n_f (proportional load line: Shigley 10th ed. Tables 6-6 to 6-8; constant mean: S_a from the
-    criterion at the mean stress over sigma_a). ``sa``, ``sm`` include Kf. Empty where no closed form is printed
-    (Walker, a constant-mean Gerber/ASME line, zero amplitude)."""
+    criterion's n_f (proportional load line: Shigley 10th ed. Tables 6-6 to 6-8, Walker/SWT n = S_e/sigma_ar;
+    constant mean: S_a from the criterion at the mean stress over sigma_a; a compressive mean counts as zero).
+    ``sa``, ``sm`` include Kf. Empty where no closed form is printed (Walker/SWT at constant mean, zero amplitude)."""
     P = lambda x: tex(Q(x / 1e6, "MPa"))  # noqa: E731
     a, m, S = P(sa), P(sm), P(st.S)
     if ny < nf and st.Sy is not None:
         if load_line == "proportional":
             return rf"n_y = \frac{{{P(st.Sy)}}}{{{a} + {P(abs(sm))}}} = {tex(ny)}"
         return rf"n_y = \frac{{{P(st.Sy)} - {P(abs(sm))}}}{{{a}}} = {tex(ny)}"
-    if not (sa > 0 and math.isfinite(nf)):
+    if not (sa > 0 and math.isfinite(nf) and nf > 0):
         return ""
-    if sm <= 0 and criterion not in ("walker", "smith_watson_topper"):
-        return rf"n_f = \frac{{{S}}}{{{a}}} = {tex(nf)}"  # compressive mean: S_a = S_e
-    strength = {"goodman": st.Sut, "gerber": st.Sut, "soderberg": st.Sy, "asme_elliptic": st.Sy}.get(criterion)
-    if criterion in ("goodman", "soderberg") and strength is not None:
-        B = P(strength)
-        if load_line == "proportional":
-            return rf"n_f = \frac{{1}}{{\frac{{{a}}}{{{S}}} + \frac{{{m}}}{{{B}}}}} = {tex(nf)}"
-        return rf"n_f = \frac{{{S}\cdot \left(1 - \frac{{{m}}}{{{B}}}\right)}}{{{a}}} = {tex(nf)}"
-    if load_line != "proportional":
+    if sm <= 0:  # every criterion takes a compressive mean as zero: S_a = S_e
+        return rf"n_f = \frac{{{S}}}{{{a}}} = {tex(nf)}"
+    sf = None if sigma_f is None else to_si(sigma_f, "pressure", "sigma_f")
+    B = {"goodman": st.Sut, "gerber": st.Sut, "soderberg": st.Sy, "asme_elliptic": st.Sy, "morrow": sf}.get(criterion)
+    if criterion in ("walker", "smith_watson_topper"):
+        if load_line != "proportional":
+            return ""
+        g = 0.5 if criterion == "smith_watson_topper" else to_si(gamma, "dimensionless", "gamma")
+        return (rf"n_f = \frac{{{S}}}{{({a} + {m})^{{{tex(1 - g)}}}\cdot ({a})^{{{tex(g)}}}}} = {tex(nf)}")
+    if B is None:
         return ""
-    if criterion == "gerber":
-        B = P(st.Sut)
-        return (rf"n_f = \frac{{1}}{{2}}\cdot \left(\frac{{{B}}}{{{m}}}\right)^{{2}}\cdot \frac{{{a}}}{{{S}}}\cdot "
-                rf"\left(-1 + \sqrt{{1 + \left(\frac{{2\cdot {m}\cdot {S}}}{{{B}\cdot {a}}}\right)^{{2}}}}\right)"
-                rf" = {tex(nf)}")
-    if criterion == "asme_elliptic" and strength is not None:
+    b = P(B)
+    linear = criterion in ("goodman", "soderberg", "morrow")
+    if load_line == "proportional":
+        if linear:
+            return rf"n_f = \frac{{1}}{{\frac{{{a}}}{{{S}}} + \frac{{{m}}}{{{b}}}}} = {tex(nf)}"
+        if criterion == "gerber":
+            return (rf"n_f = \frac{{1}}{{2}}\cdot \left(\frac{{{b}}}{{{m}}}\right)^{{2}}\cdot \frac{{{a}}}{{{S}}}\cdot "
+                    rf"\left(-1 + \sqrt{{1 + \left(\frac{{2\cdot {m}\cdot {S}}}{{{b}\cdot {a}}}\right)^{{2}}}}\right)"
+                    rf" = {tex(nf)}")
         return (rf"n_f = \sqrt{{\frac{{1}}{{\left(\frac{{{a}}}{{{S}}}\right)^{{2}} + "
-                rf"\left(\frac{{{m}}}{{{P(strength)}}}\right)^{{2}}}}}} = {tex(nf)}")
-    if criterion == "smith_watson_topper":
-        return rf"n_f = \frac{{{S}}}{{\sqrt{{({a} + {m})\cdot {a}}}}} = {tex(nf)}"
-    return ""
+                rf"\left(\frac{{{m}}}{{{b}}}\right)^{{2}}}}}} = {tex(nf)}")
+    if linear:
+        return rf"n_f = \frac{{{S}\cdot \left(1 - \frac{{{m}}}{{{b}}}\right)}}{{{a}}} = {tex(nf)}"
+    if criterion == "gerber":
+        return rf"n_f = \frac{{{S}\cdot \left(1 - \left(\frac{{{m}}}{{{b}}}\right)^{{2}}\right)}}{{{a}}} = {tex(nf)}"
+    return (rf"n_f = \frac{{{S}\cdot \sqrt{{1 - \left(\frac{{{m}}}{{{b}}}\right)^{{2}}}}}}{{{a}}} = {tex(nf)}")
 
 
 def _prepare(material: Any, life: float | None, Kf: float, criterion: str, load_line: str) -> Material:
