@@ -61,3 +61,51 @@ def test_solid_stress_and_deflection(bar):
     assert r.demand.m_as("MPa") == pytest.approx(10, rel=0.3) and r.verdict == "pass"
     d = check_solid_deflection(res, "0.01 mm")  # PL/EA = 1e3*0.2/(200e9*1e-4) = 0.01 mm
     assert d.demand.m_as("mm") == pytest.approx(0.01, rel=0.05)
+
+
+def test_substituted_lines_evaluate_to_the_results(bar):
+    """Each FEA check prints ``symbol = formula with numbers = result``; parsed back (tests/test_reports_substituted)
+    the formula gives the printed result, and the result is the check's demand or capacity."""
+    from tests.test_reports_substituted import evaluate
+
+    static = bar.solve(progress=False)
+    r = check_solid_stress(static)
+    value, printed = evaluate(r.substituted)
+    assert value.m_as("MPa") == pytest.approx(printed.m_as("MPa"), rel=2e-3)
+    assert printed.m_as("MPa") == pytest.approx(r.demand.m_as("MPa"), rel=1e-3)
+    r = check_solid_deflection(static, "1 mm")
+    value, printed = evaluate(r.substituted)
+    assert value.m_as("mm") == pytest.approx(printed.m_as("mm"), rel=2e-3)
+    assert printed.m_as("mm") == pytest.approx(r.demand.m_as("mm"), rel=1e-3)
+    r = check_natural_frequency(modal.modal(bar, 2), minimum="150 Hz")
+    value, printed = evaluate(r.substituted)
+    assert value.m_as("Hz") == pytest.approx(printed.m_as("Hz"), rel=1e-3)
+    assert printed.m_as("Hz") == pytest.approx(r.capacity.m_as("Hz"), rel=1e-3)
+    r = check_buckling_load_factor(buckling.buckling(bar, 1), required_sf=3.0)
+    value, printed = evaluate(r.substituted)
+    assert float(value) == pytest.approx(float(printed), rel=1e-3)
+    assert float(printed) == pytest.approx(r.capacity.m, rel=1e-3)
+
+
+def test_mode_shape_figures(bar):
+    """natural_frequency and buckling_load_factor carry the mode's figure data; the figures draw (solid, frame)."""
+    import math
+
+    import mechverify.fea.frame as fp
+    from mechverify.components import sections
+    from mechverify.fea.frame import Frame, Member
+    from mechverify.fea.frame.modal import frame_modes
+    from mechverify.reports.plots import figure_for
+
+    r = check_natural_frequency(modal.modal(bar, 2), minimum="150 Hz")
+    assert r.details["mode_points"].shape == r.details["mode_shape"].shape
+    assert math.isclose(float(abs(r.details["mode_shape"]).max()), 1.0)
+    assert figure_for(r).startswith("data:image/svg")
+    r = check_buckling_load_factor(buckling.buckling(bar, 1))
+    assert figure_for(r).startswith("data:image/svg")
+    support = getattr(fp, "FrameSupport", None) or fp.Support
+    fr = Frame({"A": ["0 mm"] * 3, "B": ["500 mm", "0 mm", "0 mm"]},
+               [Member("A", "B", sections.circle("20 mm"), "Structural Steel")], [support("A", "fixed")])
+    r = check_natural_frequency(frame_modes(fr, 2), minimum="20 Hz")
+    assert "mode_lines" in r.details and r.verdict == "pass"
+    assert figure_for(r).startswith("data:image/svg")

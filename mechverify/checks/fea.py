@@ -21,7 +21,7 @@ import numpy as np
 
 from mechverify.checks.members import deflection_check
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult
+from mechverify.checks.result import CheckResult, tex
 from mechverify.errors import InputError
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, to_si
@@ -43,6 +43,29 @@ def _where(res: Any, node: int) -> str:
     return f"at node {node}, ({x[0]:.4g}, {x[1]:.4g}, {x[2]:.4g}) mm"
 
 
+#: Most nodes a mode-shape figure keeps (the check's details are stored with the results).
+FIGURE_NODES = 2000
+
+
+def shape_details(res: Any, mode: int, value: Any = None) -> dict[str, Any]:
+    """Figure data of mode ``mode`` of modal or buckling results: node points [mm] and the translations of the
+    mode scaled to a largest component of 1 (at most :data:`FIGURE_NODES` nodes, evenly picked), the lines of a
+    frame's elements when there are any."""
+    pts = np.asarray(res.points, dtype=float)
+    shape = np.asarray(res.shapes[mode], dtype=float)[:, :3]
+    scale = float(np.max(np.abs(shape))) or 1.0
+    keep = np.arange(len(pts))
+    lines = getattr(res, "elements", None)
+    if lines is None and len(pts) > FIGURE_NODES:
+        keep = np.linspace(0, len(pts) - 1, FIGURE_NODES).astype(int)
+    out = {"mode_points": Q(pts[keep] * 1e3, "mm"), "mode_shape": shape[keep] / scale, "mode_number": mode + 1}
+    if lines is not None:
+        out["mode_lines"] = np.asarray(lines, dtype=int)
+    if value is not None:
+        out["mode_value"] = value
+    return out
+
+
 @check("solid_stress", title="Solid FEA von Mises stress", sf_kind="static",
        source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}",
        explain=("Largest von Mises stress of the solid (or plane) FEA field, nodal stresses recovered by "
@@ -54,13 +77,17 @@ def check_solid_stress(res: FieldResults, *, component: str = "", required_sf: f
     mx = res.max_von_mises
     sy = res.material.require("yield_strength").to("MPa")
     extra = [f"governing {_where(res, int(mx.node))}"]
+    p1, p2, p3 = (Q(float(x), "Pa") for x in np.linalg.eigvalsh(np.asarray(res.sigma[int(mx.node)]))[::-1])
+    sub = (rf"\sigma_{{vM}} = \sqrt{{\frac{{({tex(p1, 'MPa')} - {tex(p2, 'MPa')})^{{2}} + ({tex(p2, 'MPa')} - "
+           rf"{tex(p3, 'MPa')})^{{2}} + ({tex(p3, 'MPa')} - {tex(p1, 'MPa')})^{{2}}}}{{2}}}} = "
+           rf"{tex(mx.value, 'MPa')}")
     if res.error_estimate is not None:
         extra.append(f"Zienkiewicz-Zhu relative energy-norm error estimate {100 * float(res.error_estimate):.3g} %")
     return CheckResult(
         check="solid_stress", component=component, demand=mx.value.to("MPa"), capacity=sy, required_sf=required_sf,
         title="Solid FEA von Mises stress", formula=r"\sigma_{vM,max} \le S_y",
         source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}", inputs={"Sy": sy},
-        notes=(*extra, *notes), warnings=(*res.warnings, *warnings), load_case=load_case,
+        notes=(*extra, *notes), warnings=(*res.warnings, *warnings), load_case=load_case, substituted=sub,
         details={"node": int(mx.node), "location": Q(res.points[int(mx.node)], "m").to("mm")})
 
 
@@ -71,10 +98,14 @@ def check_solid_deflection(res: FieldResults, limit: Any, *, span: QuantityLike 
     """The largest displacement of ``res`` against ``limit`` (a length, ``"L/250"`` of ``span``, or a fraction)."""
     mx = res.max_displacement
     r = deflection_check(mx.value, limit, span=span, component=component, load_case=load_case, source=FEA_SOURCE)
+    ux, uy, uz = (Q(float(c), "m") for c in np.asarray(res.u)[int(mx.node)])
+    sub = (rf"|u| = \sqrt{{({tex(ux, 'mm')})^{{2}} + ({tex(uy, 'mm')})^{{2}} + ({tex(uz, 'mm')})^{{2}}}} = "
+           rf"{tex(mx.value, 'mm')}")
     return CheckResult(
         check="solid_deflection", component=component, demand=r.demand, capacity=r.capacity, required_sf=required_sf,
         title="Solid FEA deflection", formula=r.formula, source=FEA_SOURCE, inputs=r.inputs,
-        notes=(*r.notes, f"governing {_where(res, int(mx.node))}"), warnings=res.warnings, load_case=load_case)
+        notes=(*r.notes, f"governing {_where(res, int(mx.node))}"), warnings=res.warnings, load_case=load_case,
+        substituted=sub)
 
 
 @check("natural_frequency", title="Natural frequency", sf_kind="limit", source=MODAL_SOURCE,
@@ -91,6 +122,7 @@ def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None =
     if (minimum is None) == (band is None):
         raise InputError("natural_frequency: give either minimum or band (lo, hi)")
     f = res.frequencies.m_as("Hz")[res.rigid_body_modes:]
+    w2 = np.asarray(res.omega2, dtype=float)[res.rigid_body_modes:]
     if f.size == 0:
         raise InputError("natural_frequency: the modal results hold no elastic mode; compute more modes")
     notes = ["frequencies " + ", ".join(f"{x:.4g}" for x in f) + " Hz",
@@ -115,12 +147,16 @@ def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None =
         if f[-1] < above:
             warnings.append(f"the highest computed frequency ({f[-1]:.4g} Hz) is below the band's upper edge with "
                             f"margin ({above:.4g} Hz): compute more modes to see whether one lies in the band")
+    sub = (rf"f_{{{mode}}} = \frac{{\sqrt{{{tex(Q(float(w2[mode - 1]), '1/s**2'))}}}}}{{2\cdot \pi}} = "
+           rf"{tex(Q(float(f[mode - 1]), 'Hz'))}")
+    details: dict[str, Any] = {"frequencies": Q(f, "Hz")}
+    if getattr(res, "shapes", None) is not None:
+        details.update(shape_details(res, res.rigid_body_modes + mode - 1, Q(float(f[mode - 1]), "Hz")))
     return CheckResult(
         check="natural_frequency", component=component, demand=Q(demand, "Hz"), capacity=Q(capacity, "Hz"),
         required_sf=required_sf, title="Natural frequency", formula=formula, source=MODAL_SOURCE,
         inputs={"margin": margin}, notes=tuple(n for n in notes if n) + (f"governing mode {mode}",),
-        warnings=tuple(warnings), load_case=load_case,
-        details={"frequencies": Q(f, "Hz")})
+        warnings=tuple(warnings), load_case=load_case, substituted=sub, details=details)
 
 
 @check("buckling_load_factor", title="Buckling load factor (FEA)", sf_kind="buckling", source=BUCKLE_SOURCE,
@@ -131,9 +167,15 @@ def check_buckling_load_factor(res: BucklingResults, *, component: str = "", req
                                load_case: str = "") -> CheckResult:
     """Demand 1 (the loads as applied), capacity the lowest buckling factor."""
     mu = float(res.factors[0])
+    details: dict[str, Any] = {"factors": np.asarray(res.factors, dtype=float)}
+    if getattr(res, "shapes", None) is not None:
+        details.update(shape_details(res, 0, mu))
+    sub = rf"\lambda_{{cr}} = \frac{{1}}{{{tex(1.0 / mu, digits=6)}}} = {tex(mu)}"  # θ_max = 1/λ_cr
     return CheckResult(
         check="buckling_load_factor", component=component, demand=Q(1.0, ""), capacity=Q(mu, ""),
         required_sf=required_sf, title="Buckling load factor (FEA)", formula=r"\lambda_{cr} \ge SF",
         source=BUCKLE_SOURCE, inputs={"lambda_cr": mu},
         notes=("factors " + ", ".join(f"{x:.4g}" for x in res.factors),
-               "linear buckling: no imperfections or plasticity (an upper bound)"), load_case=load_case)
+               "linear buckling: no imperfections or plasticity (an upper bound)",
+               "θ_max: the largest eigenvalue of -K_G φ = θ K φ (λ_cr = 1/θ_max)"), load_case=load_case,
+        substituted=sub, details=details)

@@ -29,9 +29,11 @@ from mechverify.errors import ModelError
 #: CG's convergence is judged from this iteration on (see :func:`pcg`).
 PREDICT_AFTER = 20
 #: With CHOLMOD installed, "auto" leaves CG for a direct solve when CG is predicted to need more iterations than
-#: this (thin parts: 208 iterations on a 6 mm plate at 34k DOF, where a factorisation is cheap; a compact solid
-#: needs 26-37).
-CG_ITERATION_LIMIT = 80
+#: this (compact solids need 26-37; thin parts more: 43 on a 6 mm plate with a hole at 37k DOF, where CHOLMOD
+#: solved in 6.2 s against CG's 21 s on the loaded benchmark box, and 157 on a 3 mm plate at 17k DOF).
+CG_ITERATION_LIMIT = 40
+#: ... but only up to this many unknowns (a factorisation's memory grows faster than CG's).
+DIRECT_SWITCH_MAX = 300_000
 #: Above this many unknowns a 3D solid is solved by AMG-preconditioned CG rather than SuperLU.
 ITERATIVE_THRESHOLD_3D = 12_000
 
@@ -130,10 +132,11 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     """Solve ``K u = f`` with ``u[held] = prescribed`` (zero by default) after the rigid-body check.
 
     ``points[dim, n]`` are the node coordinates (node-interleaved DOFs ``dim*node + i``). ``method``:
-    ``"direct"`` (SuperLU), ``"amg"`` or ``"auto"``: multigrid-CG for 3D systems above
+    ``"direct"`` (CHOLMOD when installed, else SuperLU), ``"amg"`` or ``"auto"``: multigrid-CG for 3D systems above
     :data:`ITERATIVE_THRESHOLD_3D` unknowns, else a direct solve (CHOLMOD when installed,
     :mod:`mechverify.fea.factor`); with CHOLMOD, a CG whose measured convergence predicts more than
-    :data:`CG_ITERATION_LIMIT` iterations (thin parts) is left for a factorisation. ``prolongation``
+    :data:`CG_ITERATION_LIMIT` iterations (thin parts) is left for a factorisation (up to
+    :data:`DIRECT_SWITCH_MAX` unknowns). ``prolongation``
     (:func:`p1_prolongation`) enables the multigrid of quadratic elements.
     """
     t0 = time.perf_counter()
@@ -163,7 +166,7 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
         if prolongation is None:
             raise ValueError("method 'amg' needs the P1 -> P2 prolongation")
         # auto with CHOLMOD: a CG predicted to be slow (a thin part) gives way to a factorisation
-        limit = CG_ITERATION_LIMIT if auto and cholmod_available() else None
+        limit = CG_ITERATION_LIMIT if auto and free.size <= DIRECT_SWITCH_MAX and cholmod_available() else None
         try:
             x, iters = pcg(Kff, rhs, pmg_preconditioner(Kff, points, free, dim, prolongation), rtol,
                            predict_limit=limit)
@@ -173,7 +176,7 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
             method, iters = f"direct (cholmod; CG left after {slow.iterations} iterations)", slow.iterations
             x = factorize(Kff, "cholmod").solve(rhs)
     elif method == "direct":
-        fac = factorize(Kff, "auto" if auto else "superlu")
+        fac = factorize(Kff, "auto")
         method = "direct" if fac.method == "superlu" else "direct (cholmod)"
         x = fac.solve(rhs)
     else:
