@@ -73,13 +73,17 @@ def summary_html(rs: Any) -> str:
         f"<td style='color:{COLOURS[r.verdict.value]}'><b>{r.verdict.value}</b></td></tr>" for r in rows)
     out = ("<table><tr><th>component</th><th>check</th><th>u·SF</th><th>verdict</th></tr>" + cells + "</table>")
     if rows:
-        try:
-            fig = figure_for(rows[0])
-        except Exception:  # (a figure is a nicety: never lose the table for it)
-            fig = None
-        if fig:
-            out += (f"<p>Governing: {html.escape(rows[0].component)} / {html.escape(rows[0].title or rows[0].check)}"
-                    f"</p><img style='max-width:40rem' src='{fig}'>")
+        name = lambda r: f"{html.escape(r.component)} / {html.escape(r.title or r.check)}"  # noqa: E731
+        out += f"<p>Governing: {name(rows[0])}</p>"
+        for r in rows[:5]:  # the figure of the most utilised check that has one (not every check draws one)
+            try:
+                fig = figure_for(r)
+            except Exception:  # (a figure is a nicety: never lose the table for it)
+                fig = None
+            if fig:
+                caption = "" if r is rows[0] else f"<p class='small'>Figure: {name(r)}</p>"
+                out += f"{caption}<img style='max-width:40rem' src='{fig}'>"
+                break
     return out
 
 
