@@ -252,3 +252,12 @@ def test_vtu_export(tmp_path):
     p = res.to_vtu(tmp_path / "modes.vtu")
     text = p.read_text()
     assert text.count("mode_") == 3 and "rot_3" in text
+
+
+def test_frame_methods_and_package_exports():
+    """Frame.modes / Frame.buckling delegate to frame_modes / frame_buckling (exported by mechverify.fea.frame)."""
+    fr = beam(sections.circle("20 mm"), 500, [Support("A", "fixed")])
+    assert frame_pkg.frame_modes is frame_modes and frame_pkg.PointMass is PointMass
+    assert fr.modes(2).frequencies.m == pytest.approx(frame_modes(fr, 2).frequencies.m, rel=1e-12)
+    load = [PointLoad("B", force=["-1 kN", "0 N", "0 N"])]
+    assert fr.buckling(load).first_factor == pytest.approx(frame_buckling(fr, load).first_factor, rel=1e-12)

@@ -11,7 +11,9 @@ displacements and rotations, support reactions (global equilibrium is asserted),
 internal force and moment diagrams along every member, stresses at section fibres, exact extremes
 (``ranges(member)``) and a report figure. ``Frame.analyse(cases, combinations)`` solves every load
 case on one factorisation of the stiffness, forms :class:`LoadCombination` s by superposition and
-gives envelopes (``FrameAnalysis.envelope()``).
+gives envelopes (``FrameAnalysis.envelope()``). ``Frame.modes(n, masses=...)`` (:func:`frame_modes`) gives
+natural frequencies and mode shapes with the consistent mass, ``Frame.buckling(loads, n)``
+(:func:`frame_buckling`) linear buckling load factors (:mod:`mechverify.fea.frame.modal`).
 
 The element is the two-node 3D beam with the exact (interdependent) stiffness of a prismatic
 member: Euler-Bernoulli, or Timoshenko with the shear areas ``Asy``/``Asz`` of the section
@@ -91,11 +93,13 @@ from mechverify.fea.frame.results import (
 if TYPE_CHECKING:
     from mechverify.fea.frame.analysis import DENSE_CHECK_LIMIT, PROGRESS_THRESHOLD, Frame
     from mechverify.fea.frame.figure import frame_figure
+    from mechverify.fea.frame.modal import FrameBuckling, FrameModes, PointMass, frame_buckling, frame_modes
 
 # The solver (scipy.sparse) and the figure (matplotlib) are imported when first used, so that a design
 # file's frame component can be parsed without them (issue 27: a fast cold start).
 _LAZY = {"Frame": "analysis", "DENSE_CHECK_LIMIT": "analysis", "PROGRESS_THRESHOLD": "analysis",
-         "frame_figure": "figure"}
+         "frame_figure": "figure", "frame_modes": "modal", "frame_buckling": "modal", "PointMass": "modal",
+         "FrameModes": "modal", "FrameBuckling": "modal"}
 
 
 # Former names (issue 16: one meaning per public class name across the package), deprecated.
@@ -117,4 +121,4 @@ __all__ = ["DOF_NAMES", "RELEASE_NAMES", "STANDARD_GRAVITY", "SUPPORT_KINDS", "T
            "SupportDisplacement", "Where",
            "section_from_properties", "fixed_end_forces", "fixed_end_forces_linear", "local_axes", "local_stiffness",
            "Diagram", "Envelope", "FrameExtreme", "FrameAnalysis", "FrameResults", "Range", "section_fibres", "Frame",
-           "frame_figure"]
+           "frame_figure", "frame_modes", "frame_buckling", "PointMass", "FrameModes", "FrameBuckling"]

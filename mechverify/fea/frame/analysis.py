@@ -389,6 +389,20 @@ class Frame:
                          + " (e.g. a member between pins free to twist about its axis, or hinges in line). "
                            "Hold that motion with a support or remove a hinge or release.")
 
+    # ----------------------------------------------------------------------- eigenvalue analyses
+    def modes(self, n_modes: int = 6, **kw: Any) -> Any:
+        """Natural frequencies and mode shapes: :func:`mechverify.fea.frame.modal.frame_modes` (``masses=``,
+        ``elements_per_member=``, ``shift=``)."""
+        from mechverify.fea.frame.modal import frame_modes
+
+        return frame_modes(self, n_modes, **kw)
+
+    def buckling(self, loads: Iterable[Load], n_modes: int = 1, **kw: Any) -> Any:
+        """Linear buckling load factors of ``loads``: :func:`mechverify.fea.frame.modal.frame_buckling`."""
+        from mechverify.fea.frame.modal import frame_buckling
+
+        return frame_buckling(self, loads, n_modes, **kw)
+
     # ---------------------------------------------------------------------------------- solve
     def solve(self, loads: Iterable[Load] = (), *, name: str = "", progress: bool | None = None) -> FrameResults:
         """Linear static solution of one load case."""
