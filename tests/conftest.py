@@ -5,12 +5,27 @@ yield, Shigley 10th ed., Eq. 3-22) so the design-file and report machinery can b
 independently of the real component adapters.
 """
 
-import pytest
+import os
 
-from mechverify import Q
-from mechverify.checks import CheckResult
-from mechverify.design import REGISTRY, CheckSpec, ComponentType, Field
-from mechverify.units import to_si
+# One BLAS thread for the test run: the problems here are small, and on a 2-core machine shared with other
+# processes OpenBLAS's busy-waiting threads made a 540-unknown dense eigenproblem 13 times slower (0.23 s ->
+# 3.1 s) and a shaft's modal check 20 times slower. Set before numpy is imported; threadpoolctl (test extras)
+# also limits a BLAS that a plugin loaded earlier.
+for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_var, "1")
+try:
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(1)
+except ImportError:  # pragma: no cover - the env vars above still apply
+    pass
+
+import pytest  # noqa: E402
+
+from mechverify import Q  # noqa: E402
+from mechverify.checks import CheckResult  # noqa: E402
+from mechverify.design import REGISTRY, CheckSpec, ComponentType, Field  # noqa: E402
+from mechverify.units import to_si  # noqa: E402
 
 
 def _stress(rod, loads, ctx):
