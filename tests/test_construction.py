@@ -154,3 +154,18 @@ def test_plate_geometry_survives_replace():
     assert thicker.region.area == pytest.approx(plate.region.area)
     for obj in (Hole(("10 mm", "10 mm"), "5 mm"), PointSupport(("1 mm", "2 mm"))):
         assert dataclasses.replace(obj) == obj
+
+
+def test_plane_model_survives_replace():
+    """``fea.study.solve_cases`` builds each case with ``dataclasses.replace(model, loads=...)``: the normalised
+    thickness is a quantity, so a plane model re-reads it (as a bare SI float it was a UnitError)."""
+    from mechverify.fea import mesh2d
+    from mechverify.fea.loads import Fixed
+    from mechverify.fea.plane import PlaneModel
+    from mechverify.fea.regions import Plane
+
+    model = PlaneModel(mesh2d.rectangle(0.1, 0.02, 4, 2), "5 mm", "Structural Steel", supports=(Fixed(Plane(x="0 m")),))
+    again = dataclasses.replace(model, loads=())
+    assert again.thickness_si == model.thickness_si == pytest.approx(0.005)
+    with pytest.raises(InputError, match="thickness"):
+        PlaneModel(mesh2d.rectangle(0.1, 0.02, 4, 2), "0 mm", "Structural Steel")

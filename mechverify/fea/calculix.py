@@ -407,7 +407,7 @@ def run_model(model: Any, ip_stress: bool = False, threads: int = 1, keep: str |
         b = model.basis
         return run(model.nodes.T, b.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(), ip_stress=ip_stress,
                    threads=threads, keep=keep, element="CPS6" if model.plane == "stress" else "CPE6",
-                   thickness=model.thickness)
+                   thickness=model.thickness_si)
     mesh = model.mesh
     return run(model.nodes.T, mesh.basis.element_dofs.T, E, nu, model.held_dofs(), model.load_vector(),
                ip_stress=ip_stress, threads=threads, keep=keep)

@@ -36,7 +36,7 @@ def _deck(model: Any, work: Path, step: str, n: int, loads: bool) -> tuple[int, 
     f = model.load_vector() if loads else np.zeros(model.nodes.size)
     element = ("CPS6" if model.plane == "stress" else "CPE6") if plane else "C3D10"
     cx.write_inp(work / "job.inp", model.nodes.T, ed.T, E, nu, held, f, element=element,
-                 thickness=model.thickness if plane else None)
+                 thickness=model.thickness_si if plane else None)
     text = (work / "job.inp").read_text()
     elastic = "*ELASTIC\n" + text.split("*ELASTIC\n", 1)[1].split("\n", 1)[0] + "\n"
     text = text.replace(elastic, elastic + "*DENSITY\n" + cx.fortran_field(rho) + "\n", 1)

@@ -57,7 +57,7 @@ def _parts(model: Any) -> tuple[int, np.ndarray, float, tuple[float, float]]:
     if hasattr(model, "plane"):  # PlaneModel
         if model.plane == "stress":
             lam = asm.lame(E, nu, "stress")[0]
-        return 2, model.basis.element_dofs, float(model.thickness), (lam, mu)
+        return 2, model.basis.element_dofs, model.thickness_si, (lam, mu)
     return 3, model.mesh.basis.element_dofs, 1.0, (lam, mu)
 
 

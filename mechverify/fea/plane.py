@@ -54,7 +54,7 @@ from mechverify.fea.results import FieldResults
 from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
 from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
-from mechverify.units import QuantityLike, to_si
+from mechverify.units import QuantityLike, from_si, to_si
 
 
 def mesh_region(region: Any, size: QuantityLike, hole_size: QuantityLike | None = None) -> MeshTri:
@@ -81,14 +81,20 @@ class PlaneModel:
     def __post_init__(self) -> None:
         if not isinstance(self.mesh, MeshTri):
             raise InputError(f"mesh: expected a scikit-fem MeshTri (see plane.mesh_region), got {self.mesh!r}")
-        set_fields(self, thickness=to_si(self.thickness, "length", "thickness"))
-        if self.thickness <= 0:
+        t = to_si(self.thickness, "length", "thickness")
+        if t <= 0:
             raise InputError("thickness: must be positive")
+        set_fields(self, thickness=from_si(t, "length"))  # a quantity: dataclasses.replace re-reads it
         if self.plane not in ("stress", "strain"):
             raise InputError(f"plane: 'stress' or 'strain', got {self.plane!r}")
         set_fields(self, material=_as_material(self.material), supports=tuple(self.supports), loads=tuple(self.loads))
         oriented = mesh2d.orient_triangles(self.mesh.p, self.mesh.t)
         set_fields(self, mesh=mesh2d.tri_mesh(self.mesh.p, oriented, self.mesh))
+
+    @cached_property
+    def thickness_si(self) -> float:
+        """Thickness [m] as a float (``thickness`` is the quantity)."""
+        return float(self.thickness.m_as("m"))
 
     @cached_property
     def basis(self) -> Basis:
@@ -193,7 +199,7 @@ class PlaneModel:
         b = self.basis
         if area is None:
             area = asm.barycentric_gradients(self.mesh.p, self.mesh.t)[1]
-        t = self.thickness
+        t = self.thickness_si
         out: list[tuple[np.ndarray | None, np.ndarray]] = []
         for ld in self.loads:
             f = np.zeros(2 * b.N)
@@ -340,9 +346,9 @@ class PlaneModel:
             if self.is_curved:
                 from mechverify.fea import isoparametric as iso
 
-                blocks, area = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu, self.thickness)
+                blocks, area = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu, self.thickness_si)
             else:
-                blocks = asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness)
+                blocks = asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness_si)
                 _, area = asm.barycentric_gradients(m.p, m.t)
             K = asm.assemble_blocks(blocks, pattern, 2)
             f = self.load_vector(area)
