@@ -101,3 +101,18 @@ def test_traced_inputs_are_not_repeated_in_the_notes(html):
     assert len(traced) >= 3
     assert all(note not in c for c in traced)
     assert any(note in c for c in checks if c not in traced)
+
+
+def test_console_table_carries_design_units(tmp_path, capsys, monkeypatch):
+    """`mechverify check` prints forces of a design written in lbf in N and lbf (300 N = 67.4 lbf); a wide
+    terminal, so that rich does not wrap the cell."""
+    from mechverify.cli import main
+
+    monkeypatch.setenv("COLUMNS", "200")
+    text = STARTER.replace('[load_cases.raise.top_bearing]\naxial_force = "300 N"',
+                           '[load_cases.raise.top_bearing]\naxial_force = "67.443 lbf"', 1)
+    path = tmp_path / "design.toml"
+    path.write_text(text, encoding="utf-8")
+    assert main(["check", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "300 N (67.4 lbf)" in out

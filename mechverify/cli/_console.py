@@ -57,9 +57,10 @@ def _bar(u: float, width: int = 10) -> str:
     return "█" * filled + "·" * (width - filled) + ("▶" if u > 1 else " ")
 
 
-def results_table(rs: Any) -> Table:
-    """The table of one :class:`~mechverify.checks.ResultSet`, worst first."""
-    from mechverify.reports.numbers import number, quantity
+def results_table(rs: Any, units: dict[Any, str] | None = None) -> Table:
+    """The table of one :class:`~mechverify.checks.ResultSet`, worst first; ``units``: the design file's own units
+    by kind (:func:`mechverify.reports.numbers.design_units`), shown beside the report's."""
+    from mechverify.reports.numbers import number, quantity_in
 
     t = Table(title=rs.name, title_justify="left", show_lines=False)
     for col, just in (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
@@ -72,7 +73,7 @@ def results_table(rs: Any) -> Table:
         if any(n.startswith("Not verifiable") for n in r.notes):  # beyond the method's validity: no numbers
             demand, capacity, shown = "-", "-", "n/a"
         else:
-            demand, capacity, shown = quantity(r.demand), quantity(r.capacity), number(fu)
+            demand, capacity, shown = quantity_in(r.demand, units), quantity_in(r.capacity, units), number(fu)
         t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, demand, capacity,
                   shown, f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
     return t

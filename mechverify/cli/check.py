@@ -84,9 +84,11 @@ def run(args: argparse.Namespace) -> int:
         if args.github_step_summary:
             append_step_summary(md)
     worst = max((rs.verdict for _, rs in runs), key=lambda v: v.rank, default=Verdict.PASS)
-    for _, rs in runs:
+    for design, rs in runs:
         if not args.quiet:
-            out.print(results_table(rs))
+            from mechverify.reports.numbers import design_units
+
+            out.print(results_table(rs, design_units(getattr(getattr(design, "data", None), "raw", None) or {})))
             for r in rs:  # a check that could not be evaluated fails: say why
                 for n in r.notes:
                     if n.startswith("Not verifiable"):
