@@ -75,15 +75,16 @@ def test_checks_on_new_types_with_substituted_lines():
     assert any("not verified" in w for w in bc.check_bearing_speed(nu, "1000 rpm").warnings)
 
 
-def test_modified_life_angular_contact_and_roller_refused():
-    """The ISO 281 radial-ball a_ISO applies to angular contact ball bearings; for roller types it is refused
-    (ValidityError naming the alternative)."""
+def test_modified_life_angular_contact_and_thrust_refused():
+    """The ISO 281 radial-ball a_ISO applies to angular contact ball bearings (roller types: the radial-roller a_ISO,
+    tests/test_bearings_iso281_roller.py); for thrust types it is refused (ValidityError naming the alternative)."""
     lub = Lubrication(iso_vg=68, viscosity_index=95, operating_temperature="60 degC")
     r = bc.check_bearing_modified_life(rolling_bearing("7206 B"), "2 kN", "1 kN", "1500 rpm", "10000 h", lub)
     assert r.details["a_iso"] > 0
+    assert any("radial ball" in n for n in r.notes)
     assert_substituted(r)
-    with pytest.raises(ValidityError, match="radial ball"):
-        bc.check_bearing_modified_life(rolling_bearing("30205"), "2 kN", "0 N", "1500 rpm", "10000 h", lub)
+    with pytest.raises(ValidityError, match="thrust ball.*bearing_life"):
+        bc.check_bearing_modified_life(rolling_bearing("51105"), "0 N", "2 kN", "500 rpm", "10000 h", lub)
 
 
 DESIGN = """

@@ -166,12 +166,16 @@ def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = 
                      rf"{tex(b.limiting_speed.m_as('rpm') / abs(n.m_as('rpm')))}" if n.magnitude != 0 else ""))
 
 
-ISO281_MOD = ref("iso281", "Sec. 9 (L_nm = a1 a_ISO L10; nu1, kappa, a_ISO for radial ball bearings), Table 13 (e_C)")
+ISO281_MOD = ref("iso281", "Sec. 9 (L_nm = a1 a_ISO L10; nu1, kappa, a_ISO for radial ball and radial roller "
+                           "bearings), Table 13 (e_C)")
 
 
 @check("bearing_modified_life", title="Bearing modified rating life (ISO 281 a_ISO)", sf_kind="bearing",
        source=ISO281_MOD,
-       explain=("L_nmh = a1 a_ISO (C/P)^3 10^6/(60 n) against the required life: a_ISO from the viscosity ratio "
+       explain=("L_nmh = a1 a_ISO (C/P)^p 10^6/(60 n) (p = 3 ball, 10/3 roller) against the required life: a_ISO "
+                "(ISO 281's radial-ball formula for deep groove and angular contact ball bearings, its radial-roller "
+                "formula for cylindrical, tapered and needle roller bearings; thrust bearings not covered) from the "
+                "viscosity ratio "
                 "kappa = nu/nu1 (nu the lubricant's viscosity at the operating temperature, from its 40/100 degC "
                 "values by ASTM D341; nu1 the ISO 281 rated viscosity for the speed and mean diameter), the "
                 "contamination factor e_C (ISO 281 Table 13) and the fatigue load limit Pu (catalogue), capped at 50 "
@@ -201,19 +205,20 @@ def check_bearing_modified_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLik
     notes += [f"nu = {fmt(m.nu)} at operating temperature, nu1 = {fmt(m.nu1)} (ISO 281 rated viscosity, d_m = "
               f"{fmt((b.d + b.D).to('mm') / 2)}), kappa = {m.kappa:.3g}",
               f"e_C = {m.eC:g}, e_C·Pu/P = {m.eC * float((m.Pu / m.P).m_as('')):.3g}, a_ISO = {m.a_iso:.3g}, "
-              f"a1 = {m.a1:.3g}",
+              f"a1 = {m.a1:.3g} (a_ISO formula: ISO 281 {m.family.replace('_', ' ')} bearings)",
               "ISO 281 a_ISO; SKF's a_SKF and rated-viscosity diagram differ from it (SKF's nu1 is lower)"]
     return CheckResult(
         check="bearing_modified_life", component=b.designation, demand=req, capacity=Lh,
         title="Bearing modified rating life (ISO 281 a_ISO)",
-        formula=r"L_{nmh} = a_1 a_{ISO} \left(\frac{C}{P}\right)^3 \frac{10^6}{60 n}",
+        formula=(rf"L_{{nmh}} = a_1 a_{{ISO}} \left(\frac{{C}}{{P}}\right)^{{{_p_tex(m.exponent)}}}"
+                 r" \frac{10^6}{60 n}"),
         source=ISO281_MOD,
         inputs={"P": m.P, "n": Q(to_si(n, "angular_velocity", "speed"), "rad/s").to("rpm"), "C": b.C, "Pu": b.Pu,
                 "nu": m.nu, "reliability": reliability},
         notes=tuple(notes), warnings=(*m.warnings, *_axial_warning(b, Fa)), load_case=load_case,
         details={"kappa": m.kappa, "a_iso": m.a_iso, "a1": m.a1, "eC": m.eC, "nu1": m.nu1, "L10h": life_hours(
             m.L10_rev, n)},
-        substituted=_life_substituted(m.a1, b.C, m.P, _exponent(b),
+        substituted=_life_substituted(m.a1, b.C, m.P, m.exponent,
                                       Q(abs(to_si(n, "angular_velocity", "speed")), "rad/s").to("rpm"), Lh, m.a_iso))
 
 

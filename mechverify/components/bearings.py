@@ -26,6 +26,15 @@ References
     for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1, (1.9987, 0.071739) for 1 <= kappa <= 4;
     a_ISO <= 50; kappa > 4 taken as 4; kappa < 0.1 outside the method; Table 13 (e_C guideline values).
     Constants cross-read from two independent public transcriptions (not from the standard itself).
+    For radial roller bearings
+    a_ISO = 0.1 [1 - (1.5859 - c/kappa^e) (e_C C_u/P)^0.4]^-9.185 with (c, e) = (1.3993, 0.054381) for
+    0.1 <= kappa < 0.4, (1.2348, 0.19087) for 0.4 <= kappa < 1, (1.2348, 0.071739) for 1 <= kappa <= 4;
+    constants cross-read from two independent public code transcriptions of ISO 281:2007 (a ball/roller
+    coefficient table "ISO281_A_ISO_COEFFICIENTS" of an open-source bearing module, and a wind-turbine
+    pitch-bearing fatigue script; a third, a tidal-turbine ISO 281 script, quotes the first range) and
+    checked by continuity: c/kappa^e agrees at kappa = 0.4 (1.4708 vs 1.4709) and kappa = 1.
+    Thrust bearings: the standard's thrust forms (a different load-ratio term) were not found in a
+    public source; not implemented.
 [8] ASTM D2270 (viscosity index; nu100 from nu40 and VI: mechverify.components.lubricants).
 [6] ASTM D341, viscosity-temperature relation log log(nu + 0.7) = A - B log T (T in K), fitted through
     the lubricant's viscosities at 40 and 100 degC; ISO 3448 (the VG grade is nu at 40 degC, mm^2/s).
@@ -381,14 +390,10 @@ def contamination_factor(level: str | float, dm: QuantityLike) -> float:
 KAPPA_MIN, KAPPA_MAX, A_ISO_MAX = 0.1, 4.0, 50.0
 
 
-def a_iso_ball(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, ...]]:
-    """Life modification factor a_ISO of a radial ball bearing and the warnings raised ([5] Sec. 9.3).
-
-    a_ISO = 0.1·[1 − (2.5671 − c/κ^e)^0.83·(e_C·C_u/P)^(1/3)]^−9.3, capped at 50. κ above 4 is taken as 4
-    and κ below 0.1 as 0.1 (ISO 281: the method does not apply below 0.1), each with a warning.
-    """
+def _a_iso_inputs(kappa: float, eC_Cu_over_P: float) -> tuple[float, float, list[str]]:
+    """κ clipped to ISO 281's range [0.1, 4] with a warning for each clip, and the load ratio checked ([5])."""
     k, x = float(kappa), float(eC_Cu_over_P)
-    if not k > 0 or x < 0:
+    if not k > 0 or not x >= 0:
         raise InputError(f"a_ISO needs kappa > 0 and e_C*Cu/P >= 0 (got {k:g}, {x:g})")
     warnings: list[str] = []
     if k > KAPPA_MAX:
@@ -398,12 +403,62 @@ def a_iso_ball(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, ...
         warnings.append(f"viscosity ratio kappa = {k:.3g} < 0.1: outside ISO 281's a_ISO method, clipped to 0.1 "
                         "(the lubricant film is inadequate; a_ISO is then an optimistic estimate)")
         k = KAPPA_MIN
-    c, e = (2.2649, 0.054381) if k < 0.4 else (1.9987, 0.19087) if k < 1 else (1.9987, 0.071739)
-    bracket = 1 - (2.5671 - c / k**e) ** 0.83 * x ** (1 / 3)
-    a = A_ISO_MAX if bracket <= 0 else min(0.1 * bracket**-9.3, A_ISO_MAX)
+    return k, x, warnings
+
+
+def _a_iso_capped(bracket: float, exponent: float, warnings: list[str]) -> tuple[float, tuple[str, ...]]:
+    """0.1·bracket^−exponent capped at 50 (a non-positive bracket is the cap) ([5] Sec. 9.3)."""
+    a = A_ISO_MAX if bracket <= 0 else min(0.1 * bracket**-exponent, A_ISO_MAX)
     if a >= A_ISO_MAX:
         warnings.append("a_ISO reached its cap of 50 (ISO 281 Sec. 9.3)")
     return a, tuple(warnings)
+
+
+def a_iso_ball(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, ...]]:
+    """Life modification factor a_ISO of a radial ball bearing and the warnings raised ([5] Sec. 9.3).
+
+    a_ISO = 0.1·[1 − (2.5671 − c/κ^e)^0.83·(e_C·C_u/P)^(1/3)]^−9.3, capped at 50. κ above 4 is taken as 4
+    and κ below 0.1 as 0.1 (ISO 281: the method does not apply below 0.1), each with a warning.
+    """
+    k, x, warnings = _a_iso_inputs(kappa, eC_Cu_over_P)
+    c, e = (2.2649, 0.054381) if k < 0.4 else (1.9987, 0.19087) if k < 1 else (1.9987, 0.071739)
+    return _a_iso_capped(1 - (2.5671 - c / k**e) ** 0.83 * x ** (1 / 3), 9.3, warnings)
+
+
+def a_iso_roller(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, ...]]:
+    """Life modification factor a_ISO of a radial roller bearing (cylindrical, tapered, needle) and the
+    warnings raised ([5] Sec. 9.3).
+
+    a_ISO = 0.1·[1 − (1.5859 − c/κ^e)·(e_C·C_u/P)^0.4]^−9.185 [–], with (c, e) = (1.3993, 0.054381) for
+    0.1 ≤ κ < 0.4, (1.2348, 0.19087) for 0.4 ≤ κ < 1 and (1.2348, 0.071739) for 1 ≤ κ ≤ 4; capped at 50.
+    κ = ν/ν1 [–], e_C [–], C_u the fatigue load limit [N], P the equivalent dynamic load [N]. κ outside
+    [0.1, 4] is clipped with a warning, as for ball bearings.
+    """
+    k, x, warnings = _a_iso_inputs(kappa, eC_Cu_over_P)
+    c, e = (1.3993, 0.054381) if k < 0.4 else (1.2348, 0.19087) if k < 1 else (1.2348, 0.071739)
+    return _a_iso_capped(1 - (1.5859 - c / k**e) * x**0.4, 9.185, warnings)
+
+
+#: bearing kind -> ISO 281 a_ISO family ([5]); kinds missing here have no a_ISO in this version
+A_ISO_FAMILY: dict[str, str] = {
+    "deep_groove_ball": "radial_ball",
+    "angular_contact_ball": "radial_ball",
+    "cylindrical_roller": "radial_roller",
+    "tapered_roller": "radial_roller",
+    "needle_roller": "radial_roller",
+}
+_A_ISO = {"radial_ball": a_iso_ball, "radial_roller": a_iso_roller}
+
+
+def a_iso_family(kind: str, designation: str = "") -> str:
+    """The ISO 281 a_ISO family of a bearing kind: radial_ball (deep groove, angular contact) or radial_roller
+    (cylindrical, tapered, needle); thrust bearings are refused with a ValidityError ([5])."""
+    family = A_ISO_FAMILY.get(kind)
+    if family is None:
+        raise ValidityError(f"bearing {designation}: the ISO 281 a_ISO of this version covers radial ball and radial "
+                            f"roller bearings, not {kind.replace('_', ' ')} bearings (the thrust forms of ISO 281 "
+                            "Sec. 9.3 are not implemented): use bearing_life (L10) or the maker's tool")
+    return family
 
 
 @dataclass(frozen=True)
@@ -465,6 +520,10 @@ class ModifiedLife:
     Pu: pint.Quantity
     P: pint.Quantity
     warnings: tuple[str, ...] = ()
+    #: the a_ISO formula family used: radial_ball or radial_roller
+    family: str = "radial_ball"
+    #: the life exponent p of L10 = (C/P)^p
+    exponent: float = 3.0
 
 
 def mean_diameter(b: BallBearing) -> pint.Quantity:
@@ -474,16 +533,16 @@ def mean_diameter(b: BallBearing) -> pint.Quantity:
 
 def modified_rating_life(b: BallBearing, P: QuantityLike, speed: QuantityLike, lubrication: Lubrication,
                          reliability: float = 0.9) -> ModifiedLife:
-    """L_nm = a1·a_ISO·(C/P)³ [revolutions] with κ = ν/ν1(n, d_m) and e_C·C_u/P ([5] Sec. 9).
+    """L_nm = a1·a_ISO·(C/P)^p [revolutions] with κ = ν/ν1(n, d_m) and e_C·C_u/P ([5] Sec. 9).
 
+    a_ISO of the bearing's family (:func:`a_iso_ball` for deep groove and angular contact ball bearings,
+    :func:`a_iso_roller` for cylindrical, tapered and needle roller bearings); p = 3 ball, 10/3 roller.
     C_u is the catalogue fatigue load limit P_u. ``P`` is the equivalent dynamic load (of the
-    governing case or of a duty cycle, :func:`duty_cycle_load`).
+    governing case or of a duty cycle, :func:`duty_cycle_load`). Thrust bearings are refused.
     """
     kind = getattr(b, "kind", "deep_groove_ball")
-    if kind not in ("deep_groove_ball", "angular_contact_ball"):
-        raise ValidityError(f"bearing {b.designation}: the ISO 281 a_ISO of this version covers radial ball bearings "
-                            f"(deep groove, angular contact) only, not {kind.replace('_', ' ')} bearings: use "
-                            "bearing_life (L10) or the maker's tool")
+    family = a_iso_family(kind, b.designation)
+    exponent = float(getattr(b, "life_exponent", 3.0))
     if b.Pu is None:
         raise InputError(f"bearing {b.designation}: the modified life needs the fatigue load limit Pu")
     p = to_si(P, "force", "P")
@@ -493,11 +552,12 @@ def modified_rating_life(b: BallBearing, P: QuantityLike, speed: QuantityLike, l
     kappa = float((nu / nu1).m_as(""))
     eC = contamination_factor(lubrication.contamination, dm)
     ratio = eC * to_si(b.Pu, "force") / p if p > 0 else 0.0
-    a_iso, warns = a_iso_ball(kappa, ratio)
+    a_iso, warns = _A_ISO[family](kappa, ratio)
     a1 = reliability_factor(reliability)
-    L10 = basic_rating_life(b.C, Q(p, "N"))
+    L10 = basic_rating_life(b.C, Q(p, "N"), exponent)
     return ModifiedLife(L_rev=(a1 * a_iso * L10).to("revolution"), L10_rev=L10, a1=a1, a_iso=a_iso, kappa=kappa,
-                        nu=nu, nu1=nu1, eC=eC, Pu=b.Pu, P=Q(p, "N"), warnings=warns)
+                        nu=nu, nu1=nu1, eC=eC, Pu=b.Pu, P=Q(p, "N"), warnings=warns, family=family,
+                        exponent=exponent)
 
 
 def select_bearing(Fr: QuantityLike, Fa: QuantityLike, speed: QuantityLike, required_life: QuantityLike, *,
@@ -636,5 +696,6 @@ class PlainBushing:
 __all__ = ["BallBearing", "EquivalentLoad", "PlainBushing", "bearing", "bearing_names", "bearing_catalogue",
            "iso281_factors", "equivalent_dynamic_load", "basic_rating_life", "life_hours", "reliability_factor",
            "equivalent_static_load", "bushing_pressure", "sliding_speed", "rated_viscosity", "viscosity_at_temperature",
-           "iso_vg_viscosity", "contamination_factor", "a_iso_ball", "Lubrication", "ModifiedLife", "mean_diameter",
+           "iso_vg_viscosity", "contamination_factor", "a_iso_ball", "a_iso_roller", "a_iso_family",
+           "A_ISO_FAMILY", "Lubrication", "ModifiedLife", "mean_diameter",
            "modified_rating_life", "DutyCycleLoad", "duty_cycle_load", "CONTAMINATION_LEVELS", "select_bearing"]

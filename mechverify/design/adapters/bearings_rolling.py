@@ -77,7 +77,7 @@ ROLLING = REGISTRY.register(ComponentType(
               default="single", choices=ARRANGEMENTS),
         *_COMMON,
         Field("viscosity", "str", "lubricant viscosity at the operating temperature (enables "
-                                  "bearing_modified_life; radial ball bearings only)"),
+                                  "bearing_modified_life; not for thrust bearings)"),
         Field("viscosity_40", "str", "lubricant viscosity at 40 degC"),
         Field("iso_vg", "int", "ISO 3448 viscosity grade, instead of viscosity_40"),
         Field("viscosity_100", "str", "lubricant viscosity at 100 degC"),
