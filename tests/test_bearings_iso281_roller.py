@@ -4,9 +4,11 @@ Sources
 -------
 * ISO 281:2007 Sec. 9.3 (the standard itself was not reachable): the radial-roller formula
   a_ISO = 0.1 [1 - (1.5859 - c/kappa^e) (e_C C_u/P)^0.4]^-9.185, (c, e) = (1.3993, 0.054381) for 0.1 <= kappa < 0.4,
-  (1.2348, 0.19087) for 0.4 <= kappa < 1, (1.2348, 0.071739) for 1 <= kappa <= 4, cross-read from two independent
-  public code transcriptions (an open-source bearing module's coefficient table "ISO281_A_ISO_COEFFICIENTS" and a
-  wind-turbine pitch-bearing fatigue script; a tidal-turbine ISO 281 script quotes the first range).
+  (1.2348, 0.19087) for 0.4 <= kappa < 1, (1.2348, 0.071739) for 1 <= kappa <= 4 (Eqs. (34)-(36) as numbered there),
+  cross-read from independent public code transcriptions: a wind-turbine roller-bearing script quoting ISO 281:2007
+  Sec. 9.3.4 Eqs. (34)-(36) (it compares them with MASTA point values, which it does not print), a Rust bearing
+  solver naming Eqs. (31)-(33) ball / (34)-(36) roller, an open-source bearing module's coefficient table
+  "ISO281_A_ISO_COEFFICIENTS"; a tidal-turbine ISO 281 script quotes the first range.
 * No printed a_ISO value for a roller bearing (ISO 281 Annex, SKF a_SKF diagram reading, worked example) was found in
   the corpora: the numbers below are HAND CALCULATIONS from the formula (logarithms worked by hand, four figures), not
   printed values. The structural tests (continuity of the three kappa ranges, which a mistyped constant breaks) are
@@ -135,3 +137,35 @@ def test_modified_life_check_on_rollers_with_substituted_line_and_thrust_refused
         assert_substituted(r)
     with pytest.raises(ValidityError, match="thrust"):
         bc.check_bearing_modified_life(rolling_bearing("51105"), "0 N", "2 kN", "500 rpm", "1000 h", LUB)
+
+
+ROLLER_DESIGN = """
+[design]
+name = "roller modified life"
+[requirements]
+bearing_life = "20000 h"
+[components.roller]
+type = "rolling_bearing"
+model = "NU 205 ECP"
+iso_vg = 68
+viscosity_index = 95
+operating_temperature = "60 degC"
+[load_cases.run.roller]
+radial_force = "3 kN"
+speed = "1500 rpm"
+"""
+
+
+def test_design_file_roller_runs_modified_life(tmp_path):
+    """A rolling_bearing roller with a lubricant gets bearing_modified_life (radial-roller a_ISO, exponent 10/3):
+    the same result as the direct check call."""
+    from mechverify.design import load
+
+    p = tmp_path / "d.toml"
+    p.write_text(ROLLER_DESIGN)
+    rs = {(r.component, r.check): r for r in load(p).verify()}
+    r = rs[("roller", "bearing_modified_life")]
+    direct = bc.check_bearing_modified_life(rolling_bearing("NU 205 ECP"), "3 kN", "0 N", "1500 rpm", "20000 h", LUB)
+    assert r.capacity.m_as("hour") == pytest.approx(direct.capacity.m_as("hour"), rel=1e-12)
+    assert r.details["a_iso"] == pytest.approx(direct.details["a_iso"], rel=1e-12)
+    assert_substituted(r)

@@ -29,10 +29,12 @@ References
     For radial roller bearings
     a_ISO = 0.1 [1 - (1.5859 - c/kappa^e) (e_C C_u/P)^0.4]^-9.185 with (c, e) = (1.3993, 0.054381) for
     0.1 <= kappa < 0.4, (1.2348, 0.19087) for 0.4 <= kappa < 1, (1.2348, 0.071739) for 1 <= kappa <= 4;
-    constants cross-read from two independent public code transcriptions of ISO 281:2007 (a ball/roller
-    coefficient table "ISO281_A_ISO_COEFFICIENTS" of an open-source bearing module, and a wind-turbine
-    pitch-bearing fatigue script; a third, a tidal-turbine ISO 281 script, quotes the first range) and
-    checked by continuity: c/kappa^e agrees at kappa = 0.4 (1.4708 vs 1.4709) and kappa = 1.
+    (ISO 281:2007 Sec. 9.3, Eqs. (34)-(36) as numbered in the transcriptions; the ball form is Eqs. (31)-(33)).
+    Constants cross-read from independent public code transcriptions of ISO 281:2007 (a wind-turbine
+    roller-bearing script quoting the standard's Eqs. (34)-(36) and comparing them with MASTA point values;
+    a Rust bearing solver naming Eqs. (31)-(36); the coefficient table "ISO281_A_ISO_COEFFICIENTS" of an
+    open-source bearing module; a tidal-turbine ISO 281 script quotes the first range) and checked by
+    continuity: c/kappa^e agrees at kappa = 0.4 (1.4708 vs 1.4709) and kappa = 1.
     Thrust bearings: the standard's thrust forms (a different load-ratio term) were not found in a
     public source; not implemented.
 [8] ASTM D2270 (viscosity index; nu100 from nu40 and VI: mechverify.components.lubricants).
@@ -432,7 +434,8 @@ def a_iso_roller(kappa: float, eC_Cu_over_P: float) -> tuple[float, tuple[str, .
     a_ISO = 0.1·[1 − (1.5859 − c/κ^e)·(e_C·C_u/P)^0.4]^−9.185 [–], with (c, e) = (1.3993, 0.054381) for
     0.1 ≤ κ < 0.4, (1.2348, 0.19087) for 0.4 ≤ κ < 1 and (1.2348, 0.071739) for 1 ≤ κ ≤ 4; capped at 50.
     κ = ν/ν1 [–], e_C [–], C_u the fatigue load limit [N], P the equivalent dynamic load [N]. κ outside
-    [0.1, 4] is clipped with a warning, as for ball bearings.
+    [0.1, 4] is clipped with a warning, as for ball bearings. ISO 281:2007 Sec. 9.3, Eqs. (34)-(36) (numbering
+    as quoted by the public transcriptions listed in [5]; the standard itself was not consulted).
     """
     k, x, warnings = _a_iso_inputs(kappa, eC_Cu_over_P)
     c, e = (1.3993, 0.054381) if k < 0.4 else (1.2348, 0.19087) if k < 1 else (1.2348, 0.071739)
