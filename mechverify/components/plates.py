@@ -170,6 +170,27 @@ def hole_grid(first_center: Any, nx: int, ny: int, pitch_x: Any, pitch_y: Any, d
                  for j in range(int(ny)) for i in range(int(nx)))
 
 
+def rectangle_cutout(center: Any, size: Any, corner_radius: Any = None, unit: str | None = None) -> pint.Quantity:
+    """A rectangular cut-out of sides ``size`` = (dx, dy) centred at ``center``, its corners rounded to
+    ``corner_radius`` (arcs of 6 segments per quarter circle), as outline points [m] for ``Plate(cutouts=[...])``.
+
+    Raises:
+        InputError: a side not positive (``size: ...``), a corner radius not positive or not below half the
+            shorter side (``corner_radius: ...``).
+    """
+    cx, cy = _point(center, "center", unit)
+    dx, dy = _point(size, "size", unit)
+    if not (dx > 0 and dy > 0):
+        raise InputError(f"size: both sides must be positive, got {fmt_mm(dx)}, {fmt_mm(dy)}")
+    poly = shapely.box(cx - dx / 2, cy - dy / 2, cx + dx / 2, cy + dy / 2)
+    if corner_radius is not None:
+        r = _length(corner_radius, "corner_radius", unit)
+        if not 2 * r < min(dx, dy):
+            raise InputError("corner_radius: must be less than half the shorter side")
+        poly = poly.buffer(-r, join_style="mitre").buffer(r, quad_segs=6)
+    return Q(np.asarray(poly.exterior.coords)[:-1], "m")
+
+
 @dataclass(frozen=True)
 class Plate:
     """A flat plate of uniform ``thickness``: outline polygon, circular ``holes``, polygonal ``cutouts``.
@@ -747,9 +768,10 @@ def roark_circular_plate(radius: QuantityLike, thickness: QuantityLike, E: Quant
                                  "load": q if kind == "uniform" else W})
 
 
-__all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "EdgeSupport", "PointSupport", "HoleSupport", "PlatePointLoad",
-           "PatchLoad", "PressureLoad", "PlateSelfWeight", "PlateModel", "SUPPORT_CONDITIONS", "HOLE_SEGMENTS",
-           "PlateEstimate", "roark_rectangular_plate", "roark_circular_plate", "equivalent_contact_radius"]
+__all__ = ["Plate", "Hole", "corner_holes", "hole_grid", "rectangle_cutout", "EdgeSupport", "PointSupport",
+           "HoleSupport", "PlatePointLoad", "PatchLoad", "PressureLoad", "PlateSelfWeight", "PlateModel",
+           "SUPPORT_CONDITIONS", "HOLE_SEGMENTS", "PlateEstimate", "roark_rectangular_plate", "roark_circular_plate",
+           "equivalent_contact_radius"]
 
 # Former names (issue 16: one meaning per public class name across the package), deprecated.
 __getattr__ = renamed(__name__, {"PointLoad": "PlatePointLoad", "SelfWeight": "PlateSelfWeight"})

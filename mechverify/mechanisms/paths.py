@@ -425,6 +425,11 @@ class RRArm:
         V = g * (m1 * lc1 * np.sin(m.q1) + M2 * (l1 * np.sin(m.q1) + lc2 * np.sin(m.q1 + m.q2)))
         return T + V
 
+    def joint_inertias(self, q2: np.ndarray) -> tuple[np.ndarray, float]:
+        """(d11 at each q2, d22) [kg m^2]: the inertia about q1 (links and payload) and about q2 (class docstring)."""
+        l1, _l2, m1, lc1, I1, M2, lc2, I2, _g = self._si()
+        return m1 * lc1**2 + M2 * (l1**2 + lc2**2 + 2 * l1 * lc2 * np.cos(q2)) + I1 + I2, M2 * lc2**2 + I2
+
     def reach(self) -> tuple[float, float]:
         """(inner, outer) radius [m] of the annulus the tip reaches without joint limits."""
         l1, l2 = self._si()[:2]

@@ -3,7 +3,8 @@
 The arm's ``path`` table: a polar curve ``r`` in ``phi`` (``"8 cm - 1.5 cm * cos(4*phi)"``) about ``centre``,
 a Cartesian curve ``x``, ``y`` in ``u``, or sampled ``points`` (a C2 spline through them); walked at constant
 ``speed``, or from rest to rest with a trapezoidal speed profile when ``acceleration`` is given too. Parsing only:
-kinematics and dynamics are :mod:`mechverify.mechanisms.paths` (``walk_curve``, ``RPArm``, ``RRArm``).
+the arm, its motion, efforts and inertias are :mod:`mechverify.mechanisms.arm_on_path` (``rp_arm_on_path``,
+``rr_arm_on_path``, ``five_bar_on_path``; kinematics and dynamics in :mod:`mechverify.mechanisms.paths`).
 
 A profile ``{ type = "joint_motion", mechanism = "arm", joint = "q1" }`` is the joint's motion along the path
 together with the joint's effort from the arm's dynamics (Lagrange); a ``drive`` on that profile adds it to its
@@ -13,66 +14,19 @@ own load, so the motor checks follow from the path. Outputs: ``q1_peak_torque``,
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
-from mechverify.design.adapters.path_parsing import walk_path
+from mechverify.design.adapters.path_parsing import parse_bodies, walk_path
 from mechverify.design.spec import REGISTRY, ComponentType, Field, Output
 from mechverify.errors import InputError, MechverifyError
-from mechverify.mechanisms import paths as mp
+from mechverify.mechanisms.arm_on_path import ArmOnPath, five_bar_on_path, rp_arm_on_path, rr_arm_on_path
 from mechverify.motion.profiles import ProfileSamples
-from mechverify.units import Q, Quantity, to_si
+from mechverify.units import Q, Quantity
 
 # ------------------------------------------------------------------------------------------ the arm
-
-@dataclasses.dataclass(frozen=True)
-class ArmOnPath:
-    """The built arm, the path it walks, its joint motion and joint efforts (SI arrays)."""
-
-    name: str
-    arm: Any
-    path: mp.PathSamples
-    motion: Any
-    efforts: tuple[np.ndarray, np.ndarray]
-    q1_inertia: np.ndarray  # inertia about the first joint at every sample [kg m^2]
-    kinds: tuple[str, str]  # "angle" / "length" of q1, q2
-    q2_inertia: np.ndarray | None = None  # five-bar: the payload's inertia about the right motor
-
-    def joint(self, name: str) -> tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(kind, q, q', q'', effort) of joint ``q1`` or ``q2``."""
-        i = {"q1": 0, "q2": 1}[name]
-        m = self.motion
-        q, dq, ddq = ((m.q1, m.dq1, m.ddq1), (m.q2, m.dq2, m.ddq2))[i]
-        return self.kinds[i], q, dq, ddq, self.efforts[i]
-
-
-def _bodies(p: Mapping[str, Any], link: int | None) -> list[mp.LinkBody]:
-    out = []
-    for i, b in enumerate(p.get("bodies", [])):
-        where = f"bodies[{i}]"
-        if not isinstance(b, dict):
-            raise InputError(f"{where}: expected a table such as {{ shape = \"rod\", mass = \"99 g\", length = "
-                             f"\"25 cm\" }}")
-        extra = [k for k in b if k not in ("shape", "mass", "length", "radius", "inner_radius", "start", "name",
-                                           "link")]
-        if extra:
-            raise InputError(f"{where}.{extra[0]}: unknown key (allowed: shape, mass, length, radius, inner_radius, "
-                             "start, name, link)")
-        if "shape" not in b or "mass" not in b:
-            raise InputError(f"{where}: needs shape and mass")
-        on = int(b.get("link", 1))
-        if link is None and on != 1:
-            raise InputError(f"{where}.link: an RP arm's bodies turn with q1 (link 1); the carriage is carriage_mass")
-        if link is not None and on not in (1, 2):
-            raise InputError(f"{where}.link: expected 1 or 2, got {b.get('link')!r}")
-        if link is None or on == link:
-            out.append(mp.LinkBody(b["shape"], b["mass"], b.get("length"), b.get("radius"), b.get("inner_radius"),
-                                   b.get("start", "0 m"), b.get("name", where)))
-    return out
-
 
 def _build_arm(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
     name = p["_name"]
@@ -82,7 +36,17 @@ def _build_arm(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
     return cache[name]
 
 
+_FIVE_BAR = ("base", "proximal_left", "distal_left", "distal_right", "proximal_right")
+_NOT_A_KEY = {"rp": (("l1", "l2", "elbow", "q2_min", "q2_max"), "its stroke is reach_min, reach_max"),
+              "rr": (("reach_min", "reach_max", "carriage_mass", "arm_inertia"),
+                     "links l1, l2; bodies with link = 1 or 2; payload"),
+              "five_bar": (("reach_min", "reach_max", "carriage_mass", "arm_inertia", "l1", "l2", "elbow", "bodies"),
+                           "links base, proximal_left, distal_left, distal_right, proximal_right; payload at the "
+                           "tool")}
+
+
 def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
+    """Parse and call :mod:`mechverify.mechanisms.arm_on_path` (bodies, arm, motion, efforts, inertias)."""
     name, kind = p["_name"], p["kind"]
     g = p.get("gravity", (ctx.get("requirements", {}) if isinstance(ctx, Mapping) else {}).get("g", "9.80665 m/s^2"))
     params = ctx.get("parameters", {}) if isinstance(ctx, Mapping) else {}
@@ -92,77 +56,35 @@ def _arm_on_path(p: Mapping[str, Any], ctx: Any) -> ArmOnPath:
         msg = str(exc)
         raise InputError(msg if msg.startswith("path") else f"path: {msg}") from None
     lim = {k: p[k] for k in ("q1_min", "q1_max") if k in p}
-    fb_keys = ("base", "proximal_left", "distal_left", "distal_right", "proximal_right", "working_mode")
     if kind != "five_bar":
-        for k in fb_keys:
+        for k in (*_FIVE_BAR, "working_mode"):
             if k in p:
                 raise InputError(f"{k}: a key of a five_bar arm, not of an {kind.upper()} arm")
-    else:
-        return _five_bar_on_path(p, path, g)
+    for k in _NOT_A_KEY[kind][0]:
+        if k in p:
+            what = "a five_bar arm" if kind == "five_bar" else f"an {kind.upper()} arm"
+            raise InputError(f"{k}: not a key of {what} ({_NOT_A_KEY[kind][1]})")
     if kind == "rp":
-        for k in ("l1", "l2", "elbow", "q2_min", "q2_max"):
-            if k in p:
-                raise InputError(f"{k}: not a key of an RP arm (its stroke is reach_min, reach_max)")
-        m_a, r_a, J_a = mp.compose_bodies(_bodies(p, None))
-        J = J_a + (to_si(p["arm_inertia"], "inertia", "arm_inertia") if "arm_inertia" in p else 0.0)
-        mc = to_si(p.get("carriage_mass", "0 kg"), "mass", "carriage_mass") + to_si(p.get("payload", "0 kg"), "mass",
-                                                                                     "payload")
-        arm = mp.RPArm(reach_min=p.get("reach_min", "0 m"), reach_max=p.get("reach_max"),
-                       carriage_mass=Q(mc, "kg"),
-                       arm_inertia=Q(J, "kg*m^2"), arm_mass=Q(m_a, "kg"), arm_com=Q(r_a, "m"), gravity=g, name=name,
-                       **lim)
-        motion = arm.inverse(path)
-        J1 = J + mc * motion.q2**2
-        kinds = ("angle", "length")
-    else:
-        for k in ("reach_min", "reach_max", "carriage_mass", "arm_inertia"):
-            if k in p:
-                raise InputError(f"{k}: not a key of an RR arm (links l1, l2; bodies with link = 1 or 2; payload)")
+        return rp_arm_on_path(path, parse_bodies(p, None), reach_min=p.get("reach_min", "0 m"),
+                              reach_max=p.get("reach_max"), carriage_mass=p.get("carriage_mass", "0 kg"),
+                              payload=p.get("payload", "0 kg"), arm_inertia=p.get("arm_inertia", "0 kg*m^2"),
+                              gravity=g, name=name, **lim)
+    if kind == "rr":
         if "l1" not in p or "l2" not in p:
             raise InputError("l1, l2: an RR arm needs both link lengths")
-        l1 = to_si(p["l1"], "length", "l1")
-        links = []
-        for k in (1, 2):
-            m, c, Jj = mp.compose_bodies(_bodies(p, k))
-            links.append((m, c, Jj - m * c * c))  # centroidal
-        arm = mp.RRArm(p["l1"], p["l2"], p.get("elbow", "down"), Q(links[0][0], "kg"), Q(links[1][0], "kg"),
-                       Q(links[0][1], "m") if links[0][0] > 0 else None,
-                       Q(links[1][1], "m") if links[1][0] > 0 else None,
-                       Q(links[0][2], "kg*m^2"), Q(links[1][2], "kg*m^2"), p.get("payload", "0 kg"), g,
-                       name=name, **lim, **{k: p[k] for k in ("q2_min", "q2_max") if k in p})
-        motion = arm.inverse(path)
-        _l1, _l2, m1, lc1, I1, M2, lc2, I2, _g = arm._si()
-        J1 = m1 * lc1**2 + M2 * (l1**2 + lc2**2 + 2 * l1 * lc2 * np.cos(motion.q2)) + I1 + I2  # d11
-        kinds = ("angle", "angle")
-    return ArmOnPath(name, arm, path, motion, arm.joint_loads(motion), np.asarray(J1, float), kinds)
-
-
-def _five_bar_on_path(p: Mapping[str, Any], path: mp.PathSamples, g: Any) -> ArmOnPath:
-    """A five-bar (massless links, the payload a point mass at the tool) along the path: q1 = left motor,
-    q2 = right motor; torques by virtual work of the payload's d'Alembert force."""
+        return rr_arm_on_path(path, p["l1"], p["l2"], link1_bodies=parse_bodies(p, 1), link2_bodies=parse_bodies(p, 2),
+                              elbow=p.get("elbow", "down"), payload=p.get("payload", "0 kg"), gravity=g, name=name,
+                              **lim, **{k: p[k] for k in ("q2_min", "q2_max") if k in p})
     from mechverify.mechanisms.fivebar import FiveBar
 
-    for k in ("reach_min", "reach_max", "carriage_mass", "arm_inertia", "l1", "l2", "elbow", "bodies"):
-        if k in p:
-            raise InputError(f"{k}: not a key of a five_bar arm (links base, proximal_left, distal_left, "
-                             "distal_right, proximal_right; payload at the tool)")
-    missing = [k for k in ("base", "proximal_left", "distal_left", "distal_right", "proximal_right") if k not in p]
+    missing = [k for k in _FIVE_BAR if k not in p]
     if missing:
         raise InputError(f"{missing[0]}: a five_bar arm needs its five lengths")
-    fb = FiveBar(p["base"], p["proximal_left"], p["distal_left"], p["distal_right"], p["proximal_right"],
-                 name=p["_name"])
-    mode = p.get("working_mode", "-+")
+    fb = FiveBar(*(p[k] for k in _FIVE_BAR), name=name)
     limits = {j: (p.get(f"{q}_min"), p.get(f"{q}_max"))
               for j, q in (("theta_left", "q1"), ("theta_right", "q2")) if f"{q}_min" in p or f"{q}_max" in p}
-    motion = mp.five_bar_inverse(fb, path, mode, limits)
-    payload = p.get("payload", Q(0, "kg"))
-    efforts = mp.five_bar_payload_torques(fb, path, motion, payload, g, mode)
-    m = to_si(payload, "mass", "payload")
-    J = np.zeros((len(path.t), 2))
-    for i in range(len(path.t)):  # the payload's inertia about each motor: m |dP/dtheta_k|^2
-        jac = fb.jacobian(fb.inverse((Q(path.x[i], "m"), Q(path.y[i], "m")), mode)).m_as("m")
-        J[i] = m * np.sum(jac**2, axis=0)
-    return ArmOnPath(p["_name"], fb, path, motion, efforts, J[:, 0], ("angle", "angle"), J[:, 1])
+    return five_bar_on_path(fb, path, working_mode=p.get("working_mode", "-+"), payload=p.get("payload", "0 kg"),
+                            gravity=g, limits=limits, name=name)
 
 
 def _peak(i: int, what: str) -> Any:
@@ -294,15 +216,7 @@ class JointMotionProfile:
 
     @property
     def joint_inertia(self) -> float:
-        a = self._resolve()
-        if self.joint == "q1":
-            return float(np.max(a.q1_inertia))
-        if a.q2_inertia is not None:
-            return float(np.max(a.q2_inertia))
-        if a.kinds[1] == "length":
-            return to_si(a.arm.carriage_mass, "mass", "carriage_mass")
-        _l1, _l2, _m1, _lc1, _I1, M2, lc2, I2, _g = a.arm._si()
-        return M2 * lc2**2 + I2  # d22
+        return self._resolve().joint_inertia(self.joint)
 
     def sample(self, points_per_segment: int = 0) -> ProfileSamples:
         kind, q, dq, ddq, _ = self._resolve().joint(self.joint)

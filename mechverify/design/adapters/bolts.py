@@ -73,7 +73,7 @@ def _joint(p: Mapping[str, Any]) -> b.BoltedJoint:
 
 
 def _point(v: Any, unit: str, path: str) -> tuple[float, float]:
-    from mechverify.design.adapters.plate_fea import parse_point  # plate_fea imports this module
+    from mechverify.design.adapters.common import parse_point
     x, y = parse_point(v, unit, path)
     return to_si(x, "length", path), to_si(y, "length", path)
 

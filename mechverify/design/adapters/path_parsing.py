@@ -1,6 +1,6 @@
 """Parsing of a ``planar_arm``'s ``path`` table (no component type here): curves from expressions with units
 (evaluated vectorised: the expression's postfix program on numpy arrays), sampled points, constant speed or a
-trapezoidal walk; kinematics in :mod:`mechverify.mechanisms.paths`."""
+trapezoidal walk; kinematics in :mod:`mechverify.mechanisms.paths`. Also the arm's ``bodies`` (``parse_bodies``)."""
 
 from __future__ import annotations
 
@@ -161,4 +161,33 @@ def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSam
     return mp.walk_curve(fn, rng, Q(speed, "m/s"), samples=samples)
 
 
-__all__ = ["walk_path", "PATH_KEYS"]
+
+# ------------------------------------------------------------------------------------------ bodies on the links
+
+def parse_bodies(p: Mapping[str, Any], link: int | None) -> list[mp.LinkBody]:
+    """A ``planar_arm``'s ``bodies`` on link ``link`` (1 or 2; None: an RP arm, all on link 1) as LinkBody."""
+    out = []
+    for i, b in enumerate(p.get("bodies", [])):
+        where = f"bodies[{i}]"
+        if not isinstance(b, dict):
+            raise InputError(f"{where}: expected a table such as {{ shape = \"rod\", mass = \"99 g\", length = "
+                             f"\"25 cm\" }}")
+        extra = [k for k in b if k not in ("shape", "mass", "length", "radius", "inner_radius", "start", "name",
+                                           "link")]
+        if extra:
+            raise InputError(f"{where}.{extra[0]}: unknown key (allowed: shape, mass, length, radius, inner_radius, "
+                             "start, name, link)")
+        if "shape" not in b or "mass" not in b:
+            raise InputError(f"{where}: needs shape and mass")
+        on = int(b.get("link", 1))
+        if link is None and on != 1:
+            raise InputError(f"{where}.link: an RP arm's bodies turn with q1 (link 1); the carriage is carriage_mass")
+        if link is not None and on not in (1, 2):
+            raise InputError(f"{where}.link: expected 1 or 2, got {b.get('link')!r}")
+        if link is None or on == link:
+            out.append(mp.LinkBody(b["shape"], b["mass"], b.get("length"), b.get("radius"), b.get("inner_radius"),
+                                   b.get("start", "0 m"), b.get("name", where)))
+    return out
+
+
+__all__ = ["walk_path", "PATH_KEYS", "parse_bodies"]

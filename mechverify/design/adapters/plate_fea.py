@@ -33,14 +33,13 @@ from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
 from mechverify.design.adapters.bolts import plate_bolt_outputs
-from mechverify.design.adapters.plate_parsing import (  # noqa: F401  (parse_point: the bolt adapters import it here)
+from mechverify.design.adapters.plate_parsing import (
     _cutouts,
     _holes,
     _loads,
     _points,
     _si,
     _supports,
-    parse_point,
 )
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError

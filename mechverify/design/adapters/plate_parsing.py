@@ -1,7 +1,7 @@
 """Parsing of the ``plate_fea`` design-file values: points ``"x, y"``, hole groups, cut-outs, supports and loads.
 
-Used by :mod:`mechverify.design.adapters.plate_fea` (and ``parse_point`` by the bolt adapters); declares no
-component type.
+Used by :mod:`mechverify.design.adapters.plate_fea` (``parse_point``, shared with the bolt adapters, is in
+``common``); declares no component type.
 """
 
 from __future__ import annotations
@@ -11,40 +11,17 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-import shapely
 from shapely.geometry import Point as ShapelyPoint
 from shapely.geometry import Polygon as ShapelyPolygon
 
 from mechverify.components import plates as pl
-from mechverify.design.adapters.common import inline_table
+from mechverify.design.adapters.common import inline_table, parse_point
 from mechverify.errors import InputError, MechverifyError, suggest
 from mechverify.units import Q, as_quantity, fmt
 
 SUPPORT_TYPES = {"fixed": "clamped", "clamped": "clamped", "pinned": "simply_supported",
                  "simply_supported": "simply_supported"}
 RECT_EDGES = {"bottom": 0, "right": 1, "top": 2, "left": 3}
-
-
-
-def _number_or_length(s: str, unit: str, path: str) -> Any:
-    s = s.strip()
-    try:
-        return Q(float(s), unit)
-    except ValueError:
-        return as_quantity(s, "length", path)
-
-
-def parse_point(v: Any, unit: str, path: str) -> tuple[Any, Any]:
-    """``"x, y"`` (numbers in ``unit``, or lengths with units) -> two length quantities."""
-    if not isinstance(v, str):
-        raise InputError(f"{path}: expected a point as a string \"x, y\" (in {unit}), got {v!r}")
-    parts = v.split(",")
-    if len(parts) != 2 or not all(p.strip() for p in parts):
-        raise InputError(f"{path}: expected a point \"x, y\" (two numbers in {unit}, or two lengths), got {v!r}")
-    try:
-        return (_number_or_length(parts[0], unit, f"{path}.x"), _number_or_length(parts[1], unit, f"{path}.y"))
-    except MechverifyError as exc:
-        raise InputError(f"{path}: {str(exc).split(': ', 1)[-1]} in {v!r}") from None
 
 
 def _points(v: Any, unit: str, path: str, minimum: int = 3) -> list[tuple[Any, Any]]:
@@ -120,17 +97,12 @@ def _cutouts(p: Mapping[str, Any], unit: str, shell: ShapelyPolygon) -> list[Any
         else:
             if "size" not in t:
                 raise InputError(f"{path}.size: missing (\"dx, dy\" of the rectangle)")
-            cx, cy = _si(parse_point(t["center"], unit, f"{path}.center"))
-            dx, dy = parse_point(t["size"], unit, f"{path}.size")
-            dx, dy = dx.m_as("m"), dy.m_as("m")
-            if not (dx > 0 and dy > 0):
-                raise InputError(f"{path}.size: both sides must be positive, got {t['size']!r}")
-            poly = shapely.box(cx - dx / 2, cy - dy / 2, cx + dx / 2, cy + dy / 2)
-            if "corner_radius" in t:
-                r = _positive(t["corner_radius"], "length", f"{path}.corner_radius").m_as("m")
-                if not 2 * r < min(dx, dy):
-                    raise InputError(f"{path}.corner_radius: must be less than half the shorter side")
-                poly = poly.buffer(-r, join_style="mitre").buffer(r, quad_segs=6)
+            c, sz = parse_point(t["center"], unit, f"{path}.center"), parse_point(t["size"], unit, f"{path}.size")
+            r = _positive(t["corner_radius"], "length", f"{path}.corner_radius") if "corner_radius" in t else None
+            try:
+                poly = ShapelyPolygon(pl.rectangle_cutout(c, sz, r).m_as("m"))
+            except InputError as exc:
+                raise InputError(f"{path}.{exc}") from None
         if not shell.contains(poly):
             raise InputError(f"{path}: the cut-out is not inside the plate outline")
         out.append(Q(np.asarray(poly.exterior.coords)[:-1], "m"))
@@ -227,7 +199,7 @@ def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
               "moment_x": _q(t.get("moment_x", "0 N*m"), "torque", f"{path}.moment_x"),
               "moment_y": _q(t.get("moment_y", "0 N*m"), "torque", f"{path}.moment_y")}
         try:
-            out.append(pl.PointLoad(parse_point(t["at"], unit, f"{path}.at"), **kw))
+            out.append(pl.PlatePointLoad(parse_point(t["at"], unit, f"{path}.at"), **kw))
         except MechverifyError as exc:
             raise InputError(f"{path}: {exc}") from None
     for i, t in enumerate(loads.get("patch_loads", [])):
@@ -253,7 +225,7 @@ def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
     if "pressure" in loads:
         out.append(pl.PressureLoad(loads["pressure"]))
     if loads.get("self_weight"):
-        out.append(pl.SelfWeight(g=g))
+        out.append(pl.PlateSelfWeight(g=g))
     if not out:
         raise InputError(f"{base}: no load (point_loads, patch_loads, pressure or self_weight = true)")
     return out
