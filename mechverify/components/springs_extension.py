@@ -91,7 +91,7 @@ class ExtensionSpring(sf.HelicalSpring):
     @property
     def hook_side_radius(self) -> pint.Quantity | None:
         """Side-bend radius r2 at section B [mm], or ``None`` when not given."""
-        return None if self.si["r2"] is None else Q(self.si["r2"], "m").to("mm")
+        return None if math.isnan(self.si["r2"]) else Q(self.si["r2"], "m").to("mm")
 
     @property
     def active_coils(self) -> float:
