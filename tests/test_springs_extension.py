@@ -1,3 +1,4 @@
+"""ExtensionSpring accessors (Shigley 10th ed. Sec. 10-11)."""
 
 
 def test_hook_side_radius_is_none_when_not_given():
