@@ -103,7 +103,7 @@ def test_mode_shape_figures(bar):
     assert figure_for(r).startswith("data:image/svg")
     r = check_buckling_load_factor(buckling.buckling(bar, 1))
     assert figure_for(r).startswith("data:image/svg")
-    support = getattr(fp, "FrameSupport", None) or fp.Support
+    support = fp.FrameSupport
     fr = Frame({"A": ["0 mm"] * 3, "B": ["500 mm", "0 mm", "0 mm"]},
                [Member("A", "B", sections.circle("20 mm"), "Structural Steel")], [support("A", "fixed")])
     r = check_natural_frequency(frame_modes(fr, 2), minimum="20 Hz")

@@ -31,9 +31,8 @@ from mechverify.fea.frame.element import local_stiffness
 from mechverify.fea.frame.modal import PointMass, bending_shapes, element_mass, frame_buckling, frame_modes
 from mechverify.materials.database import get
 
-# the frame API's new names (FramePointLoad, FrameSupport) with the old ones as a fallback
-PointLoad = getattr(frame_pkg, "FramePointLoad", None) or frame_pkg.PointLoad
-Support = getattr(frame_pkg, "FrameSupport", None) or frame_pkg.Support
+PointLoad = frame_pkg.FramePointLoad
+Support = frame_pkg.FrameSupport
 STEEL = get("Structural Steel")
 E, G, RHO = 200e9, 200e9 / 2.6, 7850.0
 

@@ -53,7 +53,7 @@ def _region(t: Any, unit: str, path: str) -> Any:
 
 
 def _supports(items: Any, unit: str) -> tuple[Any, ...]:
-    from mechverify.fea.loads import Fixed, Support
+    from mechverify.fea.loads import Fixed, Restraint
 
     out = []
     for i, s in enumerate(items or []):
@@ -63,7 +63,7 @@ def _supports(items: Any, unit: str) -> tuple[Any, ...]:
         comps = {c.strip() for c in str(hold).split(",")}
         if not comps <= {"x", "y", "z"} or not comps:
             raise InputError(f"{path}.hold: expected components such as \"x, z\", got {hold!r}")
-        out.append(Fixed(region) if comps == {"x", "y", "z"} else Support(region, *(c in comps for c in "xyz")))
+        out.append(Fixed(region) if comps == {"x", "y", "z"} else Restraint(region, *(c in comps for c in "xyz")))
     if not out:
         raise InputError("supports: give at least one support ({named | face | plane | box, hold})")
     return tuple(out)

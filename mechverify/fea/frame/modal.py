@@ -66,8 +66,8 @@ if TYPE_CHECKING:
     from mechverify.fea.frame.analysis import Frame
     from mechverify.fea.frame.mesh import _Mesh
 
-# the nodal point load (``FramePointLoad``; ``PointLoad`` before the rename of issue 16/26's API pass)
-_POINT_LOAD: Any = getattr(_model, "FramePointLoad", None) or _model.PointLoad
+# the nodal point load
+_POINT_LOAD: Any = _model.FramePointLoad
 #: Largest number of free unknowns solved by the dense symmetric eigensolver.
 DENSE_LIMIT = 2500
 #: Default elements per member for modal and buckling analyses.
