@@ -180,3 +180,27 @@ def atomic_write(path: str | Path, content: str | bytes | Callable[[Path], None]
             with _lock:
                 _pending.discard(tmp)
     return path
+
+
+def json_safe(obj: object) -> object:
+    """``obj`` with every non-finite float (NaN, ±inf, also NumPy floats) replaced by ``None``, recursively
+    through dicts, lists and tuples, so that it serialises as strict JSON (RFC 8259 has no NaN)."""
+    import math
+
+    if isinstance(obj, float):  # also numpy.float64, a float subclass
+        return float(obj) if math.isfinite(obj) else None
+    if isinstance(obj, dict):
+        return {k: json_safe(v) for k, v in obj.items()}
+    if isinstance(obj, list | tuple):
+        return [json_safe(v) for v in obj]
+    if type(obj).__module__ == "numpy" and hasattr(obj, "item"):  # other numpy scalars
+        return json_safe(obj.item())
+    return obj
+
+
+def json_text(obj: object, **kw: object) -> str:
+    """Strict JSON text of ``obj`` (:func:`json_safe` first, then ``allow_nan=False``): every JSON file
+    mechverify writes goes through here, so a strict parser (jq, JavaScript) reads it."""
+    import json
+
+    return json.dumps(json_safe(obj), allow_nan=False, **kw)  # type: ignore[arg-type]

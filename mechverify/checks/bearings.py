@@ -5,6 +5,7 @@ Each returns a :class:`CheckResult` oriented so that it passes while demand <= c
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 from mechverify.checks.registry import check
@@ -64,6 +65,16 @@ def _axial_warning(b: AnyBearing, Fa: Any) -> tuple[str, ...]:
     return provenance_warning(b)
 
 
+def _e_text(e: float) -> str:
+    """The note's limit ratio e: no e where P comes from an adjusted pair's rule (Timken: F_e = 0.4 Fr + K Fa
+    when that exceeds Fr; e is NaN), none where the bearing takes no axial load (e = inf)."""
+    if math.isnan(e):
+        return "no e limit: P from the adjusted pair's rule, F_e = max(0.4 Fr + K·Fa, Fr)"
+    if math.isinf(e):
+        return "no axial load: P = Fr"
+    return f"e = {e:.3g}"
+
+
 @check("bearing_life", title="Bearing rating life", sf_kind="bearing",
        aliases=('ball_bearing.life',),
        source=ISO281,
@@ -101,7 +112,7 @@ def check_bearing_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed:
         title="Bearing rating life", formula=r"L_{nh} = a_1 \left(\frac{C}{P}\right)^p \frac{10^6}{60 n},\ "
                                              r"P = X F_r + Y F_a",
         source=ISO281, inputs=inputs,
-        notes=((f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} ({rel}e = {eq.e:.3g})") if duty_cycle is None
+        notes=((f"P = {eq.X:g}·Fr + {eq.Y:.3g}·Fa = {fmt(eq.P.to('N'))} ({rel}{_e_text(eq.e)})") if duty_cycle is None
                else (f"duty cycle: P = (sum f_i P_i^p)^(1/p) = {fmt(duty_cycle.P.to('N'))} over revolution shares "
                      + ", ".join(f"{f:.3g}" for f in duty_cycle.shares) + f"; mean speed {fmt(n)}"),
                f"a1 = {a1:.3g} for reliability {reliability:g}; life exponent p = {p:.4g}",

@@ -12,7 +12,6 @@ and the required safety factor ``SF``, the *factored utilisation* is ``u·SF``.
 from __future__ import annotations
 
 import html
-import json
 import math
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
@@ -218,7 +217,9 @@ class ResultSet:
 
     def to_json(self, **kw: Any) -> str:
         """Deterministic JSON: same results, identical bytes."""
-        return json.dumps(self.to_dict(), sort_keys=True, indent=2, **kw)
+        from mechverify.fileio import json_text
+
+        return json_text(self.to_dict(), sort_keys=True, indent=2, **kw)
 
     @classmethod
     def from_dict(cls, d: Mapping[str, Any]) -> ResultSet:

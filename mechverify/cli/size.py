@@ -33,8 +33,6 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
     from mechverify.cli import Invalid
     from mechverify.fileio import check_output_paths
 
@@ -52,5 +50,7 @@ def run(args: argparse.Namespace) -> int:
     r = size(design, args.vary, until=args.until, bounds=bounds, scan=args.scan)
     console().print(r.text(), markup=False, highlight=False, soft_wrap=True)
     if args.json_out:
-        write(args.json_out, json.dumps(r.to_dict(), indent=1) + "\n")
+        from mechverify.fileio import json_text
+
+        write(args.json_out, json_text(r.to_dict(), indent=1) + "\n")
     return 0

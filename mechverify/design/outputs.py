@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import hashlib
-import json
 import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
@@ -61,7 +60,9 @@ def _load_path(design: Any) -> dict[str, Any]:
 
 def to_json(doc: dict[str, Any]) -> str:
     """Deterministic JSON text (sorted keys, fixed indentation, trailing newline)."""
-    return json.dumps(doc, sort_keys=True, indent=2, ensure_ascii=False) + "\n"
+    from mechverify.fileio import json_text
+
+    return json_text(doc, sort_keys=True, indent=2, ensure_ascii=False) + "\n"
 
 
 def junit_xml(designs: list[tuple[Any, ResultSet]], fail_on: str = "fail") -> str:

@@ -14,7 +14,6 @@ from __future__ import annotations
 import copy
 import csv
 import io
-import json
 import math
 import warnings
 from collections.abc import Callable, Mapping, Sequence
@@ -180,7 +179,9 @@ class StudyResult:
         return d
 
     def to_json(self, indent: int | None = 1) -> str:
-        return json.dumps(self.to_dict(), indent=indent, allow_nan=False, ensure_ascii=False)
+        from mechverify.fileio import json_text
+
+        return json_text(self.to_dict(), indent=indent, ensure_ascii=False)
 
     def to_csv(self) -> str:
         checks = self.checks
