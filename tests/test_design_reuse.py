@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import json
 from pathlib import Path
 
 import pytest
@@ -109,3 +110,64 @@ def test_values_written_as_expressions_outside_components_invalidate(tmp_path):
     v = d.with_overrides({"parameters.mod": "150 GPa"})
     v.verify()
     assert "lift_screw" not in _reused(v, d)
+
+
+_ARM = """
+[design]
+name = "RP arm"
+
+[parameters]
+m = "98 g"
+
+[components.arm]
+type = "planar_arm"
+kind = "rp"
+path = { curve = "polar", r = "8 cm - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"], speed = "1.4 cm/s" }
+carriage_mass = "m"
+bodies = [{ name = "screw", shape = "rod", mass = "99 g", length = "25 cm" }]
+
+[profiles.q1]
+type = "joint_motion"
+mechanism = "arm"
+joint = "q1"
+
+[components.revolute]
+type = "drive"
+motor = "maxon 6V 10.3 mNm"
+gearhead = "GP 22 850:1"
+inertia = "0 kg*m^2"
+profile = "q1"
+"""
+
+
+def test_a_drive_fed_by_a_joint_motion_profile_depends_on_the_arm(tmp_path):
+    """The drive names only its profile; the profile names the arm (``mechanism = "arm"``). Changing the arm's
+    carriage mass must recompute the drive (review item 0: it kept the base's gearhead torque, 0.5496 instead of
+    4.273). Oracle: the same variant built from scratch."""
+    f = tmp_path / "arm.toml"
+    f.write_text(_ARM)
+    d = load(f)
+    base_rs = d.verify()
+    for ov in ({"parameters.m": "980 g"}, {"components.arm.path.speed": "3 cm/s"}):
+        v = d.with_overrides(ov)
+        rs = v.verify()
+        fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify()
+        assert _rows(rs) == _rows(fresh)
+        assert "revolute" not in _reused(v, d)
+        g = [r.utilisation for r in rs if r.check == "gearhead_intermittent_torque"]
+        g0 = [r.utilisation for r in base_rs if r.check == "gearhead_intermittent_torque"]
+        assert g and g != g0
+
+
+def test_a_study_sweep_moves_the_drive_fed_by_an_arm(tmp_path):
+    """``mechverify study --vary parameters.m=98 g:980 g:3`` (review item 0): the gearhead check changes."""
+    from mechverify.cli import main
+
+    f = tmp_path / "arm.toml"
+    f.write_text(_ARM)
+    out = tmp_path / "study.json"
+    code = main(["study", str(f), "--vary", "parameters.m=98 g:980 g:3", "--serial", "--quiet", "--json", str(out)])
+    assert code == 0
+    samples = json.loads(out.read_text())["samples"]
+    fu = [s["checks"]["revolute.gearhead_intermittent_torque"]["fu"] for s in samples]
+    assert len(fu) == 3 and fu[0] < fu[1] < fu[2], fu

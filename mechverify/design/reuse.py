@@ -5,9 +5,11 @@ change and most components see exactly the inputs they saw before. A component's
 type, its table as written (after templates) and its check settings, its validated field values (after
 expressions and connections are resolved), its loads in every load case as written and as resolved, the
 components it names (a drive's screw, transitively), the profiles it or its load cases name (as written and
-resolved), and the design-wide tables (requirements and safety factors as resolved, the design's materials as
-built, templates and any other table as written). :func:`fingerprints` reduces these to comparable values; a
-component whose fingerprint equals the base design's reuses the base's results (the same objects: results
+resolved) and the components those profiles name (a ``joint_motion`` profile's ``mechanism``: a drive fed by an
+arm depends on the arm; any identifier in a profile's strings that is a component's name counts, since profiles
+are built when checked), and the design-wide tables (requirements and safety factors as resolved, the design's
+materials as built, templates and any other table as written). :func:`fingerprints` reduces these to comparable
+values; a component whose fingerprint equals the base design's reuses the base's results (the same objects: results
 are frozen). A value that cannot be compared exactly (NaN, an object that is not a dataclass) compares
 unequal, so its checks run again.
 """
@@ -15,6 +17,7 @@ unequal, so its checks run again.
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Mapping
 from typing import Any
 
@@ -61,16 +64,25 @@ def _canon(v: Any) -> Any:
 _FROZEN: dict[int, tuple[Any, Any]] = {}  # id -> (the frozen dataclass, its reduced value); holds the object
 
 
-def _names(v: Any, known: Mapping[str, Any], out: set[str]) -> None:
+_WORD = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+
+
+def _names(v: Any, known: Mapping[str, Any], out: set[str], words: bool = False) -> None:
+    """The names of ``known`` that ``v`` holds as a whole string (a drive's ``screw = "lift_screw"``); with
+    ``words``, also any identifier inside a string (``"arm.path_length"`` names ``arm``: conservative, a word that
+    merely looks like a name makes a dependency, so its checks run again). Component tables need no ``words``:
+    what an expression there reads is resolved into the values compared (``entry.params``, the resolved loads)."""
     if isinstance(v, str):
         if v in known:
             out.add(v)
+        if words:
+            out.update(w for w in _WORD.findall(v) if w in known)
     elif isinstance(v, Mapping):
         for x in v.values():
-            _names(x, known, out)
+            _names(x, known, out, words)
     elif isinstance(v, list | tuple):
         for x in v:
-            _names(x, known, out)
+            _names(x, known, out, words)
 
 
 def design_wide(data: Any) -> Any:
@@ -88,8 +100,9 @@ def design_wide(data: Any) -> Any:
             _canon(data.requirements), _canon(data.safety_factors))
 
 
-def _profiles(tables: list[Any], data: Any) -> tuple[Any, ...]:
-    """The profiles named in ``tables`` (and in those profiles, transitively): as written and as resolved."""
+def _profiles(tables: list[Any], data: Any, components: set[str] | None = None) -> tuple[Any, ...]:
+    """The profiles named in ``tables`` (and in those profiles, transitively): as written and as resolved. The
+    components those profiles name (a ``joint_motion`` profile's ``mechanism``) are added to ``components``."""
     found: set[str] = set()
     for t in tables:
         _names(t, data.profiles, found)
@@ -102,6 +115,8 @@ def _profiles(tables: list[Any], data: Any) -> tuple[Any, ...]:
         seen.add(n)
         e = data.profiles[n]
         out.append((n, _canon(e.raw), _canon(e.params)))
+        if components is not None:
+            _names(e.raw, data.components, components, words=True)
         more: set[str] = set()
         _names(e.raw, data.profiles, more)
         todo.extend(sorted(more - seen))
@@ -122,9 +137,9 @@ def fingerprints(data: Any) -> dict[str, Any]:
                 written = table.get(name) if isinstance(table, Mapping) else None
                 cases.append((case, _canon(written), _canon(comps[name])))
                 tables.append(written)
+        found: set[str] = set()  # the components it names, directly or through the profiles it names
         own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), tuple(cases),
-                     _profiles(tables, data))
-        found: set[str] = set()
+                     _profiles(tables, data, found))
         for t in tables:
             _names(t, data.components, found)
         found.discard(name)
