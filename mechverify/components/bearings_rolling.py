@@ -161,27 +161,34 @@ class RollingBearing:
             return self.pair_factors
         return self.factors
 
+    def _carried(self, Fr: QuantityLike, Fa: QuantityLike) -> tuple[float, float]:
+        """(Fr, Fa) in N; :class:`ValidityError` for a load the bearing cannot take (a radial load on a thrust
+        ball bearing, an axial load on a non-locating roller bearing), for the dynamic and the static load alike."""
+        fr, fa = _forces(Fr, Fa)
+        if self.kind == "thrust_ball" and fr > 0:
+            raise ValidityError(f"thrust ball bearing {self.designation} takes no radial load (Fr = {fr:g} N): "
+                                "carry it on a radial bearing")
+        if self.kind != "thrust_ball" and self._active_factors() is None and fa > 0:
+            raise ValidityError(f"{self.kind.replace('_', ' ')} bearing {self.designation} takes no axial load "
+                                f"(Fa = {fa:g} N): non-locating design; locate the shaft on another bearing")
+        return fr, fa
+
     def equivalent_load(self, Fr: QuantityLike, Fa: QuantityLike = "0 N") -> EquivalentLoad:
         """The maker's equivalent dynamic load P (see the module text) [1, 3]."""
-        fr, fa = _forces(Fr, Fa)
+        fr, fa = self._carried(Fr, Fa)
         if self.kind == "thrust_ball":
-            if fr > 0:
-                raise ValidityError(f"thrust ball bearing {self.designation} takes no radial load (Fr = {fr:g} N): "
-                                    "carry it on a radial bearing")
             return EquivalentLoad(P=Q(fa, "N"), X=0.0, Y=1.0, e=0.0, relative_axial_load=0.0)
         f = self._active_factors()
         if f is None:
-            if fa > 0:
-                raise ValidityError(f"{self.kind.replace('_', ' ')} bearing {self.designation} takes no axial load "
-                                    f"(Fa = {fa:g} N): non-locating design; locate the shaft on another bearing")
             return EquivalentLoad(P=Q(fr, "N"), X=1.0, Y=0.0, e=math.inf, relative_axial_load=0.0)
         if fa == 0 or (fr > 0 and fa / fr <= f.e):
             return EquivalentLoad(P=Q(fr + f.Y1 * fa, "N"), X=1.0, Y=f.Y1, e=f.e, relative_axial_load=0.0)
         return EquivalentLoad(P=Q(f.X * fr + f.Y * fa, "N"), X=f.X, Y=f.Y, e=f.e, relative_axial_load=0.0)
 
     def static_load(self, Fr: QuantityLike, Fa: QuantityLike = "0 N") -> pint.Quantity:
-        """P0 = max(X0·Fr + Y0·Fa, Fr); thrust ball P0 = Fa; pure radial P0 = Fr [2, 3]."""
-        fr, fa = _forces(Fr, Fa)
+        """P0 = max(X0·Fr + Y0·Fa, Fr); thrust ball P0 = Fa; pure radial P0 = Fr [2, 3]; :class:`ValidityError`
+        for a load the bearing cannot take (as :meth:`equivalent_load`)."""
+        fr, fa = self._carried(Fr, Fa)
         if self.kind == "thrust_ball":
             return Q(fa, "N")
         f = self._active_factors()
