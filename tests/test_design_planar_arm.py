@@ -118,6 +118,16 @@ def test_path_outside_the_stroke_names_the_sample(tmp_path):
     ("r0 - 1.5 cm", "q0 - 1.5 cm", "unknown name 'q0'"),
     ('curve = "polar"', 'curve = "spiral"', "path.curve: expected 'polar', 'cartesian' or 'points'"),
     ('mechanism = "arm"', 'mechanism = "revolute"', "mechanism 'revolute' is not a planar_arm component"),
+    # review item 1: a curve must be a length (a bare number was read as metres, a speed as a length)
+    ("r0 - 1.5 cm * cos(4*phi)", "8 - 1.5 * cos(4*phi)", "components.arm: path.r: expected a length"),
+    ("r0 - 1.5 cm * cos(4*phi)", "8 cm/s - 1.5 cm/s * cos(4*phi)", "components.arm: path.r: expected a length"),
+    ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
+     'curve = "cartesian", x = "30 * cos(u)", y = "30 cm * sin(u)"', "components.arm: path.x: expected a length"),
+    ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
+     'curve = "cartesian", x = "30 cm * cos(u)", y = "3 N * sin(u)"', "components.arm: path.y: expected a length"),
+    ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
+     'curve = "points", points = [["1 cm", "2 cm"], ["3 cm/s", "4 cm"], ["5 cm", "1 cm"]]',
+     "path.points[1][0]: expected a length"),
 ])
 def test_bad_paths_are_named(tmp_path, old, new, message):
     """Unknown path key, unknown name in the curve, unknown curve, a joint_motion on a drive: named errors."""

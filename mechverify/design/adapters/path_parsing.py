@@ -11,7 +11,7 @@ import numpy as np
 
 from mechverify.design.expressions import ExpressionError
 from mechverify.design.expressions import parse as parse_expression
-from mechverify.errors import InputError
+from mechverify.errors import InputError, UnitError
 from mechverify.mechanisms import paths as mp
 from mechverify.units import Q, Quantity, to_si
 
@@ -23,7 +23,8 @@ PATH_KEYS = {"curve": "str", "r": "str", "centre": "list", "phi": "list", "x": "
 # ------------------------------------------------------------------------------------------ expressions of a curve
 
 def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> Any:
-    """A vectorised SI function of the curve parameter (radians for phi) from an expression with units."""
+    """A vectorised SI function of the curve parameter (radians for phi) from an expression with units; the
+    expression must be a length (``"8 - 1.5 * cos(4*phi)"`` or ``"8 cm/s"`` is an error, not metres)."""
     try:
         e = parse_expression(expr_text)
     except ExpressionError as exc:
@@ -34,7 +35,7 @@ def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> 
                          f"{', '.join(params) or 'none'})")
     code = e._code
 
-    def f(w: np.ndarray) -> np.ndarray:
+    def value(w: np.ndarray) -> Any:
         env = {**params, var: Q(np.asarray(w, float), "rad" if var == "phi" else "")}
         stack: list[Any] = []
         for op, arg in code:
@@ -54,13 +55,23 @@ def _vector(expr_text: str, var: str, params: Mapping[str, Any], where: str) -> 
                 del stack[len(stack) - n:]
                 stack.append(_call(fname, args))
         (v,) = stack
+        return v
+
+    def f(w: np.ndarray) -> np.ndarray:
+        v = value(w)
         return np.asarray(Q(v).to_base_units().magnitude if isinstance(v, Quantity) else v, float)
 
     try:
-        f(np.array([0.1, 0.2]))
+        v = value(np.array([0.1, 0.2]))
     except Exception as exc:  # pint raises several types for mismatched units
         raise InputError(f"{where}: {expr_text!r} cannot be evaluated ({exc})") from None
+    if not isinstance(v, Quantity) or v.dimensionality != _LENGTH:
+        got = f"{v.units:~P} ({v.dimensionality})" if isinstance(v, Quantity) else "a bare number"
+        raise UnitError(f"{where}: expected a length (e.g. \"8 cm - 1.5 cm * cos(4*phi)\"), {expr_text!r} is {got}")
     return f, e
+
+
+_LENGTH = Q(1, "m").dimensionality
 
 
 def _plain(v: Any) -> Any:
