@@ -94,6 +94,54 @@ OVERRIDES: dict[tuple[str, str], tuple[str, str]] = {
     ("extension_body_stress", "d"): ("d", "wire diameter"), ("torsion_spring_stress", "M"): ("M", "moment on the legs"),
     ("shaft_key_shear", "l"): ("l", "key length"), ("shaft_key_crushing", "l"): ("l", "key length"),
 }
+OVERRIDES.update({
+    # sliding carriage and linear guides (THK/HIWIN catalogue life; binding by the carriage's equilibrium)
+    ("carriage_binding", "R"): ("R", "load moved along the guide (resistance the drive overcomes)"),
+    ("carriage_binding", "mu"): ("μ", "friction coefficient of the bushings"),
+    ("carriage_binding", "L"): ("L", "bearing length of the carriage (contact span along the rod)"),
+    ("carriage_binding", "a"): ("a", "offset of the load's line of action from the guide axis"),
+    ("carriage_binding", "e"): ("e", "offset of the drive's line of action from the guide axis"),
+    ("linear_guide_life", "P"): ("P", "equivalent load on the most loaded block"),
+    ("linear_guide_life", "C"): ("C", "basic dynamic load rating of the block"),
+    ("linear_guide_life", "L_C"): ("L_C", "rating distance of C (50 km THK/HIWIN, 100 km others)"),
+    ("linear_guide_life", "fH"): ("f_H", "hardness factor"), ("linear_guide_life", "fT"): ("f_T", "temperature factor"),
+    ("linear_guide_life", "fC"): ("f_C", "contact factor"), ("linear_guide_life", "fW"): ("f_W", "load factor"),
+    ("linear_guide_static_safety", "C0"): ("C_0", "basic static load rating of the block"),
+    ("linear_guide_static_safety", "P0"): ("P_0", "static equivalent load on the most loaded block"),
+    # bearings (ISO 281 Sec. 9)
+    ("bearing_modified_life", "P"): ("P", "equivalent dynamic load"),
+    ("bearing_modified_life", "Pu"): ("P_u", "fatigue load limit"),
+    ("bearing_modified_life", "nu"): ("ν", "lubricant viscosity at the operating temperature"),
+    # shafts
+    ("shaft_critical_speed", "Rayleigh"): ("n_c,R", "first critical speed, Rayleigh estimate"),
+    ("shaft_critical_speed", "Dunkerley"): ("n_c,D", "first critical speed, Dunkerley estimate"),
+    ("shaft_critical_speed", "modal"): ("n_c", "first critical speed, beam model eigenvalue"),
+    ("shaft_critical_speed", "masses"): ("", "lumped masses of the model"),
+    ("shaft_bearing_slope", "bearing"): ("", "bearing type (sets the slope limit)"),
+    ("shaft_gear_deflection", "module"): ("m", "gear module"),
+    ("shaft_gear_deflection", "P"): ("P", "diametral pitch"),
+    # cable-driven spring spine (Timoshenko & Gere Sec. 2.18)
+    **{(c, "tilt"): ("θ", "tilt of the spine") for c in ("spine_buckling_ratio", "cable_tension")},
+    **{(c, "method"): ("", "solution method") for c in ("spine_buckling_ratio", "cable_tension")},
+    ("spine_buckling_ratio", "T"): ("T", "cable tension"), ("spine_buckling_ratio", "l"): ("l", "spine length"),
+    ("spine_buckling_ratio", "beta"): ("β", "bending stiffness of the spine"),
+    ("spine_buckling_ratio", "gamma"): ("γ", "shear stiffness of the spine"),
+    ("spine_buckling_ratio", "W"): ("W", "top load (weight) to carry"),
+    # workspace payload (tau = -J^T F)
+    ("workspace_payload", "motor"): ("", "joint whose motor governs"),
+    ("workspace_payload", "point"): ("", "governing point of the workspace"),
+    ("workspace_payload", "torque_per_load"): ("τ/F", "joint torque per newton of payload at the point"),
+    ("workspace_payload", "motor_torque"): ("T_m", "torque the joint's motor provides"),
+    # FEA, motors
+    ("buckling_load_factor", "lambda_cr"): ("λ_cr", "lowest buckling load factor"),
+    ("natural_frequency", "margin"): ("", "required margin above the excitation frequency"),
+    ("motor_peak_torque", "peak torque"): ("T_peak", "largest torque of the cycle at the motor"),
+    ("motor_peak_torque", "peak speed"): ("n_peak", "speed at the peak torque"),
+    ("motor_rms_torque", "cycle time"): ("t_cycle", "duration of the duty cycle"),
+    ("inertia_ratio", "load inertia at motor"): ("J_L", "load inertia reflected to the motor"),
+    ("inertia_ratio", "rotor inertia"): ("J_M", "rotor inertia"),
+    ("drive_regeneration", "C"): ("C", "bus capacitance"),
+})
 for _bolt in ("bolt_assembly_stress", "bolt_required_preload", "bolt_working_stress", "bolt_fatigue",
               "bolt_surface_pressure_head", "bolt_surface_pressure_nut", "bolt_thread_stripping", "bolt_separation",
               "bolt_slip", "bolt_tightening_torque"):
@@ -102,9 +150,31 @@ for _spring in ("spring_static_stress", "spring_solid_stress", "spring_buckling"
     OVERRIDES[(_spring, "d")] = ("d", "wire diameter")
 
 
+#: global keys whose meaning belongs to one domain: key -> the check modules (``mechverify.checks.<m>``) where the
+#: global entry holds; elsewhere a key without an override gets no description rather than a wrong one
+GLOBAL_DOMAIN: dict[str, tuple[str, ...]] = {
+    "C": ("springs",), "D": ("springs",), "R": ("members",), "P": ("members",),
+    "nu": ("plates", "fea", "frames", "members"),
+}
+
+
+def _module(check: str) -> str:
+    from mechverify.checks.registry import get_check
+
+    try:
+        return get_check(check).module.rsplit(".", 1)[-1]
+    except Exception:  # an unregistered name (a result built by hand): no domain known
+        return ""
+
+
 def describe(check: str, key: str) -> tuple[str, str]:
-    """(symbol as ``base_sub``, description) of input ``key`` of ``check``; (key, "") when unknown."""
-    return OVERRIDES.get((check, key)) or SYMBOLS.get(key) or (key, "")
+    """(symbol as ``base_sub``, description) of input ``key`` of ``check``; (key, "") when unknown, and for a
+    domain-specific global key (:data:`GLOBAL_DOMAIN`) used by a check of another domain without an override."""
+    if (check, key) in OVERRIDES:
+        return OVERRIDES[(check, key)]
+    if key in GLOBAL_DOMAIN and _module(check) not in GLOBAL_DOMAIN[key]:
+        return (key, "")
+    return SYMBOLS.get(key) or (key, "")
 
 
 @lru_cache(maxsize=1024)
@@ -120,4 +190,4 @@ def symbol_html(symbol: str) -> Markup:
     return Markup(out)
 
 
-__all__ = ["SYMBOLS", "OVERRIDES", "describe", "symbol_html"]
+__all__ = ["SYMBOLS", "OVERRIDES", "GLOBAL_DOMAIN", "describe", "symbol_html"]
