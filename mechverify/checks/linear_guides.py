@@ -111,13 +111,24 @@ class SlidingGuide:
     name: str = "carriage"
 
 
+def _jam_note(jam_number: float, Fe: float, Ra: float) -> str:
+    """The jam rule with its condition and where this (moving) carriage stands; Fe = F e, Ra = R a [N·m]."""
+    rule = "it jams only when 2 mu e/L >= 1 and the drive's moment governs, F e - R a > 0"
+    if jam_number < 1:
+        return f"2 mu e/L = {jam_number:.3g} < 1: the carriage does not jam ({rule})"
+    return (f"2 mu e/L = {jam_number:.3g} >= 1 but the load's moment governs (F e = {Fe:.4g} N·m, R a = {Ra:.4g} "
+            f"N·m, F e - R a = {Fe - Ra:.4g} N·m): the carriage does not jam ({rule})")
+
+
 @check("carriage_binding", title="Sliding carriage drive force (binding)", sf_kind="limit",
        source=BINDING,
        explain=("A carriage on plain bushings carries the moment of an offset load or drive as two edge forces "
                 "N = |M|/L; their friction 2 mu |M|/L adds to the load, F = R + 2 mu |F e - R a|/L (equilibrium of the "
                 "rigid carriage; it reproduces the makers' 2:1 rule: with mu = 0.25 a drive offset of twice the "
                 "bearing length jams, igus, PBC Linear). The drive force needed is compared with the force the drive "
-                "provides; with 2 mu e/L >= 1 no force moves it (the carriage jams: keep L > 2 mu e)."))
+                "provides. Jam rule: the carriage jams (no force moves it) when 2 mu e/L >= 1 AND the drive's own "
+                "moment governs, F e - R a > 0; keep L > 2 mu e. A load moment R a larger than F e keeps it moving "
+                "whatever 2 mu e/L (then F = R (1 + 2 mu a/L)/(1 + 2 mu e/L))."))
 def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Drive force needed against the available drive force; a jammed carriage is a ValidityError (FAIL)."""
     if c.available_force is None:
@@ -126,7 +137,8 @@ def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str =
                                      drive_offset=c.drive_offset)
     if s.jammed:
         raise ValidityError(f"{c.name}: the carriage jams — no drive force moves it (2 mu e/L = {s.jam_number:.3g} "
-                            f"with mu = {c.mu:g}, e = {fmt(c.drive_offset)}, L = {fmt(c.length)}; keep L > 2 mu e)")
+                            f">= 1 with mu = {c.mu:g}, e = {fmt(c.drive_offset)}, L = {fmt(c.length)}, and the "
+                            f"drive's moment governs, F e - R a > 0; keep L > 2 mu e)")
     Rq = Q(to_si(R, "force", "R"), "N")
     k = 2 * c.mu / to_si(c.length, "length")
     a, e = to_si(c.load_offset, "length"), to_si(c.drive_offset, "length")
@@ -142,7 +154,7 @@ def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str =
         formula=r"F = R + \frac{2\mu\,|F e - R a|}{L}", source=BINDING,
         inputs={"R": Rq, "mu": c.mu, "L": c.length, "a": c.load_offset, "e": c.drive_offset},
         notes=(f"edge force at each end of the contact N = |M|/L = {fmt(s.edge_force)}; friction from the moment "
-               f"{fmt(s.friction)}", f"jam number of the drive offset 2 mu e/L = {s.jam_number:.3g} (jams at 1)",
+               f"{fmt(s.friction)}", _jam_note(s.jam_number, s.F.m_as("N") * e, Rq.m_as("N") * a),
                "rigid carriage, contacts at the bushing ends; the moment is shared by parallel rods, the friction "
                "sum is not"),
         load_case=load_case, details={"F": s.F, "edge_force": s.edge_force, "jam_number": s.jam_number},
