@@ -39,6 +39,15 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(run=run)
 
 
+def short_reason(exc: BaseException, width: int = 240) -> str:
+    """The last line of an error message for the table of skipped combinations, shortened at a word boundary
+    (with "…") when longer than ``width``, never cut mid-word."""
+    import textwrap
+
+    lines = str(exc).strip().splitlines() or [""]
+    return textwrap.shorten(lines[-1].strip(), width, placeholder=" …")
+
+
 @dataclass(frozen=True)
 class Combination:
     """One motor × gearhead tried on the drive."""
@@ -146,7 +155,7 @@ def combinations(design: Any, drive: str, motors: list[str] | None = None,
                 d = _rebuild(doc, design.data.path, list(design.data.files), {})
                 rs = [r for r in d.verify() if r.component == drive]
             except MechverifyError as exc:
-                reason = str(exc).strip().splitlines()[-1].strip()[:160]
+                reason = short_reason(exc)
                 out.append(Combination(mname, g, False, -math.inf, "", reason))
                 continue
             if not rs:

@@ -135,5 +135,5 @@ def read_catalogue_file(path: str | Path, builders: Mapping[str, Callable[[Mappi
             rows.append((name, dict(entry), item))
         out[table] = rows
     if not any(out.values()):
-        raise InputError(f"{label}: no entries (give [[{'], [['.join(builders)}]] tables)")
+        raise InputError(f"{label}: no entries (give {' or '.join(f'[[{t}]]' for t in builders)} tables)")
     return out
