@@ -137,6 +137,19 @@ def test_bad_paths_are_named(tmp_path, old, new, message):
     assert message in str(e.value)
 
 
+@pytest.mark.parametrize(("samples", "message"), [
+    ("2.5", "path.samples: expected a whole number, got 2.5"),
+    ("50000000", "path.samples: expected 2 to 100,000 (time and memory of the walk), got 50,000,000"),
+    ("1", "path.samples: expected 2 to 100,000"),
+])
+def test_path_samples_are_whole_and_bounded(tmp_path, samples, message):
+    """Review item 2: path.samples = 50000000 ran for minutes, 2.5 was accepted."""
+    text = ARM.format(reach="50 cm").replace('speed = "1.4 cm/s" }', f'speed = "1.4 cm/s", samples = {samples} }}')
+    with pytest.raises(DesignFileError) as e:
+        load(_write(tmp_path, text))
+    assert f"components.arm: {message}" in str(e.value)
+
+
 def test_cartesian_circle_and_sampled_points(tmp_path):
     """A Cartesian circle about the axis (x = R cos u, y = R sin u, u in radians): q2' = 0, tau1 = gravity only
     (J q1'' = 0 at constant speed); the same circle as 72 sampled points (a periodic spline) within 0.2 %."""

@@ -164,3 +164,33 @@ def test_workspace_payload_substituted_line(tmp_path):
     p.write_text(DESIGN, encoding="utf-8")
     r = load(p).verify().get("fb", "workspace_payload")
     mod.assert_substituted(r)
+
+
+@pytest.mark.parametrize(("old", "new", "message"), [
+    ("samples = 11", "samples = 100000", r"components\.fb: samples: 100000 samples per axis .* use at most 707"),
+    ("samples = 11", "samples = 708", r"samples: .*more than the limit of 1,000,000 values"),
+    ("samples = 11", "samples = 1", r"samples: need at least 2"),
+    ("samples = 11", "samples = 11\nsingular_tol = -1", r"components\.fb: singular_tol: expected a number in \[0, 1\)"),
+    ("samples = 11", "samples = 11\nsingular_tol = 1.5", r"singular_tol: expected a number in \[0, 1\)"),
+])
+def test_grid_size_and_singular_tol_are_named_at_the_key(tmp_path, old, new, message):
+    """Review items 2 and 9: samples = 100000 died with MemoryError (74.5 GiB), singular_tol = -1 was accepted."""
+    from mechverify.design.loader import DesignFileError
+
+    p = tmp_path / "fb.toml"
+    p.write_text(DESIGN.replace(old, new), encoding="utf-8")
+    with pytest.raises(DesignFileError, match=message):
+        load(p)
+
+
+def test_grid_limits_in_the_python_api():
+    """The API names n: a float, and n x n x motors above MAX_GRID_VALUES (lever arm: 3 motors, n <= 577)."""
+    from mechverify.mechanisms.workspace import MAX_GRID_VALUES
+
+    assert MAX_GRID_VALUES == 1_000_000 and 577**2 * 3 <= MAX_GRID_VALUES < 578**2 * 3
+    with pytest.raises(InputError, match="n: expected a whole number"):
+        five_bar_capacity(FB, ("0 mm", "100 mm"), ("100 mm", "180 mm"), ("1 N*m", "1 N*m"), n=2.5)
+    with pytest.raises(InputError, match="use at most 577"):
+        lever_arm_capacity(ARM, ("100 mm", "300 mm"), ("-100 mm", "100 mm"), ("1 N*m",) * 3, n=578)
+    with pytest.raises(InputError, match="singular_tol"):
+        five_bar_capacity(FB, ("0 mm", "100 mm"), ("100 mm", "180 mm"), ("1 N*m", "1 N*m"), n=5, singular_tol=-1)

@@ -15,6 +15,10 @@ from mechverify.errors import InputError, UnitError
 from mechverify.mechanisms import paths as mp
 from mechverify.units import Q, Quantity, to_si
 
+#: Most samples of a path walk: 100 000 samples take ~3 s and ~110 MB for an RP arm with its drive (measured on a
+#: 2-core box, 2026), a time step of 1e-5 of the walk; 50 million ran for minutes.
+MAX_PATH_SAMPLES = 100_000
+
 PATH_KEYS = {"curve": "str", "r": "str", "centre": "list", "phi": "list", "x": "str", "y": "str", "u": "list",
              "points": "list", "closed": "bool", "speed": "velocity", "acceleration": "acceleration",
              "samples": "int"}
@@ -120,9 +124,12 @@ def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSam
     curve = table.get("curve")
     if curve not in ("polar", "cartesian", "points"):
         raise InputError(f"path.curve: expected 'polar', 'cartesian' or 'points', got {curve!r}")
-    samples = int(table.get("samples", 400))
-    if samples < 2:
-        raise InputError(f"path.samples: must be >= 2, got {samples}")
+    samples = table.get("samples", 400)
+    if isinstance(samples, bool) or not isinstance(samples, int):
+        raise InputError(f"path.samples: expected a whole number, got {samples!r}")
+    if not 2 <= samples <= MAX_PATH_SAMPLES:
+        raise InputError(f"path.samples: expected 2 to {MAX_PATH_SAMPLES:,} (time and memory of the walk), got "
+                         f"{samples:,}")
     if "speed" not in table:
         raise InputError("path.speed: missing (the tangential speed, constant or the cruise speed with acceleration)")
     speed = to_si(table["speed"], "velocity", "path.speed")
@@ -201,4 +208,4 @@ def parse_bodies(p: Mapping[str, Any], link: int | None) -> list[mp.LinkBody]:
     return out
 
 
-__all__ = ["walk_path", "PATH_KEYS", "parse_bodies"]
+__all__ = ["walk_path", "PATH_KEYS", "MAX_PATH_SAMPLES", "parse_bodies"]

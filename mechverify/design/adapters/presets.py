@@ -60,6 +60,7 @@ def _five_bar(p: Mapping[str, Any], ctx: Any) -> PresetOnWorkspace:
     fb = FiveBar(p["base"], p["proximal_left"], p["distal_left"], p["distal_right"], p["proximal_right"],
                  name=p["_name"])
     T = _torques(p, ws.FIVE_BAR_JOINTS, _FB_KEYS)
+    ws.check_grid_size(p.get("samples", 31), len(ws.FIVE_BAR_JOINTS), "samples")
     cap = ws.five_bar_capacity(fb, _pair(p, "x_range"), _pair(p, "y_range"), [T[m] for m in ws.FIVE_BAR_JOINTS],
                                direction=p.get("direction", "-90 deg"), n=p.get("samples", 31),
                                working_mode=p.get("working_mode", "-+"),
@@ -73,6 +74,7 @@ def _lever_arm(p: Mapping[str, Any], ctx: Any) -> PresetOnWorkspace:
 
     arm = LeverArm(*(p[k] for k in ("b", "c", "d", "p", "q", "r")), name=p["_name"])
     T = _torques(p, ws.LEVER_ARM_JOINTS, {})
+    ws.check_grid_size(p.get("samples", 31), len(ws.LEVER_ARM_JOINTS), "samples")
     cap = ws.lever_arm_capacity(arm, _pair(p, "u_range"), _pair(p, "z_range"), [T[m] for m in ws.LEVER_ARM_JOINTS],
                                 wrist=p.get("wrist", "0 deg"), n=p.get("samples", 31),
                                 elbow_branch=p.get("elbow_branch", "up"), limits=_limits(p, ws.LEVER_ARM_JOINTS, {}),
@@ -89,9 +91,10 @@ _COMMON = (
     Field("payload", "force", "load at the tool (along direction for the five-bar, a weight for the lever arm)",
           required=True),
     Field("motor_torque", "torque", "holding torque of every motor (or per motor, see motor_torque_<joint>)"),
-    Field("samples", "int", "grid points per axis (default 31)"),
+    Field("samples", "int", "grid points per axis (default 31; points x motors at most "
+                            f"{ws.MAX_GRID_VALUES:,}: five_bar <= 707, lever_arm <= 577)"),
     Field("singular_tol", "float", "points whose singularity measure (|sin|) is at or below this are left out "
-                                   "(default 0.05)"),
+                                   "(in [0, 1); default 0.05)"),
 )
 _OUT = (Output("max_payload", "force", "largest load the motors hold everywhere in the limited workspace",
                lambda c, loads: Q(c.capacity.max_load, "N")),
