@@ -42,6 +42,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--reproduce", type=int, metavar="I",
                    help="write sample I as a design file (--out) instead of running the study")
     p.add_argument("--out", type=Path, metavar="PATH", help="the design file --reproduce writes")
+    p.add_argument("--force", action="store_true", help="with --reproduce: overwrite an existing --out file")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.add_argument("--quiet", "-q", action="store_true", help="print only the summary line")
     p.add_argument("--allow-outside-includes", action=argparse.BooleanOptionalAction, default=False,
@@ -62,6 +63,10 @@ def run(args: argparse.Namespace) -> int:
         raise Invalid("--reproduce: give the design file to write with --out PATH")
     if args.out is not None and args.reproduce is None:
         raise Invalid("--out: only with --reproduce I")
+    if args.force and args.out is None:
+        raise Invalid("--force: only with --reproduce I --out PATH")
+    if args.out is not None and (args.out.exists() or args.out.is_symlink()) and not args.force:
+        raise Invalid(f"--out: {args.out} exists; pass --force to overwrite it")
     scheduler = args.scheduler or os.environ.get("DASK_SCHEDULER_ADDRESS") or None
     if scheduler and args.serial:
         raise Invalid("--serial and --scheduler: choose one")
