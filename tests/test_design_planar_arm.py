@@ -128,6 +128,9 @@ def test_path_outside_the_stroke_names_the_sample(tmp_path):
     ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
      'curve = "points", points = [["1 cm", "2 cm"], ["3 cm/s", "4 cm"], ["5 cm", "1 cm"]]',
      "path.points[1][0]: expected a length"),
+    # review item 9: a negative polar radius was accepted (the point on the other side of the centre)
+    ("r0 - 1.5 cm * cos(4*phi)", "-8 cm", "components.arm: path.r: the radius must not be negative"),
+    ("r0 - 1.5 cm * cos(4*phi)", "1 cm - 1.5 cm * cos(4*phi)", "is -0.5 cm at phi = 0 deg"),
 ])
 def test_bad_paths_are_named(tmp_path, old, new, message):
     """Unknown path key, unknown name in the curve, unknown curve, a joint_motion on a drive: named errors."""

@@ -141,6 +141,12 @@ def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSam
         r, _ = _vector(str(table["r"]), "phi", params, "path.r")
         xc, yc = _pair(table.get("centre", ["0 m", "0 m"]), "path.centre", "length")
         rng = _pair(table.get("phi", ["0 deg", "360 deg"]), "path.phi", "angle")
+        w = np.linspace(rng[0], rng[1], max(samples, 1001))
+        rw = np.broadcast_to(r(w), w.shape)
+        if np.any(rw < 0):
+            i = int(np.argmin(rw))
+            raise InputError(f"path.r: the radius must not be negative, {table['r']!r} is {rw[i] * 100:.4g} cm at "
+                             f"phi = {np.degrees(w[i]):.4g} deg")
 
         def fn(w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             rr = r(w)
