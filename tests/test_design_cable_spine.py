@@ -13,6 +13,7 @@ import pytest
 
 from mechverify.components.springs import CompressionSpring
 from mechverify.design import DesignFileError, load
+from mechverify.errors import InputError
 from mechverify.mechanisms.cable_spine import CableSpine
 
 SPINE = """
@@ -104,3 +105,17 @@ def test_pan_between_cables(tmp_path):
     st = state_3d(d["neck"].spine, "20 deg", "60 deg")
     assert st.tensions[0] == pytest.approx(st.tensions[1], rel=1e-8) and st.tensions[2] == 0
     assert r.demand.m_as("N") == pytest.approx(float(max(st.tensions)), rel=1e-9)
+
+
+@pytest.mark.parametrize("angles", ['["0 deg", "0 deg", "90 deg"]', '["0 deg", "120 deg", "360 deg"]'])
+def test_coincident_cable_angles_are_named(tmp_path, angles):
+    """Review item 9: two cables on the same anchor angle (modulo 360 deg) were accepted."""
+    text = SPINE.format(weight="1.25 N", tilt="20 deg", method="linear", pan="").replace(
+        'cable_rating = "5 N"', f'cable_rating = "5 N"\ncable_angles = {angles}', 1)
+    p = tmp_path / "d.toml"
+    p.write_text("[design]\nname = \"spine\"\n" + text)
+    with pytest.raises(DesignFileError, match=r"components\.neck: cable_angles: cables 0 and [12] have the same "
+                                              r"anchor angle"):
+        load(p)
+    with pytest.raises(InputError, match="cable_angles: cables 0 and 1"):
+        CableSpine(_model("1 N").spring, cable_angles=("10 deg", "-350 deg", "90 deg"))

@@ -169,6 +169,12 @@ class CableSpine:
         g = [to_si(x, "angle", "cable_angles") for x in self.cable_angles]
         if len(g) < 3:
             raise InputError(f"{self.name}: a 2-DOF tilt needs at least 3 cables, got {len(g)}")
+        for i in range(len(g)):
+            for j in range(i):
+                gap = abs(math.remainder(g[i] - g[j], 2 * math.pi))
+                if gap < 1e-6:  # the same anchor twice: two cables on one line (a 3-cable tilt loses a direction)
+                    raise InputError(f"cable_angles: cables {j} and {i} have the same anchor angle "
+                                     f"({math.degrees(g[i]):g} deg, modulo 360 deg); give distinct angles")
         W = to_si(self.weight, "force", "weight")
         if W < 0:
             raise InputError(f"{self.name}: weight must be >= 0, got {W:g} N")
