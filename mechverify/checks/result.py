@@ -188,8 +188,8 @@ class ResultSet:
 
     @property
     def verdict(self) -> Verdict:
-        """The worst verdict of all results (``pass`` for an empty set)."""
-        return max((r.verdict for r in self.results), key=lambda v: v.rank, default=Verdict.PASS)
+        """The worst verdict of all results; ``warn`` for an empty set (no check ran: nothing was verified)."""
+        return max((r.verdict for r in self.results), key=lambda v: v.rank, default=Verdict.WARN)
 
     @property
     def passed(self) -> bool:

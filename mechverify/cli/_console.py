@@ -83,6 +83,8 @@ def verdict_line(rs: Any) -> str:
     """``PASS name: 3 pass, 0 warn, 0 fail`` (rich markup)."""
     counts = {v: sum(r.verdict.value == v for r in rs) for v in ("pass", "warn", "fail")}
     c = COLOURS[rs.verdict.value]
+    if not len(rs):
+        return f"[{c}]{rs.verdict.value.upper()}[/{c}] {rs.name}: no check ran (nothing was verified)"
     return (f"[{c}]{rs.verdict.value.upper()}[/{c}] {rs.name}: {counts['pass']} pass, {counts['warn']} warn, "
             f"{counts['fail']} fail")
 

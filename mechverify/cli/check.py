@@ -85,7 +85,7 @@ def run(args: argparse.Namespace) -> int:
             append_step_summary(md)
     worst = max((rs.verdict for _, rs in runs), key=lambda v: v.rank, default=Verdict.PASS)
     for design, rs in runs:
-        if not args.quiet:
+        if not args.quiet and len(rs):  # no check ran: the verdict line says so, no empty table
             from mechverify.reports.numbers import design_units
 
             out.print(results_table(rs, design_units(getattr(getattr(design, "data", None), "raw", None) or {})))
