@@ -171,3 +171,18 @@ def test_a_study_sweep_moves_the_drive_fed_by_an_arm(tmp_path):
     samples = json.loads(out.read_text())["samples"]
     fu = [s["checks"]["revolute.gearhead_intermittent_torque"]["fu"] for s in samples]
     assert len(fu) == 3 and fu[0] < fu[1] < fu[2], fu
+
+
+def test_a_parameter_read_inside_a_path_expression_invalidates(tmp_path):
+    """The arm's ``path.r = "r0 - 1.5 cm * cos(4*phi)"`` is a table the adapter evaluates itself: a change of r0
+    changes no validated field of the arm, yet the drive's torque moves (the drive kept the base's result)."""
+    f = tmp_path / "arm.toml"
+    f.write_text(_ARM.replace('m = "98 g"', 'm = "98 g"\nr0 = "8 cm"').replace('"8 cm - 1.5 cm', '"r0 - 1.5 cm'))
+    d = load(f)
+    base_rs = d.verify()
+    v = d.with_overrides({"parameters.r0": "9 cm"})
+    rs = v.verify()
+    fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify()
+    assert _rows(rs) == _rows(fresh)
+    assert rs.to_json() != base_rs.to_json()
+    assert "revolute" not in _reused(v, d)

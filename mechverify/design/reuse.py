@@ -7,8 +7,10 @@ expressions and connections are resolved), its loads in every load case as writt
 components it names (a drive's screw, transitively), the profiles it or its load cases name (as written and
 resolved) and the components those profiles name (a ``joint_motion`` profile's ``mechanism``: a drive fed by an
 arm depends on the arm; any identifier in a profile's strings that is a component's name counts, since profiles
-are built when checked), and the design-wide tables (requirements and safety factors as resolved, the design's
-materials as built, templates and any other table as written). :func:`fingerprints` reduces these to comparable
+are built when checked), the values of the parameters any of these tables names by a word of a string (an
+adapter may evaluate an expression inside a table-kind field itself: a path's ``r = "r0 - ..."``), and the
+design-wide tables (requirements and safety factors as resolved, the design's materials as built, templates and
+any other table as written). :func:`fingerprints` reduces these to comparable
 values; a component whose fingerprint equals the base design's reuses the base's results (the same objects: results
 are frozen). A value that cannot be compared exactly (NaN, an object that is not a dataclass) compares
 unequal, so its checks run again.
@@ -117,10 +119,16 @@ def _profiles(tables: list[Any], data: Any, components: set[str] | None = None) 
         out.append((n, _canon(e.raw), _canon(e.params)))
         if components is not None:
             _names(e.raw, data.components, components, words=True)
+            _names(e.raw, _parameters(data), components, words=True)  # (split off by fingerprints)
         more: set[str] = set()
         _names(e.raw, data.profiles, more)
         todo.extend(sorted(more - seen))
     return tuple(sorted(out, key=lambda x: x[0]))
+
+
+def _parameters(data: Any) -> Mapping[str, Any]:
+    p = getattr(data, "parameters", None)
+    return p if isinstance(p, Mapping) else {}
 
 
 def fingerprints(data: Any) -> dict[str, Any]:
@@ -128,6 +136,7 @@ def fingerprints(data: Any) -> dict[str, Any]:
     raw_cases = data.raw.get("load_cases", {}) if isinstance(data.raw, Mapping) else {}
     own: dict[str, Any] = {}
     refs: dict[str, set[str]] = {}
+    params = _parameters(data)
     for name, entry in data.components.items():
         cases = []
         tables = [entry.raw]
@@ -142,6 +151,11 @@ def fingerprints(data: Any) -> dict[str, Any]:
                      _profiles(tables, data, found))
         for t in tables:
             _names(t, data.components, found)
+        for t in tables:  # a parameter read by an expression inside a table-kind field (a path's "r0 - ..."): its
+            _names(t, params, found, words=True)  # value, not only the text (conservative: any word that is one)
+        used = sorted(n for n in found if n in params)
+        own[name] += (tuple((n, _canon(params[n])) for n in used),)
+        found = {n for n in found if n in data.components}
         found.discard(name)
         refs[name] = found
     out: dict[str, Any] = {}
