@@ -26,7 +26,7 @@ _KINDS: list[tuple[str, str, str, bool, int]] = [
     ("force", "N", "N", True, 3),
     ("torque", "N*m", "N·m", True, 3),
     ("stress", "Pa", "Pa", True, 3),
-    ("length", "m", "m", False, 3),  # lengths: mm, m, km (engineering drawings use mm)
+    ("length", "m", "m", False, 3),  # lengths: mm below 10 m (engineering drawings use mm), m, km from 10 km
     ("mass", "kg", "kg", False, 3),
     ("inertia", "kg*m**2", "kg·m²", False, 3),
     ("speed", "rpm", "rpm", False, 3),  # shares its dimension with frequency: rotational speed wins
@@ -137,6 +137,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
         mm = m * 1e3
         if abs(mm) < 1e4 or not math.isfinite(mm):
             return f"{number(mm, d)} mm"
+        if abs(m) >= 1e4:  # travel lives, rating distances: 50 km, not 50000 m or 5.00×10⁶ m
+            return f"{number(m / 1e3, d)} km"
         return f"{number(m, d)} m"
     if name == "time":
         if abs(m) >= 3600 * 10:
