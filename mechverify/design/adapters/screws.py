@@ -16,7 +16,7 @@ END_CASES = ("fixed-free", "pinned-pinned", "supported-supported", "fixed-pinned
 
 
 @dataclass(frozen=True)
-class ScrewDrive:
+class ScrewAndNut:
     """A lead screw and the nut that runs on it."""
 
     screw: LeadScrew
@@ -41,19 +41,19 @@ def _thread(p: dict[str, Any]) -> Any:
                    **pick(p, d="major_diameter", d3="minor_diameter", H1="flank_engagement"))
 
 
-def _build(p: dict[str, Any], ctx: dict[str, Any]) -> ScrewDrive:
+def _build(p: dict[str, Any], ctx: dict[str, Any]) -> ScrewAndNut:
     screw = LeadScrew(name=p["_name"], thread=_thread(p), **pick(p, "length", "material", "end_supports"))
     nut = Nut(name=f"{p['_name']} nut", **pick(p, "mu_min", "mu_max", material="nut_material", length="nut_length",
                                                   engaged_threads="nut_engaged_threads", p_allow="nut_p_allow",
                                                   pv_allow="nut_pv_allow"))
-    return ScrewDrive(screw, nut)
+    return ScrewAndNut(screw, nut)
 
 
-def _rotational_speed(c: ScrewDrive, loads: Any) -> Any:
+def _rotational_speed(c: ScrewAndNut, loads: Any) -> Any:
     return loads["rotational_speed"] if "rotational_speed" in loads else c.screw.rotational_speed(loads["speed"])
 
 
-def _drive_torque(c: ScrewDrive, loads: Any) -> Any:
+def _drive_torque(c: ScrewAndNut, loads: Any) -> Any:
     return c.screw.raise_torque(loads["axial_force"], c.nut.require_mu()[1])
 
 
