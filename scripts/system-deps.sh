@@ -11,17 +11,23 @@
 #                    makes its supernodal factorisation fast (the reference BLAS is ~3x slower)
 set -euo pipefail
 need=()
+# Read the font and library lists once: `ldconfig -p | grep -q` under pipefail fails when grep exits at the first
+# match and ldconfig then dies of SIGPIPE, which made every run reinstall packages that were there.
+fonts=$(fc-list 2>/dev/null || true)
+libs=$(ldconfig -p 2>/dev/null || true)
+has_font() { grep -qi "$1" <<<"$fonts"; }
+has_lib() { grep -q "$1" <<<"$libs"; }
 command -v ccx >/dev/null 2>&1 || need+=(calculix-ccx)
 command -v chromium >/dev/null 2>&1 || need+=(chromium)
 command -v pdftoppm >/dev/null 2>&1 || need+=(poppler-utils)
-fc-list 2>/dev/null | grep -qi "Noto Sans CJK" || need+=(fonts-noto-cjk)
-fc-list 2>/dev/null | grep -qi "NotoSans-Regular" || need+=(fonts-noto-core)
-fc-list 2>/dev/null | grep -qi "Noto Color Emoji" || need+=(fonts-noto-color-emoji)
+has_font "Noto Sans CJK" || need+=(fonts-noto-cjk)
+has_font "NotoSans-Regular" || need+=(fonts-noto-core)
+has_font "Noto Color Emoji" || need+=(fonts-noto-color-emoji)
 [ -e /usr/include/suitesparse/cholmod.h ] || need+=(libsuitesparse-dev)
-ldconfig -p | grep -q "libopenblas.so.0" || need+=(libopenblas0-pthread)
+has_lib "libopenblas.so.0" || need+=(libopenblas0-pthread)
 for lib in libpango-1.0.so.0:libpango-1.0-0 libpangoft2-1.0.so.0:libpangoft2-1.0-0 libGLU.so.1:libglu1-mesa \
            libXcursor.so.1:libxcursor1 libXinerama.so.1:libxinerama1 libXft.so.2:libxft2; do
-  ldconfig -p | grep -q "${lib%%:*}" || need+=("${lib##*:}")
+  has_lib "${lib%%:*}" || need+=("${lib##*:}")
 done
 [ ${#need[@]} -eq 0 ] && exit 0
 cmd="apt-get update && apt-get install -y --no-install-recommends ${need[*]}"
