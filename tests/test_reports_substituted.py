@@ -370,3 +370,45 @@ def test_roark_plate_stress_and_deflection_substituted():
                 assert d.substituted.count(r"\quad") == 1  # the deflection and the limit
                 seen.add(est.source.rsplit(" ", 1)[-1] + est.stress_location)
     assert len(seen) == 8
+
+
+def test_negative_operand_after_minus_is_bracketed():
+    """Review item 12: solid_stress printed "-5.231 MPa - -6.246 MPa". tex_minus() brackets a negative subtrahend,
+    and every CheckResult.substituted gets the same treatment (a negative number right after -, +, \\cdot); the line
+    still evaluates to the same value (consistency check, no published number)."""
+    from mechverify.checks.result import CheckResult, bracket_negative_operands, tex_minus, tex_term
+
+    a, b = Q(-5.231, "MPa"), Q(-6.246, "MPa")
+    line = tex_minus(a, b)
+    assert line == r"-5.231\,\mathrm{MPa} - (-6.246\,\mathrm{MPa})"
+    assert eval(latex_to_python(line), {"Q": Q}).m_as("MPa") == pytest.approx(1.015)
+    assert tex_term(Q(3, "N")) == tex(Q(3, "N")) and tex_term(-2.5) == "(-2.5)"
+    raw = (r"x = (-5.231\,\mathrm{MPa} - -6.246\,\mathrm{MPa})\cdot -2 + -1\times10^{-3}\,\mathrm{MPa}"
+           r" = -2.031\,\mathrm{MPa}")
+    fixed = bracket_negative_operands(raw)
+    assert re.search(r"(?:[-+]|\\cdot)\s*-\d", fixed.split(" = ")[1]) is None, fixed
+    assert "10^{-3}" in fixed
+    value, printed = evaluate(fixed)
+    assert value.m_as("MPa") == pytest.approx(printed.m_as("MPa"), rel=1e-3)
+    r = CheckResult(check="x", component="c", demand=Q(1, "MPa"), capacity=Q(2, "MPa"), substituted=raw)
+    assert r.substituted == fixed
+
+
+def test_solid_stress_line_brackets_negative_principal_stresses():
+    """A compressive stress state (principal stresses -1, -5.231, -6.246 MPa): the von Mises line of solid_stress
+    has no "- -" and evaluates back to the printed maximum (hand calculation from Shigley Eq. 5-13:
+    sqrt((4.231^2 + 1.015^2 + 5.246^2) / 2) = 4.819 MPa, not a printed value)."""
+    from types import SimpleNamespace
+
+    from mechverify.checks.fea import check_solid_stress
+
+    sigma = np.diag([-1.0e6, -5.231e6, -6.246e6])
+    res = SimpleNamespace(
+        max_von_mises=SimpleNamespace(value=Q(4.819e6, "Pa"), node=0), sigma=np.array([sigma]),
+        material=SimpleNamespace(require=lambda k: Q(250, "MPa")), points=np.zeros((1, 3)), error_estimate=None,
+        warnings=())
+    r = check_solid_stress(res, component="c")
+    assert re.search(r"-\s*-\d", r.substituted) is None, r.substituted
+    assert r"- (-" in r.substituted
+    value, printed = evaluate(r.substituted)
+    assert value.m_as("MPa") == pytest.approx(printed.m_as("MPa"), rel=1e-3)

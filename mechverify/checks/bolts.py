@@ -14,7 +14,7 @@ import math
 from collections.abc import Sequence
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult, tex
+from mechverify.checks.result import CheckResult, tex, tex_term
 from mechverify.components.bolts import BoltedJoint, JointAnalysis, nut_dimensions, thread_torque
 from mechverify.references import ref
 from mechverify.units import Q
@@ -50,6 +50,11 @@ def _mm(x: float) -> str:
 
 def _N(x: float) -> str:
     return tex(Q(x / 1e3, "kN"))
+
+
+def _N_term(x: float) -> str:
+    """_N() of an operand after a minus sign (a negative value in parentheses)."""
+    return tex_term(Q(x / 1e3, "kN"))
 
 
 def _gain(a: JointAnalysis) -> float:
@@ -164,7 +169,7 @@ def check_bolt_fatigue(joint: BoltedJoint, a: JointAnalysis, *, required_sf: flo
                  r"\left(2 - \frac{F_{Sm}}{F_{0.2}}\right)\sigma_{ASV}"),
         source=ref(VDI, "R9"),
         inputs={**_inputs(joint), "F_A_max": _kN(a.F_A_max), "F_A_min": _kN(a.F_A_min), "Phi_n": Q(a.Phi_n, "")},
-        substituted=(rf"\sigma_a = \frac{{{tex(a.Phi_n)}\cdot ({_N(a.F_A_max)} - {_N(a.F_A_min)})}}{{2\cdot "
+        substituted=(rf"\sigma_a = \frac{{{tex(a.Phi_n)}\cdot ({_N(a.F_A_max)} - {_N_term(a.F_A_min)})}}{{2\cdot "
                      rf"{tex(Q(joint.thread.As * 1e6, 'mm**2'))}}} = {tex(_MPa(a.sigma_a))}"
                      + ("" if how == "after" else
                         rf",\quad \sigma_{{ASV}} = 0.85\cdot \left(\frac{{150}}{{{joint.thread.d * 1e3:g}}} + 45\right)"
@@ -274,7 +279,7 @@ def check_bolt_separation(joint: BoltedJoint, a: JointAnalysis, *, required_sf: 
         inputs={**_inputs(joint), "F_A": _kN(a.F_A_max), "F_Z": _kN(a.F_Z), "F_K_req": _kN(a.F_K_req)},
         substituted=(rf"(1 - \Phi_n) F_{{A,max}} + F_{{K,erf}} = (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} + "
                      rf"{_N(a.F_K_req)} = {_N(a.F_PA + a.F_K_req)}"
-                     rf",\quad F_{{M,min}} - F_Z - \Delta F_{{Vth}} = {_N(a.F_M_min)} - {_N(a.F_Z)} - "
+                     rf",\quad F_{{M,min}} - F_Z - \Delta F_{{Vth}} = {_N(a.F_M_min)} - {_N_term(a.F_Z)} - "
                      rf"{_N(max(a.dF_Vth, 0.0))} = {_N(avail)}"),
         notes=(f"F_M,min = {a.F_M_min / 1e3:.4g} kN; required assembly preload (R4) F_M,min,req = "
                f"{a.F_M_req / 1e3:.4g} kN",),
@@ -297,8 +302,8 @@ def check_bolt_slip(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float 
         inputs={**_inputs(joint), "F_Q": _kN(a.F_Q), "mu_T": Q(joint.mu_T or 0.0, ""), "q_F": Q(joint.q_F, "")},
         substituted=((rf"F_{{KQerf}} = \frac{{{_N(a.F_Q)}}}{{{joint.q_F}\cdot {tex(joint.mu_T)}}} = {_N(a.F_KQ)},\quad "
                       if a.F_Q > 0 and joint.mu_T else "")
-                     + rf"F_{{KR,min}} = {_N(a.F_M_min)} - (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} - {_N(a.F_Z)} - "
-                     rf"{_N(max(a.dF_Vth, 0.0))} = {_N(a.F_KR_min)}"),
+                     + rf"F_{{KR,min}} = {_N(a.F_M_min)} - (1 - {tex(a.Phi_n)})\cdot {_N(a.F_A_max)} - "
+                     rf"{_N_term(a.F_Z)} - {_N(max(a.dF_Vth, 0.0))} = {_N(a.F_KR_min)}"),
         notes=("VDI 2230 R12 asks S_G >= 1.2 for static and 1.8 for alternating transverse loads",
                *(("no transverse load in this case",) if a.F_Q == 0 else ())),
         load_case=load_case, details=_diagram(joint, a))

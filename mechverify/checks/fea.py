@@ -21,7 +21,7 @@ import numpy as np
 
 from mechverify.checks.members import deflection_check
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult, tex
+from mechverify.checks.result import CheckResult, tex, tex_minus
 from mechverify.errors import InputError
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, to_si
@@ -78,8 +78,8 @@ def check_solid_stress(res: FieldResults, *, component: str = "", required_sf: f
     sy = res.material.require("yield_strength").to("MPa")
     extra = [f"governing {_where(res, int(mx.node))}"]
     p1, p2, p3 = (Q(float(x), "Pa") for x in np.linalg.eigvalsh(np.asarray(res.sigma[int(mx.node)]))[::-1])
-    sub = (rf"\sigma_{{vM}} = \sqrt{{\frac{{({tex(p1, 'MPa')} - {tex(p2, 'MPa')})^{{2}} + ({tex(p2, 'MPa')} - "
-           rf"{tex(p3, 'MPa')})^{{2}} + ({tex(p3, 'MPa')} - {tex(p1, 'MPa')})^{{2}}}}{{2}}}} = "
+    sub = (rf"\sigma_{{vM}} = \sqrt{{\frac{{({tex_minus(p1, p2, 'MPa')})^{{2}} + ({tex_minus(p2, p3, 'MPa')})^{{2}} + "
+           rf"({tex_minus(p3, p1, 'MPa')})^{{2}}}}{{2}}}} = "
            rf"{tex(mx.value, 'MPa')}")
     if res.error_estimate is not None:
         extra.append(f"Zienkiewicz-Zhu relative energy-norm error estimate {100 * float(res.error_estimate):.3g} %")

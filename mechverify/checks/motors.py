@@ -34,7 +34,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.checks.registry import check
-from mechverify.checks.result import CheckResult, ResultSet, tex
+from mechverify.checks.result import CheckResult, ResultSet, tex, tex_minus
 from mechverify.components.gearheads import Gearhead
 from mechverify.components.motors import ALPHA_CU, thermal_data, winding_temperature_cycle
 from mechverify.errors import InputError
@@ -414,8 +414,8 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
                "the duty cycle repeats without pause beyond the given cycle time; iron and friction losses "
                "are not in the model (I_0 heats the winding as current)"),
         load_case=f"whole cycle (peak at {_case(demand, th.peak_index)})",
-        substituted=(rf"\frac{{T_w - T_U}}{{T_{{max}} - T_U}} = \frac{{{tex(th.peak_winding)} - {tex(Ta)}}}"
-                     rf"{{{tex(Tmax)} - {tex(Ta)}}} = {tex((th.peak_winding - Ta) / (Tmax - Ta))}"),
+        substituted=(rf"\frac{{T_w - T_U}}{{T_{{max}} - T_U}} = \frac{{{tex_minus(th.peak_winding, Ta)}}}"
+                     rf"{{{tex_minus(Tmax, Ta)}}} = {tex((th.peak_winding - Ta) / (Tmax - Ta))}"),
         details={"time": Q(th.t, "s"), "winding_temperature": Q(th.winding, "degC"),
                  "housing_temperature": Q(th.housing, "degC")})
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import html
 import math
+import re
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum, StrEnum
@@ -78,6 +79,8 @@ class CheckResult:
         if d < 0 or c < 0:
             raise InputError(f"{self.component}/{self.check}: demand and capacity must be >= 0 "
                              f"(got {fmt(self.demand)}, {fmt(self.capacity)})")
+        if self.substituted:
+            set_fields(self, substituted=bracket_negative_operands(self.substituted))
         if not self.required_sf > 0:
             raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
         set_fields(self, notes=tuple(self.notes), warnings=tuple(self.warnings), inputs=dict(self.inputs),
@@ -264,10 +267,33 @@ def tex(q: Any, unit: str | None = None, digits: int = 4) -> str:
         text = rf"{mant}\times10^{{{int(exp)}}}"
     if not u:
         return text
-    import re
-
     u = re.sub(r"\*\*(-?\d+)", r"^{\1}", u).replace("*", r"\cdot ")
     return rf"{text}\,\mathrm{{{u}}}"
+
+
+def tex_term(q: Any, unit: str | None = None, digits: int = 4) -> str:
+    r""":func:`tex` of an operand that follows a binary operator: a negative value in parentheses, so
+    ``a - b`` with b = -6.246 MPa prints ``a - (-6.246\,\mathrm{MPa})``, never ``a - -6.246 MPa``."""
+    text = tex(q, unit, digits)
+    return f"({text})" if text.startswith("-") else text
+
+
+def tex_minus(a: Any, b: Any, unit: str | None = None, digits: int = 4) -> str:
+    """``a - b`` as LaTeX for a substituted line; ``b`` in parentheses when negative (see :func:`tex_term`)."""
+    return f"{tex(a, unit, digits)} - {tex_term(b, unit, digits)}"
+
+
+# A signed number (with its x10^{n} and \,\mathrm{unit}) right after a binary operator: "- -6.2", "+ -3", "\cdot -2".
+_NEGATIVE_OPERAND = re.compile(
+    r"(?P<op>(?<![=(,{])[-+]|\\cdot|\\times)(?P<sp>\s*)"
+    r"(?P<num>-\d[\d.]*(?:\\times10\^\{-?\d+\})?(?:\\,\\mathrm\{(?:[^{}]|\{[^{}]*\})*\})?)")
+
+
+def bracket_negative_operands(latex: str) -> str:
+    r"""Put a negative number that directly follows ``-``, ``+``, ``\cdot`` or ``\times`` in parentheses
+    (the safety net behind :func:`tex_term`, applied to every :attr:`CheckResult.substituted`); the value
+    of the expression does not change."""
+    return _NEGATIVE_OPERAND.sub(lambda m: f"{m['op']}{m['sp']}({m['num']})", latex)
 
 
 def _finite_or_none(x: float) -> float | None:
