@@ -13,10 +13,12 @@ from typing import Any
 
 import numpy as np
 
+from mechverify.checks import fea as feac
 from mechverify.checks import frames as fc
 from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
 from mechverify.design.adapters.frame_parsing import case_loads, combination, items, make, parse_members, vec, where
+from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
 from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
@@ -38,7 +40,9 @@ class FrameComponent:
     fatigue_loading: str
     fatigue_criterion: str
     fatigue_kf: float
+    modal: ModalSettings | None = None
     solved: dict[str, fe.FrameResults] = dataclasses.field(default_factory=dict)
+    modes: list[Any] = dataclasses.field(default_factory=list)
 
     def results(self, ctx: Any) -> fe.FrameResults:
         """The results of ``ctx.load_case``; the first call solves every case and combination of this frame."""
@@ -81,7 +85,7 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
     if not p["fatigue_kf"] >= 1:
         raise InputError(f"fatigue_kf: a fatigue stress-concentration factor >= 1, got {p['fatigue_kf']!r}")
     return FrameComponent(frame, limit, span, None if life is None else float(life), p["fatigue_loading"],
-                          p["fatigue_criterion"], float(p["fatigue_kf"]))
+                          p["fatigue_criterion"], float(p["fatigue_kf"]), modal_settings(p))
 
 
 def _reach(frame: fe.Frame) -> float:
@@ -92,6 +96,24 @@ def _reach(frame: fe.Frame) -> float:
 
 
 # ---------------------------------------------------------------------------------------------- checks
+def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
+    """natural_frequency when the frame gives min_frequency or excitation_band (fea/frame/modal.py)."""
+    if c.modal is None:
+        return []
+    if not c.modes:
+        c.modes.append(c.modal.solve(fe.frame_modes, c.frame))
+    return c.modal.check(c.modes[0], c.frame.name)
+
+
+def _buckling(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
+    """buckling_load_factor of one load case (a combination case is not analysed: its loads are other cases')."""
+    if "combination" in loads:
+        return []
+    lds = case_loads(loads, ctx.load_case, c.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2")))
+    return feac.check_buckling_load_factor(fe.frame_buckling(c.frame, lds, 1), component=c.frame.name,
+                                           load_case=ctx.load_case)
+
+
 def _figures(c: FrameComponent, results: list[CheckResult]) -> list[tuple[str, Any]]:
     gov = next((r for r in results if r.check == "frame_stress"), None) or next(iter(results), None)
     if gov is None or gov.load_case not in c.solved:
@@ -135,6 +157,7 @@ FRAME = REGISTRY.register(ComponentType(
         Field("fatigue_criterion", "choice", "mean-stress criterion for zero_to_max", choices=FATIGUE_CRITERIA,
               default="goodman"),
         Field("fatigue_kf", "float", "fatigue stress-concentration factor Kf on the beam stresses", default=1.0),
+        *MODAL_FIELDS,
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
@@ -157,6 +180,8 @@ FRAME = REGISTRY.register(ComponentType(
         CheckSpec.of(fc.check_frame_fatigue, lambda c, loads, ctx: fc.check_frame_fatigue(
             c.results(ctx), loading=c.fatigue_loading, life=c.fatigue_life, criterion=c.fatigue_criterion,
             Kf=c.fatigue_kf, required_sf=ctx.required_sf, load_case=ctx.load_case), needs=(LOADS,), default=False),
+        CheckSpec.of(feac.check_natural_frequency, _frequency),
+        CheckSpec.of(feac.check_buckling_load_factor, _buckling, needs=(LOADS,), default=False),
     ),
     figures=_figures,
 ))

@@ -28,19 +28,14 @@ import numpy as np
 import shapely
 from shapely.geometry import Polygon as ShapelyPolygon
 
+from mechverify.checks import fea as feac
 from mechverify.checks import members as mc
 from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
 from mechverify.design.adapters.bolts import plate_bolt_outputs
-from mechverify.design.adapters.plate_parsing import (
-    _cutouts,
-    _holes,
-    _loads,
-    _points,
-    _si,
-    _supports,
-)
+from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
+from mechverify.design.adapters.plate_parsing import _cutouts, _holes, _loads, _points, _si, _supports
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
 from mechverify.units import Q, fmt
@@ -61,6 +56,7 @@ class PlateFEA:
     deflection_limit: Any
     span: Any
     unit: str = "mm"
+    modal: ModalSettings | None = None
     solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
 
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
@@ -141,7 +137,7 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
         if k in p and not p[k].magnitude > 0:
             raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
-                    unit)
+                    unit, modal_settings(p))
 
 
 # ------------------------------------------------------------------------------------------------------ checks
@@ -162,6 +158,15 @@ def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
     return pc.check_plate_deflection_fea(model, res, c.deflection_limit, span=c.span, component=c.name,
                                          notes=_mesh_notes(c, res))
+
+
+def _frequency(c: PlateFEA, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
+    if c.modal is None:  # natural_frequency runs when min_frequency or excitation_band is given
+        return []
+    from mechverify.fea.plate_modal import plate_modes
+
+    res = c.modal.solve(plate_modes, pl.PlateModel(c.plate, c.supports), c.mesh_size, c.hole_mesh_size)
+    return c.modal.check(res, c.name)
 
 
 def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
@@ -215,6 +220,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
         Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
+        *MODAL_FIELDS,
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
@@ -230,6 +236,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                      needs=("point_loads|patch_loads|pressure|self_weight",)),
         CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
                      needs=("point_loads|patch_loads|pressure|self_weight",)),
+        CheckSpec.of(feac.check_natural_frequency, _frequency),
     ),
     outputs=plate_bolt_outputs(),  # bolt-hole support forces for bolted_joint / bolt_group (adapters/bolts.py)
     figures=_figures,

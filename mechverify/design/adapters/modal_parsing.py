@@ -1,0 +1,76 @@
+"""Design-file keys of a natural-frequency requirement, shared by the ``frame`` and ``plate_fea`` types (the same
+keys and meaning as ``solid_fea``): ``min_frequency`` or ``excitation_band`` with ``frequency_margin``, and
+``modes`` (how many are computed). Parsing only; the check is :func:`mechverify.checks.fea.check_natural_frequency`.
+Declares no component type."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from mechverify.checks import fea as fc
+from mechverify.checks.result import CheckResult
+from mechverify.design.spec import Field
+from mechverify.errors import InputError, MechverifyError
+from mechverify.units import as_quantity
+
+MODAL_FIELDS = (
+    Field("min_frequency", "frequency", "the first natural frequency must reach this (check natural_frequency)"),
+    Field("excitation_band", "list", "[lo, hi] excitation frequencies no mode may come near (check "
+                                     "natural_frequency)", item="str"),
+    Field("frequency_margin", "float", "separation from the excitation band (0.15 = 15 %)", default=0.15),
+    Field("modes", "int", "natural frequencies computed", default=6),
+)
+
+
+@dataclass(frozen=True)
+class ModalSettings:
+    """A frequency requirement: ``minimum`` or ``band`` (lo, hi) with ``margin``; ``modes`` computed."""
+
+    modes: int
+    minimum: Any = None
+    band: tuple[Any, Any] | None = None
+    margin: float = 0.15
+
+    def solve(self, fn: Any, *args: Any) -> Any:
+        """``fn(*args, self.modes)`` (frame_modes, plate_modes); its "n_modes" errors name the key ``modes``."""
+        try:
+            return fn(*args[:1], self.modes, *args[1:])
+        except InputError as exc:
+            raise InputError(f"modes: {str(exc).split(': ', 1)[-1]}") from None
+
+    def check(self, res: Any, component: str) -> CheckResult:
+        """The natural_frequency check of modal results ``res`` (frame or plate)."""
+        return fc.check_natural_frequency(res, minimum=self.minimum, band=self.band, margin=self.margin,
+                                          component=component)
+
+
+def modal_settings(p: Mapping[str, Any]) -> ModalSettings | None:
+    """The frequency requirement of a component's fields ``p`` (None when it gives neither ``min_frequency`` nor
+    ``excitation_band``); bad values are an :class:`InputError` naming the key."""
+    modes = p.get("modes", 6)
+    if isinstance(modes, bool) or not isinstance(modes, int) or modes < 1:
+        raise InputError(f"modes: the number of natural frequencies computed, a whole number >= 1, got {modes!r}")
+    margin = p.get("frequency_margin", 0.15)
+    if isinstance(margin, bool) or not isinstance(margin, int | float) or not 0 <= margin < 10:
+        raise InputError(f"frequency_margin: a fraction >= 0 (0.15 = 15 %), got {margin!r}")
+    if "min_frequency" in p and "excitation_band" in p:
+        raise InputError("min_frequency: give min_frequency or excitation_band, not both")
+    if "min_frequency" in p:
+        fmin = p["min_frequency"]
+        if not fmin.magnitude > 0:
+            raise InputError(f"min_frequency: must be positive, got {fmin!r}")
+        return ModalSettings(modes, minimum=fmin, margin=float(margin))
+    if "excitation_band" not in p:
+        return None
+    band = p["excitation_band"]
+    if not isinstance(band, list) or len(band) != 2:
+        raise InputError(f"excitation_band: expected [\"lo Hz\", \"hi Hz\"], got {band!r}")
+    try:
+        lo, hi = (as_quantity(b, "frequency", f"excitation_band[{i}]") for i, b in enumerate(band))
+    except MechverifyError as exc:
+        raise InputError(f"excitation_band: {str(exc).split(': ', 1)[-1]}") from None
+    if not 0 <= lo.m_as("Hz") <= hi.m_as("Hz"):
+        raise InputError(f"excitation_band: expected [lo, hi] with 0 <= lo <= hi, got {band!r}")
+    return ModalSettings(modes, band=(lo, hi), margin=float(margin))

@@ -1,0 +1,150 @@
+"""Natural frequency and buckling checks of the ``frame`` and ``plate_fea`` design-file types
+(mechverify/design/adapters/modal_parsing.py, frame.py, plate_fea.py): the same keys as ``solid_fea``.
+
+Every number below is a hand calculation from the named closed form, not a printed table value:
+- a steel cantilever, round 20 mm, L = 1 m, Euler-Bernoulli: f1 = (β1 L)² √(EI/(ρA)) / (2π L²) with
+  β1 L = 1.87510 (the root of cos βL cosh βL = -1; Blevins, Formulas for Natural Frequency and Mode Shape,
+  Table 8-1, cantilever) = 14.12 Hz;
+- the same member as a column fixed at its base and free at its top: P_cr = π² EI / (4 L²) (Timoshenko & Gere,
+  Theory of Elastic Stability, Sec. 2.1) = 3875.8 N, so 1 kN gives the factor 3.876;
+- a simply supported steel plate 300 x 200 x 3 mm: f11 = π/2 (1/a² + 1/b²) √(D/(ρt)) (Leissa, Vibration of
+  Plates, NASA SP-160, Sec. 4.1) = 259.93 Hz (as in tests/validation/test_leissa_plate_modal.py).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+import mechverify
+from mechverify.design.loader import DesignFileError
+
+E, RHO = 200e9, 7850.0  # the database's Structural Steel
+
+FRAME = """
+[design]
+name = "column"
+
+[components.col]
+type = "frame"
+material = "Structural Steel"
+section = "circle"
+diameter = "20 mm"
+theory = "euler"
+nodes = {{ A = ["0 mm", "0 mm", "0 mm"], B = ["1000 mm", "0 mm", "0 mm"] }}
+members = [ {{ name = "m", start = "A", end = "B" }} ]
+supports = [ {{ at = "A", type = "fixed" }} ]
+{extra}
+[components.col.checks]
+buckling_load_factor = true
+
+[load_cases.axial.col]
+point_loads = [ {{ at = "B", force = ["-1000 N", "0 N", "0 N"] }} ]
+[load_cases.pull.col]
+point_loads = [ {{ at = "B", force = ["-500 N", "0 N", "0 N"] }} ]
+"""
+
+PLATE = """
+[design]
+name = "panel"
+
+[components.pl]
+type = "plate_fea"
+width = "300 mm"
+height = "200 mm"
+thickness = "3 mm"
+material = "Structural Steel"
+supports = [ {{ edges = "all", type = "pinned" }} ]
+mesh_size = "{mesh}"
+{extra}
+
+[load_cases.p.pl]
+pressure = "1 kPa"
+"""
+
+
+def _verify(tmp_path, text):
+    f = tmp_path / "d.toml"
+    f.write_text(text)
+    return {r.check: r for r in mechverify.load(f).verify()}
+
+
+def _errors(tmp_path, text) -> str:
+    f = tmp_path / "d.toml"
+    f.write_text(text)
+    with pytest.raises(DesignFileError) as exc:
+        mechverify.load(f).verify()
+    return str(exc.value)
+
+
+def _round_bar(d=0.02, L=1.0):
+    A, I = math.pi * d**2 / 4, math.pi * d**4 / 64
+    return A, I, L
+
+
+def test_frame_cantilever_frequency_and_euler_column(tmp_path):
+    A, I, L = _round_bar()
+    f1_hand = 1.875104**2 * math.sqrt(E * I / (RHO * A)) / (2 * math.pi * L**2)  # Euler-Bernoulli, hand
+    p_cr_hand = math.pi**2 * E * I / (4 * L**2)  # Timoshenko & Gere Sec. 2.1, fixed-free, hand
+    assert f1_hand == pytest.approx(14.12, abs=0.01) and p_cr_hand == pytest.approx(3875.8, abs=0.1)
+    by = _verify(tmp_path, FRAME.format(extra='min_frequency = "10 Hz"\nmodes = 3'))
+    nf = by["natural_frequency"]
+    assert nf.capacity.m_as("Hz") == pytest.approx(f1_hand, rel=1e-4)
+    assert nf.demand.m_as("Hz") == pytest.approx(10.0) and nf.passed
+    assert "mode_shape" in nf.details and "mode_lines" in nf.details  # the mode-shape figure's data
+    bk = by["buckling_load_factor"]
+    assert bk.capacity.m == pytest.approx(p_cr_hand / 1000.0, rel=1e-4)
+    assert bk.load_case == "axial"  # 1 kN governs over 0.5 kN (factor 7.75)
+    f = tmp_path / "d.toml"
+    assert bk.required_sf == mechverify.load(f).data.safety_factors["buckling"]  # the buckling SF class
+    assert bk.passed == (bk.capacity.m >= bk.required_sf)
+
+
+def test_frame_excitation_band(tmp_path):
+    """Band 20-30 Hz with a 15 % margin: the lower edge 20/1.15 = 17.39 Hz; f1 = 14.12 Hz lies below it (passes),
+    f2 = f1 (round bar), f3 = (4.69409/1.87510)² f1 = 88.5 Hz lies above 30·1.15 = 34.5 Hz."""
+    by = _verify(tmp_path, FRAME.format(extra='excitation_band = ["20 Hz", "30 Hz"]\nmodes = 4'))
+    nf = by["natural_frequency"]
+    assert nf.passed
+    assert nf.capacity.m_as("Hz") == pytest.approx(20 / 1.15, rel=1e-9)
+    by = _verify(tmp_path, FRAME.format(extra='excitation_band = ["12 Hz", "30 Hz"]\nfrequency_margin = 0.1'))
+    assert not by["natural_frequency"].passed  # 14.1 Hz inside the band
+
+
+def test_frame_without_frequency_keys_has_no_frequency_check(tmp_path):
+    assert "natural_frequency" not in _verify(tmp_path, FRAME.format(extra=""))
+
+
+def test_plate_fea_simply_supported_leissa(tmp_path):
+    a, b, t = 0.3, 0.2, 0.003
+    D = E * t**3 / (12 * (1 - 0.3**2))
+    f11_hand = math.pi / 2 * (1 / a**2 + 1 / b**2) * math.sqrt(D / (RHO * t))  # Leissa Sec. 4.1, hand
+    assert f11_hand == pytest.approx(259.93, abs=0.01)
+    by = _verify(tmp_path, PLATE.format(mesh="10 mm", extra='min_frequency = "200 Hz"\nmodes = 2'))
+    nf = by["natural_frequency"]
+    assert nf.capacity.m_as("Hz") == pytest.approx(f11_hand, rel=5e-3) and nf.passed
+    assert "plate_stress_fea" in by  # the static checks still run
+
+
+@pytest.mark.parametrize(("extra", "match"), [
+    ('min_frequency = "10 Hz"\nmodes = 0', r"components\.col\.modes: .*>= 1"),
+    ('min_frequency = "10 Hz"\nmodes = -2', r"components\.col\.modes"),
+    ('min_frequency = "10 Hz"\nmodes = 500', r"components\.col\.checks\.natural_frequency: modes: 500 modes asked"),
+    ('min_frequency = "50"', r"components\.col\.min_frequency"),
+    ('excitation_band = ["20", "30 Hz"]', r"components\.col\.excitation_band"),
+    ('excitation_band = ["30 Hz", "20 Hz"]', r"components\.col\.excitation_band: .*lo <= hi"),
+    ('min_frequency = "10 Hz"\nexcitation_band = ["20 Hz", "30 Hz"]', r"components\.col\.min_frequency: .*not both"),
+    ('min_frequency = "10 Hz"\nfrequency_margin = -0.1', r"components\.col\.frequency_margin"),
+])
+def test_frame_bad_modal_input(tmp_path, extra, match):
+    msg = _errors(tmp_path, FRAME.format(extra=extra))
+    assert re.search(match, msg), msg
+
+
+def test_plate_bad_modal_input(tmp_path):
+    msg = _errors(tmp_path, PLATE.format(mesh="100 mm", extra='min_frequency = "200 Hz"\nmodes = 5000'))
+    assert "components.pl.checks.natural_frequency: modes: 5000 modes asked" in msg
+    msg = _errors(tmp_path, PLATE.format(mesh="10 mm", extra='min_frequency = "200"'))
+    assert "components.pl.min_frequency" in msg
