@@ -408,3 +408,23 @@ def test_every_example_design_pickles(path):
     d2 = pickle.loads(pickle.dumps(d))
     assert list(d2.components) == list(d.components) and d2.files == d.files
     assert list(d2.data.load_cases) == list(d.data.load_cases) and d2.parameters == d.parameters
+
+
+def test_expression_results_show_simplified_units():
+    """Review item 12: the conveyor's drum speed belt_speed / (drum_diameter / 2) = 1 m/s / 80 mm printed
+    "0.0125 m/s/mm". Hand arithmetic: 1 / 0.08 = 12.5 rad/s (= 119.4 rpm); the value (SI) is unchanged, only the
+    unit is reduced; units already reduced stay as written."""
+    from mechverify.design.parameters import show, simplify_units
+
+    q = simplify_units(Q("0.0125 m/s/mm"), "angular_velocity")
+    assert f"{q.units:~P}" == "rad/s" and q.m_as("rad/s") == pytest.approx(12.5)
+    assert simplify_units(Q("0.0125 m/min/mm"), "angular_velocity").m_as("rpm") == pytest.approx(12.5 / (2 * math.pi))
+    assert simplify_units(Q("2 mm/m * rad"), "angle").m_as("rad") == pytest.approx(0.002)
+    assert f"{simplify_units(Q('2 mm/m * rad'), 'angle').units:~P}" == "rad"
+    assert simplify_units(Q("10 mm/m"), "dimensionless").magnitude == pytest.approx(0.01)
+    assert str(simplify_units(Q("100 rpm"), "angular_velocity").units) == str(Q("100 rpm").units)
+    assert show(Q("0.0125 m/s/mm")) == "12.5 1/s"
+    design = load(Path(__file__).resolve().parents[1] / "examples" / "conveyor_drum" / "design.toml")
+    lines = [n for r in design.verify() for n in r.notes if "← drum_speed" in n]
+    assert lines and all(re.search(r"= 12\.5 rad/s ← drum_speed", n) for n in lines), lines
+    assert all("/mm" not in n for n in lines)

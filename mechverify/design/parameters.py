@@ -53,14 +53,29 @@ class Trace:
         return f"{label or path.rsplit('.', 1)[-1]} = {show(value)} ← {source}"
 
 
+def simplify_units(q: Any, kind: str | None = None) -> Any:
+    """A quantity whose unit mixes units of one dimension, in fewer units, the same value: ``0.0125 m/s/mm`` ->
+    ``12.5 1/s`` (pint's ``to_reduced_units``); of ``kind`` ``"angular_velocity"`` then ``12.5 rad/s``, of
+    ``"angle"`` a plain result in rad. Units already reduced (``rev/min``, ``N·m``) stay as written."""
+    if not isinstance(q, Quantity) or len(q.units._units) <= 1:
+        return q
+    r = q.to_reduced_units()
+    if len(r.units._units) >= len(q.units._units):
+        return q
+    if kind == "angular_velocity" and all(_dimensionality(u) == _dimensionality("[time]") for u in r.units._units):
+        r = r.to("rad/s")  # 1/s (or 1/min) of an angular speed: rad/s
+    elif kind == "angle" and r.unitless:
+        r = Quantity(float(r.magnitude), "rad")
+    return r
+
+
 def show(v: Any) -> str:
     if isinstance(v, Quantity):
         if len(v.units._units) > 1:  # kg·m/s² -> N: the SI unit of its kind, when the kind is unambiguous
             kinds = [k for k, (dim, _) in DIMENSIONS.items()
                      if dim and k not in ("torque", "energy", "frequency", "angular_velocity", "torsional_stiffness")
                      and v.dimensionality == _dimensionality(dim)]
-            if len(kinds) == 1:
-                v = v.to(DIMENSIONS[kinds[0]][1])
+            v = v.to(DIMENSIONS[kinds[0]][1]) if len(kinds) == 1 else simplify_units(v)
         m = v.magnitude
         if isinstance(m, int | float) and not isinstance(m, bool):  # fmt's text, the unit's text cached
             text = fmt(Quantity(float(m), "dimensionless"))
@@ -223,7 +238,7 @@ def _plain_quantity(text: str, kind: str, e: Expression, params: Mapping[str, An
 
 def _as_kind(v: Any, kind: str, source: str, computed: bool = True) -> Any:
     if kind in DIMENSIONS:
-        q = check_kind(v, kind, source)
+        q = simplify_units(check_kind(v, kind, source), kind)
         if computed and len(q.units._units) > 1 and kind not in ("angle", "angular_velocity", "dimensionless"):
             q = q.to(DIMENSIONS[kind][1])  # N·s²/m -> kg: a computed value in the SI unit of its kind
         return q
