@@ -88,7 +88,7 @@ motor_data = { type = "stepper", holding_torque = "0.4 N*m", rotor_inertia = "50
 transmission = [{ type = "drum", diameter = "20 mm" }]
 """)
     code, _, err = run(capsys, p)
-    assert code == 2 and "components.d: motor_data.step_angle: missing" in err
+    assert code == 2 and "components.d.motor_data.step_angle: missing" in err
 
 
 @pytest.mark.parametrize("value", ["inf", "nan", "0", "-2", '"2"'])

@@ -114,7 +114,7 @@ def test_coincident_cable_angles_are_named(tmp_path, angles):
         'cable_rating = "5 N"', f'cable_rating = "5 N"\ncable_angles = {angles}', 1)
     p = tmp_path / "d.toml"
     p.write_text("[design]\nname = \"spine\"\n" + text)
-    with pytest.raises(DesignFileError, match=r"components\.neck: cable_angles: cables 0 and [12] have the same "
+    with pytest.raises(DesignFileError, match=r"components\.neck\.cable_angles: cables 0 and [12] have the same "
                                               r"anchor angle"):
         load(p)
     with pytest.raises(InputError, match="cable_angles: cables 0 and 1"):

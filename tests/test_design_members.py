@@ -323,43 +323,43 @@ def test_unknown_section_kind_suggests(tmp_path):
 
 def test_section_dimension_errors(tmp_path):
     msg = errors_of(tmp_path, BAR.format(extra='diameter = "5 mm"', loads='axial_force = "1 N"'))
-    assert "components.bar: diameter: not a dimension of a rectangle section" in msg
+    assert "components.bar.diameter: not a dimension of a rectangle section" in msg
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('height = "20 mm"', ""))
-    assert "components.bar: height: missing; a rectangle section needs width, height" in msg
+    assert "components.bar.height: missing; a rectangle section needs width, height" in msg
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"20 mm"', '"20 N"'))
     assert 'components.bar.height: expected a length, got "20 N"' in msg
 
 
 def test_hole_larger_than_the_lug(tmp_path):
     msg = errors_of(tmp_path, EYE.format(material="steel", extra="").replace('"10 mm"', '"35 mm"'))
-    assert "components.eye: hole_diameter: hole diameter 35 mm must be smaller than the lug width 30 mm" in msg
+    assert "components.eye.hole_diameter: hole diameter 35 mm must be smaller than the lug width 30 mm" in msg
     msg = errors_of(tmp_path, EYE.format(material="steel", extra='pin_diameter = "12 mm"'))
-    assert "components.eye: pin_diameter:" in msg and "exceeds the hole" in msg
+    assert "components.eye.pin_diameter:" in msg and "exceeds the hole" in msg
     msg = errors_of(tmp_path, BAR.format(extra='pin_material = "steel"', loads='axial_force = "1 N"'))
-    assert "components.bar: pin_material: a pin eye needs hole_diameter" in msg
+    assert "components.bar.pin_material: a pin eye needs hole_diameter" in msg
     tube_with_hole = STRUT.format(length="500 mm", end="pinned-pinned").replace('end = "pinned-pinned"',
                                                                                 'hole_diameter = "8 mm"')
     msg = errors_of(tmp_path, tube_with_hole)
-    assert "components.strut: lug_width: missing" in msg
+    assert "components.strut.lug_width: missing" in msg
 
 
 def test_bad_deflection_limit_and_plate_geometry(tmp_path):
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"L/250"', '"2 N"'))
-    assert "components.bar: deflection_limit: expected a length" in msg
+    assert "components.bar.deflection_limit: expected a length" in msg
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"L/250"', '"L/0"'))
-    assert "components.bar: deflection_limit: expected a length" in msg and "got 'L/0'" in msg
+    assert "components.bar.deflection_limit: expected a length" in msg and "got 'L/0'" in msg
     msg = errors_of(tmp_path, BAR.format(extra="", loads='axial_force = "1 N"').replace('"400 mm"', '"-4 mm"'))
-    assert "components.bar: length: must be positive, got -4 mm" in msg
+    assert "components.bar.length: must be positive, got -4 mm" in msg
     msg = errors_of(tmp_path, PLATE.format(geometry='shape = "circle"\nwidth = "20 mm"\ndiameter = "20 mm"',
                                            extra="", loads='pressure = "1 kPa"'), materials="")
-    assert "components.p: width: not a dimension of a circle plate" in msg
+    assert "components.p.width: not a dimension of a circle plate" in msg
     msg = errors_of(tmp_path, PLATE.format(geometry='width = "20 mm"', extra="", loads='pressure = "1 kPa"'),
                     materials="")
-    assert "components.p: height: missing; a rectangle plate needs width and height" in msg
+    assert "components.p.height: missing; a rectangle plate needs width and height" in msg
     msg = errors_of(tmp_path, PLATE.format(geometry='shape = "circle"\ndiameter = "20 mm"', extra="",
                                            loads='pressure = "1 kPa"').replace('"alu"', '"PLA (FDM, XY flat)"'),
                     materials="")
-    assert "components.p: material: 'PLA (FDM, XY flat)' has no Poisson's ratio" in msg
+    assert "components.p.material: 'PLA (FDM, XY flat)' has no Poisson's ratio" in msg
 
 
 def test_check_needing_a_missing_load_names_the_key_path(tmp_path):

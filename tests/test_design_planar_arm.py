@@ -119,17 +119,17 @@ def test_path_outside_the_stroke_names_the_sample(tmp_path):
     ('curve = "polar"', 'curve = "spiral"', "path.curve: expected 'polar', 'cartesian' or 'points'"),
     ('mechanism = "arm"', 'mechanism = "revolute"', "mechanism 'revolute' is not a planar_arm component"),
     # review item 1: a curve must be a length (a bare number was read as metres, a speed as a length)
-    ("r0 - 1.5 cm * cos(4*phi)", "8 - 1.5 * cos(4*phi)", "components.arm: path.r: expected a length"),
-    ("r0 - 1.5 cm * cos(4*phi)", "8 cm/s - 1.5 cm/s * cos(4*phi)", "components.arm: path.r: expected a length"),
+    ("r0 - 1.5 cm * cos(4*phi)", "8 - 1.5 * cos(4*phi)", "components.arm.path.r: expected a length"),
+    ("r0 - 1.5 cm * cos(4*phi)", "8 cm/s - 1.5 cm/s * cos(4*phi)", "components.arm.path.r: expected a length"),
     ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
-     'curve = "cartesian", x = "30 * cos(u)", y = "30 cm * sin(u)"', "components.arm: path.x: expected a length"),
+     'curve = "cartesian", x = "30 * cos(u)", y = "30 cm * sin(u)"', "components.arm.path.x: expected a length"),
     ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
-     'curve = "cartesian", x = "30 cm * cos(u)", y = "3 N * sin(u)"', "components.arm: path.y: expected a length"),
+     'curve = "cartesian", x = "30 cm * cos(u)", y = "3 N * sin(u)"', "components.arm.path.y: expected a length"),
     ('curve = "polar", r = "r0 - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"]',
      'curve = "points", points = [["1 cm", "2 cm"], ["3 cm/s", "4 cm"], ["5 cm", "1 cm"]]',
      "path.points[1][0]: expected a length"),
     # review item 9: a negative polar radius was accepted (the point on the other side of the centre)
-    ("r0 - 1.5 cm * cos(4*phi)", "-8 cm", "components.arm: path.r: the radius must not be negative"),
+    ("r0 - 1.5 cm * cos(4*phi)", "-8 cm", "components.arm.path.r: the radius must not be negative"),
     ("r0 - 1.5 cm * cos(4*phi)", "1 cm - 1.5 cm * cos(4*phi)", "is -0.5 cm at phi = 0 deg"),
 ])
 def test_bad_paths_are_named(tmp_path, old, new, message):
@@ -150,7 +150,7 @@ def test_path_samples_are_whole_and_bounded(tmp_path, samples, message):
     text = ARM.format(reach="50 cm").replace('speed = "1.4 cm/s" }', f'speed = "1.4 cm/s", samples = {samples} }}')
     with pytest.raises(DesignFileError) as e:
         load(_write(tmp_path, text))
-    assert f"components.arm: {message}" in str(e.value)
+    assert f"components.arm.{message}" in str(e.value)
 
 
 def test_cartesian_circle_and_sampled_points(tmp_path):

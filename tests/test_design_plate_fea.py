@@ -165,24 +165,24 @@ def errors_of(tmp_path, body):
 
 def test_errors_have_key_paths(tmp_path):
     msg = errors_of(tmp_path, BOLTED.replace('"285, 185"', '"298, 185"'))
-    assert "components.base: holes[0].centers[2]: the hole of 6.6 mm at (298, 185) lies across the plate's edge" in msg
+    assert "components.base.holes[0].centers[2]: the hole of 6.6 mm at (298, 185) lies across the plate's edge" in msg
     msg = errors_of(tmp_path, BOLTED.replace('"15, 185"', '"15; 185"'))
-    assert 'components.base: holes[0].centers[3]: expected a point "x, y"' in msg
+    assert 'components.base.holes[0].centers[3]: expected a point "x, y"' in msg
     msg = errors_of(tmp_path, BOLTED.replace('holes = ["bolt"]', 'holes = ["blot"]'))
-    assert "components.base: supports[0].holes[0]: no hole or hole group 'blot'; did you mean 'bolt'?" in msg
+    assert "components.base.supports[0].holes[0]: no hole or hole group 'blot'; did you mean 'bolt'?" in msg
     msg = errors_of(tmp_path, BOLTED.replace('type = "fixed"', 'type = "fixd"'))
     assert "supports[0].type: expected fixed or pinned, got 'fixd'; did you mean 'fixed'?" in msg
     msg = errors_of(tmp_path, BOLTED.replace('size = "80, 60"', 'size = "80 N, 60"'))
-    assert "components.base: cutouts[0].size: expected a length" in msg
+    assert "components.base.cutouts[0].size: expected a length" in msg
     msg = errors_of(tmp_path, BOLTED.replace('center = "150, 150"', 'center = "150, 150", polygon = ["0, 0"]'))
     assert "load_cases.lift.base.patch_loads[0]: give either polygon" in msg
     msg = errors_of(tmp_path, BOLTED.replace('force = "-400 N"', 'force = "-400 N", pressure = "1 kPa"'))
     assert "load_cases.lift.base.patch_loads[0]: give exactly one of force" in msg
     msg = errors_of(tmp_path, BOLTED.replace('width = "300 mm"', 'outline = ["0, 0", "1, 1"]'))
-    assert "components.base: outline: give either width and height" in msg
+    assert "components.base.outline: give either width and height" in msg
     msg = errors_of(tmp_path, RECT.format(a="400 mm", b="200 mm", support="pinned", h="10 mm").replace(
         'edges = "all"', "edges = [7]"))
-    assert "components.p: supports[0].edges[0]: expected an edge index 0..3" in msg
+    assert "components.p.supports[0].edges[0]: expected an edge index 0..3" in msg
     msg = errors_of(tmp_path, RECT.format(a="400 mm", b="200 mm", support="pinned", h="10 mm").replace(
         'edges = "all"', 'point = "100, 100"'))
     assert "components.p.checks.plate_stress_fea [q]: the plate is not fully supported" in msg

@@ -167,11 +167,11 @@ def test_workspace_payload_substituted_line(tmp_path):
 
 
 @pytest.mark.parametrize(("old", "new", "message"), [
-    ("samples = 11", "samples = 100000", r"components\.fb: samples: 100000 samples per axis .* use at most 707"),
-    ("samples = 11", "samples = 708", r"samples: .*more than the limit of 1,000,000 values"),
-    ("samples = 11", "samples = 1", r"samples: need at least 2"),
-    ("samples = 11", "samples = 11\nsingular_tol = -1", r"components\.fb: singular_tol: expected a number in \[0, 1\)"),
-    ("samples = 11", "samples = 11\nsingular_tol = 1.5", r"singular_tol: expected a number in \[0, 1\)"),
+    ("samples = 11", "samples = 100000", r"components\.fb\.samples: 100000 samples per axis .* use at most 707"),
+    ("samples = 11", "samples = 708", r"fb\.samples: .*more than the limit of 1,000,000 values"),
+    ("samples = 11", "samples = 1", r"fb\.samples: need at least 2"),
+    ("samples = 11", "samples = 11\nsingular_tol = -1", r"components\.fb\.singular_tol: expected a number in \[0, 1\)"),
+    ("samples = 11", "samples = 11\nsingular_tol = 1.5", r"fb\.singular_tol: expected a number in \[0, 1\)"),
 ])
 def test_grid_size_and_singular_tol_are_named_at_the_key(tmp_path, old, new, message):
     """Review items 2 and 9: samples = 100000 died with MemoryError (74.5 GiB), singular_tol = -1 was accepted."""

@@ -12,7 +12,7 @@ from typing import Any
 
 from mechverify.checks import CheckResult, ResultSet
 from mechverify.checks.registry import deprecation_note
-from mechverify.design.loader import DesignData, DesignFileError, Entry, load_file, parse
+from mechverify.design.loader import DesignData, DesignFileError, Entry, key_path, load_file, parse
 from mechverify.design.spec import CheckSpec
 from mechverify.errors import MechverifyError, ValidityError, suggest
 from mechverify.units import Q
@@ -213,8 +213,13 @@ class Design:
                         out = spec.run(entry.obj, loads, ctx)
                     except ValidityError as exc:  # an engineering limit of the method: a FAIL with the reason
                         out = _beyond_validity(spec, entry.name, case, exc)
-                    except MechverifyError as exc:
-                        errors.append((path + (f" [{case}]" if case else ""), str(exc)))
+                    except MechverifyError as exc:  # at the key it names (once), else at the check [case]
+                        at = key_path(f"components.{entry.name}", str(exc),
+                                      {*entry.raw, *(f.name for f in entry.type.fields)})
+                        if at[0] == f"components.{entry.name}":
+                            at = (path + (f" [{case}]" if case else ""), str(exc))
+                        if at not in errors:
+                            errors.append(at)
                         continue
                     for r in out if isinstance(out, list | tuple) else [out]:
                         lc = case or r.load_case

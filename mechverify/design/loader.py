@@ -9,8 +9,9 @@ No code is executed: values are strings with units, numbers, booleans and names.
 from __future__ import annotations
 
 import math
+import re
 import tomllib
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -434,6 +435,26 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
     return out
 
 
+_KEY_PREFIX = re.compile(r"([A-Za-z_]\w*)((?:\.\w+|\[\d+\])*): ")
+
+
+def key_path(path: str, msg: str, keys: Collection[str]) -> tuple[str, str]:
+    """``(path, msg)`` with a leading key path of the table at ``path`` joined into the path.
+
+    An adapter's message ``"path.r: expected a length"`` about ``components.arm`` becomes
+    ``("components.arm.path.r", "expected a length")`` when ``path`` is one of ``keys`` (the table's keys
+    as written and its type's field names), as does one that starts with the full path
+    (``"components.arm.path.r: ..."``); any other message is left as it is.
+    """
+    full = msg.startswith(f"{path}.")
+    if full:
+        msg = msg[len(path) + 1:]
+    m = _KEY_PREFIX.match(msg)
+    if m is None or not (full or m.group(1) in keys):
+        return path, (f"{path}.{msg}" if full else msg)
+    return f"{path}.{m.group(1)}{m.group(2)}", msg[m.end():]
+
+
 def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[str, Any]) -> None:
     """Build every entry; one whose fields read other components' outputs after those (dependency order)."""
     bad = {e.name for e in entries.values()
@@ -460,7 +481,7 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
             done.add(e.name)
             return True
         except MechverifyError as exc:
-            col.add(f"{section}.{e.name}", str(exc))
+            col.add(*key_path(f"{section}.{e.name}", str(exc), {*e.raw, *(f.name for f in e.type.fields)}))
             bad.add(e.name)
             return False
         finally:

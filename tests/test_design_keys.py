@@ -1,0 +1,80 @@
+"""Review item 6 (and the rest of 9): a bad value in a design file is reported once, at its key path
+(``components.arm.path.r: ...``), with the value as written: never at the component or at every check
+that happens to read it, never as an SI number or a repr.
+
+The designs are the reviewer's files (/tmp/review/*.toml of the review pass), one value edited.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from mechverify.design import load
+from mechverify.design.loader import DesignFileError, key_path
+
+ARM = """
+[design]
+name = "RP arm review"
+
+[components.arm]
+type = "planar_arm"
+kind = "rp"
+path = { curve = "polar", r = "8 cm - 1.5 cm * cos(4*phi)", centre = ["12.5 cm", "37.5 cm"], speed = "1.4 cm/s" }
+carriage_mass = "98 g"
+bodies = [{ name = "screw", shape = "rod", mass = "99 g", length = "25 cm" }]
+"""
+
+FIVE_BAR = """
+[design]
+name = "Five-bar workspace"
+
+[components.fb]
+type = "five_bar"
+base = "100 mm"
+proximal_left = "100 mm"
+distal_left = "100 mm"
+distal_right = "100 mm"
+proximal_right = "100 mm"
+working_mode = "+-"
+x_range = ["0 mm", "100 mm"]
+y_range = ["100 mm", "180 mm"]
+samples = 21
+payload = "5 N"
+motor_torque = "1.5 N*m"
+"""
+
+
+def errors(tmp_path: Path, text: str, old: str = "", new: str = "") -> list[tuple[str, str]]:
+    """The (key path, message) pairs of loading and verifying ``text`` with ``old`` replaced by ``new``."""
+    assert old in text, old
+    p = tmp_path / "d.toml"
+    p.write_text(text.replace(old, new, 1))
+    with pytest.raises(DesignFileError) as info:
+        load(p).verify()
+    return info.value.errors
+
+
+def test_key_path_joins_only_keys_of_the_table():
+    keys = {"path", "distal_left", "supports"}
+    assert key_path("components.arm", "path.r: expected a length", keys) == ("components.arm.path.r",
+                                                                            "expected a length")
+    assert key_path("components.s", "supports[0].named: unknown", keys) == ("components.s.supports[0].named",
+                                                                           "unknown")
+    assert key_path("components.s", "components.s.supports[0].named: unknown", set()) == (
+        "components.s.supports[0].named", "unknown")
+    # not a key of the table: left alone (a sentence, a profile's name, another component's key)
+    assert key_path("components.arm", "Not verifiable: x", keys) == ("components.arm", "Not verifiable: x")
+    assert key_path("components.arm", "profile 'q1': path.r: x", keys) == ("components.arm",
+                                                                          "profile 'q1': path.r: x")
+    assert key_path("components.arm", "speed: x", keys) == ("components.arm", "speed: x")
+
+
+def test_adapter_message_is_joined_into_the_key_path(tmp_path):
+    """Review item 6: ``components.arm: path.r: ...`` read as if the component were the key."""
+    errs = errors(tmp_path, ARM, 'r = "8 cm - 1.5 cm * cos(4*phi)"', 'r = "8"')
+    assert errs == [("components.arm.path.r",
+                     "expected a length (e.g. \"8 cm - 1.5 cm * cos(4*phi)\"), '8' is a bare number")]
+    errs = errors(tmp_path, ARM, 'curve = "polar"', 'curve = "polr"')
+    assert errs == [("components.arm.path.curve", "expected 'polar', 'cartesian' or 'points', got 'polr'")]
