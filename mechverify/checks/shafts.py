@@ -102,6 +102,9 @@ def _section(shaft: s.Shaft, a: ShaftAnalysis, name: str, x: float, D: float, bo
                          el.factors.as_dict(), bore, Ta, Ma, Mm)
 
 
+MAX_MOMENT_SECTION = "the section of maximum moment"  # name of the plain section at the largest moment
+
+
 def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
     """Stresses at every feature (Kt from :meth:`Shaft.stress_concentration`, Kf/Kfs by Neuber, Shigley Eqs.
     6-32..6-35) and at the section of the largest moment (Kt = 1 unless a feature sits there)."""
@@ -114,8 +117,8 @@ def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
     xm, _ = a.max_moment()
     if not any(abs(f.x - xm) < 1e-9 for f in shaft.features):
         seg = shaft.segment_at(xm)
-        out.append(_section(shaft, a, f"max moment@{xm * 1e3:.4g}", xm, seg.diameter, seg.bore, 1.0, 1.0, 0.0,
-                            "plain section"))
+        out.append(_section(shaft, a, f"{MAX_MOMENT_SECTION} (x = {xm * 1e3:.4g} mm)", xm, seg.diameter, seg.bore,
+                            1.0, 1.0, 0.0, "plain section"))
     return out
 
 
@@ -217,7 +220,8 @@ def check_shaft_fatigue(shaft: s.Shaft, a: ShaftAnalysis, *, criterion: str = "g
         substituted=_n_substituted(criterion, g, Sut, Sy, n) if math.isfinite(n) else "",
         warnings=_feature_warnings(shaft),
         load_case=load_case,
-        details={"sections": [{"name": sec.name, "x": sec.x, "n": ns[i], "Kf": sec.Kf, "Kfs": sec.Kfs}
+        details={"sections": [{"name": sec.name, "label": sec.name.replace(MAX_MOMENT_SECTION, "max. M"), "x": sec.x,
+                               "n": ns[i], "Kf": sec.Kf, "Kfs": sec.Kfs}
                               for i, sec in enumerate(secs)], "criterion": criterion, **layout(shaft, a)})
 
 

@@ -11,8 +11,29 @@ from mechverify.reports.plots import plotter
 _MARK = {"shoulder": "^", "keyseat": "s", "groove": "v", "cross_hole": "o", "press_fit": "D"}
 
 
-def draw_shaft(ax: Any, d: dict[str, Any]) -> None:
-    """The shaft to scale (x and diameter in mm, equal aspect), features, bearings (triangles) and loads (arrows)."""
+def label_levels(spans: list[tuple[float, float]], gap: float = 0.0) -> list[int]:
+    """Rows for labels ``(centre, width)`` (any order) so that no two labels of a row overlap: each label takes
+    the lowest row whose last label ends before it starts (greedy, by centre)."""
+    ends: list[float] = []
+    rows = [0] * len(spans)
+    for i in sorted(range(len(spans)), key=lambda k: spans[k][0]):
+        c, w = spans[i]
+        for r, e in enumerate(ends):
+            if c - w / 2 > e + gap:
+                ends[r], rows[i] = c + w / 2, r
+                break
+        else:
+            ends.append(c + w / 2)
+            rows[i] = len(ends) - 1
+    return rows
+
+
+def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
+    """The shaft to scale (x and diameter in mm, equal aspect), features, bearings (triangles) and loads (arrows).
+
+    Labels are horizontal, in rows (offsets in points, so they keep clear of each other whatever the aspect):
+    features and loads above the shaft, bearings below; ``width_pt`` is the axes width the label widths are
+    estimated for."""
     from matplotlib.patches import Rectangle
 
     for x0, x1, D, bore in d["segments"]:
@@ -21,18 +42,35 @@ def draw_shaft(ax: Any, d: dict[str, Any]) -> None:
             ax.add_patch(Rectangle((x0 * 1e3, -bore / 2 * 1e3), (x1 - x0) * 1e3, bore * 1e3, fc="white", ec="0.5",
                                    lw=0.5))
     Dmax = max(D for *_, D, _ in d["segments"]) * 1e3
-    for x, kind, name in d["features"]:
-        ax.plot(x * 1e3, Dmax * 0.62, _MARK.get(kind, "o"), color="#8250df", ms=5)
-        ax.annotate(name, (x * 1e3, Dmax * 0.7), fontsize=6, ha="center", rotation=60)
-    for x, name in d["supports"]:
-        ax.plot(x * 1e3, -Dmax * 0.62, "^", color="#0969da", ms=8)
-        ax.annotate(name, (x * 1e3, -Dmax * 0.95), fontsize=7, ha="center")
-    for x, kind, name in d["loads"]:
-        ax.annotate(f"{name} ({kind})", (x * 1e3, 0), (x * 1e3, Dmax * 1.1), fontsize=6, ha="center",
-                    arrowprops={"arrowstyle": "->", "color": "#cf222e"})
     L = d["segments"][-1][1] * 1e3
+    mm_per_pt = 1.06 * L / width_pt
+    font = 6.0
+
+    def width(text: str) -> float:
+        return (len(text) * 0.58 * font + 4) * mm_per_pt
+
+    above = [(x * 1e3, name or kind, "feature", kind) for x, kind, name in d["features"]]
+    above += [(x * 1e3, name if name == kind or not kind else f"{name} ({kind})", "load", kind)
+              for x, kind, name in d["loads"]]
+    rows = label_levels([(x, width(t)) for x, t, *_ in above])
+    top = Dmax / 2
+    for (x, text, what, kind), row in zip(above, rows, strict=True):
+        if what == "feature":
+            ax.plot(x, top, _MARK.get(kind, "o"), color="#8250df", ms=4, zorder=3)
+            arrow = {"arrowstyle": "-", "color": "#8250df", "lw": 0.5}
+        else:
+            arrow = {"arrowstyle": "->", "color": "#cf222e", "lw": 0.8}
+        ax.annotate(text, (x, top), xytext=(0, 8 + 8.5 * row),
+                    textcoords="offset points", fontsize=font, ha="center", va="bottom",
+                    color="#cf222e" if what == "load" else "0.15", arrowprops=arrow)
+    sups = [(x * 1e3, name) for x, name in d["supports"]]
+    for (x, name), row in zip(sups, label_levels([(x, width(n)) for x, n in sups]), strict=True):
+        ax.plot(x, -Dmax / 2, "^", color="#0969da", ms=7, zorder=3)
+        ax.annotate(name, (x, -Dmax / 2), xytext=(0, -10 - 8.5 * row), textcoords="offset points", fontsize=font,
+                    ha="center", va="top", color="#0969da")
     ax.set_xlim(-0.03 * L, 1.03 * L)
-    ax.plot([0, 0], [-Dmax * 1.2, Dmax * 1.5], alpha=0)  # room for the labels (equal aspect adjusts the limits)
+    # room for the label rows (equal aspect: y span = x span x box height / box width, set by the figure)
+    ax.plot([0, 0], [-1.5 * Dmax, 2.5 * Dmax], alpha=0)  # more room above (set_ylim would fight the aspect)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_ylabel("D [mm]")
 
@@ -49,11 +87,12 @@ def shaft_figure(result: CheckResult) -> Any:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    fig, axs = plt.subplots(4, 1, figsize=(6.5, 8.0), layout="constrained")
+    fig, axs = plt.subplots(4, 1, figsize=(6.5, 9.0), layout="constrained", height_ratios=(1.4, 1, 1, 1))
     for ax in axs:
         ax.grid(True, lw=0.4, alpha=0.5)
-    draw_shaft(axs[0], d)
-    axs[0].set_title(f"shaft {result.component}: layout to scale (features ▲■▼, bearings, loads)", fontsize=9)
+    draw_shaft(axs[0], d, width_pt=6.5 * 72 * 0.84)
+    axs[0].set_title(f"shaft {result.component}: layout to scale (features ▲■▼, bearings, loads)", fontsize=9,
+                     pad=4)
     x = np.asarray(d["x"]) * 1e3
     axs[1].plot(x, d["My"], lw=0.9, label="M_y (x-z plane)")
     axs[1].plot(x, d["Mz"], lw=0.9, label="M_z (x-y plane)")
@@ -67,7 +106,7 @@ def shaft_figure(result: CheckResult) -> Any:
     secs = d["sections"]
     n = [min(s["n"], 20.0) for s in secs]
     colours = ["#cf222e" if v < result.required_sf else "#2da44e" for v in n]
-    axs[3].bar([s["name"] for s in secs], n, color=colours)
+    axs[3].bar([s.get("label", s["name"]) for s in secs], n, color=colours)
     axs[3].axhline(result.required_sf, color="k", lw=0.8)
     axs[3].set_ylabel(f"n (DE-{d['criterion']})")
     axs[3].tick_params(axis="x", labelsize=7, rotation=20)
