@@ -78,3 +78,52 @@ def test_adapter_message_is_joined_into_the_key_path(tmp_path):
                      "expected a length (e.g. \"8 cm - 1.5 cm * cos(4*phi)\"), '8' is a bare number")]
     errs = errors(tmp_path, ARM, 'curve = "polar"', 'curve = "polr"')
     assert errs == [("components.arm.path.curve", "expected 'polar', 'cartesian' or 'points', got 'polr'")]
+
+
+GUIDES = """
+[design]
+name = "Guides review"
+
+[components.carriage]
+type = "sliding_carriage"
+friction = 0.18
+contact_length = "30 mm"
+load_offset = "411 mm"
+available_force = "2500 N"
+
+[components.rail]
+type = "linear_guide"
+dynamic_load_rating = "14.7 kN"
+static_load_rating = "23.5 kN"
+rails = 2
+blocks_per_rail = 2
+rail_spacing = "200 mm"
+block_spacing = "150 mm"
+required_travel = "5000 km"
+
+[load_cases.raise.carriage]
+resisting_force = "350 N"
+[load_cases.raise.rail]
+force = "4 kN"
+offset_x = "50 mm"
+offset_y = "30 mm"
+"""
+
+
+@pytest.mark.parametrize(("old", "new", "expected"), [
+    # was at components.rail.checks.linear_guide_life [raise] and again at ...static_safety [raise]
+    ("rails = 2", "rails = 3", ("components.rail.rails", "expected 1 or 2, got 3")),
+    ("blocks_per_rail = 2", "blocks_per_rail = 0", ("components.rail.blocks_per_rail", "expected 1 or 2, got 0")),
+    ('rail_spacing = "200 mm"', 'rail_spacing = "-200 mm"', ("components.rail.rail_spacing",
+                                                               "must be positive, got -200 mm")),
+    # was at components.carriage
+    ("friction = 0.18", "friction = -0.18", ("components.carriage.friction",
+                                              "expected a coefficient in 0..5, got -0.18")),
+    # was accepted as 4 kN (the block loads take |F|)
+    ('force = "4 kN"', 'force = "-4 kN"', ("load_cases.raise.rail.force",
+                                           "expected a magnitude >= 0 (the sign is not a direction here: the "
+                                           "block loads use |F|), got -4 kN")),
+])
+def test_linear_guide_errors_once_at_the_key(tmp_path, old, new, expected):
+    """Review items 6 and 9: linear_guide and sliding_carriage values, each reported once at its key."""
+    assert errors(tmp_path, GUIDES, old, new) == [expected]

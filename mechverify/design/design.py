@@ -216,7 +216,10 @@ class Design:
                     except MechverifyError as exc:  # at the key it names (once), else at the check [case]
                         at = key_path(f"components.{entry.name}", str(exc),
                                       {*entry.raw, *(f.name for f in entry.type.fields)})
-                        if at[0] == f"components.{entry.name}":
+                        if at[0] == f"components.{entry.name}" and case:  # a load's key: in its load case
+                            at = key_path(f"load_cases.{case}.{entry.name}", str(exc),
+                                          {f.name for f in entry.type.loads})
+                        if at[0] in (f"components.{entry.name}", f"load_cases.{case}.{entry.name}"):
                             at = (path + (f" [{case}]" if case else ""), str(exc))
                         if at not in errors:
                             errors.append(at)

@@ -28,6 +28,12 @@ def _distance(v: Any, name: str) -> pint.Quantity:
 
 
 def _build_guide(p: dict[str, Any], ctx: Any) -> dict[str, Any]:
+    for key in ("rails", "blocks_per_rail"):  # here, not when a check runs: once, at the key
+        if p[key] not in (1, 2):
+            raise InputError(f"{key}: expected 1 or 2, got {p[key]!r}")
+    for key in ("rail_spacing", "block_spacing"):
+        if key in p and not to_si(p[key], "length", key) > 0:
+            raise InputError(f"{key}: must be positive, got {fmt(p[key])}")
     rows = p.get("ball_rows")
     f = 1.0
     if rows is not None:
@@ -58,6 +64,10 @@ def _build_guide(p: dict[str, Any], ctx: Any) -> dict[str, Any]:
 
 def _block(c: dict[str, Any], loads: dict[str, Any]) -> pint.Quantity:
     g = c["guide"]
+    for key in ("force", "lateral_force"):  # the method takes magnitudes (|F|): a sign would be dropped silently
+        if key in loads and loads[key].magnitude < 0:
+            raise InputError(f"{key}: expected a magnitude >= 0 (the sign is not a direction here: the block "
+                             f"loads use |F|), got {fmt(loads[key])}")
     Fr, Ft, M_roll, M_pitch = guide_block_loads(loads.get("force", Q(0, "N")),
                                                 offset_x=loads.get("offset_x", Q(0, "m")),
                                                 offset_y=loads.get("offset_y", Q(0, "m")),
@@ -125,7 +135,7 @@ GUIDE = REGISTRY.register(ComponentType(
 def _build_sliding(p: dict[str, Any], ctx: Any) -> lc.SlidingGuide:
     mu = float(p["friction"])
     if not 0 <= mu < 5:
-        raise InputError(f"friction must be a coefficient in 0..5, got {mu:g}")
+        raise InputError(f"friction: expected a coefficient in 0..5, got {p['friction']!r}")
     return lc.SlidingGuide(mu=mu, length=p["contact_length"], load_offset=p.get("load_offset", Q(0, "m")),
                            drive_offset=p.get("drive_offset", Q(0, "m")), available_force=p.get("available_force"),
                            name=p["_name"])
