@@ -22,8 +22,10 @@ def _text_boxes(fig, ax):
 def _assert_no_overlap(fig, ax):
     boxes, title = _text_boxes(fig, ax)
     assert boxes
+    frame = ax.get_window_extent()
     for i, a in enumerate(boxes):
         assert not a.overlaps(title), "a label overlaps the title"
+        assert frame.x0 - 1 <= a.x0 and a.x1 <= frame.x1 + 1, "a label sticks out of the axes"
         for b in boxes[i + 1:]:
             assert not a.overlaps(b), f"labels overlap: {a} {b}"
 

@@ -52,7 +52,11 @@ def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
     above = [(x * 1e3, name or kind, "feature", kind) for x, kind, name in d["features"]]
     above += [(x * 1e3, name if name == kind or not kind else f"{name} ({kind})", "load", kind)
               for x, kind, name in d["loads"]]
-    rows = label_levels([(x, width(t)) for x, t, *_ in above])
+    def centre(x: float, text: str) -> float:  # a label near an end moved inwards, to stay inside the axes
+        w = width(text)
+        return min(max(x, -0.03 * L + w / 2), 1.03 * L - w / 2)
+
+    rows = label_levels([(centre(x, t), width(t)) for x, t, *_ in above])
     top = Dmax / 2
     for (x, text, what, kind), row in zip(above, rows, strict=True):
         if what == "feature":
@@ -60,14 +64,14 @@ def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
             arrow = {"arrowstyle": "-", "color": "#8250df", "lw": 0.5}
         else:
             arrow = {"arrowstyle": "->", "color": "#cf222e", "lw": 0.8}
-        ax.annotate(text, (x, top), xytext=(0, 8 + 8.5 * row),
+        ax.annotate(text, (x, top), xytext=((centre(x, text) - x) / mm_per_pt, 8 + 8.5 * row),
                     textcoords="offset points", fontsize=font, ha="center", va="bottom",
                     color="#cf222e" if what == "load" else "0.15", arrowprops=arrow)
     sups = [(x * 1e3, name) for x, name in d["supports"]]
-    for (x, name), row in zip(sups, label_levels([(x, width(n)) for x, n in sups]), strict=True):
+    for (x, name), row in zip(sups, label_levels([(centre(x, n), width(n)) for x, n in sups]), strict=True):
         ax.plot(x, -Dmax / 2, "^", color="#0969da", ms=7, zorder=3)
-        ax.annotate(name, (x, -Dmax / 2), xytext=(0, -10 - 8.5 * row), textcoords="offset points", fontsize=font,
-                    ha="center", va="top", color="#0969da")
+        ax.annotate(name, (x, -Dmax / 2), xytext=((centre(x, name) - x) / mm_per_pt, -10 - 8.5 * row),
+                    textcoords="offset points", fontsize=font, ha="center", va="top", color="#0969da")
     ax.set_xlim(-0.03 * L, 1.03 * L)
     # room for the label rows (equal aspect: y span = x span x box height / box width, set by the figure)
     ax.plot([0, 0], [-1.5 * Dmax, 2.5 * Dmax], alpha=0)  # more room above (set_ylim would fight the aspect)
