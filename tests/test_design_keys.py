@@ -127,3 +127,55 @@ offset_y = "30 mm"
 def test_linear_guide_errors_once_at_the_key(tmp_path, old, new, expected):
     """Review items 6 and 9: linear_guide and sliding_carriage values, each reported once at its key."""
     assert errors(tmp_path, GUIDES, old, new) == [expected]
+
+
+BEARINGS = """
+[design]
+name = "Bearing review"
+
+[components.pinion_shaft]
+type = "adjusted_bearing_pair"
+model = "30205"
+rule = "timken"
+K = 1.5
+
+[components.ac]
+type = "rolling_bearing"
+model = "7206 B"
+iso_vg = 68
+viscosity_index = 95
+operating_temperature = "70 degC"
+[components.ac.checks]
+bearing_modified_life = true
+
+[load_cases.run.pinion_shaft]
+radial_force_A = "2.492 kN"
+radial_force_B = "4.873 kN"
+axial_force = "0 N"
+speed = "300 rpm"
+[load_cases.run.ac]
+radial_force = "2 kN"
+axial_force = "1 kN"
+speed = "1500 rpm"
+"""
+
+
+@pytest.mark.parametrize(("old", "new", "expected"), [
+    # was "induced forces ... >= 0" at both checks of the pair
+    ("K = 1.5", "K = -1.5", ("components.pinion_shaft.K", "expected a positive Timken thrust factor, got -1.5")),
+    # were at components.ac
+    ("iso_vg = 68", "iso_vg = 67", ("components.ac.iso_vg", "ISO VG 67 is not an ISO 3448 grade")),
+    ('operating_temperature = "70 degC"', 'operating_temperature = "500 degC"',
+     ("components.ac.operating_temperature", "operating temperature 500 degC outside -20..150 degC")),
+    ("viscosity_index = 95", "viscosity_index = 500",
+     ("components.ac.viscosity_index", "viscosity index 500 outside -100..400")),
+    # review item 9: viscosity won silently over iso_vg + viscosity_index + operating_temperature (kappa 11.7)
+    ("iso_vg = 68", 'iso_vg = 68\nviscosity = "20 mm^2/s"',
+     ("components.ac.viscosity", "give viscosity or iso_vg + operating_temperature + viscosity_index, not both")),
+    ("iso_vg = 68", 'iso_vg = 68\nviscosity_40 = "68 mm^2/s"',
+     ("components.ac.iso_vg", "give iso_vg or viscosity_40, not both")),
+])
+def test_bearing_errors_once_at_the_key(tmp_path, old, new, expected):
+    """Review items 6 and 9: bearing values reported at build time, once, at their key."""
+    errs = errors(tmp_path, BEARINGS, old, new)
+    assert len(errs) == 1 and errs[0][0] == expected[0] and errs[0][1].startswith(expected[1]), errs

@@ -22,7 +22,7 @@ from mechverify.components.bearings import (
 from mechverify.components.bearings_rolling import RollingBearing
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
-from mechverify.errors import InputError
+from mechverify.errors import InputError, MechverifyError
 from mechverify.units import Q, fmt
 
 
@@ -38,6 +38,8 @@ class BearingInstallation:
 
 
 _LUB_KEYS = ("viscosity", "viscosity_40", "viscosity_100", "iso_vg", "operating_temperature", "viscosity_index")
+_LUB_WORDS = (("ISO VG", "iso_vg"), ("operating temperature", "operating_temperature"),
+              ("viscosity index", "viscosity_index"), ("no ASTM D2270", "viscosity_index"))
 
 
 def _lubrication(p: dict[str, Any]) -> Lubrication | None:
@@ -46,8 +48,18 @@ def _lubrication(p: dict[str, Any]) -> Lubrication | None:
     cont: str | float = p.get("contamination", "normal_cleanliness")
     if "contamination_factor" in p:
         cont = float(p["contamination_factor"])
+    oil = [k for k in _LUB_KEYS[1:] if k in p]
+    for key, others in (("viscosity", oil), ("iso_vg", ["viscosity_40"]), ("viscosity_index", ["viscosity_100"])):
+        if key in p and any(k in p for k in others):  # one of them would win silently
+            raise InputError(f"{key}: give {key} or {' + '.join(k for k in others if k in p)}, not both")
     lub = Lubrication(**{k: p[k] for k in _LUB_KEYS if k in p}, contamination=cont)
-    lub.operating_viscosity()  # bad or missing lubricant data is reported at build time
+    try:  # bad or missing lubricant data is reported at build time, at its key where the message names one
+        lub.operating_viscosity()
+    except MechverifyError as exc:
+        key = next((k for w, k in _LUB_WORDS if str(exc).startswith(w) and k in p), None)
+        if key is None:
+            raise
+        raise InputError(f"{key}: {exc}") from exc
     return lub
 
 
@@ -73,9 +85,9 @@ def _build_bearing(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallatio
         b = dataclasses.replace(b, **changes)
     R = float(p["reliability"])
     if not 0.9 <= R <= 0.9995:
-        raise InputError(f"reliability must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {R:g}")
+        raise InputError(f"reliability: must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {p['reliability']!r}")
     if "required_life" in p and p["required_life"].magnitude <= 0:
-        raise InputError(f"required_life must be positive, got {fmt(p['required_life'])}")
+        raise InputError(f"required_life: must be positive, got {fmt(p['required_life'])}")
     return BearingInstallation(b, p.get("required_life"), R, _lubrication(p), _duty_cycle(p))
 
 

@@ -38,6 +38,8 @@ def _bearing(model: str, p: dict[str, Any], arrangement: str = "single") -> Roll
     b = rolling_bearing(model, arrangement)
     changes = pick(p, **_OVERRIDES)
     if "K" in p:
+        if not float(p["K"]) > 0:  # checked here, once: a bad K surfaced only when the checks ran
+            raise InputError(f"K: expected a positive Timken thrust factor, got {p['K']!r}")
         changes["K"] = float(p["K"])
     return dataclasses.replace(b, **changes) if changes else b
 
@@ -45,14 +47,14 @@ def _bearing(model: str, p: dict[str, Any], arrangement: str = "single") -> Roll
 def _reliability(p: dict[str, Any]) -> float:
     R = float(p["reliability"])
     if not 0.9 <= R <= 0.9995:
-        raise InputError(f"reliability must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {R:g}")
+        raise InputError(f"reliability: must be within 0.90 .. 0.9995 (ISO 281 Table 12), got {p['reliability']!r}")
     return R
 
 
 def _build(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallation:
     b = _bearing(p["model"], p, p["arrangement"])
     if "required_life" in p and p["required_life"].magnitude <= 0:
-        raise InputError(f"required_life must be positive, got {fmt(p['required_life'])}")
+        raise InputError(f"required_life: must be positive, got {fmt(p['required_life'])}")
     return BearingInstallation(b, p.get("required_life"), _reliability(p), _lubrication(p), _duty_cycle(p))
 
 
