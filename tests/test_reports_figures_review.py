@@ -67,3 +67,64 @@ def test_crowded_shaft_labels_and_max_moment_section_title():
     fig = shaft_figure(r)
     _assert_no_overlap(fig, fig.axes[0])
     assert "max. M (x = 400 mm)" in [t.get_text() for t in fig.axes[3].get_xticklabels()]
+
+
+def _figure_svgs(html: str) -> list[str]:
+    import base64
+    import re
+
+    uris = re.findall(r'<img src="data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)"', html)
+    return [base64.b64decode(u).decode() for u in uris]
+
+
+FIVE_BAR = """
+[design]
+name = "five-bar payload"
+
+[parameters]
+W = "1 N"
+
+[requirements.safety_factors]
+motor = 1.5
+
+[components.fb]
+type = "five_bar"
+base = "100 mm"
+proximal_left = "100 mm"
+distal_left = "100 mm"
+distal_right = "100 mm"
+proximal_right = "100 mm"
+x_range = ["-50 mm", "150 mm"]
+y_range = ["0 mm", "200 mm"]
+samples = 15
+motor_torque = "3 N*m"
+theta_left_min = "0 deg"
+theta_left_max = "150 deg"
+payload = "W"
+"""
+
+
+def test_five_bar_report_has_the_workspace_map(tmp_path):
+    """The five-bar design of tests/test_mechanisms_workspace.py: the report (detail all) carries the workspace
+    map; its data are the points inside the limited workspace with W_max(x, y), whose smallest value is the check's
+    capacity, at the marked governing point."""
+    import numpy as np
+
+    from mechverify.design import load
+    from mechverify.reports import render_html
+
+    p = tmp_path / "fb.toml"
+    p.write_text(FIVE_BAR, encoding="utf-8")
+    d = load(p)
+    res = d.verify()
+    r = res.get("fb", "workspace_payload")
+    W = r.details["map_wmax"].m_as("N")
+    P = r.details["map_points"].m_as("mm")
+    i = int(np.argmin(W))
+    assert W[i] == r.capacity.m_as("N")
+    assert np.array_equal(P[i], r.details["map_governing"].m_as("mm"))
+    assert len(W) + len(r.details["map_outside"].magnitude) <= 15 * 15
+    assert len(r.details["map_outside"].magnitude) > 0  # the grid's corners are out of reach
+    svgs = [s for s in _figure_svgs(render_html([(d, res)], detail="all")) if "workspace map" in s]
+    assert len(svgs) == 1
+    assert "governs: theta_" in svgs[0]

@@ -40,4 +40,19 @@ def check_workspace_payload(name: str, capacity: Any, payload: QuantityLike, mot
         notes=(f"governs: the {m} motor at ({x * 1e3:.4g}, {y * 1e3:.4g}) mm; {int(np.sum(c.inside))} of "
                f"{len(c.inside)} grid points in the workspace ({', '.join(f'{k}: {v}' for k, v in c.excluded.items())}"
                ")",),
-        load_case=load_case)
+        load_case=load_case, details=_map_details(c, motor_torques, Q(payload).m_as("N")))
+
+
+def _map_details(c: Any, motor_torques: dict[str, Any], payload: float) -> dict[str, Any]:
+    """What the workspace map needs: the grid points inside the limited workspace with the largest load there,
+    W_max(x, y) = min over motors of T_motor / |tau per unit load| [N], the points left out, the governing point."""
+    T = np.array([Q(motor_torques[m]).m_as("N*m") for m in c.motors], dtype=float)
+    per = np.abs(np.asarray(c.torque_per_load, dtype=float)[c.inside])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w = np.min(np.where(per > 0, T / per, np.inf), axis=1)
+    finite = np.isfinite(w)  # a point no motor has to hold (no torque per unit load) has no limit: left out
+    pts = np.asarray(c.points, dtype=float)
+    return {"map_points": Q(pts[c.inside][finite] * 1e3, "mm"), "map_wmax": Q(w[finite], "N"),
+            "map_outside": Q(pts[~np.asarray(c.inside, dtype=bool)] * 1e3, "mm"),
+            "map_governing": Q(pts[c.governing_point] * 1e3, "mm"), "map_motor": c.governing_motor,
+            "map_payload": Q(payload, "N")}

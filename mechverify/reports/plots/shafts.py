@@ -44,7 +44,7 @@ def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
     Dmax = max(D for *_, D, _ in d["segments"]) * 1e3
     L = d["segments"][-1][1] * 1e3
     mm_per_pt = 1.06 * L / width_pt
-    font = 6.0
+    font = 7.0
 
     def width(text: str) -> float:
         return (len(text) * 0.58 * font + 4) * mm_per_pt
@@ -64,13 +64,13 @@ def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
             arrow = {"arrowstyle": "-", "color": "#8250df", "lw": 0.5}
         else:
             arrow = {"arrowstyle": "->", "color": "#cf222e", "lw": 0.8}
-        ax.annotate(text, (x, top), xytext=((centre(x, text) - x) / mm_per_pt, 8 + 8.5 * row),
+        ax.annotate(text, (x, top), xytext=((centre(x, text) - x) / mm_per_pt, 8 + 9.5 * row),
                     textcoords="offset points", fontsize=font, ha="center", va="bottom",
                     color="#cf222e" if what == "load" else "0.15", arrowprops=arrow)
     sups = [(x * 1e3, name) for x, name in d["supports"]]
     for (x, name), row in zip(sups, label_levels([(centre(x, n), width(n)) for x, n in sups]), strict=True):
         ax.plot(x, -Dmax / 2, "^", color="#0969da", ms=7, zorder=3)
-        ax.annotate(name, (x, -Dmax / 2), xytext=((centre(x, name) - x) / mm_per_pt, -10 - 8.5 * row),
+        ax.annotate(name, (x, -Dmax / 2), xytext=((centre(x, name) - x) / mm_per_pt, -10 - 9.5 * row),
                     textcoords="offset points", fontsize=font, ha="center", va="top", color="#0969da")
     ax.set_xlim(-0.03 * L, 1.03 * L)
     # room for the label rows (equal aspect: y span = x span x box height / box width, set by the figure)
