@@ -179,3 +179,32 @@ def test_bearing_errors_once_at_the_key(tmp_path, old, new, expected):
     """Review items 6 and 9: bearing values reported at build time, once, at their key."""
     errs = errors(tmp_path, BEARINGS, old, new)
     assert len(errs) == 1 and errs[0][0] == expected[0] and errs[0][1].startswith(expected[1]), errs
+
+
+SOLID = """
+[design]
+name = "Solid cantilever"
+[components.beam]
+type = "solid_fea"
+box = "200, 20, 20"
+material = "Structural Steel"
+mesh_size = "5 mm"
+supports = [{ named = "xmin" }]
+deflection_limit = "1 mm"
+[load_cases.tip.beam]
+forces = [{ named = "xmax", force = "0, 0, -100" }]
+"""
+
+
+@pytest.mark.parametrize(("old", "new", "expected"), [
+    # was "unknown mesh region 'xmn'" at components.beam.checks.solid_stress [tip] and again at solid_deflection
+    ('named = "xmin"', 'named = "xmn"', ("components.beam.supports[0].named",
+                                         "unknown mesh region 'xmn'; did you mean 'xmin'? valid regions: xmax, "
+                                         "xmin, ymax, ymin, zmax, zmin")),
+    ('named = "xmax"', 'named = "xmx"', ("load_cases.tip.beam.forces[0].named",
+                                         "unknown mesh region 'xmx'; did you mean 'xmax'? valid regions: xmax, "
+                                         "xmin, ymax, ymin, zmax, zmin")),
+])
+def test_solid_region_names_once_at_the_key(tmp_path, old, new, expected):
+    """Review item 6: a misspelt region of a solid_fea is reported at its key, once (not per check)."""
+    assert errors(tmp_path, SOLID, old, new) == [expected]

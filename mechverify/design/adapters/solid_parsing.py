@@ -8,7 +8,7 @@ import math
 from collections.abc import Mapping
 from typing import Any
 
-from mechverify.errors import InputError
+from mechverify.errors import InputError, suggest
 from mechverify.units import Q, as_quantity
 
 
@@ -50,6 +50,18 @@ def _region(t: Any, unit: str, path: str) -> Any:
         raise InputError(f"{path}.box: expected two corners [\"x0, y0, z0\", \"x1, y1, z1\"], got {b!r}")
     lo, hi = (_vec(c, unit, "length", f"{path}.box[{i}]") for i, c in enumerate(b))
     return Box(tuple(Q(v, "m") for v in lo), tuple(Q(v, "m") for v in hi))
+
+
+def named_regions(tables: Any, names: Any, path: str) -> None:
+    """Every region written as ``named``/``face`` in ``tables`` is one of the mesh's ``names``, else an
+    InputError at its key (``supports[0].named``): once, not per check that meshes and solves."""
+    names = sorted(names)
+    for i, t in enumerate(tables or []):
+        key = next((k for k in ("named", "face") if isinstance(t, Mapping) and k in t), None)
+        if key is not None and (str(t[key]) if key == "named" else f"face{t[key]}") not in names:
+            hint = suggest(str(t[key]), names, 1)
+            raise InputError(f"{path}[{i}].{key}: unknown mesh region {t[key]!r}; "
+                             + (f"did you mean {hint[0]!r}? " if hint else "") + f"valid regions: {', '.join(names)}")
 
 
 def _supports(items: Any, unit: str) -> tuple[Any, ...]:
