@@ -148,3 +148,40 @@ def test_plate_bad_modal_input(tmp_path):
     assert "components.pl.modes: 5000 modes asked" in msg
     msg = _errors(tmp_path, PLATE.format(mesh="10 mm", extra='min_frequency = "200"'))
     assert "components.pl.min_frequency" in msg
+
+
+SS_MASS = """
+[design]
+name = "beam with a mass"
+
+[components.beam]
+type = "frame"
+material = "Structural Steel"
+section = "circle"
+diameter = "20 mm"
+theory = "euler"
+nodes = { A = ["0 mm", "0 mm", "0 mm"], B = ["1000 mm", "0 mm", "0 mm"] }
+members = [ { name = "m", start = "A", end = "B" } ]
+supports = [ { at = "A", type = "pinned" }, { at = "B", type = "custom", hold = ["y", "z", "rx"] } ]
+min_frequency = "10 Hz"
+modes = 2
+masses = [ { at = ["250 mm", "0 mm", "0 mm"], mass = "2 kg" }, { at = ["750 mm", "0 mm", "0 mm"], mass = "2 kg", inertia = "1e-6 kg*m**2" } ]
+[components.beam.checks]
+frame_stress = false
+frame_deflection = false
+"""
+
+
+def test_frame_point_masses(tmp_path):
+    """Simply supported Euler beam with 2 kg at L/4 and 3L/4: ω1 = 153.395 rad/s from the exact transfer-matrix root
+    of tests/test_fea_frame_modal_convergence.py (a hand method, not a printed value); the small inertia
+    (1e-6 kg·m², a rotation of the mass about the beam axis and the bending axes) moves it by less than 1e-4."""
+    from tests.test_fea_frame_modal_convergence import exact_first
+
+    by = _verify(tmp_path, SS_MASS)
+    w1 = 2 * math.pi * by["natural_frequency"].capacity.m_as("Hz")
+    assert w1 == pytest.approx(exact_first(((0.25, 2.0), (0.75, 2.0))), rel=2e-4)
+    bad = SS_MASS.replace('mass = "2 kg" }, {', 'mass = "2" }, {')
+    assert "components.beam.masses[0].mass" in _errors(tmp_path, bad)
+    bad = SS_MASS.replace('inertia = "1e-6 kg*m**2"', 'inertia = ["1e-6 kg*m**2"]')
+    assert "components.beam.masses[1].inertia" in _errors(tmp_path, bad)

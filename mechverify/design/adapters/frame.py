@@ -17,6 +17,7 @@ from mechverify.checks import fea as feac
 from mechverify.checks import frames as fc
 from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
+from mechverify.design.adapters import frame_parsing
 from mechverify.design.adapters.frame_parsing import case_loads, combination, items, make, parse_members, vec, where
 from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
 from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS
@@ -41,6 +42,7 @@ class FrameComponent:
     fatigue_criterion: str
     fatigue_kf: float
     modal: ModalSettings | None = None
+    masses: tuple[Any, ...] = ()
     solved: dict[str, fe.FrameResults] = dataclasses.field(default_factory=dict)
     modes: list[Any] = dataclasses.field(default_factory=list)
 
@@ -85,7 +87,8 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
     if not p["fatigue_kf"] >= 1:
         raise InputError(f"fatigue_kf: a fatigue stress-concentration factor >= 1, got {p['fatigue_kf']!r}")
     return FrameComponent(frame, limit, span, None if life is None else float(life), p["fatigue_loading"],
-                          p["fatigue_criterion"], float(p["fatigue_kf"]), modal_settings(p))
+                          p["fatigue_criterion"], float(p["fatigue_kf"]), modal_settings(p),
+                          frame_parsing.point_masses(p))
 
 
 def _reach(frame: fe.Frame) -> float:
@@ -101,7 +104,7 @@ def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[Ch
     if c.modal is None:
         return []
     if not c.modes:
-        c.modes.append(c.modal.solve(fe.frame_modes, c.frame))
+        c.modes.append(c.modal.solve(fe.frame_modes, c.frame, masses=c.masses))
     return c.modal.check(c.modes[0], c.frame.name)
 
 
@@ -158,6 +161,8 @@ FRAME = REGISTRY.register(ComponentType(
               default="goodman"),
         Field("fatigue_kf", "float", "fatigue stress-concentration factor Kf on the beam stresses", default=1.0),
         *MODAL_FIELDS,
+        Field("masses", "list", "point masses for natural_frequency: {at (node or [x, y, z] on a member), mass, "
+              "inertia (one value or [Ix, Iy, Iz] about global axes)}", item="table"),
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(

@@ -125,3 +125,22 @@ def combination(loads: Mapping[str, Any], case: str, comp: str, cases: Mapping[s
         if k not in cases:
             raise InputError(f"{path}.combination.{k}: not a load case of {comp} (without a combination of its own)")
     return make(f"{path}.combination", fe.LoadCombination, case, f)
+
+
+def point_masses(p: Mapping[str, Any]) -> tuple[Any, ...]:
+    """``masses = [{at, mass, inertia}]`` of a frame (natural frequencies only): PointMass es, validated."""
+    from mechverify.fea.frame.modal import PointMass
+
+    out = []
+    for path, t in items(p, "masses", ("at", "mass", "inertia"), ("at", "mass")):
+        J = t.get("inertia")
+        if isinstance(J, list):
+            if len(J) != 3:
+                raise InputError(f"{path}.inertia: one value or three [Ix, Iy, Iz], got {J!r}")
+            J = [as_quantity(v, "inertia", f"{path}.inertia[{i}]") for i, v in enumerate(J)]
+        elif J is not None:
+            J = as_quantity(J, "inertia", f"{path}.inertia")
+        pm = PointMass(where(t["at"], f"{path}.at"), as_quantity(t["mass"], "mass", f"{path}.mass"), J)
+        make(path, pm.values)
+        out.append(pm)
+    return tuple(out)

@@ -33,10 +33,11 @@ class ModalSettings:
     band: tuple[Any, Any] | None = None
     margin: float = 0.15
 
-    def solve(self, fn: Any, *args: Any) -> Any:
-        """``fn(*args, self.modes)`` (frame_modes, plate_modes); its "n_modes" errors name the key ``modes``."""
+    def solve(self, fn: Any, *args: Any, **kw: Any) -> Any:
+        """``fn(args[0], self.modes, *args[1:], **kw)`` (frame_modes, plate_modes); its "n_modes" errors name the
+        key ``modes``."""
         try:
-            return fn(*args[:1], self.modes, *args[1:])
+            return fn(*args[:1], self.modes, *args[1:], **kw)
         except InputError as exc:
             raise InputError(f"modes: {str(exc).split(': ', 1)[-1]}") from None
 
