@@ -7,6 +7,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -128,3 +130,41 @@ def test_five_bar_report_has_the_workspace_map(tmp_path):
     svgs = [s for s in _figure_svgs(render_html([(d, res)], detail="all")) if "workspace map" in s]
     assert len(svgs) == 1
     assert "governs: theta_" in svgs[0]
+
+
+SOLID = """
+[design]
+name = "solid cantilever"
+
+[components.bar]
+type = "solid_fea"
+box = "200, 10, 10"
+material = "Structural Steel"
+mesh_size = "5 mm"
+supports = [{ named = "xmin" }]
+deflection_limit = "2 mm"
+
+[load_cases.tip.bar]
+forces = [{ named = "xmax", force = "0, 0, -100" }]
+"""
+
+
+def test_solid_fea_report_has_the_field_figures(tmp_path):
+    """A 200 x 10 x 10 mm steel cantilever (the box of tests/test_design_solid_fea.py): solid_stress and
+    solid_deflection each get a figure of the surface nodes coloured by their field with the governing node; the
+    deflection governs at the free end (x = 200 mm) and the stress at the clamped end (x near 0)."""
+    from mechverify.design import load
+    from mechverify.reports import render_html
+
+    p = tmp_path / "solid.toml"
+    p.write_text(SOLID, encoding="utf-8")
+    d = load(p)
+    res = d.verify()
+    s, u = res.get("bar", "solid_stress"), res.get("bar", "solid_deflection")
+    assert u.details["field_point"].m_as("mm")[0] == pytest.approx(200.0)
+    assert s.details["field_point"].m_as("mm")[0] < 20.0
+    assert u.details["field_value"].m_as("mm") == pytest.approx(u.demand.m_as("mm"))
+    assert s.details["field_value"].m_as("MPa") == pytest.approx(s.demand.m_as("MPa"))
+    svgs = _figure_svgs(render_html([(d, res)], detail="all"))
+    assert sum("von Mises stress, view on the" in x for x in svgs) == 1
+    assert sum("displacement |u|, view on the" in x for x in svgs) == 1

@@ -405,6 +405,7 @@ def test_solid_stress_line_brackets_negative_principal_stresses():
     sigma = np.diag([-1.0e6, -5.231e6, -6.246e6])
     res = SimpleNamespace(
         max_von_mises=SimpleNamespace(value=Q(4.819e6, "Pa"), node=0), sigma=np.array([sigma]),
+        von_mises=Q(np.array([4.819e6]), "Pa"),
         material=SimpleNamespace(require=lambda k: Q(250, "MPa")), points=np.zeros((1, 3)), error_estimate=None,
         warnings=())
     r = check_solid_stress(res, component="c")

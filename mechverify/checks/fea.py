@@ -66,6 +66,20 @@ def shape_details(res: Any, mode: int, value: Any = None) -> dict[str, Any]:
     return out
 
 
+def field_details(res: Any, values: Any, node: int, unit: str) -> dict[str, Any]:
+    """Figure data of a field check: the nodes of the outer surface [mm] (all nodes when there is no surface;
+    at most :data:`FIGURE_NODES`, evenly picked) with the field's nodal ``values`` there (a quantity array), and
+    the governing ``node``'s point and value."""
+    pts = np.asarray(res.points, dtype=float)
+    surf = getattr(res, "surface", None)
+    keep = np.unique(np.asarray(surf, dtype=int)) if surf is not None and np.size(surf) else np.arange(len(pts))
+    if len(keep) > FIGURE_NODES:
+        keep = keep[np.linspace(0, len(keep) - 1, FIGURE_NODES).astype(int)]
+    v = values.to(unit)
+    return {"field_points": Q(pts[keep] * 1e3, "mm"), "field_values": Q(np.asarray(v.magnitude)[keep], unit),
+            "field_node": node, "field_point": Q(pts[node] * 1e3, "mm"), "field_value": v[node]}
+
+
 @check("solid_stress", title="Solid FEA von Mises stress", sf_kind="static",
        source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}",
        explain=("Largest von Mises stress of the solid (or plane) FEA field, nodal stresses recovered by "
@@ -88,7 +102,8 @@ def check_solid_stress(res: FieldResults, *, component: str = "", required_sf: f
         title="Solid FEA von Mises stress", formula=r"\sigma_{vM,max} \le S_y",
         source=f"{ref('shigley10', 'Eq. (5-13)')}; {FEA_SOURCE}", inputs={"Sy": sy},
         notes=(*extra, *notes), warnings=(*res.warnings, *warnings), load_case=load_case, substituted=sub,
-        details={"node": int(mx.node), "location": Q(res.points[int(mx.node)], "m").to("mm")})
+        details={"node": int(mx.node), "location": Q(res.points[int(mx.node)], "m").to("mm"),
+                 **field_details(res, res.von_mises, int(mx.node), "MPa")})
 
 
 @check("solid_deflection", title="Solid FEA deflection", sf_kind="deflection", source=FEA_SOURCE,
@@ -105,7 +120,8 @@ def check_solid_deflection(res: FieldResults, limit: Any, *, span: QuantityLike 
         check="solid_deflection", component=component, demand=r.demand, capacity=r.capacity, required_sf=required_sf,
         title="Solid FEA deflection", formula=r.formula, source=FEA_SOURCE, inputs=r.inputs,
         notes=(*r.notes, f"governing {_where(res, int(mx.node))}"), warnings=res.warnings, load_case=load_case,
-        substituted=sub)
+        substituted=sub,
+        details=field_details(res, Q(np.linalg.norm(np.asarray(res.u), axis=1), "m"), int(mx.node), "mm"))
 
 
 @check("natural_frequency", title="Natural frequency", sf_kind="limit", source=MODAL_SOURCE,
