@@ -208,3 +208,31 @@ forces = [{ named = "xmax", force = "0, 0, -100" }]
 def test_solid_region_names_once_at_the_key(tmp_path, old, new, expected):
     """Review item 6: a misspelt region of a solid_fea is reported at its key, once (not per check)."""
     assert errors(tmp_path, SOLID, old, new) == [expected]
+
+
+@pytest.mark.parametrize(("text", "old", "new", "expected"), [
+    # was "components.fb: distal_left: must be positive, got -0.1 (SI)"
+    (FIVE_BAR, 'distal_left = "100 mm"', 'distal_left = "-100 mm"',
+     [("components.fb.distal_left", 'must be positive, got "-100 mm"')]),
+    # was "(<Quantity(200, 'degree')>, <Quantity(100, 'degree')>)"
+    (FIVE_BAR, "samples = 21", 'samples = 21\ntheta_left_min = "200 deg"\ntheta_left_max = "100 deg"',
+     [("components.fb.theta_left_max", "must be above theta_left_min (200 deg), got 100 deg")]),
+    (ARM, 'carriage_mass = "98 g"', 'carriage_mass = "98 g"\nq1_min = "200 deg"\nq1_max = "100 deg"',
+     [("components.arm.q1_max", "must be above q1_min (200 deg), got 100 deg")]),
+    # was "components.arm: path: acceleration: must be positive, got -1.0 (SI)"
+    (ARM, 'speed = "1.4 cm/s"', 'speed = "1.4 cm/s", acceleration = "-1 m/s^2"',
+     [("components.arm.path.acceleration", "must be > 0, got '-1 m/s^2'")]),
+])
+def test_values_as_written_not_si_or_repr(tmp_path, text, old, new, expected):
+    """Review item 6: a design-file value is shown as written, not as an SI number or a pint repr."""
+    assert errors(tmp_path, text, old, new) == expected
+
+
+def test_profile_of_a_bad_arm_does_not_repeat_its_error(tmp_path):
+    """The drive that follows a bad arm points at it; the arm's message is given once, at its key."""
+    text = ARM + ('\n[profiles.q1]\ntype = "joint_motion"\nmechanism = "arm"\njoint = "q1"\n\n[components.revolute]\n'
+                  'type = "drive"\nmotor = "maxon 6V 10.3 mNm"\ngearhead = "GP 22 850:1"\ninertia = "0 kg*m^2"\n'
+                  'profile = "q1"\n')
+    errs = errors(tmp_path, text, 'r = "8 cm - 1.5 cm * cos(4*phi)"', 'r = "8"')
+    assert errs[0][0] == "components.arm.path.r"
+    assert errs[1:] == [("components.revolute", "profile 'q1': the arm 'arm' is invalid (see its errors)")]

@@ -455,6 +455,23 @@ def key_path(path: str, msg: str, keys: Collection[str]) -> tuple[str, str]:
     return f"{path}.{m.group(1)}{m.group(2)}", msg[m.end():]
 
 
+_SI_VALUE = re.compile(r"got (.+) \(SI\)")
+
+
+def as_written(path: str, msg: str, table: Mapping[str, Any], table_path: str) -> str:
+    """``msg`` with an SI value (``"got -0.1 (SI)"``, :func:`mechverify.units.require_positive`) replaced by the
+    value as written at ``path`` (a key path inside ``table``, the table at ``table_path``), when there is one."""
+    if not path.startswith(f"{table_path}.") or _SI_VALUE.search(msg) is None:
+        return msg
+    v: Any = table
+    for part in re.findall(r"[^.\[\]]+", path[len(table_path) + 1:]):
+        try:
+            v = v[int(part)] if isinstance(v, list) else v[part]
+        except (KeyError, IndexError, ValueError, TypeError):
+            return msg
+    return msg if isinstance(v, Mapping | list) else _SI_VALUE.sub(lambda _: f"got {_describe(v)}", msg)
+
+
 def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[str, Any]) -> None:
     """Build every entry; one whose fields read other components' outputs after those (dependency order)."""
     bad = {e.name for e in entries.values()
@@ -481,7 +498,8 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
             done.add(e.name)
             return True
         except MechverifyError as exc:
-            col.add(*key_path(f"{section}.{e.name}", str(exc), {*e.raw, *(f.name for f in e.type.fields)}))
+            at, msg = key_path(f"{section}.{e.name}", str(exc), {*e.raw, *(f.name for f in e.type.fields)})
+            col.add(at, as_written(at, msg, e.raw, f"{section}.{e.name}"))
             bad.add(e.name)
             return False
         finally:

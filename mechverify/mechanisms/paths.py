@@ -31,7 +31,7 @@ import numpy as np
 
 from mechverify.errors import InputError
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
-from mechverify.units import Q, QuantityLike, to_si
+from mechverify.units import Q, QuantityLike, fmt, to_si
 
 G_STANDARD = 9.80665  # [m/s^2]
 
@@ -264,7 +264,8 @@ def _angle_limits(lo: QuantityLike | None, hi: QuantityLike | None, joint: str) 
     a = -math.inf if lo is None else to_si(lo, "angle", f"{joint}_min")
     b = math.inf if hi is None else to_si(hi, "angle", f"{joint}_max")
     if not b > a:
-        raise InputError(f"{joint} limits must increase, got {lo!r} to {hi!r}")
+        shown = [v if isinstance(v, str) else fmt(Q(v)) for v in (lo, hi)]
+        raise InputError(f"{joint}_max: must be above {joint}_min ({shown[0]}), got {shown[1]}")
     return a, b
 
 

@@ -185,8 +185,9 @@ class JointMotionProfile:
                     raise InputError(f"profile {self.name!r}: the arm {self.mechanism!r} is invalid (see its errors)")
                 try:
                     entry.obj = entry.type.build({**entry.params, "_name": self.mechanism}, self._ctx)
-                except MechverifyError as exc:
-                    raise InputError(f"profile {self.name!r}: arm {self.mechanism!r}: {exc}") from None
+                except MechverifyError:  # reported at the arm's own keys: not repeated here
+                    raise InputError(f"profile {self.name!r}: the arm {self.mechanism!r} is invalid "
+                                     "(see its errors)") from None
             self._arm = entry.obj
         return self._arm
 

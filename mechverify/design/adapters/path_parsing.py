@@ -172,6 +172,8 @@ def walk_path(table: Mapping[str, Any], params: Mapping[str, Any]) -> mp.PathSam
             raise InputError(f"path.{k}: not a key of a {curve} curve")
     if "acceleration" in table:
         acc = to_si(table["acceleration"], "acceleration", "path.acceleration")
+        if not acc > 0:
+            raise InputError(f"path.acceleration: must be > 0, got {table['acceleration']!r}")
 
         def timing(length: float) -> mp.Timing:
             from mechverify.motion.profiles import trapezoidal

@@ -12,7 +12,7 @@ from mechverify.checks import workspace as wc
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field, Output
 from mechverify.errors import InputError
 from mechverify.mechanisms import workspace as ws
-from mechverify.units import Q
+from mechverify.units import Q, fmt
 
 
 @dataclass(frozen=True)
@@ -35,6 +35,8 @@ def _limits(p: Mapping[str, Any], joints: tuple[str, ...], keys: Mapping[str, st
     out = {}
     for j in joints:
         k = keys.get(j, j)
+        if f"{k}_min" in p and f"{k}_max" in p and not p[f"{k}_max"] > p[f"{k}_min"]:
+            raise InputError(f"{k}_max: must be above {k}_min ({fmt(p[f'{k}_min'])}), got {fmt(p[f'{k}_max'])}")
         if f"{k}_min" in p or f"{k}_max" in p:
             out[j] = (p.get(f"{k}_min", Q(-1e6, "deg")), p.get(f"{k}_max", Q(1e6, "deg")))
     return out
