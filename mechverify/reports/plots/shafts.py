@@ -66,7 +66,9 @@ def draw_shaft(ax: Any, d: dict[str, Any], width_pt: float = 400.0) -> None:
             arrow = {"arrowstyle": "->", "color": "#cf222e", "lw": 0.8}
         ax.annotate(text, (x, top), xytext=((centre(x, text) - x) / mm_per_pt, 8 + 9.5 * row),
                     textcoords="offset points", fontsize=font, ha="center", va="bottom",
-                    color="#cf222e" if what == "load" else "0.15", arrowprops=arrow)
+                    color="#cf222e" if what == "load" else "0.15", arrowprops=arrow,
+                    # a lower row above the leaders of higher rows, its text on white: no line through a label
+                    zorder=4 - 0.01 * row, bbox={"fc": "white", "ec": "none", "pad": 0.3, "alpha": 0.9})
     sups = [(x * 1e3, name) for x, name in d["supports"]]
     for (x, name), row in zip(sups, label_levels([(centre(x, n), width(n)) for x, n in sups]), strict=True):
         ax.plot(x, -Dmax / 2, "^", color="#0969da", ms=7, zorder=3)
