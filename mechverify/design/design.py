@@ -12,7 +12,7 @@ from typing import Any
 
 from mechverify.checks import CheckResult, ResultSet
 from mechverify.checks.registry import deprecation_note
-from mechverify.design.loader import DesignData, DesignFileError, Entry, key_path, load_file, parse
+from mechverify.design.loader import DesignData, DesignFileError, Entry, as_written, key_path, load_file, parse
 from mechverify.design.spec import CheckSpec
 from mechverify.errors import MechverifyError, ValidityError, suggest
 from mechverify.units import Q
@@ -216,6 +216,7 @@ class Design:
                     except MechverifyError as exc:  # at the key it names (once), else at the check [case]
                         at = key_path(f"components.{entry.name}", str(exc),
                                       {*entry.raw, *(f.name for f in entry.type.fields)})
+                        at = (at[0], as_written(*at, entry.raw, f"components.{entry.name}"))
                         if at[0] == f"components.{entry.name}" and case:  # a load's key: in its load case
                             at = key_path(f"load_cases.{case}.{entry.name}", str(exc),
                                           {f.name for f in entry.type.loads})
