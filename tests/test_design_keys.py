@@ -236,3 +236,13 @@ def test_profile_of_a_bad_arm_does_not_repeat_its_error(tmp_path):
     errs = errors(tmp_path, text, 'r = "8 cm - 1.5 cm * cos(4*phi)"', 'r = "8"')
     assert errs[0][0] == "components.arm.path.r"
     assert errs[1:] == [("components.revolute", "profile 'q1': the arm 'arm' is invalid (see its errors)")]
+
+
+def test_joint_limits_from_python_show_angles_not_reprs():
+    """Review item 6: ``(<Quantity(200, 'degree')>, ...)`` in the Python API's message."""
+    from mechverify import Q
+    from mechverify.errors import InputError
+    from mechverify.mechanisms.workspace import joint_limits
+
+    with pytest.raises(InputError, match=r"^joint limits\.theta_left: low must be below high, got \(200 deg, 100 deg\)$"):
+        joint_limits({"theta_left": (Q(200, "deg"), Q(100, "deg"))}, ("theta_left",))

@@ -23,7 +23,7 @@ import numpy as np
 
 from mechverify.errors import InputError
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
-from mechverify.units import QuantityLike, from_si, to_si
+from mechverify.units import QuantityLike, fmt, from_si, to_si
 
 #: joint names of each preset, in the order of its motors
 FIVE_BAR_JOINTS = ("theta_left", "theta_right")
@@ -40,7 +40,8 @@ def joint_limits(limits: Mapping[str, Sequence[QuantityLike]] | None, joints: Se
             raise InputError(f"joint limits.{k}: expected (low, high), got {v!r}")
         lo, hi = to_si(v[0], "angle", f"{k} low"), to_si(v[1], "angle", f"{k} high")
         if not hi > lo:
-            raise InputError(f"joint limits.{k}: low must be below high, got {v!r}")
+            shown = ", ".join(x if isinstance(x, str) else fmt(x) if hasattr(x, "units") else f"{x:g}" for x in v)
+            raise InputError(f"joint limits.{k}: low must be below high, got ({shown})")
         out[k] = (lo, hi)
     return out
 
