@@ -9,7 +9,6 @@ import pint
 
 from mechverify.checks import bearings as bc
 from mechverify.components.bearings import (
-    CONTAMINATION_LEVELS,
     BallBearing,
     DutyCycleLoad,
     Lubrication,
@@ -20,6 +19,7 @@ from mechverify.components.bearings import (
     sliding_speed,
 )
 from mechverify.components.bearings_rolling import RollingBearing
+from mechverify.design.adapters.bearing_parsing import LUBRICANT_FIELDS
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
@@ -167,17 +167,7 @@ BALL = REGISTRY.register(ComponentType(
                                                     "one of a contact-sealed variant)"),
         Field("viscosity", "str", "lubricant (grease base oil) kinematic viscosity at the operating temperature, "
                                   "e.g. '20 mm^2/s' (enables bearing_modified_life)"),
-        Field("viscosity_40", "str", "lubricant viscosity at 40 degC, e.g. '68 mm^2/s'"),
-        Field("iso_vg", "int", "ISO 3448 viscosity grade (its 40 degC viscosity), instead of viscosity_40"),
-        Field("viscosity_100", "str", "lubricant viscosity at 100 degC (oil datasheet), with viscosity_40 or iso_vg"),
-        Field("viscosity_index", "float", "viscosity index (ASTM D2270), instead of viscosity_100: iso_vg = 68 with "
-                                          "viscosity_index = 95 gives nu(T)"),
-        Field("operating_temperature", "str", "bearing operating temperature, e.g. '70 degC' (-20..150 degC)"),
-        Field("contamination", "choice", "ISO 281 Table 13 contamination level (its lower e_C is used)",
-              default="normal_cleanliness", choices=tuple(CONTAMINATION_LEVELS)),
-        Field("contamination_factor", "float", "e_C (0..1), instead of the contamination level"),
-        Field("duty_cycle", "table", "load case = time share, e.g. { run = 0.7, start = 0.3 }: the life is taken "
-                                     "over the cycle, P = (sum P_i^3 n_i t_i / sum n_i t_i)^(1/3)"),
+        *LUBRICANT_FIELDS,
     ),
     build=lambda p, ctx: _build_bearing(p, ctx),
     loads=(

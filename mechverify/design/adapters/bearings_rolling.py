@@ -10,7 +10,7 @@ from typing import Any
 import pint
 
 from mechverify.checks import bearings as bc
-from mechverify.components.bearings import CONTAMINATION_LEVELS, EquivalentLoad
+from mechverify.components.bearings import EquivalentLoad
 from mechverify.components.bearings_rolling import (
     ARRANGEMENTS,
     AdjustedPairLoads,
@@ -18,6 +18,7 @@ from mechverify.components.bearings_rolling import (
     adjusted_pair_loads,
     rolling_bearing,
 )
+from mechverify.design.adapters.bearing_parsing import LUBRICANT_FIELDS
 from mechverify.design.adapters.bearings import (
     BearingInstallation,
     _duty_cycle,
@@ -80,16 +81,7 @@ ROLLING = REGISTRY.register(ComponentType(
         *_COMMON,
         Field("viscosity", "str", "lubricant viscosity at the operating temperature (enables "
                                   "bearing_modified_life; not for thrust bearings)"),
-        Field("viscosity_40", "str", "lubricant viscosity at 40 degC"),
-        Field("iso_vg", "int", "ISO 3448 viscosity grade, instead of viscosity_40"),
-        Field("viscosity_100", "str", "lubricant viscosity at 100 degC"),
-        Field("viscosity_index", "float", "viscosity index (ASTM D2270), instead of viscosity_100"),
-        Field("operating_temperature", "str", "bearing operating temperature, e.g. '70 degC'"),
-        Field("contamination", "choice", "ISO 281 Table 13 contamination level (its lower e_C is used)",
-              default="normal_cleanliness", choices=tuple(CONTAMINATION_LEVELS)),
-        Field("contamination_factor", "float", "e_C (0..1), instead of the contamination level"),
-        Field("duty_cycle", "table", "load case = time share: the life over the cycle, P = (sum P_i^p n_i t_i / "
-                                     "sum n_i t_i)^(1/p)"),
+        *LUBRICANT_FIELDS,
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
