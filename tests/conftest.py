@@ -66,3 +66,13 @@ material = "Structural Steel"
 [load_cases.hold.rod]
 force = "2 kN"
 """
+
+
+#: The linkage of the tests' `five_bar` designs: equal 100 mm links, one definition for every test module.
+FIVE_BAR_LINKS = """type = "five_bar"
+base = "100 mm"
+proximal_left = "100 mm"
+distal_left = "100 mm"
+distal_right = "100 mm"
+proximal_right = "100 mm"
+"""

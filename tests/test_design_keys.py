@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from conftest import FIVE_BAR_LINKS
 
 from mechverify.design import load
 from mechverify.design.loader import DesignFileError, key_path
@@ -31,13 +32,7 @@ FIVE_BAR = """
 name = "Five-bar workspace"
 
 [components.fb]
-type = "five_bar"
-base = "100 mm"
-proximal_left = "100 mm"
-distal_left = "100 mm"
-distal_right = "100 mm"
-proximal_right = "100 mm"
-working_mode = "+-"
+""" + FIVE_BAR_LINKS + """working_mode = "+-"
 x_range = ["0 mm", "100 mm"]
 y_range = ["100 mm", "180 mm"]
 samples = 21

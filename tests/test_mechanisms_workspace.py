@@ -14,6 +14,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import FIVE_BAR_LINKS
 
 from mechverify.design import load
 from mechverify.errors import InputError
@@ -115,13 +116,7 @@ W = "1 N"
 motor = 1.5
 
 [components.fb]
-type = "five_bar"
-base = "100 mm"
-proximal_left = "100 mm"
-distal_left = "100 mm"
-distal_right = "100 mm"
-proximal_right = "100 mm"
-x_range = ["-50 mm", "150 mm"]
+""" + FIVE_BAR_LINKS + """x_range = ["-50 mm", "150 mm"]
 y_range = ["0 mm", "200 mm"]
 samples = 11
 motor_torque = "3 N*m"

@@ -13,6 +13,7 @@ from __future__ import annotations
 import glob
 
 import pytest
+from conftest import FIVE_BAR_LINKS
 
 from mechverify.checks.registry import get_check
 from mechverify.design import load
@@ -48,13 +49,7 @@ offset_y = "30 mm"
 [design]
 name = "Five-bar workspace"
 [components.fb]
-type = "five_bar"
-base = "100 mm"
-proximal_left = "100 mm"
-distal_left = "100 mm"
-distal_right = "100 mm"
-proximal_right = "100 mm"
-working_mode = "+-"
+""" + FIVE_BAR_LINKS + """working_mode = "+-"
 x_range = ["0 mm", "100 mm"]
 y_range = ["100 mm", "180 mm"]
 samples = 11

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from conftest import FIVE_BAR_LINKS
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -90,13 +91,7 @@ W = "1 N"
 motor = 1.5
 
 [components.fb]
-type = "five_bar"
-base = "100 mm"
-proximal_left = "100 mm"
-distal_left = "100 mm"
-distal_right = "100 mm"
-proximal_right = "100 mm"
-x_range = ["-50 mm", "150 mm"]
+""" + FIVE_BAR_LINKS + """x_range = ["-50 mm", "150 mm"]
 y_range = ["0 mm", "200 mm"]
 samples = 15
 motor_torque = "3 N*m"

@@ -164,3 +164,20 @@ def test_adapter_index_names_every_registered_type():
             if REGISTRY._module[k].startswith("mechverify.design.adapters.")}
     assert index == full
     assert set(REGISTRY.names("components")) >= {"lead_screw", "ball_bearing", "drive", "compression_spring"}
+
+
+def test_type_order_does_not_depend_on_what_was_loaded_first(tmp_path):
+    """With adapters imported on demand, a design that loads one adapter first must not reorder the registry:
+    the JSON Schema made afterwards equals the published one (it listed five_bar first after a five_bar design)."""
+    design = tmp_path / "fb.toml"
+    design.write_text('[design]\nname = "fb"\n[components.fb]\ntype = "five_bar"\nbase = "100 mm"\nproximal_left = "100 mm"\n'
+                      'distal_left = "100 mm"\ndistal_right = "100 mm"\nproximal_right = "100 mm"\n'
+                      'x_range = ["0 mm", "100 mm"]\ny_range = ["100 mm", "180 mm"]\nsamples = 5\n'
+                      'payload = "1 N"\nmotor_torque = "1 N*m"\n', encoding="utf-8")
+    published = Path(__file__).resolve().parents[1] / "docs" / "design.schema.json"
+    code = ("import json, sys; import mechverify.design as d; d.load(sys.argv[1]); "
+            "from mechverify.design.schema import design_schema; "
+            "print(json.loads(json.dumps(design_schema())) == json.loads(open(sys.argv[2]).read()))")
+    out = subprocess.run([sys.executable, "-c", code, str(design), str(published)], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "True"

@@ -183,11 +183,19 @@ class Registry:
 
     @property
     def types(self) -> dict[str, ComponentType]:
-        """Every registered type (imports every built-in adapter first)."""
+        """Every registered type (imports every built-in adapter first), in a fixed order: the adapter modules'
+        name order, then the order each module registers its types, then types registered elsewhere (so the
+        JSON Schema and listings do not depend on which adapters a design had imported before)."""
         if not self._all_loaded:
             from mechverify.design import adapters
 
             adapters.load_all()
+            rank = {m: i for i, m in enumerate(adapters.modules())}
+            seq = {name: i for i, name in enumerate(self._types)}
+            order = sorted(self._types, key=lambda n: (rank.get(self._module.get(n, ""), len(rank)), seq[n]))
+            reordered = {n: self._types[n] for n in order}
+            self._types.clear()
+            self._types.update(reordered)  # the same dict object, re-ordered
             self._all_loaded = True
         return self._types
 
