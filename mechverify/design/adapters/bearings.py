@@ -152,6 +152,17 @@ def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> Any:
                                details={**r.details, "a1": reliability_factor(inst.reliability)})
 
 
+#: The checks of every rolling-bearing type (ball_bearing, rolling_bearing): life, modified life, static safety, speed.
+ROLLING_CHECKS = (
+    CheckSpec.of(bc.check_bearing_life, _life, needs=("radial_force|axial_force", "speed")),
+    CheckSpec.of(bc.check_bearing_modified_life, _modified, needs=("radial_force|axial_force", "speed")),
+    CheckSpec.of(bc.check_bearing_static_safety, lambda c, loads, ctx: bc.check_bearing_static_safety(
+        c.bearing, *_forces(loads), required_s0=ctx.required_sf), needs=("radial_force|axial_force",)),
+    CheckSpec.of(bc.check_bearing_speed, lambda c, loads, ctx: bc.check_bearing_speed(c.bearing, loads["speed"]),
+                 needs=("speed",)),
+)
+
+
 BALL = REGISTRY.register(ComponentType(
     name="ball_bearing",
     doc="A single-row deep groove ball bearing from the catalogue by designation (608, 6200-2Z, 6001-2RS1): "
@@ -175,14 +186,7 @@ BALL = REGISTRY.register(ComponentType(
         Field("axial_force", "force", "axial load Fa on this bearing"),
         Field("speed", "angular_velocity", "rotational speed of the inner ring relative to the outer"),
     ),
-    checks=(
-        CheckSpec.of(bc.check_bearing_life, _life, needs=("radial_force|axial_force", "speed")),
-        CheckSpec.of(bc.check_bearing_modified_life, _modified, needs=("radial_force|axial_force", "speed")),
-        CheckSpec.of(bc.check_bearing_static_safety, lambda c, loads, ctx: bc.check_bearing_static_safety(
-            c.bearing, *_forces(loads), required_s0=ctx.required_sf), needs=("radial_force|axial_force",)),
-        CheckSpec.of(bc.check_bearing_speed, lambda c, loads, ctx: bc.check_bearing_speed(c.bearing, loads["speed"]),
-                     needs=("speed",)),
-    ),
+    checks=ROLLING_CHECKS,
 ))
 
 

@@ -20,12 +20,10 @@ from mechverify.components.bearings_rolling import (
 )
 from mechverify.design.adapters.bearing_parsing import LUBRICANT_FIELDS
 from mechverify.design.adapters.bearings import (
+    ROLLING_CHECKS,
     BearingInstallation,
     _duty_cycle,
-    _forces,
-    _life,
     _lubrication,
-    _modified,
 )
 from mechverify.design.adapters.common import pick
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
@@ -89,14 +87,7 @@ ROLLING = REGISTRY.register(ComponentType(
         Field("axial_force", "force", "axial load Fa on the bearing (or matched pair)"),
         Field("speed", "angular_velocity", "rotational speed"),
     ),
-    checks=(
-        CheckSpec.of(bc.check_bearing_life, _life, needs=("radial_force|axial_force", "speed")),
-        CheckSpec.of(bc.check_bearing_modified_life, _modified, needs=("radial_force|axial_force", "speed")),
-        CheckSpec.of(bc.check_bearing_static_safety, lambda c, loads, ctx: bc.check_bearing_static_safety(
-            c.bearing, *_forces(loads), required_s0=ctx.required_sf), needs=("radial_force|axial_force",)),
-        CheckSpec.of(bc.check_bearing_speed, lambda c, loads, ctx: bc.check_bearing_speed(c.bearing, loads["speed"]),
-                     needs=("speed",)),
-    ),
+    checks=ROLLING_CHECKS,
 ))
 
 
