@@ -1,15 +1,15 @@
 """Benchmark: a thin plate with a hole (the slow case of multigrid CG) against CalculiX on the same P2 mesh.
 
 A 6 mm steel plate, 200 x 100 mm, 20 mm hole centred at (150, 50) mm, clamped at x = 0 and bent by 500 N
-along -z on the hole's wall, meshed by gmsh at several sizes (about 34k to 550k DOF: ``--dofs``).
-mechverify: ``SolidModel.solve()`` with ``method="auto"`` (CG on the p-multigrid; with CHOLMOD installed a CG
-whose measured convergence predicts more than 80 iterations gives way to a factorisation), timed in a child
-process; CalculiX: ``ccx`` on the identical deck, 1 and/or 2 threads (``--ccx-threads``), the faster counts.
-Also reported: the same solve with ``method="amg"`` forced (iterations) when ``--amg`` is given.
+along -z on the hole's wall (``ccx_common.PLATE``), meshed by gmsh at several sizes (about 34k to 550k DOF:
+``--dofs``). mechverify: ``SolidModel.solve()`` with ``method="auto"`` (the solver chosen by the cost model of
+:mod:`mechverify.fea.linsolve`), timed in a child process; CalculiX: ``ccx`` on the identical deck, 1 and/or
+2 threads (``--ccx-threads``), the faster counts. ``--also amg direct`` adds the same solve with that method
+forced (to check the choice).
 
 Prints a table and writes ``benchmarks/results/fea_thin_plate.json``. Usage::
 
-    python benchmarks/fea_thin_plate.py [--dofs 34000 74000 200000 550000] [--ccx-threads 1 2] [--amg]
+    python benchmarks/fea_thin_plate.py [--dofs 34000 74000 200000 550000] [--ccx-threads 1 2] [--also amg direct]
 """
 
 from __future__ import annotations
@@ -17,8 +17,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
-import subprocess
 import sys
 import tempfile
 import time
@@ -27,94 +25,50 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 
-
-def plate_mesh(h: float):
-    from mechverify.fea import mesh
-
-    gmsh = mesh.import_gmsh()
-    mesh.gmsh_session(gmsh, h)
-    try:
-        occ = gmsh.model.occ
-        block = occ.addBox(0, 0, 0, 0.2, 0.1, 0.006)
-        hole = occ.addCylinder(0.15, 0.05, -0.01, 0, 0, 0.03, 0.01)
-        occ.cut([(3, block)], [(3, hole)])
-        occ.synchronize()
-        clamp, wall = [], []
-        for _, tag in gmsh.model.getEntities(2):
-            com = occ.getCenterOfMass(2, tag)
-            if abs(com[0]) < 1e-9:
-                clamp.append(tag)
-            elif abs(com[0] - 0.15) < 1e-6 and abs(com[1] - 0.05) < 1e-6:
-                wall.append(tag)
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, clamp), "clamp")
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, wall), "hole")
-        gmsh.model.addPhysicalGroup(3, [e[1] for e in gmsh.model.getEntities(3)])
-        gmsh.model.mesh.generate(3)
-        return mesh.from_gmsh_model(gmsh)
-    finally:
-        gmsh.finalize()
-
-
-def model_of(m):
-    from mechverify.fea.loads import Fixed, Force
-    from mechverify.fea.regions import Named
-    from mechverify.fea.solid import SolidModel
-
-    return SolidModel(m, "Structural Steel", supports=(Fixed(Named("clamp")),),
-                      loads=(Force(Named("hole"), ("0 N", "0 N", "-500 N")),))
-
-
-def mesh_for(target: int):
-    h = (0.2 * 0.1 * 0.006 * 40 / target) ** (1 / 3)
-    for _ in range(4):
-        m = plate_mesh(h)
-        ratio = m.n_dofs / target
-        if abs(ratio - 1) < 0.1:
-            break
-        h *= ratio ** (1 / 3)
-    return m
+from ccx_common import (  # noqa: E402
+    PLATE,
+    ccx_static,
+    load_average,
+    load_mesh,
+    mesh_for,
+    model_of,
+    peak_rss,
+    run_child,
+    save_mesh,
+    write_rows,
+)
 
 
 def child(path: str, method: str) -> None:
-    from mechverify.fea import mesh
-
-    data = np.load(path, allow_pickle=False)
-    named = {k[6:]: data[k] for k in data.files if k.startswith("named_")}
-    m = mesh.from_arrays(data["points"], data["tets"], named)
-    model = model_of(m)
-    _ = m.basis
+    """Solve the saved mesh with ``method`` in this fresh process; print timings and peak memory as JSON."""
+    m = load_mesh(path)
+    model = model_of(PLATE, m)
     t0 = time.perf_counter()
     res = model.solve(method=method, progress=False)
     wall = time.perf_counter() - t0
     np.save(path + ".u.npy", res.u)
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
-    print(json.dumps({"wall": wall, "peak": peak, "timings": dict(res.timings), "iterations": res.info.iterations,
-                      "method": res.info.method}))
+    print(json.dumps({"wall": wall, "peak": peak_rss(), "timings": dict(res.timings),
+                      "iterations": res.info.iterations, "method": res.info.method}))
 
 
-def run_case(target: int, ccx_threads: list[int], amg: bool) -> dict:
-    from mechverify.fea import calculix
-
-    m = mesh_for(target)
-    model = model_of(m)
+def run_case(target: int, ccx_threads: list[int], also: list[str]) -> dict:
+    m = mesh_for(PLATE, target)
+    model = model_of(PLATE, m)
     out: dict = {"dofs": int(m.n_dofs), "elements": int(m.mesh.nelements)}
     with tempfile.TemporaryDirectory(prefix="mv-bench-") as tmp:
         path = os.path.join(tmp, "mesh.npz")
-        np.savez(path, points=m.mesh.p.T, tets=m.mesh.t.T, **{f"named_{k}": v for k, v in m.named.items()})
-        for method in ("auto", "amg") if amg else ("auto",):
-            r = subprocess.run([sys.executable, __file__, "--child", path, method], capture_output=True, text=True,
-                               check=True)
-            out[f"mechverify_{method}"] = json.loads(r.stdout.strip().splitlines()[-1])
-        u = np.load(path + ".u.npy")
-    ccx = {}
-    for threads in ccx_threads:
-        r = calculix.run_model(model, threads=threads)
-        ccx[threads] = {"wall": r.wall_time, "peak": r.peak_memory}
-        out["max_displacement_difference"] = float(np.abs(r.displacement - u).max() / np.abs(u).max())
-    best = min(ccx, key=lambda k: ccx[k]["wall"])
-    out.update(calculix=ccx, ccx_threads=best, ratio=out["mechverify_auto"]["wall"] / ccx[best]["wall"],
-               memory_ratio=out["mechverify_auto"]["peak"] / ccx[best]["peak"], load_average=os.getloadavg()[0])
+        save_mesh(m, path)
+        for method in ["auto", *also]:
+            out[f"mechverify_{method}"] = run_child(__file__, path, method)
+            if method == "auto":
+                u = np.load(path + ".u.npy")
+    ccx = ccx_static(model, ccx_threads, u)
+    mv = out["mechverify_auto"]
+    out.update(calculix=ccx["calculix"], ccx_threads=ccx["ccx_threads"], ratio=mv["wall"] / ccx["best"]["wall"],
+               memory_ratio=mv["peak"] / ccx["best"]["peak"], bytes_per_dof=mv["peak"] / out["dofs"],
+               max_displacement_difference=ccx["max_displacement_difference"], load_average=load_average())
     return out
 
 
@@ -122,21 +76,22 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--dofs", type=int, nargs="+", default=[34_000, 74_000, 200_000, 550_000])
     ap.add_argument("--ccx-threads", type=int, nargs="+", default=[1, 2])
-    ap.add_argument("--amg", action="store_true")
+    ap.add_argument("--also", nargs="*", default=[], choices=["amg", "direct"],
+                    help="also time these forced methods on each mesh")
     ap.add_argument("--out", default=str(HERE / "results" / "fea_thin_plate.json"))
     a = ap.parse_args(argv)
     rows = []
     for t in a.dofs:
-        r = run_case(t, a.ccx_threads, a.amg)
+        r = run_case(t, a.ccx_threads, a.also)
         rows.append(r)
         mv = r["mechverify_auto"]
-        extra = f"  (amg forced: {r['mechverify_amg']['wall']:.1f} s, {r['mechverify_amg']['iterations']} it)" \
-            if a.amg else ""
+        extra = "".join(f"  ({k} forced: {r[f'mechverify_{k}']['wall']:.1f} s, "
+                        f"{r[f'mechverify_{k}']['iterations']} it)" for k in a.also)
         print(f"{r['dofs']:>8} DOF  mechverify {mv['wall']:6.1f} s [{mv['method']}, {mv['iterations']} it, "
-              f"{mv['peak'] / 1e6:.0f} MB]  ccx {r['calculix'][r['ccx_threads']]['wall']:6.1f} s  ratio "
-              f"{r['ratio']:.2f}  |du|/|u| {r['max_displacement_difference']:.1e}  load {r['load_average']:.1f}"
-              + extra, flush=True)
-        Path(a.out).write_text(json.dumps(rows, indent=2, default=str))
+              f"{mv['peak'] / 1e6:.0f} MB]  ccx {r['calculix'][r['ccx_threads']]['wall']:6.1f} s "
+              f"({r['ccx_threads']} thr)  ratio {r['ratio']:.2f}  |du|/|u| {r['max_displacement_difference']:.1e}  "
+              f"load {r['load_average']:.1f}" + extra, flush=True)
+        write_rows(rows, a.out)
     return rows
 
 

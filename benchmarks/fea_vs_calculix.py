@@ -11,7 +11,10 @@ in its own process so that peak memory (max RSS) is comparable:
 
 Prints a table and writes ``benchmarks/results/fea_vs_calculix.json``. Usage::
 
-    python benchmarks/fea_vs_calculix.py [--dofs 50000 200000] [--baseline]
+    python benchmarks/fea_vs_calculix.py [--dofs 50000 200000] [--baseline] [--method auto|amg|direct]
+        [--ccx-threads 1 2] [--out path.json]
+
+Meshes, models and the CalculiX runs come from ``ccx_common.py`` (shared with the other FEA benchmarks).
 """
 
 from __future__ import annotations
@@ -19,7 +22,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
 import subprocess
 import sys
 import tempfile
@@ -29,73 +31,34 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 
-
-def lug_mesh(h: float):
-    """gmsh mesh of the lug with element size ``h`` [m]; named regions ``clamp`` and ``hole``."""
-    from mechverify.fea import mesh
-
-    gmsh = mesh.import_gmsh()
-    mesh.gmsh_session(gmsh, h)
-    try:
-        occ = gmsh.model.occ
-        block = occ.addBox(0, 0, 0, 0.12, 0.04, 0.03)
-        hole = occ.addCylinder(0.1, 0.02, -0.01, 0, 0, 0.05, 0.008)
-        occ.cut([(3, block)], [(3, hole)])
-        occ.synchronize()
-        clamp, wall = [], []
-        for _, tag in gmsh.model.getEntities(2):
-            com = occ.getCenterOfMass(2, tag)
-            if abs(com[0]) < 1e-9:
-                clamp.append(tag)
-            elif abs(com[0] - 0.1) < 1e-6 and abs(com[1] - 0.02) < 1e-6:
-                wall.append(tag)
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, clamp), "clamp")
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, wall), "hole")
-        gmsh.model.addPhysicalGroup(3, [e[1] for e in gmsh.model.getEntities(3)])
-        gmsh.model.mesh.generate(3)
-        return mesh.from_gmsh_model(gmsh)
-    finally:
-        gmsh.finalize()
+from ccx_common import LUG, ccx_static, load_average, load_mesh, peak_rss, run_child, save_mesh, write_rows  # noqa: E402
+from ccx_common import mesh_for as part_mesh_for  # noqa: E402
+from ccx_common import model_of as part_model_of  # noqa: E402
 
 
 def model_of(m):
-    from mechverify.fea.loads import Fixed, Force
-    from mechverify.fea.regions import Named
-    from mechverify.fea.solid import SolidModel
-
-    return SolidModel(m, "Structural Steel", supports=(Fixed(Named("clamp")),),
-                      loads=(Force(Named("hole"), ("0 N", "0 N", "-5 kN")),))
+    """The lug's static model (kept for ``fea_modal.py``)."""
+    return part_model_of(LUG, m)
 
 
 def mesh_for(target: int):
-    """Mesh whose DOF count is near ``target`` (one size correction after a first try)."""
-    h = 0.12 * (target / 3.0 / 4.0) ** (-1 / 3) * 0.9
-    for _ in range(4):
-        m = lug_mesh(h)
-        ratio = m.n_dofs / target
-        if abs(ratio - 1) < 0.08:
-            break
-        h *= ratio ** (1 / 3)
-    return m
+    """Lug mesh whose DOF count is near ``target`` (kept for ``fea_modal.py``)."""
+    return part_mesh_for(LUG, target)
 
 
-def child(path: str) -> None:
+def child(path: str, method: str = "auto") -> None:
     """Solve the saved mesh in this fresh process and print timings and peak memory as JSON."""
-    from mechverify.fea import mesh
-
-    data = np.load(path, allow_pickle=False)
-    named = {k[6:]: data[k] for k in data.files if k.startswith("named_")}
-    m = mesh.from_arrays(data["points"], data["tets"], named)
+    m = load_mesh(path)
     model = model_of(m)
-    _ = m.basis  # P2 numbering is mesh bookkeeping shared with the writer of the ccx deck
     t0 = time.perf_counter()
-    res = model.solve(progress=False)
+    res = model.solve(method=method, progress=False)
     wall = time.perf_counter() - t0
     np.save(path + ".u.npy", res.u)
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
-    print(json.dumps({"wall": wall, "peak": peak, "timings": dict(res.timings), "iterations": res.info.iterations,
-                      "method": res.info.method, "max_vm": float(res.max_von_mises.value.m_as("MPa"))}))
+    print(json.dumps({"wall": wall, "peak": peak_rss(), "timings": dict(res.timings),
+                      "iterations": res.info.iterations, "method": res.info.method,
+                      "max_vm": float(res.max_von_mises.value.m_as("MPa"))}))
 
 
 def baseline_child(path: str) -> None:
@@ -135,35 +98,28 @@ def baseline_child(path: str) -> None:
     rhs = asm(vm_rhs, sb, u=ib.interpolate(u))
     solve(M, rhs)
     wall = time.perf_counter() - t0
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
-    print(json.dumps({"wall": wall, "peak": peak}))
+    print(json.dumps({"wall": wall, "peak": peak_rss()}))
 
 
-def run_case(target: int, baseline: bool = False) -> dict:
-    from mechverify.fea import calculix
-
+def run_case(target: int, baseline: bool = False, method: str = "auto", threads: tuple[int, ...] = (1, 2)) -> dict:
     m = mesh_for(target)
     model = model_of(m)
     with tempfile.TemporaryDirectory(prefix="mv-bench-") as tmp:
         path = os.path.join(tmp, "mesh.npz")
-        np.savez(path, points=m.mesh.p.T, tets=m.mesh.t.T, **{f"named_{k}": v for k, v in m.named.items()})
-        out = subprocess.run([sys.executable, __file__, "--child", path], capture_output=True, text=True, check=True)
-        mine = json.loads(out.stdout.strip().splitlines()[-1])
+        save_mesh(m, path)
+        mine = run_child(__file__, path, method)
         u = np.load(path + ".u.npy")
         base = None
         if baseline:
             out = subprocess.run([sys.executable, __file__, "--baseline-child", path], capture_output=True,
                                  text=True, check=True)
             base = json.loads(out.stdout.strip().splitlines()[-1])
-    ccx = {}
-    for threads in (1, 2):
-        r = calculix.run_model(model, threads=threads)
-        ccx[threads] = {"wall": r.wall_time, "peak": r.peak_memory}
-        err = float(np.abs(r.displacement - u).max() / np.abs(u).max())
-    best = min(ccx, key=lambda k: ccx[k]["wall"])
-    return {"dofs": m.n_dofs, "elements": m.mesh.nelements, "mechverify": mine, "calculix": ccx,
-            "ratio": mine["wall"] / ccx[best]["wall"], "memory_ratio": mine["peak"] / ccx[best]["peak"],
-            "ccx_threads": best, "max_displacement_difference": err, "plain_scikit_fem": base}
+    ccx = ccx_static(model, list(threads), u)
+    best = ccx["ccx_threads"]
+    return {"dofs": m.n_dofs, "elements": m.mesh.nelements, "mechverify": mine, "calculix": ccx["calculix"],
+            "ratio": mine["wall"] / ccx["best"]["wall"], "memory_ratio": mine["peak"] / ccx["best"]["peak"],
+            "ccx_threads": best, "max_displacement_difference": ccx["max_displacement_difference"],
+            "plain_scikit_fem": base, "load_average": load_average()}
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
@@ -171,16 +127,18 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap.add_argument("--dofs", type=int, nargs="*", default=[50_000, 200_000])
     ap.add_argument("--baseline", action="store_true",
                     help="also time plain scikit-fem + SciPy direct on the smallest mesh")
-    ap.add_argument("--child")
+    ap.add_argument("--method", default="auto", choices=["auto", "amg", "direct"])
+    ap.add_argument("--ccx-threads", type=int, nargs="+", default=[1, 2])
+    ap.add_argument("--out", default=str(HERE / "results" / "fea_vs_calculix.json"))
     ap.add_argument("--baseline-child")
     args = ap.parse_args(argv)
-    if args.child:
-        child(args.child)
-        return []
     if args.baseline_child:
         baseline_child(args.baseline_child)
         return []
-    rows = [run_case(t, args.baseline and i == 0) for i, t in enumerate(args.dofs)]
+    rows = []
+    for i, t in enumerate(args.dofs):
+        rows.append(run_case(t, args.baseline and i == 0, args.method, tuple(args.ccx_threads)))
+        write_rows(rows, args.out)
     print(f"{'DOF':>8} {'mechverify s':>13} {'ccx s (thr)':>12} {'ratio':>6} {'mv MB':>7} {'ccx MB':>7}  iters")
     for r in rows:
         c = r["calculix"][r["ccx_threads"]]
@@ -191,11 +149,11 @@ def main(argv: list[str] | None = None) -> list[dict]:
             b = r["plain_scikit_fem"]
             print(f"{'':>8} plain scikit-fem + SciPy direct: {b['wall']:.2f} s, {b['peak'] / 1e6:.0f} MB "
                   f"(ratio to CalculiX {b['wall'] / c['wall']:.2f})")
-    out = HERE / "results"
-    out.mkdir(exist_ok=True)
-    (out / "fea_vs_calculix.json").write_text(json.dumps(rows, indent=2, default=str))
     return rows
 
 
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) > 1 and sys.argv[1] == "--child":
+        child(*sys.argv[2:4])
+    else:
+        main()
