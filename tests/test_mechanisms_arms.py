@@ -141,16 +141,15 @@ def test_rr_lagrange_power_balance():
 def test_rr_static_gravity_torques():
     """At rest (one point), arm horizontal, elbow at 90 deg: tau2 = (m2 lc2 + mp l2) g cos(q1 + q2) = 0 and
     tau1 = (m1 lc1 + (m2 + mp) l1) g; with q2 = 0 impossible (singular), use q1 = 0, q2 = 90 deg."""
-    from mechverify.mechanisms.paths import RRJointMotion
+    from mechverify.mechanisms.paths import JointMotion
 
     z = np.zeros(1)
-    m = RRJointMotion(z, z, np.array([math.pi / 2]), z, z, z, z)
+    m = JointMotion(z, z, np.array([math.pi / 2]), z, z, z, z)
     t1, t2 = ARM.joint_loads(m)
     g = 9.80665
     assert t1[0] == pytest.approx((1 * 0.15 + 1.3 * 0.3) * g, rel=1e-12)
     assert t2[0] == pytest.approx(0.0, abs=1e-12)
-    m = RRJointMotion(z, z, np.array([-math.pi / 2]), z, z, z, z)  # link 2 points up... cos(-90) = 0 too
-    m = RRJointMotion(z, np.array([math.pi / 2]), np.array([-math.pi / 2]), z, z, z, z)  # link 1 up, link 2 right
+    m = JointMotion(z, np.array([math.pi / 2]), np.array([-math.pi / 2]), z, z, z, z)  # link 1 up, link 2 right
     t1, t2 = ARM.joint_loads(m)
     assert t2[0] == pytest.approx((0.8 * 0.125 + 0.5 * 0.25) * g, rel=1e-12)
     assert t1[0] == pytest.approx(t2[0], rel=1e-12)

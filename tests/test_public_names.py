@@ -69,6 +69,12 @@ RENAMED = [
     ("mechverify.mechanisms", "PointLoad", "AppliedForce"),
     ("mechverify.mechanisms.statics", "PointLoad", "AppliedForce"),
     ("mechverify.motion.profiles", "Segment", "JerkSegment"),
+    ("mechverify.mechanisms", "RPJointMotion", "JointMotion"),
+    ("mechverify.mechanisms", "RRJointMotion", "JointMotion"),
+    ("mechverify.mechanisms", "FiveBarJointMotion", "JointMotion"),
+    ("mechverify.mechanisms.paths", "RPJointMotion", "JointMotion"),
+    ("mechverify.mechanisms.paths", "RRJointMotion", "JointMotion"),
+    ("mechverify.mechanisms.paths", "FiveBarJointMotion", "JointMotion"),
 ]
 
 

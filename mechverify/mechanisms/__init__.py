@@ -15,13 +15,11 @@ from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.mechanisms.fivebar import FiveBar, FiveBarPose, WorkspaceSample
 from mechverify.mechanisms.lever_arm import LeverArm, LeverArmPose, lever_arm_closed_form
 from mechverify.mechanisms.paths import (
-    FiveBarJointMotion,
+    JointMotion,
     LinkBody,
     PathSamples,
     RPArm,
-    RPJointMotion,
     RRArm,
-    RRJointMotion,
     Timing,
     five_bar_inverse,
     spline_through,
@@ -48,10 +46,12 @@ __all__ = [
     "solve_statics", "FiveBar", "FiveBarPose", "WorkspaceSample", "LeverArm", "LeverArmPose",
     "lever_arm_closed_form", "SweepResult", "MemberDemand", "ActuatorDemand", "sweep_statics",
     "UnreachablePoseError", "SingularPoseError", "CableSpine", "SpineState", "UnreachableTiltError",
-    "tension_distribution", "PathSamples", "RPArm", "RPJointMotion", "walk_polar", "walk_curve", "spline_through",
-    "Timing", "RRArm", "RRJointMotion", "LinkBody", "FiveBarJointMotion", "five_bar_inverse", "SpineState3D",
+    "tension_distribution", "PathSamples", "RPArm", "JointMotion", "walk_polar", "walk_curve", "spline_through",
+    "Timing", "RRArm", "LinkBody", "five_bar_inverse", "SpineState3D",
     "state_3d", "WorkspaceCapacity", "five_bar_capacity", "lever_arm_capacity",
 ]
 
-# Former name (issue 16: one meaning per public class name across the package), deprecated.
-__getattr__ = renamed(__name__, {"PointLoad": "AppliedForce"})
+# Former names (issue 16: one meaning per public class name across the package; one JointMotion for the RP, RR
+# and five-bar arms), deprecated.
+__getattr__ = renamed(__name__, {"PointLoad": "AppliedForce", "RPJointMotion": "JointMotion",
+                                 "RRJointMotion": "JointMotion", "FiveBarJointMotion": "JointMotion"})

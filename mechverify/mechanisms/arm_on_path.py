@@ -36,7 +36,7 @@ class ArmOnPath:
     name: str
     arm: Any  # RPArm, RRArm or FiveBar
     path: mp.PathSamples
-    motion: Any  # RPJointMotion, RRJointMotion or FiveBarJointMotion
+    motion: mp.JointMotion  # the joints of the RP, RR or five-bar arm
     efforts: tuple[np.ndarray, np.ndarray]  # q1's torque [N m], q2's torque [N m] or force [N] at every sample
     q1_inertia: np.ndarray  # inertia about the first joint at every sample [kg m^2]
     kinds: tuple[str, str]  # "angle" / "length" of q1, q2

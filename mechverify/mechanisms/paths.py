@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from mechverify.errors import InputError
+from mechverify.errors import InputError, renamed
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.units import Q, QuantityLike, fmt, to_si
 
@@ -183,8 +183,13 @@ def spline_through(points: np.ndarray, closed: bool = False) -> tuple[Curve, tup
 
 
 @dataclass(frozen=True)
-class RPJointMotion:
-    """Joint positions, rates and accelerations of an RP arm along a path (SI: rad, m, s)."""
+class JointMotion:
+    """Positions, rates and accelerations of a two-joint arm's joints along a path (SI: rad for a revolute
+    joint, m for a prismatic one, s), one value per path sample.
+
+    The RP arm (q1 the revolute angle, q2 the extension), the RR arm (q1, q2 the joint angles) and the
+    five-bar (q1 the left motor angle, q2 the right one) all return this. Former names, deprecated aliases of
+    this class: ``RPJointMotion``, ``RRJointMotion``, ``FiveBarJointMotion``."""
 
     t: np.ndarray
     q1: np.ndarray
@@ -220,7 +225,7 @@ class RPArm:
                 to_si(self.arm_mass, "mass", "arm_mass"), to_si(self.arm_com, "length", "arm_com"),
                 to_si(self.gravity, "acceleration", "gravity"))
 
-    def inverse(self, path: PathSamples) -> RPJointMotion:
+    def inverse(self, path: PathSamples) -> JointMotion:
         """q1 = atan2(y, x), q2 = sqrt(x^2 + y^2) and their first and second time derivatives."""
         lo, hi = self._si()[:2]
         x, y, vx, vy, ax, ay = path.x, path.y, path.vx, path.vy, path.ax, path.ay
@@ -241,16 +246,16 @@ class RPArm:
         dq1 = (x * vy - y * vx) / q2**2
         ddq2 = (vx**2 + vy**2 + x * ax + y * ay) / q2 - dq2**2 / q2
         ddq1 = (x * ay - y * ax) / q2**2 - 2 * dq2 * dq1 / q2
-        return RPJointMotion(path.t, q1, q2, dq1, dq2, ddq1, ddq2)
+        return JointMotion(path.t, q1, q2, dq1, dq2, ddq1, ddq2)
 
-    def joint_loads(self, m: RPJointMotion) -> tuple[np.ndarray, np.ndarray]:
+    def joint_loads(self, m: JointMotion) -> tuple[np.ndarray, np.ndarray]:
         """(tau1 [N m], F2 [N]) from Lagrange's equations (module docstring), inertial, Coriolis and gravity."""
         _lo, _hi, mc, J, ma, ra, g = self._si()
         tau1 = (J + mc * m.q2**2) * m.ddq1 + 2 * mc * m.q2 * m.dq2 * m.dq1 + (ma * ra + mc * m.q2) * g * np.cos(m.q1)
         F2 = mc * m.ddq2 - mc * m.q2 * m.dq1**2 + mc * g * np.sin(m.q1)
         return tau1, F2
 
-    def energy(self, m: RPJointMotion) -> np.ndarray:
+    def energy(self, m: JointMotion) -> np.ndarray:
         """T + V [J] (module docstring)."""
         _lo, _hi, mc, J, ma, ra, g = self._si()
         T = 0.5 * (J + mc * m.q2**2) * m.dq1**2 + 0.5 * mc * m.dq2**2
@@ -288,19 +293,6 @@ def _within_limits(q: np.ndarray, limits: tuple[float, float] | None, joint: str
                                    f"y = {path.y[i] * 1e3:.4g} mm) needs {joint} = {math.degrees(q[i]):.4g} deg, "
                                    f"outside its limits {math.degrees(lo):.4g} to {math.degrees(hi):.4g} deg")
     return q
-
-
-@dataclass(frozen=True)
-class RRJointMotion:
-    """Joint angles, rates and accelerations of an RR arm along a path (SI: rad, s)."""
-
-    t: np.ndarray
-    q1: np.ndarray
-    q2: np.ndarray
-    dq1: np.ndarray
-    dq2: np.ndarray
-    ddq1: np.ndarray
-    ddq2: np.ndarray
 
 
 @dataclass(frozen=True)
@@ -359,7 +351,7 @@ class RRArm:
         l1, l2 = self._si()[:2]
         return l1 * np.cos(q1) + l2 * np.cos(q1 + q2), l1 * np.sin(q1) + l2 * np.sin(q1 + q2)
 
-    def inverse(self, path: PathSamples) -> RRJointMotion:
+    def inverse(self, path: PathSamples) -> JointMotion:
         """Joint angles by the law of cosines, rates q' = J^-1 v and accelerations q'' = J^-1 (a - J' q').
 
         Raises UnreachablePoseError (the first sample out of the annulus |l1 - l2| <= r <= l1 + l2, or outside a
@@ -399,9 +391,9 @@ class RRArm:
         by = path.ay + l1 * s1 * dq1**2 + l2 * s12 * w12**2
         ddq1 = (j22 * bx - j12 * by) / det
         ddq2 = (-j21 * bx + j11 * by) / det
-        return RRJointMotion(path.t, q1, q2, dq1, dq2, ddq1, ddq2)
+        return JointMotion(path.t, q1, q2, dq1, dq2, ddq1, ddq2)
 
-    def joint_loads(self, m: RRJointMotion) -> tuple[np.ndarray, np.ndarray]:
+    def joint_loads(self, m: JointMotion) -> tuple[np.ndarray, np.ndarray]:
         """(tau1, tau2) [N m] from Lagrange's equations (class docstring)."""
         l1, _l2, m1, lc1, I1, M2, lc2, I2, g = self._si()
         c2 = np.cos(m.q2)
@@ -415,7 +407,7 @@ class RRArm:
         tau2 = d12 * m.ddq1 + d22 * m.ddq2 - h * m.dq1**2 + g2
         return tau1, tau2
 
-    def energy(self, m: RRJointMotion) -> np.ndarray:
+    def energy(self, m: JointMotion) -> np.ndarray:
         """T + V [J] of the two links and the payload (from the centres of mass' velocities, not from d_ij)."""
         l1, _l2, m1, lc1, I1, M2, lc2, I2, g = self._si()
         w1, w12 = m.dq1, m.dq1 + m.dq2
@@ -490,19 +482,6 @@ def compose_bodies(bodies: tuple[LinkBody, ...] | list[LinkBody]) -> tuple[float
     return m, (mr / m if m > 0 else 0.0), J
 
 
-@dataclass(frozen=True)
-class FiveBarJointMotion:
-    """Motor angles (q1 left, q2 right), rates and accelerations of a five-bar along a path (SI)."""
-
-    t: np.ndarray
-    q1: np.ndarray
-    q2: np.ndarray
-    dq1: np.ndarray
-    dq2: np.ndarray
-    ddq1: np.ndarray
-    ddq2: np.ndarray
-
-
 def _perp(v: np.ndarray) -> np.ndarray:
     return np.array([-v[1], v[0]])
 
@@ -513,7 +492,7 @@ def _cross2(a: np.ndarray, b: np.ndarray) -> float:
 
 def five_bar_inverse(fb: object, path: PathSamples, working_mode: str = "-+",
                      limits: dict[str, tuple[QuantityLike, QuantityLike]] | None = None,
-                     singular_tol: float = 1e-3) -> FiveBarJointMotion:
+                     singular_tol: float = 1e-3) -> JointMotion:
     """Inverse kinematics of a :class:`~mechverify.mechanisms.fivebar.FiveBar` along a path: the motor angles at
     every sample, their rates from A P' = B theta' (the five-bar's velocity equation, ``jacobian_parts``) and
     accelerations from its time derivative A' P' + A P'' = B' theta' + B theta'' (exact in the path's derivatives).
@@ -554,10 +533,10 @@ def five_bar_inverse(fb: object, path: PathSamples, working_mode: str = "-+",
     unknown = set(lim) - {"theta_left", "theta_right"}
     if unknown:
         raise InputError(f"{name}: unknown joint {sorted(unknown)[0]!r} in limits (theta_left, theta_right)")
-    return FiveBarJointMotion(path.t, q[:, 0], q[:, 1], dq[:, 0], dq[:, 1], ddq[:, 0], ddq[:, 1])
+    return JointMotion(path.t, q[:, 0], q[:, 1], dq[:, 0], dq[:, 1], ddq[:, 0], ddq[:, 1])
 
 
-def five_bar_payload_torques(fb: object, path: PathSamples, motion: FiveBarJointMotion, payload: QuantityLike,
+def five_bar_payload_torques(fb: object, path: PathSamples, motion: JointMotion, payload: QuantityLike,
                              gravity: QuantityLike = "9.80665 m/s^2", working_mode: str = "-+"
                              ) -> tuple[np.ndarray, np.ndarray]:
     """Motor torques (left, right) [N m] that move a point ``payload`` at the tool along the path against gravity
@@ -571,3 +550,8 @@ def five_bar_payload_torques(fb: object, path: PathSamples, motion: FiveBarJoint
         tl, tr = fb.holding_torques(pose, F)  # type: ignore[attr-defined]
         out[i] = tl.m_as("N*m"), tr.m_as("N*m")
     return out[:, 0], out[:, 1]
+
+
+# Former names (one JointMotion for the RP, RR and five-bar arms; they were three identical classes), deprecated.
+__getattr__ = renamed(__name__, {"RPJointMotion": "JointMotion", "RRJointMotion": "JointMotion",
+                                 "FiveBarJointMotion": "JointMotion"})
