@@ -235,3 +235,16 @@ def test_cantilever_on_a_fixed_support_and_non_rotating_fatigue() -> None:
     r = cs.check_shaft_fatigue(sh, a)
     Sut = M.require("ultimate_strength").m_as("Pa")
     assert r.safety_factor == pytest.approx(Sut / (32 * P * L / (math.pi * d**3)), rel=1e-9)
+
+
+def test_unnamed_features_are_labelled_in_words() -> None:
+    """An unnamed feature's section is "shoulder at 300 mm" (was "shoulder@300"); a named one keeps its name, and
+    the feature's own errors name it the same way."""
+    feats = (Feature("shoulder", 0.3, radius=0.002), Feature("cross_hole", 0.15, Kt=2.0, Kts=1.5),
+             Feature("groove", 0.32, radius=0.0005, depth=0.0005, name="ring groove"))
+    sh = Shaft("f", (Segment(0.3, 0.03), Segment(0.4, 0.04)), M, (Support("A", 0.05), Support("B", 0.65)),
+               (force_load("P", 0.4, (0, 0, -2000.0)),), feats)
+    names = [s["name"] for s in cs.check_shaft_fatigue(sh, analyse(sh)).details["sections"]]
+    assert names[:3] == ["shoulder at 300 mm", "cross hole at 150 mm", "ring groove"]
+    with pytest.raises(InputError, match="^feature shoulder at 300 mm: radius must not be negative$"):
+        Feature("shoulder", 0.3, radius=-0.001)

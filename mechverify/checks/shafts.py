@@ -112,7 +112,7 @@ def section_stresses(shaft: s.Shaft, a: ShaftAnalysis) -> list[SectionStress]:
     for f in shaft.features:
         Kt, Kts, src = shaft.stress_concentration(f)
         D, bore = shaft.net_diameter(f)
-        out.append(_section(shaft, a, f.name or f"{f.kind}@{f.x * 1e3:g}", f.x, D, bore, Kt, Kts,
+        out.append(_section(shaft, a, f.label, f.x, D, bore, Kt, Kts,
                             shaft.notch_radius(f), src))
     xm, _ = a.max_moment()
     if not any(abs(f.x - xm) < 1e-9 for f in shaft.features):

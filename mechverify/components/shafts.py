@@ -89,17 +89,22 @@ class Feature:
     Kts: float | None = None
     name: str = ""
 
+    @property
+    def label(self) -> str:
+        """The name, or for an unnamed feature its kind and place in words (``"shoulder at 120 mm"``)."""
+        return self.name or f"{self.kind.replace('_', ' ')} at {self.x * 1e3:g} mm"
+
     def __post_init__(self) -> None:
         if self.kind not in ("shoulder", "keyseat", "groove", "cross_hole", "press_fit"):
-            raise InputError(f"feature {self.name}: kind must be shoulder, keyseat, groove, cross_hole or press_fit, "
+            raise InputError(f"feature {self.label}: kind must be shoulder, keyseat, groove, cross_hole or press_fit, "
                              f"got {self.kind!r}")
         if self.kind == "keyseat" and self.keyseat not in KEYSEAT_KINDS:
-            raise InputError(f"feature {self.name}: keyseat must be one of {KEYSEAT_KINDS}, got {self.keyseat!r}")
+            raise InputError(f"feature {self.label}: keyseat must be one of {KEYSEAT_KINDS}, got {self.keyseat!r}")
         if self.kind in ("cross_hole", "press_fit") and self.Kt is None:
-            raise InputError(f"feature {self.name}: a {self.kind} needs Kt (and Kts): no fit for it is built in")
+            raise InputError(f"feature {self.label}: a {self.kind} needs Kt (and Kts): no fit for it is built in")
         for k in ("radius", "depth", "width", "length"):
             if getattr(self, k) < 0:
-                raise InputError(f"feature {self.name}: {k} must not be negative")
+                raise InputError(f"feature {self.label}: {k} must not be negative")
 
 
 @dataclass(frozen=True)
@@ -331,7 +336,7 @@ class Shaft:
     def data_warnings(self, f: Feature) -> tuple[str, ...]:
         """The caveat of a Table 7-1 row the feature's Kt comes from when that row is flagged unverified."""
         key = self._kt(f)[3]
-        return table_caveat("kt_first_iteration", key, f"Kt of {f.name or f.kind}") if key else ()
+        return table_caveat("kt_first_iteration", key, f"Kt of {f.label}") if key else ()
 
     def _kt(self, f: Feature) -> tuple[float, float, str, str | None]:
         t71 = data()["kt_first_iteration"]
