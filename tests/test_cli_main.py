@@ -183,7 +183,19 @@ def test_diff_outside_a_repository(tmp_path, capsys):
             os.environ.pop("GIT_CEILING_DIRECTORIES")
         else:
             os.environ["GIT_CEILING_DIRECTORIES"] = env_ceiling
-    assert "not inside a git repository" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert f"--base-ref: {p.resolve()} is not inside a git repository" in err
+    assert "rev-parse" not in err and "Command" not in err and "Traceback" not in err  # no raw git command
+
+
+def test_diff_base_ref_without_git(tmp_path, capsys, monkeypatch):
+    """No git on the PATH: a named error that says what --base-ref needs, not a FileNotFoundError."""
+    p = tmp_path / "d.toml"
+    p.write_text(textwrap.dedent(DESIGN.format(area=20, rev="A")))
+    monkeypatch.setenv("PATH", str(tmp_path / "empty"))
+    assert main(["diff", str(p), "--base-ref", "HEAD"]) == 2
+    err = capsys.readouterr().err
+    assert "no git command was found" in err and "Traceback" not in err
 
 
 def test_demo_prints_every_design_of_its_report_and_one_verdict(tmp_path, capsys):

@@ -38,8 +38,12 @@ def design_at_ref(path: Path, ref: str, tmp: Path) -> Path:
     try:
         top = Path(subprocess.run(["git", "-C", str(path.parent), "rev-parse", "--show-toplevel"], check=True,
                                   capture_output=True, text=True).stdout.strip()).resolve()
-    except (subprocess.CalledProcessError, FileNotFoundError) as exc:
-        raise Invalid(f"--base-ref: {path} is not inside a git repository ({exc})") from None
+    except FileNotFoundError:
+        raise Invalid("--base-ref: reads the earlier design from git, and no git command was found "
+                      "(install git, or compare two files: mechverify diff BASE HEAD)") from None
+    except subprocess.CalledProcessError:
+        raise Invalid(f"--base-ref: {path} is not inside a git repository (compare two files instead: "
+                      f"mechverify diff BASE HEAD)") from None
     rel_dir = path.parent.relative_to(top)
     archive = subprocess.run(["git", "-C", str(top), "archive", "--format=tar", ref, "--", str(rel_dir) or "."],
                              capture_output=True)
