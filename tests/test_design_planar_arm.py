@@ -229,3 +229,25 @@ def test_five_bar_arm_feeds_its_drive(tmp_path):
     assert g.demand.m_as("N*m") == pytest.approx(float(np.max(np.abs(arm.efforts[0]))), rel=1e-3)
     with pytest.raises(DesignFileError, match=r"sample \d+ .*theta_right"):
         load(_write(tmp_path, FIVE_BAR.replace('payload = "0.5 kg"', 'payload = "0.5 kg"\nq2_max = "60 deg"')))
+
+
+def test_a_drive_on_a_joint_motion_needs_no_load_of_its_own(tmp_path):
+    """A drive on a joint_motion profile without ``inertia`` (revolute joint) or ``mass`` (prismatic joint) has a
+    zero load of its own: the joint's effort and inertia come with the profile. The RP robot example without its
+    ``inertia = "0 kg*m^2"`` and ``mass = "0 kg"`` lines gives the same results, number for number."""
+    example = Path(__file__).resolve().parents[1] / "examples" / "rp_robot" / "design.toml"
+    text = example.read_text(encoding="utf-8")
+    bare = text.replace('inertia = "0 kg*m^2"\n', "").replace('mass = "0 kg"  ', "# ")
+    assert bare.count("inertia =") == text.count("inertia =") - 2 and 'mass = "0 kg"' not in bare
+    rows = [[(r.component, r.check, r.verdict, r.demand, r.capacity, r.safety_factor) for r in load(p).verify()]
+            for p in (example, _write(tmp_path, bare))]
+    assert len(rows[0]) > 10 and rows[0] == rows[1]
+    assert {c for c, *_ in rows[0]} >= {"revolute_maxon", "revolute_gearmotor", "prismatic_maxon", "prismatic_pololu"}
+
+
+def test_a_drive_on_a_plain_profile_still_needs_its_load(tmp_path):
+    """Only a joint_motion profile brings a load: a drive on a dwell without mass or inertia is still an error."""
+    text = ARM.format(reach="50 cm").replace('inertia = "arm.q1_inertia"\n', "")
+    with pytest.raises(DesignFileError) as info:
+        load(_write(tmp_path, text))
+    assert any(p == "components.constant.mass" and "missing" in m for p, m in info.value.errors), info.value.errors

@@ -49,6 +49,19 @@ def demands(drive: Drive, ctx: Any) -> list[CaseDemands]:
     return out
 
 
+def _joint_load(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Mapping[str, Any]:
+    """``p`` with a zero load (``inertia`` 0 on a revolute joint, ``mass`` 0 on a prismatic one) when the drive's
+    profile is a ``joint_motion`` and neither is given: the joint's effort along the path (the arm's inertia,
+    Coriolis, centripetal and gravity terms) and its inertia come with the profile, and the drive's own load only
+    adds to them (``DriveTrain.demand``: effort = load + joint effort, inertia = load + joint inertia)."""
+    if "mass" in p or "inertia" in p:
+        return p
+    prof = ctx.get("profile_objects", {}).get(p.get("profile"))
+    if getattr(type(prof), "joint_effort", None) is None:  # not a mechanism's joint motion
+        return p
+    return {**p, **({"inertia": Q(0.0, "kg*m**2")} if prof.kind == "angle" else {"mass": Q(0.0, "kg")})}
+
+
 def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
     errors: list[str] = []
 
@@ -59,10 +72,12 @@ def _build_drive(p: Mapping[str, Any], ctx: Mapping[str, Any]) -> Drive:
             errors.append(str(exc))
             return None
 
+    with_joint = attempt(lambda: _joint_load(p, ctx))  # None: the profile's arm is invalid (said once, here)
+    p = p if with_joint is None else with_joint
     m = attempt(lambda: parse_motor(p))
     g = attempt(lambda: parse_gearhead(p))
     stages = attempt(lambda: parse_stages(list(p.get("transmission", [])), ctx))
-    kind = attempt(lambda: load_kind(p))
+    kind = None if with_joint is None else attempt(lambda: load_kind(p))  # not again as a missing mass
     limit = p.get("inertia_ratio_limit")
     if limit is not None and not limit > 0:
         errors.append(f"inertia_ratio_limit: must be positive, got {limit!r}")
@@ -140,12 +155,13 @@ DRIVE = REGISTRY.register(ComponentType(
               item="table"),
         Field("profile", "ref", "the move (a name in [profiles])", required=True, ref="profiles"),
         Field("cycle_time", "time", "duty cycle for the RMS torque (standstill after the move included)"),
-        Field("mass", "mass", "linear load: moving mass"),
+        Field("mass", "mass", "linear load: moving mass (default 0 on a prismatic joint's joint_motion profile)"),
         Field("incline", "angle", "linear load: axis angle above horizontal (90 deg = vertical lift, +x upward)"),
         Field("friction_coefficient", "dimensionless", "linear load: guide friction coefficient (mu·m·g·cos)"),
         Field("friction_force", "force", "linear load: constant friction force against the motion"),
         Field("external_force", "force", "linear load: constant force against positive motion"),
-        Field("inertia", "inertia", "rotary load: inertia about the output axis"),
+        Field("inertia", "inertia", "rotary load: inertia about the output axis (default 0 on a revolute joint's "
+                                    "joint_motion profile)"),
         Field("gravity_torque", "torque", "rotary load: unbalance m·g·r (torque = gravity_torque·cos(x + phase))"),
         Field("gravity_phase", "angle", "rotary load: arm angle above horizontal at the profile's start"),
         Field("friction_torque", "torque", "rotary load: constant friction torque against the motion"),
