@@ -359,10 +359,36 @@ def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, floa
         t1 = f.depth or std["t1"]
         h = std["h"] if not f.width else std["h"] * b / std["b"]
         if not f.length > 0:
-            raise InputError(f"shaft {shaft.name}: keyseat {f.name}: give the key length for the key checks")
+            raise InputError(f"shaft {shaft.name}: keyseat {f.label}: give the key length for the key checks")
         T = a.at(f.x)["T"]
         tau, p = s.key_stresses(T, d, b, h, t1, f.length)
         out.append((f, d, b, h, tau, p, T, t1, caveat))
+    return out
+
+
+def _key_results(check_name: str, shaft: s.Shaft, a: ShaftAnalysis, *, crushing: bool, key_yield: float | None,
+                 required_sf: float, load_case: str) -> list[CheckResult]:
+    """One result per keyseat: shear tau = 2T/(d b l) against 0.577 Sy, or crushing p = 2T/(d (h - t1) l) against
+    Sy (Shigley 10th ed., Sec. 7-7)."""
+    Sy = key_yield or _strengths(shaft)[1]
+    out = []
+    for f, d, b, h, tau, p, T, t1, caveat in _keys(shaft, a):
+        if crushing:  # the key's part in the hub, h - t1, bears the force
+            what, sym, stress, allow, allow_tex = "crushing", "p", p, Sy, "S_y"
+            w, w_tex, (w_in, w_in_value) = h - t1, "(h - t_1)", ("h", h)
+        else:  # the key's width b shears
+            what, sym, stress, allow, allow_tex = "shear", r"\tau", tau, 0.577 * Sy, r"0.577\,S_y"
+            w, w_tex, (w_in, w_in_value) = b, "b", ("b", b)
+        out.append(CheckResult(
+            check=check_name, component=shaft.name, demand=_MPa(stress), capacity=_MPa(allow),
+            required_sf=required_sf, title=f"Key {what} at {f.label}",
+            formula=rf"{sym} = \frac{{2T}}{{d\,{w_tex}\,l}} \le {allow_tex}",
+            substituted=(rf"{sym} = \frac{{2\cdot {tex(Q(T, 'N*m'))}}}{{{tex(Q(d * 1e3, 'mm'))}\cdot "
+                         rf"{tex(Q(w * 1e3, 'mm'))}\cdot {tex(Q(f.length * 1e3, 'mm'))}}} = "
+                         rf"{tex(Q(stress / 1e6, 'MPa'))}"),
+            source=ref("shigley10", "Sec. 7-7"),
+            inputs={"d": Q(d * 1e3, "mm"), w_in: Q(w_in_value * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
+            warnings=caveat, load_case=load_case))
     return out
 
 
@@ -374,17 +400,8 @@ def _keys(shaft: s.Shaft, a: ShaftAnalysis) -> list[tuple[s.Feature, float, floa
 def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float | None = None,
                           required_sf: float = 2.0, load_case: str = "") -> list[CheckResult]:
     """tau = 2T/(d b l) against 0.577 Sy per keyseat."""
-    Sy = key_yield or _strengths(shaft)[1]
-    return [CheckResult(check="shaft_key_shear", component=shaft.name, demand=_MPa(tau), capacity=_MPa(0.577 * Sy),
-                        required_sf=required_sf, title=f"Key shear at {f.name or 'keyseat'}",
-                        formula=r"\tau = \frac{2T}{d\,b\,l} \le 0.577\,S_y",
-                        substituted=(rf"\tau = \frac{{2\cdot {tex(Q(T, 'N*m'))}}}{{{tex(Q(d * 1e3, 'mm'))}\cdot "
-                                     rf"{tex(Q(b * 1e3, 'mm'))}\cdot {tex(Q(f.length * 1e3, 'mm'))}}} = "
-                                     rf"{tex(Q(tau / 1e6, 'MPa'))}"),
-                        source=ref("shigley10", "Sec. 7-7"),
-                        inputs={"d": Q(d * 1e3, "mm"), "b": Q(b * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
-                        warnings=caveat, load_case=load_case)
-            for f, d, b, h, tau, p, T, t1, caveat in _keys(shaft, a)]
+    return _key_results("shaft_key_shear", shaft, a, crushing=False, key_yield=key_yield, required_sf=required_sf,
+                        load_case=load_case)
 
 
 @check("shaft_key_crushing", title="Parallel key crushing (bearing)", sf_kind="static",
@@ -395,14 +412,5 @@ def check_shaft_key_shear(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float 
 def check_shaft_key_crushing(shaft: s.Shaft, a: ShaftAnalysis, *, key_yield: float | None = None,
                              required_sf: float = 2.0, load_case: str = "") -> list[CheckResult]:
     """p = 2T/(d (h - t1) l) against Sy per keyseat."""
-    Sy = key_yield or _strengths(shaft)[1]
-    return [CheckResult(check="shaft_key_crushing", component=shaft.name, demand=_MPa(p), capacity=_MPa(Sy),
-                        required_sf=required_sf, title=f"Key crushing at {f.name or 'keyseat'}",
-                        formula=r"p = \frac{2T}{d\,(h - t_1)\,l} \le S_y",
-                        substituted=(rf"p = \frac{{2\cdot {tex(Q(T, 'N*m'))}}}{{{tex(Q(d * 1e3, 'mm'))}\cdot "
-                                     rf"{tex(Q((h - t1) * 1e3, 'mm'))}\cdot {tex(Q(f.length * 1e3, 'mm'))}}} = "
-                                     rf"{tex(Q(p / 1e6, 'MPa'))}"),
-                        source=ref("shigley10", "Sec. 7-7"),
-                        inputs={"d": Q(d * 1e3, "mm"), "h": Q(h * 1e3, "mm"), "l": Q(f.length * 1e3, "mm")},
-                        warnings=caveat, load_case=load_case)
-            for f, d, b, h, tau, p, T, t1, caveat in _keys(shaft, a)]
+    return _key_results("shaft_key_crushing", shaft, a, crushing=True, key_yield=key_yield, required_sf=required_sf,
+                        load_case=load_case)
