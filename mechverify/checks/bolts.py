@@ -197,16 +197,7 @@ def _pressure_note(j: BoltedJoint, side: str) -> tuple[float | None, str]:
 def check_bolt_surface_pressure_head(joint: BoltedJoint, a: JointAnalysis, *, required_sf: float = 1.0,
                                      load_case: str = "") -> CheckResult:
     """p under the head against p_G of the first clamped part (VDI 2230 R10)."""
-    pG, note = _pressure_note(joint, "head")
-    if pG is None:
-        raise ValueError(f"{joint.name}: no p_G or yield strength for {joint.parts[0].name}")
-    return CheckResult(
-        check="bolt_surface_pressure_head", component=joint.name, demand=_MPa(a.p_head), capacity=_MPa(pG),
-        required_sf=required_sf, title=f"Surface pressure under the head ({joint.parts[0].name})",
-        formula=r"p_{max} = \frac{\max(F_{M,max},\ F_{V,max} + \Phi_n F_A)}{\frac{\pi}{4}(d_W^2 - d_h^2)} \le p_G",
-        source=ref(VDI, "R10"), inputs=_inputs(joint), notes=(note,), load_case=load_case,
-        substituted=_pressure_substituted(a, joint.d_W_eff, joint.d_h_eff, a.p_head),
-        details=_diagram(joint, a))
+    return _surface_pressure(joint, a, "head", required_sf, load_case)
 
 
 @check("bolt_surface_pressure_nut", title="Surface pressure under the nut", sf_kind="pressure",
@@ -218,17 +209,29 @@ def check_bolt_surface_pressure_nut(joint: BoltedJoint, a: JointAnalysis, *, req
     """p under the nut against p_G of the last clamped part (VDI 2230 R10); through-bolted joints."""
     if a.p_nut is None:
         raise ValueError(f"{joint.name}: a tapped joint has no nut")
-    pG, note = _pressure_note(joint, "nut")
+    return _surface_pressure(joint, a, "nut", required_sf, load_case)
+
+
+def _surface_pressure(joint: BoltedJoint, a: JointAnalysis, side: str, required_sf: float,
+                      load_case: str) -> CheckResult:
+    """The pressure under the head (first clamped part, d_W) or the nut (last clamped part, the nut's d_w) against
+    that part's p_G (VDI 2230 R10)."""
+    pG, note = _pressure_note(joint, side)
+    part = joint.parts[0] if side == "head" else joint.parts[-1]
     if pG is None:
-        raise ValueError(f"{joint.name}: no p_G or yield strength for {joint.parts[-1].name}")
+        raise ValueError(f"{joint.name}: no p_G or yield strength for {part.name}")
+    if side == "head":
+        p, d_w, d_w_tex = a.p_head, joint.d_W_eff, "d_W"
+    else:
+        p, d_w, d_w_tex = a.p_nut, joint.d_W_nut or nut_dimensions(joint.thread)["dw"], "d_{w,nut}"
+    assert p is not None  # a tapped joint's nut is refused by check_bolt_surface_pressure_nut
     return CheckResult(
-        check="bolt_surface_pressure_nut", component=joint.name, demand=_MPa(a.p_nut), capacity=_MPa(pG),
-        required_sf=required_sf, title=f"Surface pressure under the nut ({joint.parts[-1].name})",
-        formula=r"p_{max} = \frac{\max(F_{M,max},\ F_{V,max} + \Phi_n F_A)}{\frac{\pi}{4}(d_{w,nut}^2 - d_h^2)} "
-                r"\le p_G",
+        check=f"bolt_surface_pressure_{side}", component=joint.name, demand=_MPa(p), capacity=_MPa(pG),
+        required_sf=required_sf, title=f"Surface pressure under the {side} ({part.name})",
+        formula=(r"p_{max} = \frac{\max(F_{M,max},\ F_{V,max} + \Phi_n F_A)}"
+                 rf"{{\frac{{\pi}}{{4}}({d_w_tex}^2 - d_h^2)}} \le p_G"),
         source=ref(VDI, "R10"), inputs=_inputs(joint), notes=(note,), load_case=load_case,
-        substituted=_pressure_substituted(a, joint.d_W_nut or nut_dimensions(joint.thread)["dw"], joint.d_h_eff,
-                                          a.p_nut),
+        substituted=_pressure_substituted(a, d_w, joint.d_h_eff, p),
         details=_diagram(joint, a))
 
 
