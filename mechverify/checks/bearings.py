@@ -120,7 +120,7 @@ def check_bearing_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed:
                "(see bearing_modified_life)"),
         warnings=_axial_warning(b, Fa), load_case=load_case,
         details={"P": P, "X": eq.X, "Y": eq.Y, "e": eq.e, "L_rev": L},
-        substituted=_life_substituted(a1, b.C, P, p, n, Lh))
+        substituted=lambda: _life_substituted(a1, b.C, P, p, n, Lh))
 
 
 @check("bearing_static_safety", title="Bearing static safety (s0)", sf_kind="bearing",
@@ -143,7 +143,8 @@ def check_bearing_static_safety(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLik
         inputs={"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"), "C0": b.C0},
         notes=(f"required s0 = {required_s0:g} (SKF 17000 EN guideline: >= 1 normal, 1.5 shock, 2 quiet running)",),
         warnings=_axial_warning(b, Fa), load_case=load_case,
-        substituted=(rf"s_0 = \frac{{{tex(b.C0, 'kN')}}}{{{tex(P0, 'kN')}}} = {tex(s0)}" if s0 is not None else ""))
+        substituted=lambda: (
+            rf"s_0 = \frac{{{tex(b.C0, 'kN')}}}{{{tex(P0, 'kN')}}} = {tex(s0)}" if s0 is not None else ""))
 
 
 SEAL_SPEED_FRACTION = 0.25  # contact-seal speed caveat above this fraction of the open bearing's limiting speed
@@ -173,7 +174,7 @@ def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = 
         check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
         title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
         notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case,
-        substituted=(rf"S = \frac{{{tex(b.limiting_speed, 'rpm')}}}{{{tex(abs(n), 'rpm')}}} = "
+        substituted=lambda: (rf"S = \frac{{{tex(b.limiting_speed, 'rpm')}}}{{{tex(abs(n), 'rpm')}}} = "
                      rf"{tex(b.limiting_speed.m_as('rpm') / abs(n.m_as('rpm')))}" if n.magnitude != 0 else ""))
 
 
@@ -229,7 +230,7 @@ def check_bearing_modified_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLik
         notes=tuple(notes), warnings=(*m.warnings, *_axial_warning(b, Fa)), load_case=load_case,
         details={"kappa": m.kappa, "a_iso": m.a_iso, "a1": m.a1, "eC": m.eC, "nu1": m.nu1, "L10h": life_hours(
             m.L10_rev, n)},
-        substituted=_life_substituted(m.a1, b.C, m.P, m.exponent,
+        substituted=lambda: _life_substituted(m.a1, b.C, m.P, m.exponent,
                                       Q(abs(to_si(n, "angular_velocity", "speed")), "rad/s").to("rpm"), Lh, m.a_iso))
 
 
@@ -256,7 +257,7 @@ def check_bushing_pressure(bush: PlainBushing, F: QuantityLike, *, load_case: st
         source=BUSHING,
         inputs={"F": Q(to_si(F, "force", "F"), "N"), "d": bush.d, "L": bush.length},
         notes=_bushing_notes(bush), load_case=load_case,
-        substituted=_pressure_substituted(bush, F))
+        substituted=lambda: _pressure_substituted(bush, F))
 
 
 def _pressure_substituted(bush: PlainBushing, F: Any) -> str:
@@ -277,7 +278,7 @@ def check_bushing_velocity(bush: PlainBushing, v: QuantityLike, *, load_case: st
         title="Bushing sliding speed", formula=r"v \le v_{max}",
         source=BUSHING,
         inputs={"v": vv}, notes=_bushing_notes(bush), load_case=load_case,
-        substituted=(rf"S = \frac{{{tex(bush.limit('v_max'), 'm/s')}}}{{{tex(vv, 'm/s')}}} = "
+        substituted=lambda: (rf"S = \frac{{{tex(bush.limit('v_max'), 'm/s')}}}{{{tex(vv, 'm/s')}}} = "
                      rf"{tex(bush.limit('v_max').m_as('m/s') / vv.m_as('m/s'))}" if vv.magnitude > 0 else ""))
 
 
@@ -292,8 +293,9 @@ def check_bushing_pv(bush: PlainBushing, F: Any, v: Any, *, load_case: str = "")
         title="Bushing pv", formula=r"p\,v = \frac{F}{d L} v \le (pv)_{max}",
         source=BUSHING,
         inputs=_bushing_inputs(bush, F, v), notes=_bushing_notes(bush), load_case=load_case,
-        substituted=(rf"pv = {tex(bush.pressure(F), 'MPa')}\cdot {tex(Q(abs(to_si(v, 'velocity', 'v')), 'm/s'), 'm/s')}"
-                     rf" = {tex(bush.pv(F, v), 'MPa*m/s')}"))
+        substituted=lambda: (
+            rf"pv = {tex(bush.pressure(F), 'MPa')}\cdot {tex(Q(abs(to_si(v, 'velocity', 'v')), 'm/s'), 'm/s')}"
+            rf" = {tex(bush.pv(F, v), 'MPa*m/s')}"))
 
 
 __all__ = ["check_bearing_life", "check_bearing_modified_life", "check_bearing_static_safety", "check_bearing_speed",

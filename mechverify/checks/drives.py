@@ -17,7 +17,6 @@ design file's ``drive`` component does:
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
@@ -33,12 +32,20 @@ from mechverify.units import Q, to_si
 
 
 def with_plot_data(r: CheckResult, dem: TorqueDemand, drive: Drive, prof: Any, margin: float) -> CheckResult:
-    """Add the RMS torque, continuous rating and the profile samples to the details for the report plots."""
-    det = dict(r.details)
+    """Add the RMS torque, continuous rating and the profile samples to the details for the report plots
+    (computed when the details are first read: a study sample never reads them)."""
+    base = r.details
+    return r.replace(details=lambda: _plot_data(base, r.check, dem, drive, prof, margin))
+
+
+def _plot_data(base: Mapping[str, Any], check: str, dem: TorqueDemand, drive: Drive, prof: Any,
+               margin: float) -> dict[str, Any]:
+    """The details of :func:`with_plot_data`: ``base`` (the check's own) and the drive's figure data."""
+    det = dict(base)
     det["rms_torque"] = dem.rms_torque
-    if r.check == "motor_peak_torque":
+    if check == "motor_peak_torque":
         det["margin"] = margin
-    elif r.check == "motor_supply_voltage" and margin > 0:  # the line the check allows: at U/SF
+    elif check == "motor_supply_voltage" and margin > 0:  # the line the check allows: at U/SF
         U = to_si(drive.supply_voltage, "voltage", "supply_voltage") / margin
         w, T = drive.motor.torque_speed_curve(Q(U, "V"), n=50)
         det["margin_speed"], det["margin_torque"] = w.to("rpm"), T
@@ -55,7 +62,7 @@ def with_plot_data(r: CheckResult, dem: TorqueDemand, drive: Drive, prof: Any, m
     det["profile_acceleration"] = Q(s.a, base[2]).to(u[2])
     T = np.abs(dem.motor_torque)
     i = int(np.argmax(T))
-    if r.check == "motor_peak_torque":  # the point of highest utilisation T/T_avail(omega), as the check found it
+    if check == "motor_peak_torque":  # the point of highest utilisation T/T_avail(omega), as the check found it
         U = None if drive.supply_voltage is None else to_si(drive.supply_voltage, "voltage", "supply_voltage")
         avail = drive.motor.available_torque_si(dem.motor_speed, U)
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -64,7 +71,7 @@ def with_plot_data(r: CheckResult, dem: TorqueDemand, drive: Drive, prof: Any, m
         det["governing_speed"] = Q(abs(float(dem.motor_speed[i])), "rad/s").to("rpm")
         det["governing_torque"] = Q(float(T[i]), "N*m")
     det["governing_time"] = Q(float(dem.t[i]), "s")
-    return dataclasses.replace(r, details=det)
+    return det
 
 
 def _or_none(fn: Callable[[], CheckResult]) -> CheckResult | None:
@@ -83,7 +90,7 @@ def _peak(d: Drive, dem: TorqueDemand, prof: Any, sf: float, asked: bool) -> Che
     r = mc.check_motor_peak_torque(dem, margin=sf, supply_voltage=d.supply_voltage)
     missing = d.missing_ratings()
     if missing:
-        r = dataclasses.replace(r, notes=(*r.notes, "not checked, rating missing: " + "; ".join(missing)))
+        r = r.replace(notes=(*r.notes, "not checked, rating missing: " + "; ".join(missing)))
     return with_plot_data(r, dem, d, prof, sf)
 
 
@@ -179,13 +186,13 @@ def run_drive_check(fn: Callable[..., Any], drive: Drive, demands: Sequence[Case
                 continue
             if len(variants) > 1:
                 others = [lab for lab, _ in variants if lab != label]
-                r = dataclasses.replace(r, notes=(*r.notes, f"screw friction {label} governs (also evaluated: "
-                                                            f"{', '.join(others)})"))
+                r = r.replace(notes=(*r.notes, f"screw friction {label} governs (also evaluated: "
+                                              f"{', '.join(others)})"))
             found.append(r)
         if found:
             gov = max(found, key=lambda r: r.utilisation)
             if case:
-                gov = dataclasses.replace(gov, load_case=f"{case} ({gov.load_case})")
+                gov = gov.replace(load_case=f"{case} ({gov.load_case})")
             results.append(gov)
     return results
 

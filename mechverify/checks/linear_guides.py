@@ -70,8 +70,10 @@ def check_linear_guide_life(g: LinearGuide, P: QuantityLike, required_travel: Qu
     if km_per_hour:
         notes.append(f"{L.m_as('km') / km_per_hour:.4g} h at {km_per_hour:.4g} km of travel per hour")
     pt = "3" if p == 3 else r"\frac{10}{3}"
-    sub = (rf"L = \left({tex(f)}\cdot \frac{{{tex(g.C, 'kN')}}}{{{tex(Pq, 'kN')}}}\right)^{{{pt}}}\cdot "
-           rf"{tex(g.rating_distance, 'km')} = {tex(L, 'km')}") if Pq.magnitude > 0 else ""
+
+    def sub() -> str:
+        return (rf"L = \left({tex(f)}\cdot \frac{{{tex(g.C, 'kN')}}}{{{tex(Pq, 'kN')}}}\right)^{{{pt}}}\cdot "
+                rf"{tex(g.rating_distance, 'km')} = {tex(L, 'km')}") if Pq.magnitude > 0 else ""
     return CheckResult(
         check="linear_guide_life", component=g.name, demand=req, capacity=L, title="Linear guide rated life",
         formula=r"L = \left(\frac{f_H f_T f_C}{f_W}\frac{C}{P}\right)^p L_C", source=GUIDE_LIFE,
@@ -93,8 +95,9 @@ def check_linear_guide_static_safety(g: LinearGuide, P0: QuantityLike, *, requir
         source=GUIDE_LIFE, inputs={"P0": P, "C0": g.C0},
         notes=(f"required fS = {required_fs:g} (THK: 1..2 normal, 2..3 with vibration or shock)",),
         load_case=load_case,
-        substituted=(rf"f_S = \frac{{{tex(g.C0, 'kN')}}}{{{tex(P, 'kN')}}} = {tex(g.C0.m_as('N') / P.m_as('N'))}"
-                     if P.magnitude > 0 else ""))
+        substituted=lambda: (
+            rf"f_S = \frac{{{tex(g.C0, 'kN')}}}{{{tex(P, 'kN')}}} = {tex(g.C0.m_as('N') / P.m_as('N'))}"
+            if P.magnitude > 0 else ""))
 
 
 @dataclass(frozen=True)
@@ -147,7 +150,8 @@ def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str =
 
     def term(v: float) -> str:
         return f"1 {'+' if v >= 0 else '-'} {tex(abs(v))}"
-    sub = rf"F = {tex(Rq, 'N')}\cdot \frac{{{term(x)}}}{{{term(y)}}} = {tex(s.F, 'N')}"
+    def sub() -> str:
+        return rf"F = {tex(Rq, 'N')}\cdot \frac{{{term(x)}}}{{{term(y)}}} = {tex(s.F, 'N')}"
     return CheckResult(
         check="carriage_binding", component=c.name, demand=s.F, capacity=c.available_force.to("N"),
         title="Sliding carriage drive force (binding)",

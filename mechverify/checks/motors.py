@@ -133,8 +133,8 @@ def check_motor_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: 
         formula=r"|T(t)| \le T_{avail}(\omega(t)) / S_f",
         source=_SRC_MAXON if m.kind == "dc" else _SRC_ORIENTAL,
         inputs={"peak torque": demand.peak_torque, "peak speed": demand.peak_speed.to("rpm")},
-        notes=tuple(notes), warnings=tuple(warnings), load_case=_case(demand, i), details=_plot(demand, m, U),
-        substituted=_sf_line(from_si(float(avail[i]), "torque"), from_si(float(T[i]), "torque"), "N*m"))
+        notes=tuple(notes), warnings=tuple(warnings), load_case=_case(demand, i), details=lambda: _plot(demand, m, U),
+        substituted=lambda: _sf_line(from_si(float(avail[i]), "torque"), from_si(float(T[i]), "torque"), "N*m"))
 
 
 @check("motor_rms_torque", title="Motor RMS torque", sf_kind="motor",
@@ -167,8 +167,9 @@ def check_motor_rms_torque(demand: TorqueDemand, motor: Any = None, *, component
         check="motor_rms_torque", component=component or m.name, demand=Trms, capacity=cap,
         title="RMS torque within the continuous torque", formula=r"T_{rms} = \sqrt{\frac{1}{t_c}\int T^2\,dt} \le T_N",
         source=_SRC_MAXON, inputs={"cycle time": Q(demand.cycle_time, "s")}, notes=tuple(notes),
-        warnings=tuple(warnings), load_case=f"whole cycle (peak at {_case(demand, i)})", details=_plot(demand, m),
-        substituted=_sf_line(cap, Trms, "N*m"))
+        warnings=tuple(warnings), load_case=f"whole cycle (peak at {_case(demand, i)})",
+        details=lambda: _plot(demand, m),
+        substituted=lambda: _sf_line(cap, Trms, "N*m"))
 
 
 @check("motor_max_speed", title="Motor speed", sf_kind="limit",
@@ -189,8 +190,8 @@ def check_motor_max_speed(demand: TorqueDemand, motor: Any = None, *, component:
         capacity=cap.to("rpm"), title="Motor speed within its limit", formula=r"\max|\omega| \le \omega_{max}",
         source=_SRC_MAXON, notes=("capacity: " + ("limit speed" if m.kind == "dc" and m.max_speed is not None
                                                   else "no-load speed / last curve point"),),
-        load_case=_case(demand, i), details=_plot(demand, m),
-        substituted=_sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
+        load_case=_case(demand, i), details=lambda: _plot(demand, m),
+        substituted=lambda: _sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
 
 
 def _gearheads(demand: TorqueDemand, gearhead: Any) -> list[Any]:
@@ -223,8 +224,8 @@ def check_gearhead_continuous_torque(demand: TorqueDemand, gearhead: Any = None,
         inputs={"ratio": Q(g.ratio), "efficiency": Q(g.efficiency)},
         notes=("output torque includes the load's inertia, gravity and friction, reflected through the stages "
                "beyond the gearhead",), load_case=f"whole cycle (peak at {_case(demand, i)})",
-        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
-        substituted=_sf_line(g.continuous_torque, from_si(Trms, "torque"), "N*m"))
+        details=lambda: {"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
+        substituted=lambda: _sf_line(g.continuous_torque, from_si(Trms, "torque"), "N*m"))
 
 
 @check("gearhead_intermittent_torque", title="Gearhead intermittent torque", sf_kind="motor",
@@ -245,8 +246,8 @@ def check_gearhead_intermittent_torque(demand: TorqueDemand, gearhead: Any = Non
         check="gearhead_intermittent_torque", component=component or g.name, demand=from_si(float(T[i]), "torque"),
         capacity=g.intermittent_torque, title="Gearhead peak output torque within its intermittent torque",
         formula=r"\max|T_{out}| \le T_{int}", source=_SRC_MAXON, load_case=_case(demand, i),
-        details={"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
-        substituted=_sf_line(g.intermittent_torque, from_si(float(T[i]), "torque"), "N*m"))
+        details=lambda: {"time": Q(demand.t, "s"), "output_torque": Q(sd.output_effort, "N*m")},
+        substituted=lambda: _sf_line(g.intermittent_torque, from_si(float(T[i]), "torque"), "N*m"))
 
 
 @check("gearhead_input_speed", title="Gearhead input speed", sf_kind="limit",
@@ -270,7 +271,7 @@ def check_gearhead_input_speed(demand: TorqueDemand, gearhead: Any = None, *,
         demand=from_si(float(w[i]), "angular_velocity").to("rpm"), capacity=cap.to("rpm"),
         title="Gearhead input speed within its limit", formula=r"\max|\omega_{in}| \le \omega_{in,max}",
         source=_SRC_MAXON, notes=tuple(notes), load_case=_case(demand, i),
-        substituted=_sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
+        substituted=lambda: _sf_line(cap, from_si(float(w[i]), "angular_velocity"), "rpm"))
 
 
 @check("inertia_ratio", title="Inertia ratio", sf_kind="limit",
@@ -301,7 +302,7 @@ def check_inertia_ratio(demand: TorqueDemand, motor: Any = None, *, max_ratio: f
         notes=(f"limit {limit:g} ({'default for steppers and servos' if max_ratio is None else 'given'}); "
                "inertia reflected with the square of each ratio, no efficiency",),
         load_case="whole cycle",
-        substituted=(rf"\frac{{J_L}}{{J_M}} = \frac{{{tex(demand.load_inertia, 'g*cm**2')}}}"
+        substituted=lambda: (rf"\frac{{J_L}}{{J_M}} = \frac{{{tex(demand.load_inertia, 'g*cm**2')}}}"
                      rf"{{{tex(m.rotor_inertia, 'g*cm**2')}}} = {tex(ratio)}"))
 
 
@@ -323,8 +324,9 @@ def check_motor_supply_voltage(demand: TorqueDemand, supply_voltage: QuantityLik
         capacity=from_si(to_si(supply_voltage, "voltage", "supply_voltage"), "voltage"),
         title="Supply voltage covers the worst operating point", formula=r"U = R\,(|T|/k_t + I_0) + |\omega|/k_n",
         source=_SRC_MAXON, notes=("conservative when braking (generating), where the needed voltage is lower",),
-        load_case=_case(demand, i), details=_plot(demand, m, to_si(supply_voltage, "voltage", "supply_voltage")),
-        substituted=_voltage_line(m, float(demand.motor_torque[i]), float(demand.motor_speed[i]), float(U[i])))
+        load_case=_case(demand, i),
+        details=lambda: _plot(demand, m, to_si(supply_voltage, "voltage", "supply_voltage")),
+        substituted=lambda: _voltage_line(m, float(demand.motor_torque[i]), float(demand.motor_speed[i]), float(U[i])))
 
 
 def _voltage_line(m: Any, T: float, w: float, U: float) -> str:
@@ -359,7 +361,7 @@ def check_driver_current(demand: TorqueDemand, max_current: QuantityLike, motor:
         formula={"dc": r"I = |T|/k_t + I_0 \le I_{driver}", "stepper": r"I = I_{rated,phase} \le I_{driver}"}.get(
             m.kind, r"I = I_0 + (I_H - I_0)\,|T|/T_H"),
         source=_SRC_MAXON, load_case=_case(demand, i),
-        substituted=_sf_line(from_si(to_si(max_current, "current", "max_current"), "current"),
+        substituted=lambda: _sf_line(from_si(to_si(max_current, "current", "max_current"), "current"),
                              from_si(float(current[i]), "current"), "A"))
 
 
@@ -414,9 +416,9 @@ def check_motor_winding_temperature(demand: TorqueDemand, motor: Any = None, *,
                "the duty cycle repeats without pause beyond the given cycle time; iron and friction losses "
                "are not in the model (I_0 heats the winding as current)"),
         load_case=f"whole cycle (peak at {_case(demand, th.peak_index)})",
-        substituted=(rf"\frac{{T_w - T_U}}{{T_{{max}} - T_U}} = \frac{{{tex_minus(th.peak_winding, Ta)}}}"
+        substituted=lambda: (rf"\frac{{T_w - T_U}}{{T_{{max}} - T_U}} = \frac{{{tex_minus(th.peak_winding, Ta)}}}"
                      rf"{{{tex_minus(Tmax, Ta)}}} = {tex((th.peak_winding - Ta) / (Tmax - Ta))}"),
-        details={"time": Q(th.t, "s"), "winding_temperature": Q(th.winding, "degC"),
+        details=lambda: {"time": Q(th.t, "s"), "winding_temperature": Q(th.winding, "degC"),
                  "housing_temperature": Q(th.housing, "degC")})
 
 
@@ -472,8 +474,8 @@ def check_drive_regeneration(demand: TorqueDemand, supply_voltage: QuantityLike,
         source=f"{_SRC_MAXON}; capacitor energy E = C (U^2 - U0^2)/2",
         inputs={"U0": Q(U0, "V"), "C": Q(C * 1e6, "uF"), "U_max": Q(Ulim, "V")}, notes=tuple(notes),
         load_case=_case(demand, min(worst_end, len(t) - 1)) if events else "no braking in the cycle",
-        details={"time": Q(t, "s"), "regenerated_power": Q(P, "W")},
-        substituted=(rf"U = \sqrt{{({tex(Q(U0, 'V'), 'V')})^{{2}} + \frac{{2\cdot {tex(Q(E, 'J'), 'J')}}}"
+        details=lambda: {"time": Q(t, "s"), "regenerated_power": Q(P, "W")},
+        substituted=lambda: (rf"U = \sqrt{{({tex(Q(U0, 'V'), 'V')})^{{2}} + \frac{{2\cdot {tex(Q(E, 'J'), 'J')}}}"
                      rf"{{{tex(Q(C, 'F'), 'F')}}}}} = {tex(Q(U, 'V'), 'V')}"))
 
 

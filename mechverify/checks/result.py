@@ -11,12 +11,14 @@ and the required safety factor ``SF``, the *factored utilisation* is ``u·SF``.
 
 from __future__ import annotations
 
+import dataclasses
 import html
 import math
 import re
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum, StrEnum
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -27,6 +29,8 @@ from mechverify.frozen import set_fields
 from mechverify.units import Q, Quantity, fmt
 
 WARN_LEVEL = 0.9
+#: Compute lazy ``details`` and ``substituted`` when a result is made (for tests comparing lazy and eager values).
+EAGER = False
 
 
 class Verdict(StrEnum):
@@ -39,6 +43,109 @@ class Verdict(StrEnum):
         return {"pass": 0, "warn": 1, "fail": 2}[self.value]
 
 
+class LazyDetails(Mapping[str, Any]):
+    """The figure data of a :class:`CheckResult` computed when first read (issue 19: a study never reads them).
+
+    ``CheckResult(details=lambda: {...})`` stores one of these; it is a read-only
+    :class:`~collections.abc.Mapping`, so every reader (report figures, ``to_dict``, ``{**r.details}``,
+    ``r.details.get``) sees the same keys and values as an eagerly built dict. The function runs once;
+    pickling and copying carry the computed dict (a process pool or Dask never sees the function).
+    """
+
+    __slots__ = ("_fn", "_data")
+
+    def __init__(self, fn: Callable[[], Mapping[str, Any]]):
+        self._fn: Callable[[], Mapping[str, Any]] | None = fn
+        self._data: dict[str, Any] | None = None
+
+    @property
+    def resolved(self) -> bool:
+        """True once the data have been computed."""
+        return self._data is not None
+
+    def data(self) -> dict[str, Any]:
+        """The computed dict (computing it on the first call)."""
+        if self._data is None:
+            assert self._fn is not None
+            self._data, self._fn = dict(self._fn()), None
+        return self._data
+
+    def __getitem__(self, key: str) -> Any:
+        return self.data()[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.data())
+
+    def __len__(self) -> int:
+        return len(self.data())
+
+    def __contains__(self, key: object) -> bool:
+        return key in self.data()
+
+    def __eq__(self, other: object) -> bool:
+        if isinstance(other, LazyDetails):
+            other = other.data()
+        return self.data() == other if isinstance(other, Mapping) else NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]  # like a dict
+
+    def __repr__(self) -> str:
+        return repr(self.data()) if self.resolved else "LazyDetails(<not computed>)"
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (dict, (self.data(),))
+
+
+class _Pending:
+    """A :attr:`CheckResult.substituted` not yet read: the text or the function that makes it."""
+
+    __slots__ = ("raw",)
+
+    def __init__(self, raw: str | Callable[[], str]):
+        self.raw = raw
+
+
+class _Substituted:
+    """Descriptor of :attr:`CheckResult.substituted`: a string, or a zero-argument function returning it, is
+    stored as given; on the first read the function runs, negative operands are bracketed
+    (:func:`bracket_negative_operands`) and the text replaces what was stored. So a check that is never
+    reported (a study sample) neither formats its numbers nor runs the regular expression."""
+
+    def __get__(self, obj: Any, owner: type | None = None) -> Any:
+        if obj is None:
+            return ""  # the dataclass field's default
+        v = obj.__dict__.get("substituted", "")
+        if type(v) is _Pending:
+            raw = v.raw() if callable(v.raw) else v.raw
+            if not isinstance(raw, str):
+                raise TypeError(f"{obj.component}/{obj.check}: substituted must be a str, got {type(raw).__name__}")
+            v = bracket_negative_operands(raw) if raw else raw
+            obj.__dict__["substituted"] = v
+        return v
+
+    def __set__(self, obj: Any, value: Any) -> None:
+        _store_substituted(obj, value)
+
+
+def _store_substituted(obj: Any, value: Any) -> None:
+    """What the constructor does with ``substituted``: "" as it is, anything else kept until first read."""
+    obj.__dict__["substituted"] = value if type(value) is _Pending or (isinstance(value, str) and not value) \
+        else _Pending(value)
+
+
+#: Fields :meth:`CheckResult.replace` may change without running the validation of ``__post_init__`` again
+#: (it validates the demand, capacity and safety factor only).
+_FAST_FIELDS = frozenset({"check", "component", "title", "formula", "source", "load_case", "notes", "warnings",
+                          "inputs", "details", "substituted"})
+
+
+def _details(details: Any) -> Mapping[str, Any]:
+    """A result's details as stored: a function becomes a :class:`LazyDetails`, a mapping a new dict."""
+    if isinstance(details, LazyDetails):
+        return details
+    return LazyDetails(details) if callable(details) else dict(details)
+
+
 @dataclass(frozen=True)
 class CheckResult:
     """One check of one component: demand against capacity, with its formula and source.
@@ -46,6 +153,11 @@ class CheckResult:
     ``demand`` and ``capacity`` are quantities of the same dimension, both oriented so that the
     check passes while ``demand <= capacity / required_sf`` (for a "must exceed" check such as
     bearing life, the demand is the required life and the capacity the life achieved).
+
+    ``details`` (figure data) and ``substituted`` (LaTeX) may be given as zero-argument functions: they run
+    when the value is first read (report, JSON, figure), never for a result only its verdict is read from
+    (a study sample). Reading gives the same values as passing them computed. Use :meth:`replace` (not
+    ``dataclasses.replace``, which reads and so computes every field) to keep them unread.
     """
 
     check: str
@@ -60,8 +172,10 @@ class CheckResult:
     notes: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()  # validity concerns; any makes the verdict at least "warn"
     load_case: str = ""  # governing load case or operating point
-    details: Mapping[str, Any] = field(default_factory=dict)  # data for plots (quantities, arrays)
-    substituted: str = ""  # LaTeX: the formula with its inputs substituted (with units) = the result; see tex()
+    # data for plots (quantities, arrays): a mapping, or a function returning one (then a LazyDetails)
+    details: Mapping[str, Any] = field(default_factory=dict)
+    # LaTeX: the formula with its inputs substituted (with units) = the result, see tex(); or a function returning it
+    substituted: str = _Substituted()  # type: ignore[assignment]
 
     def __post_init__(self) -> None:
         for name in ("demand", "capacity"):
@@ -79,14 +193,52 @@ class CheckResult:
         if d < 0 or c < 0:
             raise InputError(f"{self.component}/{self.check}: demand and capacity must be >= 0 "
                              f"(got {fmt(self.demand)}, {fmt(self.capacity)})")
-        if self.substituted:
-            set_fields(self, substituted=bracket_negative_operands(self.substituted))
         if not self.required_sf > 0:
             raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
+        details = _details(self.details)
         set_fields(self, notes=tuple(self.notes), warnings=tuple(self.warnings), inputs=dict(self.inputs),
-                   details=dict(self.details))
+                   details=details)
+        if EAGER:
+            self.substituted  # noqa: B018  # computed now (tests compare with the lazy values)
+            if isinstance(details, LazyDetails):
+                details.data()
 
-    @property
+    def replace(self, **changes: Any) -> CheckResult:
+        """A copy with ``changes`` (as :func:`dataclasses.replace`), leaving ``details`` and ``substituted``
+        uncomputed when they are. When neither the demand, the capacity nor the safety factor changes, their
+        validation is not repeated (the other fields are normalised as by the constructor)."""
+        if changes.keys() <= _FAST_FIELDS:
+            new = object.__new__(type(self))
+            new.__dict__.update(self.__dict__)
+            for k in ("notes", "warnings"):
+                if k in changes:
+                    changes[k] = tuple(changes[k])
+            if "inputs" in changes:
+                changes["inputs"] = dict(changes["inputs"])
+            if "details" in changes:
+                changes["details"] = _details(changes["details"])
+            new.__dict__.update({k: v for k, v in changes.items() if k != "substituted"})
+            if "substituted" in changes:
+                _store_substituted(new, changes["substituted"])
+            if EAGER:
+                new.__post_init__()
+            return new
+        raw = self.__dict__.get("substituted", "")
+        if "substituted" not in changes and type(raw) is _Pending:
+            changes["substituted"] = raw
+        return dataclasses.replace(self, **changes)
+
+    __replace__ = replace  # copy.replace (Python 3.13)
+
+    def __getstate__(self) -> dict[str, Any]:
+        """Pickled with ``details`` and ``substituted`` computed (a function does not cross processes)."""
+        self.substituted  # noqa: B018
+        state = dict(self.__dict__)
+        if isinstance(state.get("details"), LazyDetails):
+            state["details"] = state["details"].data()
+        return state
+
+    @cached_property
     def utilisation(self) -> float:
         """demand / capacity (dimensionless; ``inf`` for zero capacity)."""
         d = float(self.demand.m_as(self.capacity.units))

@@ -83,9 +83,10 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
                 r"\quad \tan\alpha_n = \tan\alpha\cos\lambda",
         source=f"{HAMROCK} (self-locking condition mu > cos(alpha_n) tan(lambda)); {SHIGLEY_SCREWS}, Eq. (8-3)",
         inputs={"lead": th.lead, "d2": th.d2, "flank_angle": th.flank_angle, "mu_min": Q(mu_lo, "")},
-        substituted=(rf"\lambda = \arctan\frac{{{tex(th.lead, 'mm')}}}{{\pi\cdot {tex(th.d2, 'mm')}}} = {tex(lam)}"
-                     rf",\quad \rho' = \arctan\frac{{{tex(mu_lo)}}}{{\cos({tex(th.normal_flank_angle, 'deg')})}}"
-                     rf" = {tex(rho)}"),
+        substituted=lambda: (
+            rf"\lambda = \arctan\frac{{{tex(th.lead, 'mm')}}}{{\pi\cdot {tex(th.d2, 'mm')}}} = {tex(lam)}"
+            rf",\quad \rho' = \arctan\frac{{{tex(mu_lo)}}}{{\cos({tex(th.normal_flank_angle, 'deg')})}}"
+            rf" = {tex(rho)}"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
         details={"lead_angle": lam, "friction_angle": rho, "normal_flank_angle": th.normal_flank_angle.to("deg"),
                  "self_locking_mu": Q(mu_star, ""), "angle_margin": (rho - lam).to("deg"),
@@ -119,7 +120,7 @@ def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Qua
                 r"{\cos\alpha_n + \mu_{min}\tan\lambda}\right) \le T_{available}",
         source=f"{HAMROCK}, Eq. (16.12) (lowering torque); {SHIGLEY_SCREWS}, Eq. (8-2)",
         inputs={"F": f, "mu_min": Q(mu_lo, ""), "holding_torque": cap, "lead": screw.lead, "d2": screw.thread.d2},
-        substituted=_holding_substituted(screw, f, mu_lo, need),
+        substituted=lambda: _holding_substituted(screw, f, mu_lo, need),
         notes=tuple(notes), load_case=load_case,
         details={"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
                  "backdrive_efficiency": screw.backdrive_efficiency(mu_lo)},
@@ -162,8 +163,9 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
         formula=r"p = \frac{F}{\pi d_2 H_1 n},\quad n = \frac{m}{P}",
         source=f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure); {SHIGLEY_SCREWS} (bearing stress)",
         inputs={"F": f, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
-        substituted=(rf"p = \frac{{{tex(f, 'N')}}}{{\pi\cdot {tex(th.d2, 'mm')}\cdot {tex(H1, 'mm')}\cdot {tex(n)}}}"
-                     rf" = {tex(p, 'MPa')}"),
+        substituted=lambda: (
+            rf"p = \frac{{{tex(f, 'N')}}}{{\pi\cdot {tex(th.d2, 'mm')}\cdot {tex(H1, 'mm')}\cdot {tex(n)}}}"
+            rf" = {tex(p, 'MPa')}"),
         notes=(f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
                "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"),
         load_case=load_case, details={"engaged_threads": Q(n, "")},
@@ -198,7 +200,7 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Quanti
         source=(f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); polymer-bearing pv rating "
                 "(nut maker's datasheet)"),
         inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
-        substituted=(rf"pv = {tex(p, 'MPa')}\cdot {tex(v, 'm/s')} = {tex(pv, 'MPa*m/s')}"),
+        substituted=lambda: (rf"pv = {tex(p, 'MPa')}\cdot {tex(v, 'm/s')} = {tex(pv, 'MPa*m/s')}"),
         notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
                f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}"),
         load_case=load_case, details={"pressure": p, "sliding_speed": v},
@@ -237,7 +239,7 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
                 r" \le S_y",
         source=f"{SHIGLEY_SCREWS} (body stresses), Eq. 5-15 (von Mises)",
         inputs={"F": f, "torque": T, "d3": screw.thread.d3, "yield_strength": Sy},
-        substituted=_strength_substituted(f, T, screw.thread.d3, s.von_mises),
+        substituted=lambda: _strength_substituted(f, T, screw.thread.d3, s.von_mises),
         notes=tuple(notes), load_case=load_case,
         details={"axial": s.axial, "torsion": s.torsion},
     )
@@ -271,7 +273,7 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
         source=b.source,
         inputs={"F": f, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "yield_strength": screw.material_property("yield_strength")},
-        substituted=_buckling_substituted(b, L, screw.thread.d3, screw.material_property("E"),
+        substituted=lambda: _buckling_substituted(b, L, screw.thread.d3, screw.material_property("E"),
                                           screw.material_property("yield_strength")),
         notes=(f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
                + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
@@ -316,7 +318,7 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
         source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
         inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "density": screw.material_property("density")},
-        substituted=(rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}"
+        substituted=lambda: (rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}"
                      rf"\cdot \sqrt{{\frac{{"
                      rf"{tex(screw.material_property('E'), 'MPa')}\cdot ({tex(screw.thread.d3, 'mm')})^{{2}}}}"
                      rf"{{16\cdot "

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -151,10 +152,25 @@ class Profile:
     def _bounds(self) -> np.ndarray:
         return np.concatenate([[0.0], np.cumsum([s.duration for s in self.segments])])
 
+    @cached_property
+    def _samples(self) -> dict[int, ProfileSamples]:
+        """:meth:`sample` results by ``points_per_segment`` (the profile is immutable, so are they)."""
+        return {}
+
     def sample(self, points_per_segment: int = 41) -> ProfileSamples:
-        """Sample every segment at ``points_per_segment`` points, boundaries included."""
+        """Sample every segment at ``points_per_segment`` points, boundaries included.
+
+        Computed once per profile and number of points (a drive's demand and its figure data read the same
+        samples); the arrays are read-only, so a caller cannot change what the next one gets.
+        """
         if points_per_segment < 2:
             raise InputError("points_per_segment must be >= 2")
+        s = self._samples.get(points_per_segment)
+        if s is None:
+            s = self._samples[points_per_segment] = self._sample(points_per_segment)
+        return s
+
+    def _sample(self, points_per_segment: int) -> ProfileSamples:
         ts, xs, vs, as_, js, labels = [], [], [], [], [], []
         t0 = 0.0
         for seg in self.segments:
@@ -168,8 +184,10 @@ class Profile:
             js.append(j)
             labels.extend([seg.label] * n)
             t0 += seg.duration
-        return ProfileSamples(self.kind, np.concatenate(ts), np.concatenate(xs), np.concatenate(vs),
-                              np.concatenate(as_), np.concatenate(js), tuple(labels))
+        arrays = [np.concatenate(c) for c in (ts, xs, vs, as_, js)]
+        for arr in arrays:
+            arr.setflags(write=False)
+        return ProfileSamples(self.kind, *arrays, tuple(labels))
 
     def at(self, t: Any) -> dict[str, pint.Quantity]:
         """Position, velocity, acceleration and jerk at time(s) ``t`` (a time quantity)."""
