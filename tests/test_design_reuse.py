@@ -186,3 +186,104 @@ def test_a_parameter_read_inside_a_path_expression_invalidates(tmp_path):
     assert _rows(rs) == _rows(fresh)
     assert rs.to_json() != base_rs.to_json()
     assert "revolute" not in _reused(v, d)
+
+
+# ------------------------------------------------------------------ built objects (task 19b): reuse.reused_object
+
+@pytest.mark.parametrize(("override", "rebuilt"), [
+    ({"components.lift.mass": "15.0 kg"}, {"lift"}),
+    ({"parameters.lifted_load": "300 N"}, {"lift", "carriage"}),  # the carriage's fields read lifted_load
+    ({"components.lift_screw.length": "400 mm"}, {"lift", "lift_screw"}),
+    ({"profiles.raise.acceleration": "0.2 m/s^2"}, {"lift", "raise"}),
+    ({"requirements.bearing_life": "20000 h"}, "all"),  # design-wide: nothing is taken over
+])
+def test_a_variant_takes_over_unchanged_immutable_objects(base, override, rebuilt):
+    """Oracle: the same variant built without a base (every object built); its results are compared field by
+    field in test_variant_equals_a_fresh_build_and_reuses_only_unchanged_components. Here: which objects are the
+    base's own. Never shared: the drive (it memoises per design) and the link (its section holds a dict)."""
+    from mechverify.design.reuse import shareable
+
+    v = base.with_overrides(override)
+    entries = {**v.data.components, **v.data.profiles}
+    old = {**base.data.components, **base.data.profiles}
+    shared = {k for k, e in entries.items() if e.obj is old[k].obj}
+    assert "lift" not in shared and "screw_horizontal" not in shared
+    expected = set() if rebuilt == "all" else {k for k in entries if shareable(old[k].obj)} - rebuilt
+    assert shared == expected
+    if rebuilt != "all":
+        assert {"lift_screw", "screw_bearing"} - rebuilt <= shared  # (the example's immutable components)
+    for k in entries:  # a rebuilt object equals a fresh build's
+        fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, list(v.data.files), {})
+        if shareable(entries[k].obj):
+            assert repr(entries[k].obj) == repr(fresh.data.components.get(k, fresh.data.profiles.get(k)).obj)
+
+
+def test_the_drive_turns_the_screw_of_its_own_design(base):
+    """A rebuilt lead screw gives the drive a stage on the new screw (not the base's cached stage); an unchanged one
+    gives the base's stages (drive_parsing._screw_stages), whose efficiencies equal a fresh computation."""
+    from mechverify.components.transmissions import ScrewDrive
+
+    longer = base.with_overrides({"components.lift_screw.length": "400 mm"})
+    stage = longer["lift"].stage_variants[0][0][1]
+    assert stage.screw is longer["lift_screw"].screw is not base["lift_screw"].screw
+    heavier = base.with_overrides({"components.lift.mass": "20 kg"})
+    assert heavier["lift_screw"] is base["lift_screw"]
+    assert heavier["lift"].stage_variants == base["lift"].stage_variants
+    s0 = heavier["lift"].stage_variants[0][0][1]
+    fresh = ScrewDrive(s0.screw, s0.mu, inertia=s0.inertia, name=s0.name)
+    assert (fresh.efficiency_forward, fresh.backdrive_efficiency) == (s0.efficiency_forward, s0.backdrive_efficiency)
+
+
+def test_a_component_naming_a_rebuilt_one_is_rebuilt(base, monkeypatch):
+    """An entry keeps the base's object only while every entry its table names is the same object in both designs.
+    The lift has no immutable component naming another, so the bearing is made to name the screw: unchanged
+    screw -> the bearing is the base's; rebuilt screw -> the bearing is built again (its own inputs unchanged)."""
+    from mechverify.design import reuse
+
+    real = reuse._named
+    monkeypatch.setattr(reuse, "_named", lambda e, names: real(e, names) | (
+        {"lift_screw"} & set(names) if e.name == "screw_bearing" else set()))
+    assert base.with_overrides({"components.lift.mass": "20 kg"})["screw_bearing"] is base["screw_bearing"]
+    v = base.with_overrides({"components.lift_screw.length": "400 mm"})
+    assert v["lift_screw"] is not base["lift_screw"]
+    assert v["screw_bearing"] is not base["screw_bearing"]
+    assert repr(v["screw_bearing"]) == repr(base["screw_bearing"])
+
+
+def test_shareable_only_when_immutable_all_the_way_down():
+    import numpy as np
+
+    from mechverify.design.reuse import shareable
+    from mechverify.materials import default_library
+    from mechverify.units import Q
+
+    @dataclasses.dataclass(frozen=True)
+    class Leaf:
+        x: object
+
+    @dataclasses.dataclass
+    class Loose:
+        x: int = 1
+
+    ro = np.zeros(3)
+    ro.flags.writeable = False
+    steel = default_library().get("Inventor Steel")
+    assert shareable(Leaf((1, 2.0, "a", Q(3.0, "mm"), Leaf(None), frozenset({1}), ro, steel)))
+    for bad in ({"memo": 1}, [1], {1}, np.zeros(3), Q(np.zeros(3), "mm"), Loose(), object(), Leaf({})):
+        assert not shareable(Leaf(bad)), bad
+    assert not shareable(Leaf((1, Leaf([]))))
+
+
+def test_text_that_is_not_an_expression_is_parsed_once():
+    """A motor's name is read as a possible expression by the loader on every variant: its error is cached, and a
+    fresh error (same message) is raised each time."""
+    from mechverify.design.expressions import ExpressionError, _parse_or_error, parse
+
+    text = "NEMA 17 stepper 0.56 N·m (test)"
+    with pytest.raises(ExpressionError) as first:
+        parse(text)
+    hits = _parse_or_error.cache_info().hits
+    with pytest.raises(ExpressionError) as second:
+        parse(text)
+    assert str(first.value) == str(second.value) and first.value is not second.value
+    assert _parse_or_error.cache_info().hits == hits + 1

@@ -61,7 +61,7 @@ class Design:
                 errors.append((key, str(exc)))
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
-        variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides})
+        variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides}, self.data)
         variant._reuse_base = self  # unchanged components take this design's results (mechverify/design/reuse.py)
         return variant
 
@@ -346,14 +346,16 @@ def _toml_value(v: Any) -> Any:
     return v
 
 
-def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], overrides: Mapping[str, Any]) -> Design:
-    """A design from its (merged) TOML data: the includes are already in ``doc``, so nothing is read."""
+def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], overrides: Mapping[str, Any],
+             base: DesignData | None = None) -> Design:
+    """A design from its (merged) TOML data: the includes are already in ``doc``, so nothing is read. With ``base``
+    (the design it is a variant of), its unchanged immutable components are taken over (design/reuse.py)."""
     from mechverify.design import adapters  # noqa: F401  (registers the built-in component types)
 
     design = doc.get("design")
     if isinstance(design, dict) and "include" in design:
         doc = {**doc, "design": {k: v for k, v in design.items() if k != "include"}}
-    data = parse(doc, path)
+    data = parse(doc, path, base=base)
     data.files = files
     return Design(data, overrides)
 

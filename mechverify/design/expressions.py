@@ -265,11 +265,27 @@ def _not_allowed(node: ast.AST, source: str) -> ExpressionError:
                            f"( ) and {', '.join(FUNCTIONS)}, pi)")
 
 
-@functools.lru_cache(maxsize=8192)
 def parse(text: str) -> Expression:
     """Parse and check ``text`` once (cached); raise :class:`ExpressionError` when it is not in the grammar."""
     if not isinstance(text, str):
         raise ExpressionError(f"expected an expression string, got {text!r}")
+    out = _parse_or_error(text)
+    if isinstance(out, ExpressionError):  # a fresh error each time (a re-raised one would grow its traceback)
+        raise ExpressionError(str(out)) from None
+    return out
+
+
+@functools.lru_cache(maxsize=8192)
+def _parse_or_error(text: str) -> Expression | ExpressionError:
+    """:func:`parse`'s work; text that is not an expression (a motor's name, free text read by the loader on every
+    variant of a study) is remembered as its error too, not parsed again."""
+    try:
+        return _parse(text)
+    except ExpressionError as exc:
+        return exc.with_traceback(None)  # (its frames are not kept)
+
+
+def _parse(text: str) -> Expression:
     source = text.strip()
     if len(text) > MAX_LENGTH:
         raise ExpressionError(f"expression longer than {MAX_LENGTH} characters ({len(text)})")

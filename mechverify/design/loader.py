@@ -8,6 +8,7 @@ No code is executed: values are strings with units, numbers, booleans and names.
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import tomllib
@@ -26,11 +27,12 @@ from mechverify.design.parameters import (
     substitute,
     value_or_deferred,
 )
+from mechverify.design.reuse import reuse_context, reused_object
 from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY, ComponentType, Field
 from mechverify.errors import MechverifyError, suggest
 from mechverify.materials import MaterialLibrary, default_library, material_from_dict
 from mechverify.materials.material import PROPERTY_DIMENSIONS
-from mechverify.units import DIMENSIONS, as_quantity
+from mechverify.units import DIMENSIONS, as_quantity, fmt, from_si
 
 TOP_KEYS = ("design", "parameters", "requirements", "materials", "templates", "profiles", "components", "load_cases")
 DESIGN_KEYS = ("name", "revision", "description", "include", "author")
@@ -455,13 +457,20 @@ def key_path(path: str, msg: str, keys: Collection[str]) -> tuple[str, str]:
     return f"{path}.{m.group(1)}{m.group(2)}", msg[m.end():]
 
 
-_SI_VALUE = re.compile(r"got (.+) \(SI\)")
+@functools.cache
+def _si_value() -> re.Pattern[str]:
+    """An SI value in a message of :func:`mechverify.units.require_positive`: ``got -0.1 (SI)``, or with ``dim``
+    ``must be positive, got -0.1 m`` (a number in the SI unit of a :data:`DIMENSIONS` entry, or none)."""
+    units = sorted({fmt(from_si(1.0, d)).partition(" ")[2] for d in DIMENSIONS} - {""}, key=len, reverse=True)
+    number = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?"
+    return re.compile(rf"got (.+) \(SI\)|(?<=positive, )got {number}(?: (?:{'|'.join(map(re.escape, units))}))?$")
 
 
 def as_written(path: str, msg: str, table: Mapping[str, Any], table_path: str) -> str:
-    """``msg`` with an SI value (``"got -0.1 (SI)"``, :func:`mechverify.units.require_positive`) replaced by the
-    value as written at ``path`` (a key path inside ``table``, the table at ``table_path``), when there is one."""
-    if not path.startswith(f"{table_path}.") or _SI_VALUE.search(msg) is None:
+    """``msg`` with an SI value (``"got -0.1 (SI)"`` or ``"got -0.1 m"``, :func:`mechverify.units.require_positive`)
+    replaced by the value as written at ``path`` (a key path inside ``table``, the table at ``table_path``), when
+    there is one."""
+    if not path.startswith(f"{table_path}.") or _si_value().search(msg) is None:
         return msg
     v: Any = table
     for part in re.findall(r"[^.\[\]]+", path[len(table_path) + 1:]):
@@ -469,7 +478,7 @@ def as_written(path: str, msg: str, table: Mapping[str, Any], table_path: str) -
             v = v[int(part)] if isinstance(v, list) else v[part]
         except (KeyError, IndexError, ValueError, TypeError):
             return msg
-    return msg if isinstance(v, Mapping | list) else _SI_VALUE.sub(lambda _: f"got {_describe(v)}", msg)
+    return msg if isinstance(v, Mapping | list) else _si_value().sub(lambda _: f"got {_describe(v)}", msg, count=1)
 
 
 def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[str, Any]) -> None:
@@ -494,7 +503,9 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
             if not resolve_fields(e, entries, ctx.get("parameters", {}), build, col.add, ctx["trace"]):
                 bad.add(e.name)
                 return False
-            e.obj = e.type.build({**e.params, "_name": e.name}, ctx)
+            e.obj = reused_object(e, section, ctx)  # a variant's unchanged immutable entry: the base's object
+            if e.obj is None:
+                e.obj = e.type.build({**e.params, "_name": e.name}, ctx)
             done.add(e.name)
             return True
         except MechverifyError as exc:
@@ -509,8 +520,13 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
         build(e)
 
 
-def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False) -> DesignData:
-    """Validate a parsed TOML document; raise :class:`DesignFileError` listing every problem."""
+def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False,
+          base: DesignData | None = None) -> DesignData:
+    """Validate a parsed TOML document; raise :class:`DesignFileError` listing every problem.
+
+    ``base``: the data of a design this one is a variant of (``Design.with_overrides``); entries whose build inputs
+    are unchanged take its immutable built objects (:func:`mechverify.design.reuse.reused_object`).
+    """
     col = _Collector()
     files = [path.resolve()] if path else []
     doc = _merge_includes(doc, path, col, allow_outside, files)
@@ -556,6 +572,8 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     ctx: dict[str, Any] = {"materials": materials, "requirements": requirements, **pctx,
                            "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {},
                            "path": path}  # the design file (adapters resolve relative file names against it)
+    if base is not None:
+        ctx.update(reuse_context(base, doc, requirements, materials, path))
     profiles = _typed_section(doc, "profiles", col, ctx, templates)
     ctx["profiles"] = profiles
     _build(profiles, "profiles", col, ctx)

@@ -172,3 +172,119 @@ def fingerprints(data: Any) -> dict[str, Any]:
             todo.extend(sorted(refs[n] - seen))
         out[name] = (own[name], tuple(sorted(closure, key=lambda x: x[0])))
     return out
+
+
+# ------------------------------------------------------------------------------------------ built objects
+#
+# A variant (``Design.with_overrides``) is parsed again, but an entry (component or profile) whose build inputs are
+# unchanged takes the object the base design built, when that object is immutable: building a lead screw, a link or
+# a profile repeats pint arithmetic a study sample does not need. Build inputs: the type, the table as written
+# (after templates), the validated fields after expressions and connections are resolved (what the adapter gets),
+# the values of the parameters its strings name (an adapter may evaluate a table's expression itself), the
+# design-wide values an adapter reads from its context (requirements, the design's file path, its own materials as
+# built) and the other entries it names (the same object in both designs, so a drive keeps a screw it was built
+# with). Mutable objects are never shared: a frame or plate-FEA component caches solutions per load case, a drive
+# memoises its demands; they are rebuilt (their check results are still reused by :func:`fingerprints`).
+
+
+def shareable(obj: Any) -> bool:
+    """True when ``obj`` is immutable all the way down, so two designs may hold the same object: a frozen dataclass
+    whose fields (and derived values already cached on it) are numbers, strings, quantities with a scalar or
+    read-only array magnitude, tuples or frozensets of such values, or frozen dataclasses of them. Materials are
+    values (the library's are shared by every design of the process already). A dict, list, set, writeable array
+    or any other object anywhere inside makes it not shareable (a memo, a cache per load case)."""
+    hit = _SHAREABLE.get(id(obj))
+    if hit is not None and hit[0] is obj:
+        return hit[1]
+    out = _immutable(obj, set())
+    if len(_SHAREABLE) >= 512:
+        _SHAREABLE.clear()
+    _SHAREABLE[id(obj)] = (obj, out)
+    return out
+
+
+_SHAREABLE: dict[int, tuple[Any, bool]] = {}  # id -> (the object, shareable); holds the object
+
+
+def _immutable(v: Any, seen: set[int]) -> bool:
+    import enum
+
+    from mechverify.materials import Material
+
+    t = type(v)
+    if v is None or t in (bool, int, float, complex, str, bytes) or isinstance(v, enum.Enum | Material):
+        return True
+    if id(v) in seen:
+        return True
+    seen.add(id(v))
+    if isinstance(v, Quantity):
+        return _immutable(v._magnitude, seen)
+    if isinstance(v, np.ndarray):
+        return not v.flags.writeable and v.dtype != object
+    if isinstance(v, np.generic):
+        return True
+    if t is tuple or t is frozenset:
+        return all(_immutable(x, seen) for x in v)
+    if dataclasses.is_dataclass(v) and not isinstance(v, type):
+        if not v.__dataclass_params__.frozen:  # type: ignore[attr-defined]
+            return False
+        fields = [getattr(v, f.name) for f in dataclasses.fields(v)]
+        return all(_immutable(x, seen) for x in (*fields, *getattr(v, "__dict__", {}).values()))
+    return False
+
+
+def _wide_key(raw: Any, requirements: Any, materials: Any, path: Any) -> Any:
+    mats = raw.get("materials") if isinstance(raw, Mapping) else None
+    own = []
+    for name in mats if isinstance(mats, Mapping) else ():
+        try:
+            own.append((name, _canon(materials.get(name))))
+        except Exception:  # an invalid material: its error is reported; nothing is reused
+            own.append((name, ("?", object())))
+    return (str(path), _canon(requirements), tuple(own))
+
+
+def build_key(entry: Any, parameters: Mapping[str, Any]) -> Any:
+    """What an entry's build reads besides the design-wide values and the entries it names (see above)."""
+    words: set[str] = set()
+    _names(entry.raw, parameters, words, words=True)
+    return (entry.type.name, _canon(entry.raw), _canon(entry.params),
+            tuple((n, _canon(parameters[n])) for n in sorted(words)))
+
+
+def _named(entry: Any, names: Mapping[str, Any]) -> set[str]:
+    out: set[str] = set()
+    _names(entry.raw, names, out, words=True)
+    out.discard(entry.name)
+    return out
+
+
+def reuse_context(base: Any, doc: Any, requirements: Any, materials: Any, path: Any) -> dict[str, Any]:
+    """The parse context entries :func:`reused_object` reads: the base design's data and the design-wide key."""
+    keys = base.__dict__.setdefault("_build_keys", {})
+    if "" not in keys:
+        keys[""] = _wide_key(base.raw, base.requirements, base.materials, base.path)
+    return {"reuse_base": base, "reuse_wide": _wide_key(doc, requirements, materials, path)}
+
+
+def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
+    """The object the base design built for ``entry`` (``ctx["reuse_base"]``, a ``DesignData``) when it may be
+    shared (see above), else ``None`` (then the entry is built). Called after the entry's fields are resolved."""
+    base = ctx.get("reuse_base")
+    if base is None:
+        return None
+    old = getattr(base, section, {}).get(entry.name)
+    if old is None or old.obj is None or old.type is not entry.type or not shareable(old.obj):
+        return None
+    keys = base.__dict__["_build_keys"]
+    if ctx["reuse_wide"] != keys[""]:
+        return None
+    for kind, was in (("components", base.components), ("profiles", base.profiles)):
+        now = ctx.get(kind) or {}
+        for n in _named(entry, was):
+            if getattr(now.get(n), "obj", None) is None or now[n].obj is not was[n].obj:
+                return None  # (a component not built yet, as when a profile names one: built again)
+    k = (section, entry.name)
+    if k not in keys:
+        keys[k] = build_key(old, _parameters(base))
+    return old.obj if build_key(entry, ctx.get("parameters") or {}) == keys[k] else None

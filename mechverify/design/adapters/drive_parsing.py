@@ -77,6 +77,34 @@ def _screw_component(i: int, name: str, ctx: Mapping[str, Any]) -> Any:
     return entry.obj
 
 
+def _screw_stages(ls: Any, table: Mapping[str, Any], name: str, v: dict[str, Any]) -> list[tuple[str, Any]]:
+    """The stage(s) of a screw stage ``table`` on the lead screw component ``ls``: one per end of the nut's friction
+    range. Kept per (screw object, table): a study's variant that takes the base design's lead screw over
+    (:func:`mechverify.design.reuse.reused_object`) takes its stages too, whose efficiencies cost pint arithmetic.
+    The stages are frozen and depend on nothing else."""
+    from mechverify.design.reuse import _canon
+
+    key = (id(ls), _canon(table))
+    hit = _SCREW_STAGES.get(key)
+    if hit is not None and hit[0] is ls:
+        return list(hit[1])
+    if "inertia" not in v and ls.screw.material is not None and ls.screw.material.density is not None:
+        v["inertia"] = ls.screw.rotor_inertia()
+    if "mu" in v:
+        mus = [("", v.pop("mu"))]
+    else:
+        lo, hi = ls.nut.require_mu()
+        mus = [(f"mu_max = {hi:g}", hi)] + ([(f"mu_min = {lo:g}", lo)] if lo != hi else [])
+    out = [(lab, ScrewStage(ls.screw, mu, name=name, **v)) for lab, mu in mus]
+    if len(_SCREW_STAGES) >= 64:
+        _SCREW_STAGES.clear()
+    _SCREW_STAGES[key] = (ls, tuple(out))  # holds ls: its id stays its own
+    return out
+
+
+_SCREW_STAGES: dict[Any, tuple[Any, tuple[tuple[str, Any], ...]]] = {}
+
+
 def parse_stages(tables: list[Any], ctx: Mapping[str, Any]) -> list[list[tuple[str, Any]]]:
     """Per stage the list of (variant label, stage object): a screw with a friction range gives two."""
     errors, out = [], []
@@ -89,14 +117,7 @@ def parse_stages(tables: list[Any], ctx: Mapping[str, Any]) -> list[list[tuple[s
             name = table.get("name") or {"screw": v.get("screw"), "belt": "belt drive"}.get(kind, kind)
             if kind == "screw":
                 ls = _screw_component(i, v.pop("screw"), ctx)
-                if "inertia" not in v and ls.screw.material is not None and ls.screw.material.density is not None:
-                    v["inertia"] = ls.screw.rotor_inertia()
-                if "mu" in v:
-                    mus = [("", v.pop("mu"))]
-                else:
-                    lo, hi = ls.nut.require_mu()
-                    mus = [(f"mu_max = {hi:g}", hi)] + ([(f"mu_min = {lo:g}", lo)] if lo != hi else [])
-                out.append([(lab, ScrewStage(ls.screw, mu, name=name, **v)) for lab, mu in mus])
+                out.append(_screw_stages(ls, table, name, v))
             else:
                 cls = {"drum": Drum, "belt": BeltDrive, "direct": DirectDrive}[kind]
                 out.append([("", cls(name=name, **v))])
