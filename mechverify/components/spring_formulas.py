@@ -267,7 +267,7 @@ def end_condition_constant(end: str) -> float:
 class HelicalSpring:
     """What the three helical spring classes share (compression, extension, torsion: one copy).
 
-    A subclass is a frozen dataclass with the fields ``d``, ``D``/``OD``/``ID``, ``material``,
+    A subclass is a frozen dataclass with the fields ``d``, ``D``/``OD``/``ID``, ``material``, ``Sut``,
     ``spring_class`` and ``name``; it defines ``_si_values()`` (its inputs in SI, validated) and
     calls ``self.validate()`` at the end of ``__post_init__``, so bad input fails at construction.
     The values are ``functools.cached_property`` (see :mod:`mechverify.frozen`): not fields, so ``==``,
@@ -277,6 +277,7 @@ class HelicalSpring:
     name: str
     material: str | Material
     spring_class: str | None
+    Sut: Any  # given wire tensile strength, or None: the material's (_wire_si)
 
     def _si_values(self) -> dict[str, float]:  # pragma: no cover - every subclass defines it
         raise NotImplementedError
@@ -291,6 +292,20 @@ class HelicalSpring:
         """The spring's inputs in SI units [m, Pa, N] after validation (``d``, ``D``, coils, moduli,
         ``Sut``, ...); read it, do not change it."""
         return self._si_values()
+
+    def _wire_si(self, d: float, moduli: tuple[str, ...]) -> dict[str, float]:
+        """The wire's ``moduli`` (``"G"``, ``"E"``: the spring's field, else the material's; positive) and ``Sut``
+        (the field, else :func:`wire_tensile_strength` of the material at the wire diameter ``d`` [m]) [Pa]."""
+        mat = self.material_record
+        out = {}
+        for nm in moduli:
+            given = getattr(self, nm)
+            out[nm] = to_si(given if given is not None else mat.require(nm), "pressure", nm)
+            if out[nm] <= 0:
+                raise InputError(f"{self.name}: {nm} must be positive")
+        Sut = self.Sut if self.Sut is not None else wire_tensile_strength(mat, Q(d, "m"))
+        out["Sut"] = to_si(Sut, "pressure", "Sut")
+        return out
 
     @cached_property
     def material_record(self) -> Material:

@@ -145,16 +145,10 @@ class CompressionSpring(sf.HelicalSpring):
             raise InputError(f"{self.name}: solid length {fmt(Q(Ls, 'm'), 'mm')} is not below the free length "
                              f"L0 = {fmt(Q(L0, 'm'), 'mm')}; the spring cannot be compressed")
         mat = self.material_record
-        G = to_si(self.G, "pressure", "G") if self.G is not None else to_si(mat.require("G"), "pressure", "G")
-        E = to_si(self.E, "pressure", "E") if self.E is not None else to_si(mat.require("E"), "pressure", "E")
-        for nm, v in (("G", G), ("E", E)):
-            if v <= 0:
-                raise InputError(f"{self.name}: {nm} must be positive")
-        Sut = (to_si(self.Sut, "pressure", "Sut") if self.Sut is not None
-               else to_si(sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut"))
+        wire = self._wire_si(d, ("G", "E"))
         rho = (to_si(self.density, "density", "density") if self.density is not None
                else (to_si(mat.density, "density", "density") if mat.density is not None else float("nan")))
-        return dict(d=d, D=D, Na=Na, Nt=Nt, L0=L0, Ls=Ls, G=G, E=E, Sut=Sut, rho=rho)
+        return dict(d=d, D=D, Na=Na, Nt=Nt, L0=L0, Ls=Ls, **wire, rho=rho)
 
     # ------------------------------------------------------------------------------ geometry
     @property

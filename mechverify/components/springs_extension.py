@@ -72,11 +72,7 @@ class ExtensionSpring(sf.HelicalSpring):
             raise InputError(f"{self.name}: initial tension must be >= 0")
         r1 = D / 2 if self.r1 is None else to_si(self.r1, "length", "r1")
         r2 = math.nan if self.r2 is None else to_si(self.r2, "length", "r2")
-        mat = self.material_record
-        G = to_si(self.G if self.G is not None else mat.require("G"), "pressure", "G")
-        E = to_si(self.E if self.E is not None else mat.require("E"), "pressure", "E")
-        Sut = to_si(self.Sut if self.Sut is not None else sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut")
-        return dict(d=d, D=D, Nb=Nb, Fi=Fi, r1=r1, r2=r2, G=G, E=E, Sut=Sut)
+        return dict(d=d, D=D, Nb=Nb, Fi=Fi, r1=r1, r2=r2, **self._wire_si(d, ("G", "E")))
 
     @property
     def body_coils(self) -> float:

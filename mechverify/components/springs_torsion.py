@@ -51,10 +51,7 @@ class TorsionSpring(sf.HelicalSpring):
         l1, l2 = to_si(self.l1, "length", "l1"), to_si(self.l2, "length", "l2")
         if l1 < 0 or l2 < 0:
             raise InputError(f"{self.name}: leg lengths must be >= 0")
-        mat = self.material_record
-        E = to_si(self.E if self.E is not None else mat.require("E"), "pressure", "E")
-        Sut = to_si(self.Sut if self.Sut is not None else sf.wire_tensile_strength(mat, Q(d, "m")), "pressure", "Sut")
-        return dict(d=d, D=D, Nb=Nb, l1=l1, l2=l2, E=E, Sut=Sut)
+        return dict(d=d, D=D, Nb=Nb, l1=l1, l2=l2, **self._wire_si(d, ("E",)))
 
     @property
     def active_turns(self) -> float:
