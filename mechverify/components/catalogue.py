@@ -22,6 +22,37 @@ def normalise(name: str) -> str:
     return " ".join(name.lower().replace("_", " ").replace("-", " ").split())
 
 
+def catalogue_entry(cls: type, d: Mapping[str, Any], where: str, needs: str,
+                    references: Mapping[str, str] | None = None,
+                    tuples: tuple[str, ...] = ("notes",)) -> dict[str, Any]:
+    """The keyword arguments of dataclass ``cls`` from a catalogue entry ``d``: ``aliases`` dropped, ``source``
+    looked up in ``references``, the ``tuples`` keys made tuples. An unknown key (with a did-you-mean) or a missing
+    required field is an :class:`InputError` at ``where.key`` (``where`` = ``"motor 'RE 13'"``; ``needs`` =
+    ``"a dc motor"`` in the message)."""
+    from dataclasses import MISSING, fields
+
+    d = dict(d)
+    d.pop("aliases", None)
+    allowed = {f.name for f in fields(cls) if f.init}
+    unknown = set(d) - allowed
+    if unknown:
+        from mechverify.errors import suggest
+        bad = sorted(unknown)[0]
+        hint = suggest(bad, allowed)
+        raise InputError(f"{where}.{bad}: unknown key" + (f"; did you mean {hint[0]!r}?" if hint else ""))
+    missing = sorted(f.name for f in fields(cls) if f.init and f.name not in d
+                     and f.default is MISSING and f.default_factory is MISSING)
+    if missing:
+        raise InputError(f"{where}.{missing[0]}: missing ({needs} needs {', '.join(missing)})")
+    refs = dict(references or {})
+    if "source" in d:
+        d["source"] = refs.get(d["source"], d["source"])
+    for k in tuples:
+        if k in d:
+            d[k] = tuple(d[k])
+    return d
+
+
 class Catalogue(Generic[T]):
     """Entries of ``table`` in ``path``, each built by ``build(entry, references)``, loaded on first use."""
 

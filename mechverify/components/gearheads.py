@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import MISSING, dataclass, field, fields
+from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 import pint
 
-from mechverify.components.catalogue import Catalogue
+from mechverify.components.catalogue import Catalogue, catalogue_entry
 from mechverify.components.transmissions import _Reduction, effort_to_input
 from mechverify.errors import InputError
 from mechverify.frozen import set_fields
@@ -144,27 +144,9 @@ class Gearhead(_Reduction):
 
 
 def gearhead_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None = None) -> Gearhead:
-    d = dict(d)
-    d.pop("aliases", None)
-    allowed = {f.name for f in fields(Gearhead) if f.init}
-    unknown = set(d) - allowed
-    if unknown:
-        from mechverify.errors import suggest
-        bad = sorted(unknown)[0]
-        hint = suggest(bad, allowed)
-        raise InputError(f"gearhead {d.get('name')!r}.{bad}: unknown key"
-                         + (f"; did you mean {hint[0]!r}?" if hint else ""))
-    missing = sorted(f.name for f in fields(Gearhead) if f.init and f.name not in d
-                     and f.default is MISSING and f.default_factory is MISSING)
-    if missing:
-        raise InputError(f"gearhead {d.get('name')!r}.{missing[0]}: missing (a gearhead needs {', '.join(missing)})")
-    refs = dict(references or {})
-    if "source" in d:
-        d["source"] = refs.get(d["source"], d["source"])
-    for k in ("notes", "stage_ratios"):
-        if k in d:
-            d[k] = tuple(d[k])
-    return Gearhead(**d)
+    """Build a gearhead from a TOML-style mapping (a catalogue entry, a design file's ``gearhead_data``)."""
+    return Gearhead(**catalogue_entry(Gearhead, d, f"gearhead {d.get('name')!r}", "a gearhead", references,
+                                      tuples=("notes", "stage_ratios")))
 
 
 _CATALOGUE: Catalogue[Gearhead] = Catalogue("gearhead", _DATA, "gearhead", gearhead_from_dict)

@@ -35,14 +35,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import MISSING, dataclass, field, fields
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pint
 
-from mechverify.components.catalogue import Catalogue
+from mechverify.components.catalogue import Catalogue, catalogue_entry
 from mechverify.errors import InputError, UnitError
 from mechverify.frozen import set_fields
 from mechverify.units import Q, QuantityLike, as_quantity, fmt, from_si, to_si
@@ -721,25 +721,7 @@ def motor_from_dict(d: Mapping[str, Any], references: Mapping[str, str] | None =
     if typ not in _TYPES:
         raise InputError(f"motor {d.get('name')!r}: type must be one of {sorted(_TYPES)}, got {typ!r}")
     cls = _TYPES[typ]
-    allowed = {f.name for f in fields(cls) if f.init}
-    unknown = set(d) - allowed
-    if unknown:
-        from mechverify.errors import suggest
-        bad = sorted(unknown)[0]
-        hint = suggest(bad, allowed)
-        raise InputError(f"motor {d.get('name')!r}.{bad}: unknown key"
-                         + (f"; did you mean {hint[0]!r}?" if hint else ""))
-    missing = sorted(f.name for f in fields(cls) if f.init and f.name not in d
-                     and f.default is MISSING and f.default_factory is MISSING)
-    if missing:
-        raise InputError(f"motor {d.get('name')!r}.{missing[0]}: missing (a {typ} motor needs "
-                         f"{', '.join(missing)})")
-    refs = dict(references or {})
-    if "source" in d:
-        d["source"] = refs.get(d["source"], d["source"])
-    if "notes" in d:
-        d["notes"] = tuple(d["notes"])
-    return cls(**d)
+    return cls(**catalogue_entry(cls, d, f"motor {d.get('name')!r}", f"a {typ} motor", references))
 
 
 _CATALOGUE: Catalogue[Motor] = Catalogue("motor", _DATA, "motor", motor_from_dict)
