@@ -128,21 +128,30 @@ def _scale(unit: str) -> float:
     return float(Q(1, unit).m_as("m"))
 
 
+def _cells(m: Any, name: str, unit: str, kinds: Mapping[str, int],
+           what: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The corner connectivity of the mesh's cells of ``kinds`` (the file's node numbers), the file's -> compact node
+    numbers of the nodes they use (-1 for the others) and those nodes' coordinates in metres (a row each). A mesh
+    without such cells (``what``: "tetrahedra") or with element types mechverify does not solve: :class:`ModelError`."""
+    _refuse(m, name, kinds)
+    cells = [c for _, c in _blocks(m, kinds)]
+    if not cells:
+        raise ModelError(f"{name}: no {what} in the mesh (cell types: "
+                         f"{', '.join(sorted({b.type for b in m.cells})) or 'none'})")
+    t = np.vstack(cells)
+    used = np.unique(t)
+    remap = np.full(len(m.points), -1, np.int64)
+    remap[used] = np.arange(used.size)
+    return t, remap, np.asarray(m.points, float)[used] * _scale(unit)
+
+
 def _solid(m: Any, name: str, unit: str) -> SolidMesh:
     from skfem import MeshTet
 
     from mechverify.fea.mesh import SolidMesh, contiguous, orient
 
-    _refuse(m, name, _VOLUME)
-    tets = [c for _, c in _blocks(m, _VOLUME)]
-    if not tets:
-        raise ModelError(f"{name}: no tetrahedra in the mesh (cell types: "
-                         f"{', '.join(sorted({b.type for b in m.cells})) or 'none'})")
-    t = np.vstack(tets)
-    used = np.unique(t)
-    remap = np.full(len(m.points), -1, np.int64)
-    remap[used] = np.arange(used.size)
-    p = np.asarray(m.points, float)[used].T * _scale(unit)
+    t, remap, pts = _cells(m, name, unit, _VOLUME, "tetrahedra")
+    p = pts.T
     if p.shape[0] == 2:
         raise ModelError(f"{name}: the mesh points are 2D; a solid needs 3D coordinates")
     named: dict[str, np.ndarray] = {}
@@ -170,16 +179,7 @@ def _solid(m: Any, name: str, unit: str) -> SolidMesh:
 def _plane(m: Any, name: str, unit: str) -> NamedMeshTri:
     from mechverify.fea.mesh2d import NamedMeshTri, _facets_of, orient_triangles, tri_mesh
 
-    _refuse(m, name, _SURFACE)
-    tris = [c for _, c in _blocks(m, _SURFACE)]
-    if not tris:
-        raise ModelError(f"{name}: no triangles in the mesh (cell types: "
-                         f"{', '.join(sorted({b.type for b in m.cells})) or 'none'})")
-    t = np.vstack(tris)
-    used = np.unique(t)
-    remap = np.full(len(m.points), -1, np.int64)
-    remap[used] = np.arange(used.size)
-    pts = np.asarray(m.points, float)[used] * _scale(unit)
+    t, remap, pts = _cells(m, name, unit, _SURFACE, "triangles")
     if pts.shape[1] == 3:
         z = pts[:, 2]
         if np.ptp(z) > 1e-9 * max(float(np.ptp(pts[:, :2], axis=0).max()), 1e-300):
