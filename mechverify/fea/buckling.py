@@ -12,7 +12,8 @@ under the model's loads.
 
 - :func:`geometric_stiffness` - ``K_G,ab = ∫ (∇N_a · σ · ∇N_b) dV · I`` (ref. 1, sec. 6.6; ref. 2, ch. 13), the
   stress from the linear static solution at the points of a degree-4 rule.
-- :func:`buckling` - one static solve on the factorisation of ``K``, then the largest eigenvalues
+- :func:`buckling` - one static solve on the factorisation of ``K`` (CHOLMOD when installed, else SuperLU;
+  :mod:`mechverify.fea.factor`), then the largest eigenvalues
   ``θ = 1/μ`` of ``-K_G φ = θ K φ`` by ARPACK's Lanczos iteration with that same factorisation
   (ref. 3, mode 2). Only positive factors (the loads as given, not reversed) are returned, ascending.
   The factors multiply *all* loads of the model; a factor below 1 means the structure buckles before
@@ -38,7 +39,8 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
-from mechverify.fea.modal import _parts, _pattern, stiffness_matrix
+from mechverify.fea.factor import METHODS, cholmod_available, factorize
+from mechverify.fea.modal import _parts, _pattern, mode_count, require_memory, stiffness_matrix
 
 
 def integration_stress(model: Any, u: np.ndarray, order: int = 4) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -81,13 +83,21 @@ class BucklingResults:
         return float(self.factors[0])
 
 
-def buckling(model: Any, n_modes: int = 1) -> BucklingResults:
+def buckling(model: Any, n_modes: int = 1, method: str = "auto", memory: float | None = None) -> BucklingResults:
     """The ``n_modes`` lowest positive buckling load factors of ``model`` under its loads (see module doc).
 
     The model needs supports that prevent every rigid motion (the free one is named) and loads that
     compress something; a model whose loads cause no compressive stress is a :class:`ModelError`.
+    ``method``: the factorisation of ``K`` ("auto": CHOLMOD when installed, else SuperLU;
+    :mod:`mechverify.fea.factor`). A model whose factor would not fit in the available memory (``memory``
+    [bytes] instead of the machine's; :func:`mechverify.fea.modal.memory_estimate`) is refused before
+    assembly with the estimate and the largest model that fits.
     """
-    n_modes = int(n_modes)
+    n_modes = mode_count(n_modes)
+    if method not in METHODS:
+        raise InputError(f"method: one of {', '.join(METHODS)}, got {method!r}")
+    if method == "auto":
+        method = "cholmod" if cholmod_available() else "superlu"
     dim = 2 if hasattr(model, "plane") else 3
     if not model.loads:
         raise InputError("buckling needs loads: the factors multiply the model's loads")
@@ -99,18 +109,16 @@ def buckling(model: Any, n_modes: int = 1) -> BucklingResults:
     if n_modes < 1 or n_modes >= free.size // 2:
         raise InputError(f"n_modes: between 1 and {free.size // 2 - 1} for this model ({free.size} free DOFs), "
                          f"got {n_modes}")
+    require_memory(free.size, dim, n_modes + 4, method, memory)  # before assembling: the factor's estimate
     K = stiffness_matrix(model).tocsr()
     Kf = K[free][:, free].tocsc()
-    try:
-        lu = spl.splu(Kf, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
-    except RuntimeError as exc:
-        raise ModelError(f"the stiffness matrix is singular ({exc}); the model has a mechanism") from None
+    fac = factorize(Kf, method, what="the stiffness matrix")  # CHOLMOD when installed, else SuperLU
     f = model.load_vector()
     u = np.zeros(K.shape[0])
-    u[free] = lu.solve(f[free])
+    u[free] = fac.solve(f[free])
     G = geometric_stiffness(model, u).tocsr()
-    Gf = -G[free][:, free].tocsc()
-    op = spl.LinearOperator(Kf.shape, matvec=lu.solve, dtype=float)
+    Gf = -G[free][:, free].tocsr()
+    op = fac.operator()
     k = min(max(2 * n_modes, n_modes + 4), free.size - 2)
     v0 = np.random.default_rng(0).standard_normal(free.size)
     try:

@@ -28,10 +28,13 @@ References
    transformation for the generalized problem).
 3. Chopra, Dynamics of Structures, 4th ed., 2012, sec. 13.2 (modal participation factor, effective
    modal mass).
+4. A. V. Knyazev, "Toward the optimal preconditioned eigensolver: Locally optimal block preconditioned
+   conjugate gradient method", SIAM J. Sci. Comput. 23 (2001) 517-541 (LOBPCG; SciPy's ``lobpcg``).
 """
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -44,9 +47,29 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
-from mechverify.fea.factor import factorize, one_blas_thread
-from mechverify.fea.linsolve import check_supported, rigid_modes
-from mechverify.units import Q
+from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
+from mechverify.fea.linsolve import check_supported, p1_prolongation, pmg_preconditioner, rigid_modes
+from mechverify.units import Q, to_si
+
+#: ``method`` values of :func:`modal`.
+METHODS = ("auto", "cholmod", "superlu", "lobpcg")
+#: LOBPCG: extra block vectors beyond the wanted modes (at least; k/2 for k wanted), iterations of the first
+#: chunk (its eigenvalues set the absolute tolerance), of each further chunk, and the iteration limit.
+LOBPCG_GUARD = 4
+LOBPCG_FIRST = 8
+LOBPCG_CHUNK = 40
+LOBPCG_MAXITER = 500
+#: Memory model [bytes] (measured with benchmarks/fea_modal.py, P2 tetrahedra; see :func:`memory_estimate`):
+#: stiffness and mass of the free DOFs and their assembly per unknown,
+MATRIX_BYTES_PER_DOF = 2500.0
+#: CHOLMOD's supernodal factor of a compact solid: ``FACTOR_BYTES_3D · n^(1/3)`` per unknown (nested
+#: dissection: fill grows as n^(4/3)); SuperLU's is :data:`SUPERLU_FILL` times larger,
+FACTOR_BYTES_3D = 260.0
+SUPERLU_FILL = 4.0
+#: and the multigrid hierarchy of the LOBPCG path per unknown, plus 12 block vectors of 8 bytes per block column.
+MULTIGRID_BYTES_PER_DOF = 1500.0
+#: Up to this many unknowns "auto" factors when the factor fits (above it LOBPCG, measured to be faster).
+FACTOR_MAX_DOFS = 10**9
 
 
 def _parts(model: Any) -> tuple[int, np.ndarray, float, tuple[float, float]]:
@@ -87,8 +110,8 @@ def density(model: Any) -> float:
         raise InputError(f"modal analysis needs the material's density: {exc}") from None
 
 
-def mass_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.bsr_matrix:
-    """The consistent mass matrix ``M_ab = ∫ ρ t N_a N_b dV · I`` [kg] (ref. 1, sec. 16.2)."""
+def _mass_elements(model: Any) -> np.ndarray:
+    """Scalar element mass matrices ``me[a, b, e] = ∫ ρ t N_a N_b dV`` [kg] (degree-4 rule)."""
     dim, ed, t, _ = _parts(model)
     rho = density(model)
     _, W, N, dN = iso.reference(dim, 4)
@@ -98,12 +121,56 @@ def mass_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.bsr_m
         mesh = model.mesh if dim == 2 else model.mesh.mesh
         _, dj = asm.jacobians(mesh.p, mesh.t[: dim + 1])
         det = np.abs(dj)[:, None] * np.ones_like(W)[None, :]
-    me = np.einsum("aq,bq,eq->abe", N, N, det * W[None, :] * (rho * t), optimize=True)  # a, b, e
+    return np.einsum("aq,bq,eq->abe", N, N, det * W[None, :] * (rho * t), optimize=True)  # a, b, e
+
+
+def mass_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.bsr_matrix:
+    """The consistent mass matrix ``M_ab = ∫ ρ t N_a N_b dV · I`` [kg] (ref. 1, sec. 16.2)."""
+    dim, ed, _, _ = _parts(model)
+    me = _mass_elements(model)
     nb, ne = me.shape[0], me.shape[2]
     blocks = np.zeros((nb * nb, ne, dim * dim))
     for i in range(dim):
         blocks[:, :, i * dim + i] = me.reshape(nb * nb, ne)
     return asm.assemble_blocks(blocks, pattern if pattern is not None else _pattern(model, dim, ed), dim)
+
+
+def node_mass_matrix(model: Any, pattern: asm.BlockPattern | None = None) -> sp.csr_matrix:
+    """The scalar node-by-node consistent mass ``m_ab = ∫ ρ t N_a N_b dV`` [kg]: :func:`mass_matrix` is
+    ``m ⊗ I`` (every block is ``m_ab`` times the identity), so ``m`` holds it in a ninth of the memory (3D)."""
+    dim, ed, _, _ = _parts(model)
+    me = _mass_elements(model)
+    nb, ne = me.shape[0], me.shape[2]
+    pattern = pattern if pattern is not None else _pattern(model, dim, ed)
+    return asm.assemble_blocks(me.reshape(nb * nb, ne, 1), pattern, 1).tocsr()
+
+
+class _NodeMass(spl.LinearOperator):
+    """``M_ff`` of the free DOFs applied as the node mass ``m ⊗ I`` (scatter to all DOFs, one sparse product of
+    ``m`` with the ``[nodes, dim·k]`` block, gather): no vector mass matrix is stored."""
+
+    def __init__(self, m: sp.csr_matrix, free: np.ndarray, dim: int):
+        self.m, self.free, self.dim = m, free, dim
+        self.n_all = m.shape[0] * dim
+        self.all_free = free.size == self.n_all
+        super().__init__(float, (free.size, free.size))
+
+    def _matmat(self, X: np.ndarray) -> np.ndarray:
+        k = X.shape[1]
+        full = X if self.all_free else np.zeros((self.n_all, k))
+        if not self.all_free:
+            full[self.free] = X
+        Y = (self.m @ full.reshape(self.m.shape[0], self.dim * k)).reshape(self.n_all, k)
+        return Y if self.all_free else Y[self.free]
+
+    def _matvec(self, x: np.ndarray) -> np.ndarray:
+        return self._matmat(x.reshape(-1, 1)).ravel()
+
+    def _adjoint(self) -> _NodeMass:
+        return self
+
+    def diagonal(self) -> np.ndarray:
+        return np.repeat(self.m.diagonal(), self.dim)[self.free]
 
 
 def free_dofs(model: Any) -> np.ndarray:
@@ -127,7 +194,9 @@ class ModalResults:
     ``omega2[k]`` [rad²/s²] ascending; ``shapes[k, n, 3]`` mass-normalised (``φᵀ M φ = 1`` [kg]);
     ``effective_mass[k, 3]`` [kg] along x, y, z (Chopra, sec. 13.2: ``(φᵀ M r)²`` with ``r`` a unit
     translation); ``total_mass`` [kg] of the free DOFs along each axis (the sum of all modes'
-    effective masses).
+    effective masses); ``method`` the eigensolver used ("cholmod", "superlu" or "lobpcg"), ``iterations``
+    LOBPCG's iterations, ``residual`` the largest relative residual ``‖Kφ - λMφ‖ / (λ‖Mφ‖)`` of the
+    elastic modes.
     """
 
     kind: str
@@ -139,6 +208,9 @@ class ModalResults:
     total_mass: np.ndarray
     rigid_body_modes: int
     unknowns: int
+    method: str = ""
+    iterations: int = 0
+    residual: float = 0.0
 
     @property
     def frequencies(self) -> pint.Quantity:
@@ -170,6 +242,87 @@ class ModalResults:
                 "effective_mass_fraction": self.effective_mass_fraction().sum(axis=0).tolist()}
 
 
+def memory_estimate(unknowns: int, dim: int = 3, n_modes: int = 10, method: str = "cholmod") -> float:
+    """Estimated peak memory [bytes] of :func:`modal` for ``unknowns`` free DOFs (measured rule, module
+    constants): the matrices (:data:`MATRIX_BYTES_PER_DOF`), plus for a factorisation the factor
+    (3D: :data:`FACTOR_BYTES_3D` ``· n^(1/3)`` per unknown for CHOLMOD, :data:`SUPERLU_FILL` times that for
+    SuperLU; 2D: a third of it) and ARPACK's 2k+1 Lanczos vectors, or for LOBPCG the multigrid
+    (:data:`MULTIGRID_BYTES_PER_DOF`) and 12 block vectors of ``k + max(LOBPCG_GUARD, k/2)`` columns."""
+    n = float(unknowns)
+    base = MATRIX_BYTES_PER_DOF * n
+    if method == "lobpcg":
+        m = n_modes + max(LOBPCG_GUARD, n_modes // 2)
+        return base + MULTIGRID_BYTES_PER_DOF * n + 12 * 8 * m * n
+    fill = FACTOR_BYTES_3D * n ** (1 / 3) * n * (1.0 if dim == 3 else 1 / 3)
+    if method == "superlu":
+        fill *= SUPERLU_FILL
+    return base + fill + 8 * (2 * n_modes + 1) * n
+
+
+def _available(memory: float | None) -> float:
+    from mechverify.fea.study import MEMORY_SHARE, available_memory
+
+    return (available_memory() if memory is None else float(memory)) * MEMORY_SHARE
+
+
+def choose_method(unknowns: int, dim: int = 3, n_modes: int = 10, shift: Any = None,
+                  memory: float | None = None) -> str:
+    """The eigensolver ``method="auto"`` takes: a factorisation (CHOLMOD when installed, else SuperLU) when its
+    :func:`memory_estimate` fits in :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory
+    (``memory`` [bytes] instead of the machine's) and the model has at most :data:`FACTOR_MAX_DOFS` unknowns,
+    else LOBPCG; always a factorisation for a ``shift`` (LOBPCG finds the lowest modes only)."""
+    direct = "cholmod" if cholmod_available() else "superlu"
+    if shift is not None:
+        return direct
+    fits = memory_estimate(unknowns, dim, n_modes, direct) <= _available(memory)
+    return direct if fits and unknowns <= FACTOR_MAX_DOFS else "lobpcg"
+
+
+def largest_fitting(dim: int, n_modes: int, method: str, memory: float | None = None) -> int:
+    """The most unknowns whose :func:`memory_estimate` fits in the available memory (bisection)."""
+    avail = _available(memory)
+    lo, hi = 0, 1
+    while memory_estimate(hi, dim, n_modes, method) <= avail:
+        lo, hi = hi, hi * 2
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (mid, hi) if memory_estimate(mid, dim, n_modes, method) <= avail else (lo, mid)
+    return lo
+
+
+def require_memory(unknowns: int, dim: int, n_modes: int, method: str, memory: float | None = None) -> None:
+    """:class:`ModelError` with the estimate and the largest model that fits when :func:`modal` with ``method``
+    would need more than the available memory (checked before assembling anything)."""
+    need, avail = memory_estimate(unknowns, dim, n_modes, method), _available(memory)
+    if need > avail:
+        n_max = largest_fitting(dim, n_modes, method, memory)
+        other = "" if method == "lobpcg" else " (method='lobpcg' needs less)"
+        raise ModelError(f"modal analysis ({method}) of {unknowns:,} unknowns would need about {need / 1e9:.3g} GB, "
+                         f"more than the {avail / 1e9:.3g} GB available; the largest model that fits has about "
+                         f"{n_max:,} unknowns{other}: use a coarser mesh")
+
+
+def mode_count(value: Any, name: str = "n_modes") -> int:
+    """``value`` as a number of modes (a whole number; 3.0 is 3), else an :class:`InputError` naming ``name``."""
+    if isinstance(value, float) and value.is_integer():
+        return int(value)
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise InputError(f"{name}: a whole number of modes, got {value!r}")
+    return int(value)
+
+
+def shift_frequency(shift: Any) -> float:
+    """The ``shift`` of :func:`modal` in Hz: a frequency (``"1200 Hz"``, a quantity) or a bare number of Hz,
+    not negative; else an :class:`InputError` / :class:`~mechverify.errors.UnitError` naming ``shift``."""
+    if isinstance(shift, bool):
+        raise InputError(f"shift: expected a frequency such as '1200 Hz', got {shift!r}")
+    f0 = float(shift) if isinstance(shift, int | float | np.integer | np.floating) else to_si(shift, "frequency",
+                                                                                              "shift")
+    if not np.isfinite(f0) or f0 < 0:
+        raise InputError(f"shift: a frequency of zero or more (the modes nearest above it are found), got {shift!r}")
+    return f0
+
+
 def _default_shift(K: sp.spmatrix, M: sp.spmatrix) -> float:
     """A shift below the lowest elastic eigenvalue: -1e-4 of the median diagonal ratio Kii/Mii (that ratio is
     an element-scale frequency², far above the first structural one); keeps ``K - σM`` regular for free bodies."""
@@ -177,17 +330,95 @@ def _default_shift(K: sp.spmatrix, M: sp.spmatrix) -> float:
     return -1e-4 * float(np.median(d[d > 0]))
 
 
-def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto") -> ModalResults:
+def _prolongation(model: Any, dim: int) -> sp.csr_matrix:
+    """Linear-to-quadratic interpolation of the model's mesh (the coarse level of the p-multigrid)."""
+    if dim == 3:
+        m = model.mesh.mesh
+        return p1_prolongation(m.nvertices, m.edges, 3)
+    return p1_prolongation(model.mesh.nvertices, model.mesh.facets, 2)
+
+
+def _relative_residuals(K: sp.spmatrix, M: sp.spmatrix, w: np.ndarray, V: np.ndarray) -> np.ndarray:
+    """``‖K φ - λ M φ‖ / (λ ‖M φ‖)`` per column (the backward error of an eigenpair; ref. 4, sec. 2)."""
+    MV = M @ V
+    R = K @ V - MV * w[None, :]
+    return np.linalg.norm(R, axis=0) / np.maximum(np.abs(w) * np.linalg.norm(MV, axis=0), 1e-300)
+
+
+def _lobpcg(model: Any, Kf: sp.csr_matrix, Mf: _NodeMass, free: np.ndarray, dim: int, k: int,
+            Y: np.ndarray | None, sigma: float, rtol: float) -> tuple[np.ndarray, np.ndarray, int, float]:
+    """The ``k`` lowest eigenpairs of ``Kf φ = λ Mf φ`` (M-orthogonal to the columns of ``Y``) by LOBPCG
+    (ref. 4) preconditioned by the static solver's p-multigrid V-cycle of ``Kf - σ Mf``
+    (:func:`mechverify.fea.linsolve.pmg_preconditioner`): ``(λ, φ, iterations, largest relative residual)``.
+
+    The block carries :data:`LOBPCG_GUARD` extra vectors (the last wanted mode converges at the rate set by
+    the first unwanted one). SciPy's LOBPCG stops on one absolute residual for the whole block, so it runs in
+    chunks of :data:`LOBPCG_CHUNK` iterations, restarted from its best block, until the wanted pairs'
+    relative residuals (:func:`_relative_residuals`) are below ``rtol``; an eigenvalue's relative error is
+    then of order ``rtol²`` times λ over its gap to the rest of the spectrum."""
+    if sigma == 0:
+        A = Kf
+    else:  # K - σM with the vector mass built for it (m ⊗ I on the free DOFs)
+        Mv = sp.kron(Mf.m, sp.identity(dim, format="csr"), format="csr")[free][:, free]
+        A = (Kf - sigma * Mv).tocsr()
+        del Mv
+    apply = pmg_preconditioner(A, model.nodes, free, dim, _prolongation(model, dim))
+
+    def precondition(R: np.ndarray) -> np.ndarray:
+        R = R.reshape(R.shape[0], -1)
+        return np.column_stack([apply(np.ascontiguousarray(R[:, j])) for j in range(R.shape[1])])
+
+    T = spl.LinearOperator(Kf.shape, matvec=precondition, matmat=precondition, dtype=float)
+    m = min(k + max(LOBPCG_GUARD, k // 2), free.size - (0 if Y is None else Y.shape[1]) - 1)
+    X = np.random.default_rng(0).standard_normal((free.size, m))
+    iterations, tol, rel = 0, None, np.array([np.inf])
+    while iterations < LOBPCG_MAXITER:
+        with warnings.catch_warnings(), one_blas_thread():
+            warnings.simplefilter("ignore")  # "did not reach the tolerance": judged below, per wanted pair
+            w, X, hist = spl.lobpcg(Kf, X, B=Mf, M=T, Y=Y, tol=tol if tol is not None else 1e-300,
+                                    maxiter=LOBPCG_CHUNK if tol is not None else LOBPCG_FIRST,
+                                    largest=False, retLambdaHistory=True)
+        iterations += max(len(hist) - 1, 1)
+        order = np.argsort(w)
+        w, X = w[order], X[:, order]
+        rel = _relative_residuals(Kf, Mf, w[:k], X[:, :k])
+        if np.all(rel <= rtol):
+            return w[:k], X[:, :k], iterations, float(np.max(rel))
+        # SciPy's absolute tolerance for the next chunk: the wanted pairs' residual scale ‖λ M φ‖
+        tol = rtol * float(np.min(np.abs(w[:k]) * np.linalg.norm(Mf @ X[:, :k], axis=0)))
+    raise ModelError(f"LOBPCG did not converge in {iterations} iterations (largest relative residual "
+                     f"{float(np.max(rel)):.2e} > {rtol:g}); the model may be nearly a mechanism, or use "
+                     "method='cholmod' (a factorisation) if it fits in memory")
+
+
+def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto", rtol: float = 1e-5,
+          memory: float | None = None) -> ModalResults:
     """The ``n_modes`` natural frequencies of ``model`` nearest above ``shift`` (a frequency; default: the
     lowest ones) with mass-normalised mode shapes.
 
-    One sparse factorisation of ``K - σ M`` (σ = (2π shift)², or a small negative number that keeps a
-    free body's matrix regular) drives ARPACK's Lanczos iteration (ref. 2): CHOLMOD when scikit-sparse is
-    installed (``method="auto"``/``"cholmod"``), else SuperLU (``"superlu"``; always for a positive shift,
-    where ``K - σM`` is indefinite); :mod:`mechverify.fea.factor`. Asking for as many modes as
-    the model has free DOFs, or more, is an :class:`InputError`.
+    ``method``:
+
+    - ``"cholmod"`` / ``"superlu"``: one sparse factorisation of ``K - σ M`` (σ = (2π shift)², or a small
+      negative number that keeps a free body's matrix regular) drives ARPACK's Lanczos iteration in
+      shift-invert mode (ref. 2; :mod:`mechverify.fea.factor`; SuperLU always for a positive shift, where
+      ``K - σM`` is indefinite).
+    - ``"lobpcg"``: LOBPCG (ref. 4) preconditioned by the static solver's multigrid (solids and plane
+      models; the lowest modes only, no ``shift``), to relative residuals ``rtol``: no factor, so a few kB per
+      unknown where the factor of a large solid takes 15 or more.
+    - ``"auto"``: the factorisation (CHOLMOD when installed) when its estimated memory
+      (:func:`memory_estimate`) fits in :data:`MEMORY_SHARE` of the available memory (``memory`` [bytes]:
+      instead of the machine's) and the model is small enough for it to be the faster path
+      (:func:`choose_method`), else LOBPCG.
+
+    A model too large for either path is refused *before* assembly with the estimate and the largest
+    model that fits (:class:`ModelError`). Asking for as many modes as the model has free DOFs, or more, is
+    an :class:`InputError`.
     """
-    n_modes = int(n_modes)
+    n_modes = mode_count(n_modes)
+    if method not in METHODS:
+        raise InputError(f"method: one of {', '.join(METHODS)}, got {method!r}")
+    if not (isinstance(rtol, int | float) and 0 < rtol < 1e-1):
+        raise InputError(f"rtol: a relative residual between 0 and 0.1, got {rtol!r}")
     dim = 2 if hasattr(model, "plane") else 3
     free = free_dofs(model)
     if n_modes < 1:
@@ -195,23 +426,26 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto")
     if n_modes >= free.size:
         raise InputError(f"n_modes: {n_modes} modes asked, but the model has only {free.size} free degrees of "
                          f"freedom (at most {free.size - 1} modes can be computed); refine the mesh or ask fewer")
+    if method == "lobpcg" and shift is not None:
+        raise InputError("shift: LOBPCG finds the lowest modes; modes near a frequency need a factorisation "
+                         "(method 'auto', 'cholmod' or 'superlu')")
+    f0 = None if shift is None else shift_frequency(shift)
+    used = choose_method(free.size, dim, n_modes, shift, memory) if method == "auto" else method
+    require_memory(free.size, dim, n_modes, used, memory)
     pattern = _pattern(model, dim, _parts(model)[1])
-    K = stiffness_matrix(model, pattern).tocsr()
-    M = mass_matrix(model, pattern).tocsr()
-    Kf, Mf = K[free][:, free].tocsc(), M[free][:, free].tocsr()  # CSR: the faster product in ARPACK's loop
+    # one matrix at a time, each cut to the free DOFs before the next (peak memory); CSR: the faster product
+    Kf = stiffness_matrix(model, pattern).tocsr()[free][:, free].tocsr()
+    Mf: Any
+    if used == "lobpcg":  # the node mass m (M = m ⊗ I): a ninth of M's memory and a cheaper product
+        Mf = _NodeMass(node_mass_matrix(model, pattern), free, dim)
+    else:
+        Mf = mass_matrix(model, pattern).tocsr()[free][:, free].tocsr()
+    del pattern
     if shift is None:
         sigma = _default_shift(Kf, Mf) if not model.supports else 0.0
     else:
-        f0 = Q(shift).m_as("Hz") if not isinstance(shift, int | float) else float(shift)
         sigma = (2 * np.pi * f0) ** 2
-    # K - σM is positive definite for σ <= 0 (CHOLMOD when installed); above the first eigenvalue it is indefinite
-    try:
-        fac = factorize((Kf - sigma * Mf).tocsc(), method if sigma <= 0 else "superlu", what="K - σM")
-    except ModelError as exc:
-        raise ModelError(f"{exc} (σ = {sigma:.4g} rad²/s²; a shift on an eigenvalue: give another shift)") from None
-    rng = np.random.default_rng(0)
-    v0 = rng.standard_normal(free.size)
-    n_rigid = 0
+    n_rigid, B = 0, None
     if not model.supports:
         # free body: the rigid-body modes (a multiple eigenvalue at zero, which Lanczos may not resolve) are
         # set apart exactly and the elastic modes sought in their M-orthogonal complement
@@ -220,20 +454,33 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto")
         C = np.linalg.cholesky(B.T @ (Mf @ B))
         B = np.linalg.solve(C, B.T).T  # M-orthonormal
         n_rigid = B.shape[1]
-
-        def project(x: np.ndarray) -> np.ndarray:
-            return x - B @ (B.T @ (Mf @ x))
-
-        op = spl.LinearOperator(Kf.shape, matvec=lambda x: project(fac.solve(x)), dtype=float)
-        v0 = project(v0)
-    else:
-        op = fac.operator()
     k = n_modes - n_rigid
-    if k > 0:
+    iterations, residual = 0, 0.0
+    if k > 0 and used == "lobpcg":
+        w, V, iterations, residual = _lobpcg(model, Kf, Mf, free, dim, k, B, sigma, rtol)
+    elif k > 0:
+        if sigma > 0:
+            used = "superlu"  # K - σM is indefinite above the first eigenvalue
+        try:
+            fac = factorize((Kf - sigma * Mf).tocsc(), used, what="K - σM")
+        except ModelError as exc:
+            raise ModelError(f"{exc} (σ = {sigma:.4g} rad²/s²; a shift on an eigenvalue: give another shift)") \
+                from None
+        used = fac.method
+        v0 = np.random.default_rng(0).standard_normal(free.size)
+        if B is not None:
+            def project(x: np.ndarray) -> np.ndarray:
+                return x - B @ (B.T @ (Mf @ x))
+
+            op = spl.LinearOperator(Kf.shape, matvec=lambda x: project(fac.solve(x)), dtype=float)
+            v0 = project(v0)
+        else:
+            op = fac.operator()
         with one_blas_thread():  # ARPACK's reorthogonalisation: BLAS-2, slower with threads on a loaded machine
             w, V = spl.eigsh(Kf, k=k, M=Mf, sigma=sigma, which="LM", OPinv=op, v0=v0, tol=1e-10)
         order = np.argsort(w)
         w, V = w[order], V[:, order]
+        residual = float(np.max(_relative_residuals(Kf, Mf, w, V)))
     else:
         w, V = np.zeros(0), np.zeros((free.size, 0))
     if n_rigid:
@@ -264,4 +511,5 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto")
         pts = model.nodes.T.copy()
         cells = [("tetra10", model.mesh.basis.element_dofs.T.copy())]
         kind = "solid"
-    return ModalResults(kind, w, shapes, pts, cells, eff, tot, rigid, int(free.size))
+    return ModalResults(kind, w, shapes, pts, cells, eff, tot, rigid, int(free.size), used, iterations,
+                        residual)
