@@ -293,12 +293,16 @@ def from_si(value: Any, dim: str) -> pint.Quantity:
     return Quantity(value, _unit(DIMENSIONS[dim][1]))
 
 
-def require_positive(value: float, name: str, *, allow_zero: bool = False) -> float:
-    """Raise :class:`InputError` unless the SI value is > 0 (or >= 0 with ``allow_zero``)."""
+def require_positive(value: float, name: str, *, allow_zero: bool = False, dim: str | None = None) -> float:
+    """Raise :class:`InputError` unless the SI value is > 0 (or >= 0 with ``allow_zero``).
+
+    ``dim`` (a :data:`DIMENSIONS` name): the message shows the value in its SI unit (``got -0.002 m``);
+    without it, a bare number marked ``(SI)``."""
     bad = np.any(np.asarray(value) < 0) if allow_zero else np.any(np.asarray(value) <= 0)
     if bad:
         rel = "zero or positive" if allow_zero else "positive"
-        raise InputError(f"{name}: must be {rel}, got {value!r} (SI)")
+        shown = f"{value!r} (SI)" if dim is None else fmt(from_si(value, dim))
+        raise InputError(f"{name}: must be {rel}, got {shown}")
     return value
 
 

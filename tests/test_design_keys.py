@@ -241,3 +241,16 @@ def test_joint_limits_from_python_show_angles_not_reprs():
 
     with pytest.raises(InputError, match=r"^joint limits\.theta_left: low must be below high, got \(200 deg, 100 deg\)$"):
         joint_limits({"theta_left": (Q(200, "deg"), Q(100, "deg"))}, ("theta_left",))
+
+
+def test_as_written_replaces_an_si_value_only():
+    """require_positive's SI value (bare '(SI)' or, with its dim, 'got -0.1 m') becomes the value as written at the
+    key; a value already in the user's unit ('-4 mm') and a key not in the table are left alone."""
+    from mechverify.design.loader import as_written
+
+    table = {"distal_left": "-100 mm", "n": -3.0}
+    for msg in ("must be positive, got -0.1 m", "must be positive, got -0.1 (SI)"):
+        assert as_written("c.fb.distal_left", msg, table, "c.fb") == 'must be positive, got "-100 mm"'
+    assert as_written("c.fb.n", "must be zero or positive, got -3", table, "c.fb") == "must be zero or positive, got -3.0"
+    assert as_written("c.fb.distal_left", "must be positive, got -4 mm", table, "c.fb") == "must be positive, got -4 mm"
+    assert as_written("c.fb.other", "must be positive, got -0.1 m", table, "c.fb") == "must be positive, got -0.1 m"

@@ -101,5 +101,23 @@ def test_require_positive():
     assert require_positive(0.0, "d", allow_zero=True) == 0.0
 
 
+def test_require_positive_shows_the_unit_with_dim():
+    """A Python API user who passed a quantity sees the value in its SI unit, not a bare number marked (SI)."""
+    from mechverify.components import columns, power_screw
+
+    with pytest.raises(InputError, match=r"^d: must be positive, got -0\.002 m$"):
+        require_positive(-0.002, "d", dim="length")
+    with pytest.raises(InputError, match=r"^F: must be zero or positive, got -5 N$"):
+        require_positive(-5.0, "F", allow_zero=True, dim="force")
+    with pytest.raises(InputError, match=r"^d: must be positive, got -1\.0 \(SI\)$"):
+        require_positive(-1.0, "d")  # no dimension known: the bare SI number
+    with pytest.raises(InputError, match=r"^nut_length: must be positive, got -0\.01 m$"):
+        power_screw.engaged_threads("-10 mm", "2 mm")
+    with pytest.raises(InputError, match=r"^engaged_threads: must be positive, got -3$"):
+        power_screw.flank_pressure("1 kN", "10 mm", "1 mm", -3)
+    with pytest.raises(InputError, match=r"^A: must be positive, got -1e-06 m²$"):
+        columns.radius_of_gyration("-1 mm^2", "1 mm^4")
+
+
 def test_from_si_unit():
     assert from_si(2.0, "torque").m_as("N*mm") == pytest.approx(2000.0)

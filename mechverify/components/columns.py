@@ -107,27 +107,27 @@ def effective_length_factor(end: str | float, basis: str = "recommended") -> flo
 
 
 def _check(E: float, I: float, length: float, A: float | None = None, Sy: float | None = None) -> None:
-    require_positive(E, "E")
-    require_positive(I, "I")
-    require_positive(length, "length")
+    require_positive(E, "E", dim="pressure")
+    require_positive(I, "I", dim="second_moment")
+    require_positive(length, "length", dim="length")
     if A is not None:
-        require_positive(A, "A")
+        require_positive(A, "A", dim="area")
     if Sy is not None:
-        require_positive(Sy, "Sy")
+        require_positive(Sy, "Sy", dim="pressure")
 
 
 def radius_of_gyration(A: QuantityLike, I: QuantityLike) -> pint.Quantity:
     """``k = sqrt(I/A)`` [m]."""
     a, i = to_si(A, "area", "A"), to_si(I, "second_moment", "I")
-    require_positive(a, "A")
-    require_positive(i, "I")
+    require_positive(a, "A", dim="area")
+    require_positive(i, "I", dim="second_moment")
     return from_si(math.sqrt(i / a), "length")
 
 
 def slenderness_ratio(length: QuantityLike, A: Any, I: Any) -> pint.Quantity:
     """``l/k`` [-] with the actual (not effective) length, as Shigley uses it with ``C``."""
     L = to_si(length, "length", "length")
-    require_positive(L, "length")
+    require_positive(L, "length", dim="length")
     return from_si(L / radius_of_gyration(A, I).m_as("m"), "dimensionless")
 
 
@@ -151,8 +151,8 @@ def transition_slenderness(E: QuantityLike, Sy: QuantityLike, end: str | float =
     Below it the J. B. Johnson parabola applies, above it Euler's formula.
     """
     e, sy = to_si(E, "pressure", "E"), to_si(Sy, "pressure", "Sy")
-    require_positive(e, "E")
-    require_positive(sy, "Sy")
+    require_positive(e, "E", dim="pressure")
+    require_positive(sy, "Sy", dim="pressure")
     C = end_condition_constant(end, basis)
     return from_si(math.sqrt(2 * math.pi**2 * C * e / sy), "dimensionless")
 

@@ -79,8 +79,8 @@ def whirl_factor(end: str) -> float:
 
 # ---------------------------------------------------------------------- angles
 def _lam(lead: float, d2: float) -> float:
-    require_positive(lead, "lead")
-    require_positive(d2, "d2")
+    require_positive(lead, "lead", dim="length")
+    require_positive(d2, "d2", dim="length")
     return math.atan(lead / (math.pi * d2))
 
 
@@ -140,7 +140,7 @@ def _collar(mu_collar: float, d_collar: float | None) -> float:
         return 0.0
     if d_collar is None:
         raise InputError("d_collar: a collar friction coefficient needs the collar's mean friction diameter")
-    require_positive(d_collar, "d_collar")
+    require_positive(d_collar, "d_collar", dim="length")
     return _mu(mu_collar, "mu_collar") * d_collar / 2
 
 
@@ -221,7 +221,7 @@ def axial_force_from_torque(torque: float, d2: float, lead: float, mu: float, fl
 
     The inverse of :func:`raise_torque`.
     """
-    require_positive(torque, "torque", allow_zero=True)
+    require_positive(torque, "torque", allow_zero=True, dim="torque")
     return torque / (_thread_ratio_raise(lead, d2, mu, flank_angle) + _collar(mu_collar, d_collar))
 
 
@@ -229,8 +229,8 @@ def axial_force_from_torque(torque: float, d2: float, lead: float, mu: float, fl
 @si_function(returns="dimensionless", nut_length="length", pitch="length")
 def engaged_threads(nut_length: float, pitch: float) -> float:
     """Thread turns carrying the load, ``n = m / P`` [-] (nut length m over the pitch, all starts together)."""
-    require_positive(nut_length, "nut_length")
-    require_positive(pitch, "pitch")
+    require_positive(nut_length, "nut_length", dim="length")
+    require_positive(pitch, "pitch", dim="length")
     return nut_length / pitch
 
 
@@ -238,9 +238,10 @@ def engaged_threads(nut_length: float, pitch: float) -> float:
 def flank_pressure(F: float, d2: float, H1: float, engaged_threads: float) -> float:
     """Mean flank pressure ``p = F / (pi d2 H1 n)`` [Pa] (DIN 103 / Roloff-Matek; Shigley 10th ed. bearing
     stress ``2F/(pi d_m n_t p)`` with ``H1 = p/2``)."""
-    require_positive(F, "F", allow_zero=True)
-    for v, n in ((d2, "d2"), (H1, "H1"), (engaged_threads, "engaged_threads")):
-        require_positive(v, n)
+    require_positive(F, "F", allow_zero=True, dim="force")
+    for v, n, dim in ((d2, "d2", "length"), (H1, "H1", "length"),
+                      (engaged_threads, "engaged_threads", "dimensionless")):
+        require_positive(v, n, dim=dim)
     return F / (math.pi * d2 * H1 * engaged_threads)
 
 
@@ -254,7 +255,7 @@ def sliding_speed(rotational_speed: float, d2: float, lead: float) -> float:
 @si_function(returns="pv", pressure="pressure", speed="velocity")
 def pv_value(pressure: float, speed: float) -> float:
     """Product of flank pressure and sliding speed ``pv`` [Pa m/s], compared with the nut material's limit."""
-    require_positive(pressure, "pressure", allow_zero=True)
+    require_positive(pressure, "pressure", allow_zero=True, dim="pressure")
     return pressure * abs(speed)
 
 
@@ -266,11 +267,11 @@ def nut_length_required(F: float, d2: float, H1: float, pitch: float, p_allow: f
 
     ``m = P F / (pi d2 H1 p_lim)`` with ``p_lim = min(p_allow, pv_allow / v)`` (inverse of :func:`flank_pressure`).
     """
-    require_positive(F, "F", allow_zero=True)
-    require_positive(p_allow, "p_allow")
+    require_positive(F, "F", allow_zero=True, dim="force")
+    require_positive(p_allow, "p_allow", dim="pressure")
     p_lim = p_allow
     if pv_allow is not None and speed:
-        require_positive(pv_allow, "pv_allow")
+        require_positive(pv_allow, "pv_allow", dim="pv")
         p_lim = min(p_lim, pv_allow / abs(speed))
     return pitch * F / (math.pi * d2 * H1 * p_lim)
 
@@ -283,8 +284,9 @@ def thread_shear_stress(F: float, diameter: float, tooth_width: float, engaged_t
     (:meth:`Thread.tooth_width`). Mott 4th ed., Sec. 17-2 (thread shear area per nut length). Load
     shared equally by the ``n`` engaged turns; Shigley notes the first turn carries about 0.38 F.
     """
-    for v, n in ((diameter, "diameter"), (tooth_width, "tooth_width"), (engaged_threads, "engaged_threads")):
-        require_positive(v, n)
+    for v, n, dim in ((diameter, "diameter", "length"), (tooth_width, "tooth_width", "length"),
+                      (engaged_threads, "engaged_threads", "dimensionless")):
+        require_positive(v, n, dim=dim)
     return abs(F) / (math.pi * diameter * tooth_width * engaged_threads)
 
 
@@ -295,8 +297,9 @@ def thread_bending_stress(F: float, d3: float, root_width: float, height: float,
 
     For the square thread (``w = h = p/2``) this is Shigley's ``6F/(pi d_r n_t p)`` (10th ed., Sec. 8-2).
     """
-    for v, n in ((d3, "d3"), (root_width, "root_width"), (height, "height"), (engaged_threads, "engaged_threads")):
-        require_positive(v, n)
+    for v, n, dim in ((d3, "d3", "length"), (root_width, "root_width", "length"), (height, "height", "length"),
+                      (engaged_threads, "engaged_threads", "dimensionless")):
+        require_positive(v, n, dim=dim)
     return 3 * abs(F) * height / (math.pi * d3 * engaged_threads * root_width**2)
 
 
@@ -313,7 +316,7 @@ def screw_stresses(F: QuantityLike, torque: QuantityLike, d3: QuantityLike) -> S
     """Axial ``4F/(pi d3^2)``, torsional ``16T/(pi d3^3)`` and von Mises ``sqrt(s^2 + 3 t^2)`` stress [Pa]
     at the minor diameter (Shigley 10th ed., Secs. 8-2 and 5-5)."""
     f, t, d = to_si(F, "force", "F"), to_si(torque, "torque", "torque"), to_si(d3, "length", "d3")
-    require_positive(d, "d3")
+    require_positive(d, "d3", dim="length")
     s = 4 * abs(f) / (math.pi * d**2)
     tau = 16 * abs(t) / (math.pi * d**3)
     return ScrewStresses(axial=from_si(s, "pressure").to("MPa"), torsion=from_si(tau, "pressure").to("MPa"),
@@ -332,22 +335,22 @@ def thread_root_von_mises(sigma_x: float, sigma_y: float, tau_yz: float) -> floa
 @si_function(returns="velocity", rotational_speed="angular_velocity", lead="length")
 def linear_speed(rotational_speed: float, lead: float) -> float:
     """Nut speed ``v = n l`` [m/s] (``n`` in revolutions per second)."""
-    require_positive(lead, "lead")
+    require_positive(lead, "lead", dim="length")
     return rotational_speed / (2 * math.pi) * lead
 
 
 @si_function(returns="angular_velocity", speed="velocity", lead="length")
 def rotational_speed(speed: float, lead: float) -> float:
     """Screw speed for a nut speed, ``n = v / l`` [rad/s]; convert with ``.to("rpm")``."""
-    require_positive(lead, "lead")
+    require_positive(lead, "lead", dim="length")
     return 2 * math.pi * speed / lead
 
 
 @si_function(returns="length", lead="length", step_angle="angle")
 def resolution_per_step(lead: float, step_angle: float = math.radians(1.8), microsteps: int = 1) -> float:
     """Nut travel per (micro)step, ``l * step_angle / (2 pi) / microsteps`` [m]."""
-    require_positive(lead, "lead")
-    require_positive(step_angle, "step_angle")
+    require_positive(lead, "lead", dim="length")
+    require_positive(step_angle, "step_angle", dim="angle")
     if isinstance(microsteps, bool) or not isinstance(microsteps, int) or microsteps < 1:
         raise InputError(f"microsteps: must be a whole number >= 1, got {microsteps!r}")
     return lead * step_angle / (2 * math.pi) / microsteps
@@ -360,16 +363,16 @@ def reflected_inertia(mass: float, lead: float) -> float:
     Kinetic-energy equivalence ``m v^2/2 = J w^2/2`` with ``v = w l/(2 pi)``. Thread friction is not an
     inertia: account for it in the torque (``T_acc = J alpha / eta``), not by dividing J by eta.
     """
-    require_positive(mass, "mass", allow_zero=True)
-    require_positive(lead, "lead")
+    require_positive(mass, "mass", allow_zero=True, dim="mass")
+    require_positive(lead, "lead", dim="length")
     return mass * (lead / (2 * math.pi)) ** 2
 
 
 @si_function(returns="inertia", density="density", diameter="length", length="length")
 def shaft_inertia(density: float, diameter: float, length: float) -> float:
     """Polar mass moment of inertia of a solid round shaft, ``pi rho L D^4 / 32`` [kg m^2]."""
-    for v, n in ((density, "density"), (diameter, "diameter"), (length, "length")):
-        require_positive(v, n)
+    for v, n, dim in ((density, "density", "density"), (diameter, "diameter", "length"), (length, "length", "length")):
+        require_positive(v, n, dim=dim)
     return math.pi * density * length * diameter**4 / 32
 
 
@@ -384,8 +387,8 @@ def critical_speed(E: QuantityLike, density: QuantityLike, d3: QuantityLike, len
     """
     e, rho = to_si(E, "pressure", "E"), to_si(density, "density", "density")
     d, L = to_si(d3, "length", "d3"), to_si(length, "length", "length")
-    for v, n in ((e, "E"), (rho, "density"), (d, "d3"), (L, "length")):
-        require_positive(v, n)
+    for v, n, dim in ((e, "E", "pressure"), (rho, "density", "density"), (d, "d3", "length"), (L, "length", "length")):
+        require_positive(v, n, dim=dim)
     lam = whirl_factor(end)
     return from_si(lam**2 / L**2 * math.sqrt(e * d**2 / (16 * rho)), "angular_velocity")
 

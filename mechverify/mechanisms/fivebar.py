@@ -139,12 +139,12 @@ class FiveBar:
     def __post_init__(self) -> None:
         for f in ("base", "proximal_left", "distal_left", "distal_right", "proximal_right"):
             v = to_si(getattr(self, f), "length", f)
-            require_positive(v, f)
+            require_positive(v, f, dim="length")
             set_fields(self, **{f: from_si(v, "length")})
         if len(self.masses) != 4 or len(self.com_fractions) != 4:
             raise InputError("masses and com_fractions: give four values (left crank, left distal, right distal, "
                              "right crank)")
-        ms = tuple(from_si(require_positive(to_si(m, "mass", "masses"), "masses", allow_zero=True), "mass")
+        ms = tuple(from_si(require_positive(to_si(m, "mass", "masses"), "masses", allow_zero=True, dim="mass"), "mass")
                    for m in self.masses)
         set_fields(self, masses=ms)
         fr = tuple(float(f) for f in self.com_fractions)

@@ -89,7 +89,7 @@ class LeverArm:
     def __post_init__(self) -> None:
         for f in ("b", "c", "d", "p", "q", "r"):
             v = to_si(getattr(self, f), "length", f)
-            require_positive(v, f)
+            require_positive(v, f, dim="length")
             set_fields(self, **{f: from_si(v, "length")})
 
     def _dims(self) -> tuple[float, ...]:
