@@ -94,3 +94,78 @@ def test_a_study_over_the_pressure_factorises_once_per_worker(cache, monkeypatch
     assert res.to_json() == off.to_json()
     fu = [s["checks"]["p.plate_deflection_fea"]["fu"] for s in json.loads(res.to_json())["samples"]]
     assert fu == sorted(fu) and fu[-1] == pytest.approx(3 * fu[0], rel=1e-9)  # linear in the pressure
+
+
+# ------------------------------------------------------------------------------------------------ frames (task 19b)
+
+def _cantilever(theory: str = "euler"):
+    from mechverify.components import sections
+    from mechverify.fea.frame import Frame, FrameSupport, Member
+
+    steel = default_library().get("Structural Steel").with_(E=Q(200, "GPa"))
+    nodes = {"A": ["0 mm", "0 mm", "0 mm"], "B": ["400 mm", "0 mm", "0 mm"]}
+    return Frame(nodes, [Member("A", "B", sections.rectangle("10 mm", "20 mm"), steel, "beam")],
+                 [FrameSupport("A")], theory=theory)
+
+
+def _frame_fields(res):
+    return [res.u, res.ulocal, res.end_forces, res.q0, res.q1, *(a for k in sorted(res._reactions)
+                                                                 for a in res._reactions[k])]
+
+
+def test_a_frame_over_a_load_factorises_once_and_matches_uncached_solves(cache, monkeypatch):
+    """A study over a frame's load magnitude: one stiffness, checks and factorisation for every solve (counters);
+    the fields equal the uncached solves bit for bit. Oracle for the numbers: Euler-Bernoulli cantilever tip
+    deflection P L^3 / (3 E I) (closed form; Gere & Goodno, Mechanics of Materials, Table G-1 case 4), hand
+    calculation: 100 N, 400 mm, 10 x 20 mm (I = b h^3 / 12 about the 20 mm side), E = 200 GPa -> 4.8 mm."""
+    from mechverify.fea.frame import FramePointLoad
+
+    loads = [25.0, 50.0, 100.0, 75.0]
+    solve = [lambda p=p: _cantilever().solve([FramePointLoad("B", force=["0 N", "0 N", f"{-p} N"])]) for p in loads]
+    cached = [s() for s in solve]  # a new Frame object per sample, as a study builds one per variant
+    assert (cache.builds, cache.hits) == (1, len(loads) - 1)
+    monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)
+    for s, res in zip(solve, cached, strict=True):
+        for a, b in zip(_frame_fields(res), _frame_fields(s()), strict=True):
+            assert np.array_equal(a, b)
+    assert cache.builds == 1 + len(loads)  # every uncached solve built its own system
+    hand = 100.0 * 0.4**3 / (3 * 200e9 * 0.010 * 0.020**3 / 12)  # [m] = 4.8 mm
+    assert -cached[2].displacement("B")[2].m_as("m") == pytest.approx(hand, rel=1e-9)
+
+
+def test_a_frame_geometry_or_support_change_builds_a_new_system(cache):
+    from mechverify.fea.frame import FramePointLoad
+
+    down = [FramePointLoad("B", force=["0 N", "0 N", "-10 N"])]
+    _cantilever().solve(down)
+    _cantilever("timoshenko").solve(down)  # element stiffness changes
+    _cantilever().solve([FramePointLoad(["200 mm", "0 mm", "0 mm"], force=["0 N", "0 N", "-10 N"])])  # mesh splits
+    _cantilever().solve([FramePointLoad("B", force=["0 N", "5 N", "-10 N"])])  # load only: reused
+    assert (cache.builds, cache.hits) == (3, 1)
+
+
+FRAME = {
+    "design": {"name": "frame study"},
+    "components": {"f": {"type": "frame", "theory": "euler", "section": "rectangle", "width": "10 mm",
+                         "height": "20 mm", "material": "Structural Steel",
+                         "nodes": {"A": ["0 mm", "0 mm", "0 mm"], "B": ["400 mm", "0 mm", "0 mm"]},
+                         "members": [{"name": "beam", "start": "A", "end": "B"}],
+                         "supports": [{"at": "A", "type": "fixed"}], "deflection_limit": "20 mm"}},
+    "load_cases": {"tip": {"f": {"point_loads": [{"at": "B", "force": ["0 N", "0 N", "-100 N"]}]}}},
+}
+
+
+def test_a_frame_study_over_a_load_factorises_once(cache, monkeypatch):
+    """The design-file path: a serial study of a frame component over its tip load builds one system (the base
+    design's) and re-solves it for every sample; its JSON equals the same study with the cache off."""
+    from mechverify.studies import Study, execution
+
+    vary = {"load_cases.tip.f.point_loads[0].force[2]": "-150 N:-50 N:5"}
+    execution._BASE.clear()
+    res = Study(copy.deepcopy(FRAME), vary=vary).run("serial")
+    assert not any(s.get("error") for s in json.loads(res.to_json())["samples"])
+    assert cache.builds == 1 and cache.hits >= 5
+    monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)
+    execution._BASE.clear()
+    off = Study(copy.deepcopy(FRAME), vary=vary).run("serial")
+    assert res.to_json() == off.to_json()

@@ -351,15 +351,16 @@ def _checked_supports(sys_: _PlateSystem) -> np.ndarray:
 
 
 def _factorise(K: sp.csr_matrix, held: np.ndarray) -> tuple[np.ndarray, sp.csc_matrix, Any]:
+    """The free DOFs, their stiffness and its factorisation (:func:`mechverify.fea.factor.factorize`: CHOLMOD when
+    installed, else SuperLU); a stiffness that is not positive definite is a :class:`ModelError`."""
+    from mechverify.fea.factor import factorize
+
     free = np.setdiff1d(np.arange(K.shape[0]), held)
     Kff = K[free][:, free].tocsc()
     try:
-        import scipy.sparse.linalg as spl
-
-        lu = spl.splu(Kff, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
-    except RuntimeError as exc:
-        raise ModelError(f"the plate stiffness is singular ({exc}); check the supports") from None
-    return free, Kff, lu
+        return free, Kff, factorize(Kff, what="the plate stiffness")
+    except ModelError as exc:
+        raise ModelError(f"{exc}; check the supports") from None
 
 
 def _surface_stress(sys_: _PlateSystem, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

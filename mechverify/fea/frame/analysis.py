@@ -21,6 +21,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
 from mechverify.errors import InputError, ModelError, UnknownNameError
+from mechverify.fea import factorcache
 from mechverify.fea.frame.element import (
     fixed_end_forces_linear,
     local_axes_batch,
@@ -310,6 +311,27 @@ class Frame:
                     springs[dof] = springs.get(dof, 0.0) + val
         return np.array(sorted(held), dtype=np.int64), springs, one_way, at
 
+    def _system(self, mesh: _Mesh, held: np.ndarray, springs: dict[int, float],
+                one_way: dict[int, tuple[float, int]]) -> tuple[sp.csr_matrix, sp.csr_matrix, sp.csr_matrix,
+                                                                np.ndarray]:
+        """The assembled stiffness ``K``, its free part with the support springs ``Kff``, the free-held coupling
+        ``Kfs`` and the free DOFs, after the support, release and mechanism checks."""
+        K = self._stiffness(mesh)
+        self._check_supported(mesh, np.union1d(held, np.array(list(springs) + list(one_way), dtype=np.int64)))
+        diag = np.zeros(mesh.ndof)
+        for dof, kv in springs.items():
+            diag[dof] += kv
+        Ks = (K + sp.diags(diag)).tocsr()
+        ow = np.zeros(mesh.ndof)
+        for dof, (kv, _) in one_way.items():
+            ow[dof] = kv
+        self._check_releases(mesh, (Ks + sp.diags(ow)).tocsr(), held)
+        free = np.setdiff1d(np.arange(mesh.ndof), held)
+        Kff = Ks[free][:, free]
+        Kfs = Ks[free][:, held]
+        self._mechanism(mesh, Kff + sp.diags(ow[free]), free)
+        return K, Kff, Kfs, free
+
     # -------------------------------------------------------------------------- support checks
     def _rigid_modes(self, mesh: _Mesh) -> tuple[np.ndarray, np.ndarray]:
         """The six rigid-body motions over all DOFs ``[ndof, 6]`` (rotations scaled by the model size)."""
@@ -429,24 +451,21 @@ class Frame:
         mesh = self._mesh([ld for v in cases.values() for ld in v])
         with Steps(progress if progress is not None else mesh.ndof > PROGRESS_THRESHOLD, "frame") as step:
             step("assembling")
-            K = self._stiffness(mesh)
             held, springs, one_way, at = self._restraints(mesh)
-            self._check_supported(mesh, np.union1d(held, np.array(list(springs) + list(one_way), dtype=np.int64)))
-            diag = np.zeros(mesh.ndof)
-            for dof, kv in springs.items():
-                diag[dof] += kv
-            Ks = (K + sp.diags(diag)).tocsr()
-            ow = np.zeros(mesh.ndof)
-            for dof, (kv, _) in one_way.items():
-                ow[dof] = kv
-            self._check_releases(mesh, (Ks + sp.diags(ow)).tocsr(), held)
-            free = np.setdiff1d(np.arange(mesh.ndof), held)
-            Kff = Ks[free][:, free]
-            Kfs = Ks[free][:, held]
-            self._mechanism(mesh, Kff + sp.diags(ow[free]), free)
+            # the stiffness, its checks and its factorisation depend on the mesh and the restraints only: kept per
+            # process while only the loads change (a study over a load; mechverify/fea/factorcache.py)
+            key = factorcache.key_of("frame", *_stiffness_inputs(mesh), held, sorted(springs.items()),
+                                     sorted(one_way.items()), DENSE_CHECK_LIMIT)
+            item, _ = factorcache.CACHE.entry(key)
+            try:
+                K, Kff, Kfs, free = factorcache.CACHE.part(
+                    item, "system", lambda: self._system(mesh, held, springs, one_way))
+            except Exception:
+                factorcache.CACHE.forget(key)
+                raise
             hs = set(held.tolist())
             data = {nm: self._case(mesh, lds, hs) for nm, lds in cases.items()}
-            ctx = _Solve(self, mesh, K, Kff, Kfs, free, held, springs, one_way, at)
+            ctx = _Solve(self, mesh, K, Kff, Kfs, free, held, springs, one_way, at, item)
             results: dict[str, FrameResults] = {}
             if not one_way:
                 step(f"solving {len(free)} unknowns, {len(cases)} load case(s)")
@@ -465,6 +484,15 @@ class Frame:
                     lds = tuple(ld for k in c.factors for ld in cases[k])
                     results[c.name] = ctx.one_way_solve(dat, c.name, lds, factors=c.factors)
         return FrameAnalysis(self, results, tuple(cases), combos)
+
+
+def _stiffness_inputs(mesh: _Mesh) -> tuple[Any, ...]:
+    """What :meth:`Frame._system` reads of a mesh: node positions, elements, their local stiffness (section,
+    material, theory and length), releases, springs (as numbers)."""
+    return (mesh.points, mesh.elem_nodes, mesh.dofs, mesh.ndof, mesh.R, mesh.k,
+            sorted((e, c.P) for e, c in mesh.cond.items()),
+            [(s.axial, sorted(s.stiffness.items()), a, b, n) for s, a, b, n in mesh.springs],
+            sorted(mesh.released_nodes))
 
 
 def _transforms(R: np.ndarray) -> np.ndarray:
@@ -534,6 +562,7 @@ class _Solve:
     springs: dict[int, float]
     one_way: dict[int, tuple[float, int]]
     at: list[tuple[FrameSupport, int]]
+    cached: dict[str, Any] = field(default_factory=dict)  # the factor cache's item of this stiffness
 
     def _factor(self, A: sp.spmatrix) -> _Factor:
         """SuperLU of ``A`` (the free DOFs) in an order found on the node graph: the minimum-degree order
@@ -564,7 +593,7 @@ class _Solve:
         U = np.zeros((self.mesh.ndof, len(data)))
         if len(self.free):
             B = np.column_stack([self._rhs(d) for d in data])
-            X = self._factor(self.Kff).solve(B)
+            X = factorcache.CACHE.part(self.cached, "factor", lambda: self._factor(self.Kff)).solve(B)
             X = X.reshape(len(self.free), len(data))
         else:
             X = np.zeros((0, len(data)))
