@@ -17,6 +17,12 @@ with a quarter of its fill; solves of many right-hand sides at once (``solve(B)`
 BLAS-3 and cost a fraction of k single solves. The factorisation object is what a study caches to solve
 many load cases (:class:`mechverify.fea.study.SharedSolve`) and what shift-invert eigensolvers apply.
 
+:func:`symbolic_cost` predicts a factorisation's cost before it is paid: a fill-reducing ordering (AMD, or METIS
+nested dissection) and CHOLMOD's symbolic analysis (``cholmod_analyze_ordering``, through ``ctypes``) give the
+non-zeros of L and the flop count in a fraction of the factorisation's time (0.2 s against 1.2 s on a 66k-DOF
+plate); :meth:`SymbolicCost.factor_seconds` turns them into seconds and :func:`factorize` reuses the ordering
+(``symbolic=``). :mod:`mechverify.fea.linsolve` weighs that against conjugate gradients.
+
 CHOLMOD runs with one BLAS thread (``threadpoolctl``, when installed): triangular solves are memory-bound,
 and on the shared 2-core box busy-waiting BLAS threads made a solve up to 9 times and a factorisation up to
 3 times slower than one thread (measured with a load average of 10).
@@ -31,6 +37,9 @@ References
 from __future__ import annotations
 
 import contextlib
+import ctypes
+import ctypes.util
+import functools
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -43,6 +52,15 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 
 METHODS = ("auto", "cholmod", "superlu")
+ORDERINGS = ("amd", "metis")
+#: Seconds per non-zero of L and flops per second of CHOLMOD's supernodal factorisation with one BLAS thread,
+#: fitted on the benchmark's P2 meshes (plates with a hole 37k-179k DOF, the lug at 46k; CPU time with a load
+#: average of 5-10 on the 2-core box): t = nnz(L) * FACTOR_SECONDS_PER_NNZ + flops / FACTOR_FLOP_RATE is within
+#: 30 % of the measured factor time on all of them (0.40 s at 7.8M non-zeros, 4.2 s at 71M).
+FACTOR_SECONDS_PER_NNZ = 5e-8
+FACTOR_FLOP_RATE = 50e9
+#: Bytes of the supernodal factor per non-zero of L (8-byte values, supernode padding and indices).
+FACTOR_BYTES_PER_NNZ = 10.0
 
 
 def cholmod_available() -> bool:
@@ -64,6 +82,92 @@ def one_blas_thread() -> Iterator[None]:
         return
     with threadpool_limits(limits=1, user_api="blas"):
         yield
+
+
+@dataclass(frozen=True, eq=False)
+class SymbolicCost:
+    """What a Cholesky factorisation of ``A`` would cost, from the symbolic analysis of one fill-reducing
+    ordering: ``perm`` (``A[perm][:, perm]`` is factored), ``factor_nnz`` non-zeros of L, ``flops`` = Σ c_j²
+    over the column counts c_j of L (the multiply-adds of a left-looking Cholesky), ``seconds`` spent on the
+    ordering and the analysis."""
+
+    ordering: str
+    perm: np.ndarray
+    factor_nnz: int
+    flops: float
+    seconds: float
+
+    @property
+    def factor_seconds(self) -> float:
+        """Predicted CHOLMOD factorisation time [s] (:data:`FACTOR_SECONDS_PER_NNZ`, :data:`FACTOR_FLOP_RATE`)."""
+        return self.factor_nnz * FACTOR_SECONDS_PER_NNZ + self.flops / FACTOR_FLOP_RATE
+
+    @property
+    def factor_bytes(self) -> float:
+        """Predicted memory of the factor [bytes]."""
+        return self.factor_nnz * FACTOR_BYTES_PER_NNZ
+
+
+class _CholmodSparse(ctypes.Structure):
+    """``cholmod_sparse`` (cholmod_core.h; the same layout in SuiteSparse 4 to 7)."""
+
+    _fields_ = [("nrow", ctypes.c_size_t), ("ncol", ctypes.c_size_t), ("nzmax", ctypes.c_size_t),
+                ("p", ctypes.c_void_p), ("i", ctypes.c_void_p), ("nz", ctypes.c_void_p), ("x", ctypes.c_void_p),
+                ("z", ctypes.c_void_p), ("stype", ctypes.c_int), ("itype", ctypes.c_int), ("xtype", ctypes.c_int),
+                ("dtype", ctypes.c_int), ("sorted", ctypes.c_int), ("packed", ctypes.c_int)]
+
+
+@functools.lru_cache(maxsize=1)
+def _libcholmod() -> Any:
+    """The CHOLMOD shared library scikit-sparse is built against (None when it cannot be loaded)."""
+    if not cholmod_available():
+        return None
+    name = ctypes.util.find_library("cholmod")
+    try:
+        lib = ctypes.CDLL(name or "libcholmod.so")
+        for f in ("cholmod_start", "cholmod_finish", "cholmod_amd", "cholmod_metis", "cholmod_analyze_ordering"):
+            getattr(lib, f).restype = ctypes.c_int
+    except (OSError, AttributeError):
+        return None
+    return lib
+
+
+def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
+    """Order the symmetric ``A`` (``ordering``: "amd" or "metis") and count the non-zeros and flops of its Cholesky
+    factor without computing it (CHOLMOD's ``cholmod_amd``/``cholmod_metis`` and ``cholmod_analyze_ordering``,
+    ref. 1); ``None`` when CHOLMOD's library is not available. Only the pattern of the upper triangle is read."""
+    if ordering not in ORDERINGS:
+        raise InputError(f"ordering: one of {', '.join(ORDERINGS)}, got {ordering!r}")
+    lib = _libcholmod()
+    n = A.shape[0]
+    if lib is None or n == 0:
+        return None
+    t0 = time.perf_counter()
+    U = sp.triu(sp.csc_matrix(A), format="csc")
+    U.sort_indices()
+    colptr, rows = U.indptr.astype(np.int32), U.indices.astype(np.int32)
+    S = _CholmodSparse(n, n, U.nnz, colptr.ctypes.data, rows.ctypes.data, None, None, None,
+                       1, 0, 0, 0, 1, 1)  # upper triangle, int indices, pattern only, sorted, packed
+    perm, parent, post, count, first, level = (np.empty(n, np.int32) for _ in range(6))
+    ptr = ctypes.c_void_p
+    common = ctypes.create_string_buffer(1 << 16)  # cholmod_common (2.7 kB in SuiteSparse 5)
+    if lib.cholmod_start(common) != 1:
+        return None
+    try:
+        if ordering == "amd":
+            ok = lib.cholmod_amd(ctypes.byref(S), None, ctypes.c_size_t(0), perm.ctypes.data_as(ptr), common)
+        else:
+            ok = lib.cholmod_metis(ctypes.byref(S), None, ctypes.c_size_t(0), 0, perm.ctypes.data_as(ptr), common)
+        ok = ok == 1 and lib.cholmod_analyze_ordering(
+            ctypes.byref(S), 1, perm.ctypes.data_as(ptr), None, ctypes.c_size_t(0),  # 1 = CHOLMOD_GIVEN
+            parent.ctypes.data_as(ptr), post.ctypes.data_as(ptr), count.ctypes.data_as(ptr),
+            first.ctypes.data_as(ptr), level.ctypes.data_as(ptr), common) == 1
+    finally:
+        lib.cholmod_finish(common)
+    c = count.astype(np.float64)
+    if not ok or c.min() < 1 or c.max() > n or np.unique(perm).size != n:
+        return None
+    return SymbolicCost(ordering, perm.astype(np.int64), int(c.sum()), float(c @ c), time.perf_counter() - t0)
 
 
 @dataclass(eq=False)
@@ -93,11 +197,13 @@ class Factorization:
         return spl.LinearOperator((self.n, self.n), matvec=self.solve, matmat=self.solve, dtype=float)
 
 
-def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness matrix") -> Factorization:
+def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness matrix",
+              symbolic: SymbolicCost | None = None) -> Factorization:
     """Factor the symmetric positive definite ``A`` once (``method``: "auto" = CHOLMOD when installed, else SuperLU).
 
-    A matrix that is not positive definite (a mechanism, or a shift above an eigenvalue) is a
-    :class:`ModelError` naming ``what``."""
+    ``symbolic``: the :func:`symbolic_cost` of ``A``, whose ordering CHOLMOD then uses (it is not computed again);
+    without it CHOLMOD chooses (AMD, and METIS too when AMD's fill is high). A matrix that is not positive definite
+    (a mechanism, or a shift above an eigenvalue) is a :class:`ModelError` naming ``what``."""
     if method not in METHODS:
         raise InputError(f"method: one of {', '.join(METHODS)}, got {method!r}")
     if method == "auto":
@@ -110,13 +216,23 @@ def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness m
                              "against SuiteSparse: apt-get install libsuitesparse-dev)")
         from sksparse.cholmod import CholmodError, cholesky
 
+        p = None if symbolic is None or method != "cholmod" else symbolic.perm
         try:
-            with one_blas_thread():
-                F = cholesky(A, mode="supernodal")  # LLᵀ: a matrix that is not positive definite fails
+            with one_blas_thread():  # LLᵀ: a matrix that is not positive definite fails
+                F = cholesky(A, mode="supernodal") if p is None else \
+                    cholesky(A[p][:, p].tocsc(), mode="supernodal", ordering_method="natural")
         except CholmodError as exc:
             raise ModelError(f"{what} is not positive definite ({exc}): the model has a mechanism, or the "
                              "shift lies above an eigenvalue") from None
-        return Factorization("cholmod", A.shape[0], time.perf_counter() - t0, None, F.solve_A)
+        if p is None:
+            return Factorization("cholmod", A.shape[0], time.perf_counter() - t0, None, F.solve_A)
+
+        def permuted(b: np.ndarray) -> np.ndarray:
+            x = np.empty_like(b)
+            x[p] = F.solve_A(b[p])
+            return x
+
+        return Factorization("cholmod", A.shape[0], time.perf_counter() - t0, None, permuted)
     try:
         lu = spl.splu(A, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0, options={"SymmetricMode": True})
     except RuntimeError as exc:

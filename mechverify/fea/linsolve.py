@@ -3,10 +3,19 @@
 - :func:`rigid_modes` - the rigid-body motions (translations, rotations) of a node set.
 - :func:`check_supported` - which rigid motions the supports leave free; a :class:`ModelError`
   naming the free direction instead of a singular matrix.
-- :func:`solve` - eliminates the held DOFs, then a sparse direct solve (SuperLU, symmetric mode,
-  minimum-degree ordering of A + Aᵀ) for small systems, or conjugate gradients preconditioned by
-  multigrid for large 3D systems: Gauss-Seidel on the quadratic elements, then the linear-element
-  system by smoothed-aggregation algebraic multigrid (pyamg, rigid-body modes as near-null space).
+- :func:`solve` - eliminates the held DOFs, then a sparse direct solve (CHOLMOD when installed, else SuperLU;
+  :mod:`mechverify.fea.factor`) for small systems, or for large 3D systems whichever a cost model predicts cheaper
+  (:func:`choose_solver`): the factorisation (its flops and memory from CHOLMOD's symbolic analysis) or conjugate
+  gradients preconditioned by multigrid: Gauss-Seidel on the quadratic elements, then the linear-element
+  system by smoothed-aggregation algebraic multigrid (pyamg, rigid-body modes as near-null space). CG that then
+  converges slowly gives way to the factorisation when its measured rate predicts more time than factoring.
+
+Why CG is slow on some thin parts: on the benchmark's 6 mm plate with a hole at 66k DOF CG needed 203
+iterations where the 37k and 181k meshes of the same plate needed 43 and 30. That mesh holds a near-degenerate
+sliver tetrahedron (radius-ratio quality 1e-4; the others' worst are 0.08 and 0.12), and the coarse space is not
+the cause: an exact solve of the P1 coarse level still took 172 iterations, and a coarse space of smoothed
+rigid-body modes per vertex aggregate (which represents bending) solved exactly still 88. The factorisation does
+not care (1.2 s), hence the measured switch rather than a better coarse space.
 
 References
 ----------
@@ -20,6 +29,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -28,27 +38,77 @@ from mechverify.errors import ModelError
 
 #: CG's convergence is judged from this iteration on (see :func:`pcg`).
 PREDICT_AFTER = 20
-#: With CHOLMOD installed, "auto" leaves CG for a direct solve when CG is predicted to need more iterations than
-#: this (compact solids need 26-37; thin parts more: 43 on a 6 mm plate with a hole at 37k DOF, where CHOLMOD
-#: solved in 6.2 s against CG's 21 s on the loaded benchmark box, and 157 on a 3 mm plate at 17k DOF).
-CG_ITERATION_LIMIT = 40
-#: ... but only up to this many unknowns (a factorisation's memory grows faster than CG's).
+#: CG's cost per iteration and non-zero of the P2 matrix (one p-multigrid V-cycle: two Gauss-Seidel sweeps, three
+#: products with A, the coarse cycle; one BLAS thread): 6.3 ns measured (CPU time) on the 6 mm plate with a hole
+#: at 37k and 66k DOF. Used only before CG has run; then its measured time per iteration counts.
+CG_SECONDS_PER_NNZ = 6.3e-9
+#: The multigrid setup costs about this many iterations (0.15-0.2 s at 37k-66k DOF).
+CG_SETUP_ITERATIONS = 7
+#: Iterations CG is expected to need before it has run: compact solids need 26-37 (FEA benchmark, 47k-830k DOF).
+CG_EXPECTED_ITERATIONS = 30
+#: "auto" considers a factorisation only up to this many unknowns, and only when the factor's predicted memory
+#: stays under :data:`DIRECT_BYTES_PER_DOF` per unknown (the static solver's budget is 5 kB per DOF in all).
 DIRECT_SWITCH_MAX = 300_000
-#: A part whose smallest principal extent is below this fraction of its largest is thin: with CHOLMOD, "auto"
-#: factors it at once instead of starting CG (6 mm plate with a hole, 67k DOF: 5.3 s against 11.3 s for 20 CG
-#: iterations and then the factorisation, and 79 s for CG alone).
-THIN_RATIO = 0.1
-#: ... up to this many unknowns: on that plate CHOLMOD won at 37k and 67k DOF (4.9 s against 79 s for CG's 203
-#: iterations) and lost at 181k (18.9 s against 12.8 s: the finer mesh resolves the thickness, CG needs 30).
-THIN_DIRECT_MAX = 120_000
+DIRECT_BYTES_PER_DOF = 3000.0
 
 
-def thinness(points: np.ndarray) -> float:
-    """Smallest over largest principal extent (standard deviation of the node coordinates along the principal axes)
-    of the nodes ``points[dim, n]``: about 0.03 for a 6 x 200 x 100 mm plate, 0.3 for a compact block."""
-    X = points - points.mean(axis=1, keepdims=True)
-    w = np.linalg.eigvalsh(X @ X.T / max(points.shape[1], 1))
-    return float(np.sqrt(max(w[0], 0.0) / w[-1])) if w[-1] > 0 else 1.0
+@dataclass(frozen=True)
+class SolverChoice:
+    """Why "auto" solved as it did: the predicted seconds and bytes of a factorisation (None: not analysed) and the
+    seconds of CG at :data:`CG_EXPECTED_ITERATIONS`, the ordering analysed, the seconds spent predicting, and
+    whether the factor fits the memory budget."""
+
+    method: str
+    direct_seconds: float | None
+    direct_bytes: float | None
+    cg_seconds: float
+    ordering: str | None
+    analysis_seconds: float
+    fits: bool
+
+    def describe(self) -> str:
+        """One line for the solve's method: what was predicted."""
+        if self.direct_seconds is None:
+            return f"predicted CG {self.cg_seconds:.2g} s"
+        over = "" if self.fits else ", over the memory budget"
+        return (f"predicted: factor {self.direct_seconds:.2g} s, {self.direct_bytes / 1e6:.0f} MB ({self.ordering}"
+                f"{over}), CG {self.cg_seconds:.2g} s")
+
+
+def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
+    """Predicted seconds of multigrid CG on ``A`` for ``iterations`` (setup included), before it has run."""
+    return A.nnz * CG_SECONDS_PER_NNZ * (iterations + CG_SETUP_ITERATIONS)
+
+
+def choose_solver(A: sp.spmatrix) -> tuple[SolverChoice, Any]:
+    """Direct or iterative for the SPD system ``A`` from a cost model: CHOLMOD's symbolic analysis predicts the
+    factorisation's seconds and memory (:func:`mechverify.fea.factor.symbolic_cost`, AMD; METIS too when the
+    factorisation is within a factor 2 of CG), CG is predicted at :data:`CG_EXPECTED_ITERATIONS`. Returns the
+    :class:`SolverChoice` ("direct" or "amg") and the :class:`~mechverify.fea.factor.SymbolicCost` to factor with
+    (None when CHOLMOD is absent, the system is above :data:`DIRECT_SWITCH_MAX` or its factor would take more than
+    :data:`DIRECT_BYTES_PER_DOF` per unknown)."""
+    from mechverify.fea.factor import symbolic_cost
+
+    n = A.shape[0]
+    t_cg = cg_seconds(A, CG_EXPECTED_ITERATIONS)
+    cost, spent = None, 0.0
+    if n <= DIRECT_SWITCH_MAX:
+        cost = symbolic_cost(A, "amd")
+        if cost is not None:
+            spent = cost.seconds
+            if cost.factor_seconds < 2 * t_cg:
+                metis = symbolic_cost(A, "metis")
+                if metis is not None:
+                    spent += metis.seconds
+                    cost = min(cost, metis, key=lambda c: c.factor_seconds)
+    if cost is None:
+        return SolverChoice("amg", None, None, t_cg, None, spent, False), None
+    fits = cost.factor_bytes <= DIRECT_BYTES_PER_DOF * n
+    method = "direct" if fits and cost.factor_seconds <= t_cg else "amg"
+    choice = SolverChoice(method, cost.factor_seconds, cost.factor_bytes, t_cg, cost.ordering, spent, fits)
+    return choice, cost if fits else None
+
+
 #: Above this many unknowns a 3D solid is solved by AMG-preconditioned CG rather than SuperLU.
 ITERATIVE_THRESHOLD_3D = 12_000
 
@@ -147,13 +207,11 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     """Solve ``K u = f`` with ``u[held] = prescribed`` (zero by default) after the rigid-body check.
 
     ``points[dim, n]`` are the node coordinates (node-interleaved DOFs ``dim*node + i``). ``method``:
-    ``"direct"`` (CHOLMOD when installed, else SuperLU), ``"amg"`` or ``"auto"``: multigrid-CG for 3D systems above
-    :data:`ITERATIVE_THRESHOLD_3D` unknowns, else a direct solve (CHOLMOD when installed,
-    :mod:`mechverify.fea.factor`); with CHOLMOD, a CG whose measured convergence predicts more than
-    :data:`CG_ITERATION_LIMIT` iterations is left for a factorisation (up to :data:`DIRECT_SWITCH_MAX` unknowns),
-    and a thin part (:func:`thinness` below :data:`THIN_RATIO`) is factored at once (up to
-    :data:`THIN_DIRECT_MAX`). ``prolongation`` (:func:`p1_prolongation`) enables the multigrid of quadratic
-    elements.
+    ``"direct"`` (CHOLMOD when installed, else SuperLU), ``"amg"`` (multigrid-CG; needs ``prolongation``,
+    :func:`p1_prolongation`) or ``"auto"``: a direct solve up to :data:`ITERATIVE_THRESHOLD_3D` unknowns (and for
+    2D); above, for 3D, the cheaper of the two by the cost model of :func:`choose_solver` (with CHOLMOD installed;
+    without it, CG). A CG that then converges slowly (a thin part, a sliver element) leaves for the factorisation
+    as soon as its measured rate and time per iteration predict more seconds than the factorisation's.
     """
     t0 = time.perf_counter()
     dim = points.shape[0]
@@ -169,34 +227,36 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     Kc = K.tocsr()
     rhs = f[free] - (Kc[free][:, held] @ u[held] if prescribed is not None and np.any(u[held]) else 0.0)
     Kff = Kc[free][:, free]
-    from mechverify.fea.factor import cholmod_available, factorize
+    from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
 
-    auto = method == "auto"
-    thin_direct = False
-    if auto:
+    cost, label = None, ""
+    if method == "auto":
         big = dim == 3 and free.size > ITERATIVE_THRESHOLD_3D and prolongation is not None
         method = "amg" if big else "direct"
-        if big and free.size <= THIN_DIRECT_MAX and thinness(points) < THIN_RATIO and cholmod_available():
-            method, thin_direct = "direct", True
+        if big and cholmod_available():
+            choice, cost = choose_solver(Kff)
+            method, label = choice.method, choice.describe()
     if progress:
         progress(f"solving {free.size} unknowns ({method})")
     iters = 0
     if method == "amg":
         if prolongation is None:
             raise ValueError("method 'amg' needs the P1 -> P2 prolongation")
-        # auto with CHOLMOD: a CG predicted to be slow (a thin part) gives way to a factorisation
-        limit = CG_ITERATION_LIMIT if auto and free.size <= DIRECT_SWITCH_MAX and cholmod_available() else None
         try:
-            x, iters = pcg(Kff, rhs, pmg_preconditioner(Kff, points, free, dim, prolongation), rtol,
-                           predict_limit=limit)
+            with one_blas_thread():  # vector operations: a second, busy-waiting BLAS thread only slows CG
+                x, iters = pcg(Kff, rhs, pmg_preconditioner(Kff, points, free, dim, prolongation), rtol,
+                               direct_seconds=None if cost is None else cost.factor_seconds)
+            if label:
+                method = f"amg ({label})"
         except SlowConvergence as slow:
             if progress:
                 progress(f"{slow}: direct solve instead")
-            method, iters = f"direct (cholmod; CG left after {slow.iterations} iterations)", slow.iterations
-            x = factorize(Kff, "cholmod").solve(rhs)
+            method = f"direct (cholmod, {cost.ordering}; CG left after {slow.iterations} iterations)"
+            iters = slow.iterations
+            x = factorize(Kff, "cholmod", symbolic=cost).solve(rhs)
     elif method == "direct":
-        fac = factorize(Kff, "auto")
-        method = "direct" if fac.method == "superlu" else "direct (cholmod, thin part)" if thin_direct \
+        fac = factorize(Kff, "auto", symbolic=cost)
+        method = "direct" if fac.method == "superlu" else f"direct (cholmod; {label})" if label \
             else "direct (cholmod)"
         x = fac.solve(rhs)
     else:
@@ -273,11 +333,15 @@ class SlowConvergence(ModelError):
 
 
 def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np.ndarray], rtol: float,
-        maxiter: int = 2000, predict_limit: int | None = None) -> tuple[np.ndarray, int]:
+        maxiter: int = 2000, predict_limit: int | None = None,
+        direct_seconds: float | None = None) -> tuple[np.ndarray, int]:
     """Preconditioned conjugate gradients (ref. 2, Alg. 9.1), stopping on the true residual
-    ``‖b - A x‖ ≤ rtol ‖b‖``; :class:`ModelError` when it does not get there. ``predict_limit``: from
-    iteration :data:`PREDICT_AFTER` on (every 10), the mean convergence factor so far predicts the iterations
-    needed; more than ``predict_limit`` raises :class:`SlowConvergence` (the caller switches to a direct solve)."""
+    ``‖b - A x‖ ≤ rtol ‖b‖``; :class:`ModelError` when it does not get there. From iteration
+    :data:`PREDICT_AFTER` on (every 10) the mean convergence factor so far predicts the iterations needed; it
+    raises :class:`SlowConvergence` (the caller switches to a direct solve) when they exceed ``predict_limit``, or
+    when the remaining iterations at the measured seconds per iteration exceed ``direct_seconds`` (the predicted
+    cost of a factorisation)."""
+    t0 = time.process_time()
     bnorm = float(np.linalg.norm(b))
     x = np.zeros_like(b)
     if bnorm == 0:
@@ -294,12 +358,17 @@ def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np
         rnorm = float(np.linalg.norm(r))
         if rnorm <= rtol * bnorm:
             return x, k
-        if predict_limit is not None and k >= PREDICT_AFTER and k % 10 == 0:
+        if (predict_limit is not None or direct_seconds is not None) and k >= PREDICT_AFTER and k % 10 == 0:
             rate = (rnorm / bnorm) ** (1.0 / k)
             predicted = np.log(rtol) / np.log(rate) if rate < 1 else np.inf
-            if predicted > predict_limit:
+            per_iteration = (time.process_time() - t0) / k
+            if predict_limit is not None and predicted > predict_limit:
                 raise SlowConvergence(f"CG would need about {predicted:.0f} iterations (convergence factor "
                                       f"{rate:.3f} over {k})", k, float(predicted))
+            if direct_seconds is not None and (predicted - k) * per_iteration > direct_seconds:
+                raise SlowConvergence(f"CG would need about {predicted:.0f} iterations (convergence factor "
+                                      f"{rate:.3f} over {k}), {(predicted - k) * per_iteration:.2g} s more against "
+                                      f"{direct_seconds:.2g} s to factor", k, float(predicted))
         z = precondition(r)
         rz_new = float(r @ z)
         p *= rz_new / rz
