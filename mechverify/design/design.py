@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import copy
-import dataclasses
 import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
@@ -227,8 +226,8 @@ class Design:
                         continue
                     for r in out if isinstance(out, list | tuple) else [out]:
                         lc = case or r.load_case
-                        r = dataclasses.replace(r, component=entry.name, required_sf=sf, load_case=lc,
-                                                notes=(*r.notes, *self.derived_notes(entry.name, lc)))
+                        r = r.replace(component=entry.name, required_sf=sf, load_case=lc,  # (details stay lazy)
+                                      notes=(*r.notes, *self.derived_notes(entry.name, lc)))
                         found.setdefault(r.check, []).append(r)
                     steps += 1
                     if progress is not None:
@@ -237,11 +236,11 @@ class Design:
                 for rs in found.values():
                     gov = max(rs, key=lambda r: r.factored_utilisation)
                     if alias:
-                        gov = dataclasses.replace(gov, notes=(*gov.notes, deprecation_note(alias, spec.name)))
+                        gov = gov.replace(notes=(*gov.notes, deprecation_note(alias, spec.name)))
                     if len(rs) > 1:
                         others = ", ".join(f"{r.load_case}: u={r.utilisation:.3g}" for r in rs if r is not gov)
-                        gov = dataclasses.replace(gov, notes=(*gov.notes, f"Governing of {len(rs)} load cases "
-                                                                            f"(others: {others})."))
+                        gov = gov.replace(notes=(*gov.notes, f"Governing of {len(rs)} load cases "
+                                                             f"(others: {others})."))
                     results.append(gov)
             if len(errors) == n_err:
                 done[entry.name] = (results[start:], steps)
