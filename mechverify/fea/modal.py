@@ -10,13 +10,23 @@ models (:class:`~mechverify.fea.plane.PlaneModel`): the generalized eigenproblem
 - :func:`stiffness_matrix`, :func:`mass_matrix` - the P2 stiffness and the *consistent* mass
   ``M = ∫ ρ Nᵀ N dV`` (ref. 1, sec. 16.2; degree-4 rule, exact for straight P2 elements; curved
   elements through the isoparametric map), density from the material (``density``).
-- :func:`modal` - the first ``n_modes`` eigenpairs by Lanczos in shift-invert mode on one sparse
-  factorisation of ``K - σ M`` (CHOLMOD or SuperLU, :mod:`mechverify.fea.factor`; ARPACK through
-  ``scipy.sparse.linalg.eigsh``, ref. 2). A model with supports must be fully supported (the rigid motion
+- :func:`modal` - the first ``n_modes`` eigenpairs, by one of two eigensolvers:
+
+  - Lanczos in shift-invert mode on one sparse factorisation of ``K - σ M`` (CHOLMOD or SuperLU,
+    :mod:`mechverify.fea.factor`; ARPACK through ``scipy.sparse.linalg.eigsh``, ref. 2): the faster path
+    wherever its factor fits in memory (on the benchmark's lug: 3.8 s against 11 s of CPU at 48k DOF);
+  - LOBPCG (ref. 4) preconditioned by the static solver's p-multigrid V-cycle
+    (:func:`mechverify.fea.linsolve.pmg_preconditioner`), with the node mass ``m ⊗ I`` as an operator: no
+    factor, so its memory grows as n where the factor's grows as n^(4/3) (:func:`memory_estimate`).
+
+  ``method="auto"`` takes the factorisation when its estimated memory fits (:func:`choose_method`), else
+  LOBPCG; a model too large for either is refused before assembly with the estimate and the largest model
+  that fits (:func:`require_memory`). A model with supports must be fully supported (the rigid motion
   left free is named, as in statics); a model with *no* supports is analysed free-free: its rigid-body
-  modes (6 in 3D, 3 in 2D) are the exact rigid motions at zero frequency, set apart so that Lanczos seeks
-  the elastic modes M-orthogonal to them (a six-fold zero eigenvalue is where Lanczos may miss a copy),
-  and are counted in :attr:`ModalResults.rigid_body_modes`.
+  modes (6 in 3D, 3 in 2D) are the exact rigid motions at zero frequency, set apart so that the eigensolver
+  seeks the elastic modes M-orthogonal to them (shift-invert: a projection; LOBPCG: its constraints ``Y``;
+  a six-fold zero eigenvalue is where Lanczos may miss a copy), and are counted in
+  :attr:`ModalResults.rigid_body_modes`.
 - :class:`ModalResults` - frequencies, mass-normalised mode shapes, effective modal masses along x,
   y, z (ref. 3, sec. 13.2), VTU export of every mode.
 
@@ -59,17 +69,19 @@ LOBPCG_GUARD = 4
 LOBPCG_FIRST = 8
 LOBPCG_CHUNK = 40
 LOBPCG_MAXITER = 500
-#: Memory model [bytes] (measured with benchmarks/fea_modal.py, P2 tetrahedra; see :func:`memory_estimate`):
-#: stiffness and mass of the free DOFs and their assembly per unknown,
+#: Memory model [bytes] of :func:`memory_estimate`, fitted to the peak RSS of benchmarks/fea_modal.py (the lug,
+#: P2 tetrahedra, less the interpreter's 96 MB): the stiffness and mass of the free DOFs and the copy for K - σM
+#: per unknown,
 MATRIX_BYTES_PER_DOF = 2500.0
-#: CHOLMOD's supernodal factor of a compact solid: ``FACTOR_BYTES_3D · n^(1/3)`` per unknown (nested
-#: dissection: fill grows as n^(4/3)); SuperLU's is :data:`SUPERLU_FILL` times larger,
-FACTOR_BYTES_3D = 260.0
+#: CHOLMOD's supernodal factor of a compact solid: ``FACTOR_BYTES_3D · n^(1/3)`` per unknown (nested dissection:
+#: fill grows as n^(4/3); peaks 8.1, 9.3 and 14.9 kB per DOF at 12.6k, 47.6k and 202k DOF); SuperLU's is
+#: :data:`SUPERLU_FILL` times larger (its fill on the 46k-DOF lug, :mod:`mechverify.fea.factor`). A thin part
+#: fills less: the estimate is then conservative.
+FACTOR_BYTES_3D = 210.0
 SUPERLU_FILL = 4.0
-#: and the multigrid hierarchy of the LOBPCG path per unknown, plus 12 block vectors of 8 bytes per block column.
-MULTIGRID_BYTES_PER_DOF = 1500.0
-#: Up to this many unknowns "auto" factors when the factor fits (above it LOBPCG, measured to be faster).
-FACTOR_MAX_DOFS = 10**9
+#: and for LOBPCG the multigrid hierarchy and work vectors per unknown, plus 12 block vectors of 8 bytes per
+#: block column (measured: 4.2 kB per DOF above the interpreter at 46k DOF with 15 columns).
+MULTIGRID_BYTES_PER_DOF = 1000.0
 
 
 def _parts(model: Any) -> tuple[int, np.ndarray, float, tuple[float, float]]:
@@ -246,7 +258,8 @@ def memory_estimate(unknowns: int, dim: int = 3, n_modes: int = 10, method: str 
     """Estimated peak memory [bytes] of :func:`modal` for ``unknowns`` free DOFs (measured rule, module
     constants): the matrices (:data:`MATRIX_BYTES_PER_DOF`), plus for a factorisation the factor
     (3D: :data:`FACTOR_BYTES_3D` ``· n^(1/3)`` per unknown for CHOLMOD, :data:`SUPERLU_FILL` times that for
-    SuperLU; 2D: a third of it) and ARPACK's 2k+1 Lanczos vectors, or for LOBPCG the multigrid
+    SuperLU; 2D: a third of it, an unmeasured allowance: a plane model's fill grows as n log n) and ARPACK's 2k+1
+    Lanczos vectors, or for LOBPCG the multigrid
     (:data:`MULTIGRID_BYTES_PER_DOF`) and 12 block vectors of ``k + max(LOBPCG_GUARD, k/2)`` columns."""
     n = float(unknowns)
     base = MATRIX_BYTES_PER_DOF * n
@@ -269,13 +282,13 @@ def choose_method(unknowns: int, dim: int = 3, n_modes: int = 10, shift: Any = N
                   memory: float | None = None) -> str:
     """The eigensolver ``method="auto"`` takes: a factorisation (CHOLMOD when installed, else SuperLU) when its
     :func:`memory_estimate` fits in :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory
-    (``memory`` [bytes] instead of the machine's) and the model has at most :data:`FACTOR_MAX_DOFS` unknowns,
-    else LOBPCG; always a factorisation for a ``shift`` (LOBPCG finds the lowest modes only)."""
+    (``memory`` [bytes] instead of the machine's), else LOBPCG; always a factorisation for a ``shift`` (LOBPCG
+    finds the lowest modes only). Where both fit the factorisation was the faster at every size measured
+    (docs/performance.md), so memory alone decides."""
     direct = "cholmod" if cholmod_available() else "superlu"
     if shift is not None:
         return direct
-    fits = memory_estimate(unknowns, dim, n_modes, direct) <= _available(memory)
-    return direct if fits and unknowns <= FACTOR_MAX_DOFS else "lobpcg"
+    return direct if memory_estimate(unknowns, dim, n_modes, direct) <= _available(memory) else "lobpcg"
 
 
 def largest_fitting(dim: int, n_modes: int, method: str, memory: float | None = None) -> int:
