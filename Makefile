@@ -10,18 +10,19 @@ export MPLBACKEND := Agg
 
 .PHONY: demo test lint sysdeps direct bench clean docs
 
-$(BIN)/python:
-	$(PYTHON) -m venv $(VENV)
+# scripts/install.sh creates the venv when missing and installs with uv (on PATH, or bootstrapped into the venv
+# from PyPI), or with pip when uv cannot be had (MECHVERIFY_INSTALLER=pip forces pip).
+INSTALL := PYTHON=$(PYTHON) VENV=$(VENV) bash scripts/install.sh
 
-# demo: the base install and gmsh (wheels only, no compiler); test/bench add the dev and cluster extras
-# (sectionproperties - which builds Triangle - and vtk are test references only).
-$(BASE_STAMP): pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install -q --upgrade pip
-	$(BIN)/python -m pip install -q -e '.[mesh]'
+# demo: the base install and gmsh (wheels only, no compiler; the demo's plates with holes are meshed by gmsh);
+# test/bench add the dev and cluster extras (sectionproperties - which builds Triangle - and vtk are test
+# references only).
+$(BASE_STAMP): pyproject.toml
+	$(INSTALL) -e '.[mesh]'
 	touch $@
 
 $(STAMP): $(BASE_STAMP)
-	$(BIN)/python -m pip install -q -e '.[dev,mesh,cluster,explore,docs]'
+	$(INSTALL) -e '.[dev,mesh,cluster,explore,docs]'
 	touch $@
 
 sysdeps:
@@ -31,7 +32,7 @@ sysdeps:
 # it compiles against the system's SuiteSparse, so `make demo` (wheels only) does not install it.
 direct: $(STAMP) sysdeps
 	@$(BIN)/python -c "import sksparse.cholmod" 2>/dev/null || \
-	  $(BIN)/python -m pip install -q 'scikit-sparse>=0.4.12,<0.5' || echo "scikit-sparse not installed: FEA uses SuperLU"
+	  $(INSTALL) 'scikit-sparse>=0.4.12,<0.5' || echo "scikit-sparse not installed: FEA uses SuperLU"
 
 demo: $(BASE_STAMP) sysdeps
 	$(BIN)/python -m mechverify.demo

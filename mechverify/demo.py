@@ -57,6 +57,8 @@ def main(argv: list[str] | None = None) -> int:
     args = ap.parse_args(argv)
     os.environ.setdefault("MPLBACKEND", "Agg")
 
+    from rich.markup import escape
+
     from mechverify.cli._console import combined_line, err, out, results_table, verdict_line
     from mechverify.errors import MechverifyError
 
@@ -64,7 +66,7 @@ def main(argv: list[str] | None = None) -> int:
         example = load_example()
         runs = [example.verify(), example.verify(example.PLATES)]
     except (FileNotFoundError, MechverifyError) as exc:
-        err.print(f"[red]demo:[/red] {exc}")
+        err.print(f"[red]demo:[/red] {escape(str(exc))}")  # a message naming 'mechverify[mesh]' is not markup
         return 2
     for design, rs in runs:
         shown = design.path.relative_to(REPO) if design.path and design.path.is_relative_to(REPO) else design.path
