@@ -70,14 +70,19 @@ def test_replace_keeps_lazy_values_unread_and_validates_what_changed():
     r = _result(substituted=sub, details=det)
     r2 = r.replace(component="y", notes=["n"], load_case="lc")
     assert (r2.component, r2.notes, r2.load_case) == ("y", ("n",), "lc") and sub.calls == det.calls == 0
-    r3 = r2.replace(required_sf=3.0)  # a validated field: through the constructor
+    r3 = r2.replace(required_sf=3.0)  # checked (> 0), demand and capacity not re-validated
     assert r3.factored_utilisation == 1.5 and sub.calls == det.calls == 0
     with pytest.raises(InputError, match="safety factor"):
         r.replace(required_sf=0.0)
     r4 = r.replace(details=lambda: {"z": 2}, substituted="T")
     assert dict(r4.details) == {"z": 2} and r4.substituted == "T" and det.calls == 0
     assert r3.substituted == "S = 2" and r3.details == {"k": 1} and sub.calls == det.calls == 1
-    assert r.substituted == "S = 2" and r2.substituted == "S = 2"  # each copy holds the function until read
+    assert r.substituted == "S = 2" and r2.substituted == "S = 2" and sub.calls == 1  # copies share the text
+    r5 = r.replace(demand=Q(3.0, "N"))  # a validated field: through the constructor
+    assert r5.utilisation == 1.5 and r5.verdict == "fail" and sub.calls == 1
+    with pytest.raises(InputError, match="demand and capacity must be >= 0"):
+        r.replace(demand=Q(-1.0, "N"))
+    assert _result().replace(capacity=Q(4000.0, "mN")).utilisation == 0.25  # units converted when they differ
     # dataclasses.replace reads every field: correct, not lazy
     assert dataclasses.replace(r, component="z") == r.replace(component="z")
 

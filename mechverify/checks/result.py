@@ -97,12 +97,14 @@ class LazyDetails(Mapping[str, Any]):
 
 
 class _Pending:
-    """A :attr:`CheckResult.substituted` not yet read: the text or the function that makes it."""
+    """A :attr:`CheckResult.substituted` not yet read: the text or the function that makes it, and (once one
+    result read it) the finished text, which the copies made by :meth:`CheckResult.replace` share."""
 
-    __slots__ = ("raw",)
+    __slots__ = ("raw", "text")
 
     def __init__(self, raw: str | Callable[[], str]):
         self.raw = raw
+        self.text: str | None = None
 
 
 class _Substituted:
@@ -116,11 +118,13 @@ class _Substituted:
             return ""  # the dataclass field's default
         v = obj.__dict__.get("substituted", "")
         if type(v) is _Pending:
-            raw = v.raw() if callable(v.raw) else v.raw
-            if not isinstance(raw, str):
-                raise TypeError(f"{obj.component}/{obj.check}: substituted must be a str, got {type(raw).__name__}")
-            v = bracket_negative_operands(raw) if raw else raw
-            obj.__dict__["substituted"] = v
+            if v.text is None:
+                raw = v.raw() if callable(v.raw) else v.raw
+                if not isinstance(raw, str):
+                    raise TypeError(f"{obj.component}/{obj.check}: substituted must be a str, got "
+                                    f"{type(raw).__name__}")
+                v.text, v.raw = (bracket_negative_operands(raw) if raw else raw), ""
+            v = obj.__dict__["substituted"] = v.text
         return v
 
     def __set__(self, obj: Any, value: Any) -> None:
@@ -136,7 +140,7 @@ def _store_substituted(obj: Any, value: Any) -> None:
 #: Fields :meth:`CheckResult.replace` may change without running the validation of ``__post_init__`` again
 #: (it validates the demand, capacity and safety factor only).
 _FAST_FIELDS = frozenset({"check", "component", "title", "formula", "source", "load_case", "notes", "warnings",
-                          "inputs", "details", "substituted"})
+                          "inputs", "details", "substituted", "required_sf"})
 
 
 def _details(details: Any) -> Mapping[str, Any]:
@@ -182,12 +186,7 @@ class CheckResult:
             v = getattr(self, name)
             if not isinstance(v, Quantity):
                 set_fields(self, **{name: Q(v)})
-        if self.demand.dimensionality != self.capacity.dimensionality:
-            raise UnitError(
-                f"{self.component}/{self.check}: demand {fmt(self.demand)} and capacity "
-                f"{fmt(self.capacity)} have different dimensions"
-            )
-        d, c = float(self.demand.m_as(self.capacity.units)), float(self.capacity.magnitude)
+        d, c = self._magnitudes()
         if not (math.isfinite(d) and not math.isnan(c)):
             raise InputError(f"{self.component}/{self.check}: demand must be finite, got {fmt(self.demand)}")
         if d < 0 or c < 0:
@@ -205,9 +204,11 @@ class CheckResult:
 
     def replace(self, **changes: Any) -> CheckResult:
         """A copy with ``changes`` (as :func:`dataclasses.replace`), leaving ``details`` and ``substituted``
-        uncomputed when they are. When neither the demand, the capacity nor the safety factor changes, their
-        validation is not repeated (the other fields are normalised as by the constructor)."""
+        uncomputed when they are. When neither the demand nor the capacity changes, their validation is not
+        repeated (a new safety factor is checked, the other fields are normalised as by the constructor)."""
         if changes.keys() <= _FAST_FIELDS:
+            if "required_sf" in changes and not changes["required_sf"] > 0:
+                raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
             new = object.__new__(type(self))
             new.__dict__.update(self.__dict__)
             for k in ("notes", "warnings"):
@@ -238,11 +239,20 @@ class CheckResult:
             state["details"] = state["details"].data()
         return state
 
+    def _magnitudes(self) -> tuple[float, float]:
+        """The demand in the capacity's unit and the capacity, as floats (no conversion when the units agree)."""
+        dem, cap = self.demand, self.capacity
+        if dem._units == cap._units:  # the same unit: the magnitude as it is (what m_as returns then)
+            return float(dem._magnitude), float(cap._magnitude)
+        if dem.dimensionality != cap.dimensionality:
+            raise UnitError(f"{self.component}/{self.check}: demand {fmt(dem)} and capacity {fmt(cap)} have "
+                            "different dimensions")
+        return float(dem.m_as(cap.units)), float(cap._magnitude)
+
     @cached_property
     def utilisation(self) -> float:
         """demand / capacity (dimensionless; ``inf`` for zero capacity)."""
-        d = float(self.demand.m_as(self.capacity.units))
-        c = float(self.capacity.magnitude)
+        d, c = self._magnitudes()
         if c == 0:
             return 0.0 if d == 0 else math.inf
         return d / c

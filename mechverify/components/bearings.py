@@ -105,7 +105,7 @@ class BallBearing:
         if not self.f0 > 0:
             raise InputError(f"bearing {self.designation}: f0 must be positive")
 
-    @property
+    @cached_property
     def axial_load_limit(self) -> pint.Quantity:
         """Largest recommended axial load: 0.25·C0 for d <= 12 mm or light series (60, 618), else 0.5·C0 [3]."""
         light = self.d.m_as("mm") <= 12 or self.designation.startswith(("60", "618"))

@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 import tomllib
 from dataclasses import dataclass
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from typing import Any
 
@@ -527,6 +527,11 @@ class LeadScrew:
         return self.thread.lead_angle
 
     def _g(self) -> tuple[float, float, float]:
+        return self._geometry
+
+    @cached_property
+    def _geometry(self) -> tuple[float, float, float]:
+        """d2, lead, flank angle [SI] (the thread is immutable: computed once)."""
         t = self.thread
         return to_si(t.d2, "length"), to_si(t.lead, "length"), to_si(t.flank_angle, "angle")
 

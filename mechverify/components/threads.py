@@ -37,7 +37,7 @@ import re
 import tomllib
 from dataclasses import dataclass, field
 from fractions import Fraction
-from functools import cache
+from functools import cache, cached_property
 from pathlib import Path
 from typing import Any
 
@@ -102,28 +102,29 @@ class Thread:
         set_fields(self, notes=tuple(self.notes))
 
     # ------------------------------------------------------------------ derived geometry
-    @property
+    # (cached_property: computed once per thread, mechverify.frozen; a study sample reads them many times)
+    @cached_property
     def lead(self) -> pint.Quantity:
         """Axial advance per revolution ``l = starts * P`` [m]."""
         return (self.pitch * self.starts).to("mm")
 
-    @property
+    @cached_property
     def lead_angle(self) -> pint.Quantity:
         """Lead angle at the pitch diameter, ``lambda = atan(l / (pi d2))`` (Shigley 10th ed., Sec. 8-2)."""
         return Q(math.degrees(math.atan(to_si(self.lead, "length") / (math.pi * to_si(self.d2, "length")))), "deg")
 
-    @property
+    @cached_property
     def normal_flank_angle(self) -> pint.Quantity:
         """Flank angle in the plane normal to the thread, ``tan(alpha_n) = tan(alpha) cos(lambda)``."""
         a, lam = to_si(self.flank_angle, "angle"), to_si(self.lead_angle, "angle")
         return Q(math.degrees(math.atan(math.tan(a) * math.cos(lam))), "deg")
 
-    @property
+    @cached_property
     def minor_area(self) -> pint.Quantity:
         """Cross-section at the minor diameter, ``pi d3^2 / 4`` [m^2]."""
         return (math.pi * self.d3**2 / 4).to("mm**2")
 
-    @property
+    @cached_property
     def minor_second_moment(self) -> pint.Quantity:
         """Second moment of area at the minor diameter, ``pi d3^4 / 64`` [m^4]."""
         return (math.pi * self.d3**4 / 64).to("mm**4")

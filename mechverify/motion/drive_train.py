@@ -210,9 +210,18 @@ class TorqueDemand:
                          f"(stages: {', '.join(s.name for s in self.stages) or 'none'})")
 
     def describe(self, i: int) -> str:
-        """'t = 0.2 s, accelerating: 1200 rpm, 35.2 mN·m' for sample ``i``."""
-        return (f"t = {self.t[i]:.4g} s, {self.labels[i]}: {fmt(Q(abs(self.motor_speed[i]), 'rad/s'), 'rpm')}, "
+        """'t = 0.2 s, accelerating: 1200 rpm, 35.2 mN·m' for sample ``i`` (made once per sample: the checks of a
+        drive name the same governing points)."""
+        text = self._descriptions.get(i)
+        if text is None:
+            text = self._descriptions[i] = (
+                f"t = {self.t[i]:.4g} s, {self.labels[i]}: {fmt(Q(abs(self.motor_speed[i]), 'rad/s'), 'rpm')}, "
                 f"{fmt(Q(self.motor_torque[i], 'N*m'), 'mN*m')}")
+        return text
+
+    @cached_property
+    def _descriptions(self) -> dict[int, str]:
+        return {}
 
     def operating_points(self) -> list[dict[str, Any]]:
         """Per phase (accelerating, constant speed, ...), the sample of largest |torque|."""
