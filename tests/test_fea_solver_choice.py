@@ -153,3 +153,16 @@ def test_pcg_direct_seconds():
     assert exc.value.iterations == 20 and exc.value.predicted > 20
     x, it = linsolve.pcg(A, b, lambda r: r, 1e-10, direct_seconds=1e6)
     assert it > 20 and np.linalg.norm(A @ x - b) < 1e-9 * np.linalg.norm(b)
+
+
+def test_large_system_analysed_only_when_cg_is_slow(monkeypatch):
+    """Above ANALYSE_FIRST_MAX unknowns CG starts without the symbolic analysis; the thin plate's slow convergence
+    (157 iterations at 17k) makes it analyse at iteration 20 and leave CG for the factorisation, and says so."""
+    monkeypatch.setattr(linsolve, "ANALYSE_FIRST_MAX", 0)
+    monkeypatch.setattr(factor, "FACTOR_SECONDS_PER_NNZ", 1e-15)
+    calls = []
+    real = factor.symbolic_cost
+    monkeypatch.setattr(factor, "symbolic_cost", lambda A, o="amd": calls.append(o) or real(A, o))
+    res = plate("3 mm", (26, 13, 1)).solve(progress=False)
+    assert calls and res.info.iterations == 20
+    assert res.info.method.startswith("direct (cholmod") and "CG left after 20 iterations" in res.info.method

@@ -132,10 +132,36 @@ def _libcholmod() -> Any:
     return lib
 
 
+def _cholmod_sparse(A: sp.csc_matrix) -> tuple[_CholmodSparse, tuple[np.ndarray, np.ndarray]]:
+    """A pattern-only, symmetric ``cholmod_sparse`` view of ``A`` (CHOLMOD reads its upper triangle), and the arrays
+    it points into (keep them alive while it is used)."""
+    colptr, rows = A.indptr.astype(np.int32, copy=False), A.indices.astype(np.int32, copy=False)
+    n = A.shape[0]
+    return _CholmodSparse(n, n, A.nnz, colptr.ctypes.data, rows.ctypes.data, None, None, None,
+                          1, 0, 0, 0, int(A.has_sorted_indices), 1), (colptr, rows)  # upper, int, pattern
+
+
+def supervariables(A: sp.csc_matrix) -> np.ndarray:
+    """Starts of the runs of consecutive columns of the symmetric ``A`` with the same pattern (the 2 or 3 DOFs of
+    a finite-element node), plus ``n`` at the end. Columns are compared by their length and the sums of their row
+    indices and of their squares (a grouping that is off only costs ordering quality, never correctness)."""
+    n = A.shape[0]
+    lens = np.diff(A.indptr)
+    if A.nnz == 0 or np.any(lens == 0):
+        return np.arange(n + 1)
+    idx = A.indices.astype(np.float64)
+    s1 = np.add.reduceat(idx, A.indptr[:-1])
+    s2 = np.add.reduceat(idx * idx, A.indptr[:-1])
+    same = (lens[1:] == lens[:-1]) & (s1[1:] == s1[:-1]) & (s2[1:] == s2[:-1])
+    return np.r_[0, np.flatnonzero(~same) + 1, n]
+
+
 def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
     """Order the symmetric ``A`` (``ordering``: "amd" or "metis") and count the non-zeros and flops of its Cholesky
     factor without computing it (CHOLMOD's ``cholmod_amd``/``cholmod_metis`` and ``cholmod_analyze_ordering``,
-    ref. 1); ``None`` when CHOLMOD's library is not available. Only the pattern of the upper triangle is read."""
+    ref. 1); ``None`` when CHOLMOD's library is not available. Only the pattern is read (a CSR matrix is read as
+    its transpose, the same for a symmetric one). METIS orders the graph of :func:`supervariables` (one vertex per
+    node of a finite-element mesh; AMD finds them itself), expanded to the DOFs."""
     if ordering not in ORDERINGS:
         raise InputError(f"ordering: one of {', '.join(ORDERINGS)}, got {ordering!r}")
     lib = _libcholmod()
@@ -143,11 +169,15 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
     if lib is None or n == 0:
         return None
     t0 = time.perf_counter()
-    U = sp.triu(sp.csc_matrix(A), format="csc")
-    U.sort_indices()
-    colptr, rows = U.indptr.astype(np.int32), U.indices.astype(np.int32)
-    S = _CholmodSparse(n, n, U.nnz, colptr.ctypes.data, rows.ctypes.data, None, None, None,
-                       1, 0, 0, 0, 1, 1)  # upper triangle, int indices, pattern only, sorted, packed
+    if sp.issparse(A) and A.format == "csr":
+        A = sp.csc_matrix((A.data, A.indices, A.indptr), shape=A.shape)  # Aᵀ = A: no conversion
+    A = sp.csc_matrix(A)
+    starts = supervariables(A) if ordering == "metis" else np.arange(n + 1)
+    sizes = np.diff(starts)
+    nc = sizes.size
+    C = A[starts[:-1]][:, starts[:-1]].tocsc() if nc < n else A
+    (Sc, keep_c), (S, keep) = _cholmod_sparse(C), _cholmod_sparse(A)
+    perm_c = np.empty(nc, np.int32)
     perm, parent, post, count, first, level = (np.empty(n, np.int32) for _ in range(6))
     ptr = ctypes.c_void_p
     common = ctypes.create_string_buffer(1 << 16)  # cholmod_common (2.7 kB in SuiteSparse 5)
@@ -155,15 +185,20 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
         return None
     try:
         if ordering == "amd":
-            ok = lib.cholmod_amd(ctypes.byref(S), None, ctypes.c_size_t(0), perm.ctypes.data_as(ptr), common)
+            ok = lib.cholmod_amd(ctypes.byref(Sc), None, ctypes.c_size_t(0), perm_c.ctypes.data_as(ptr), common)
         else:
-            ok = lib.cholmod_metis(ctypes.byref(S), None, ctypes.c_size_t(0), 0, perm.ctypes.data_as(ptr), common)
+            ok = lib.cholmod_metis(ctypes.byref(Sc), None, ctypes.c_size_t(0), 0, perm_c.ctypes.data_as(ptr),
+                                   common)
+        if ok == 1:  # each supervariable's columns in order, supervariables in perm_c's order
+            size_p = sizes[perm_c]
+            perm[:] = np.repeat(starts[perm_c], size_p) + np.arange(n) - np.repeat(np.cumsum(size_p) - size_p, size_p)
         ok = ok == 1 and lib.cholmod_analyze_ordering(
             ctypes.byref(S), 1, perm.ctypes.data_as(ptr), None, ctypes.c_size_t(0),  # 1 = CHOLMOD_GIVEN
             parent.ctypes.data_as(ptr), post.ctypes.data_as(ptr), count.ctypes.data_as(ptr),
             first.ctypes.data_as(ptr), level.ctypes.data_as(ptr), common) == 1
     finally:
         lib.cholmod_finish(common)
+    del keep_c, keep
     c = count.astype(np.float64)
     if not ok or c.min() < 1 or c.max() > n or np.unique(perm).size != n:
         return None

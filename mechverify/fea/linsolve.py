@@ -50,6 +50,12 @@ CG_EXPECTED_ITERATIONS = 30
 #: stays under :data:`DIRECT_BYTES_PER_DOF` per unknown (the static solver's budget is 5 kB per DOF in all).
 DIRECT_SWITCH_MAX = 300_000
 DIRECT_BYTES_PER_DOF = 3000.0
+#: Up to this many unknowns the factorisation is analysed before CG starts (the analysis costs about 5 CG
+#: iterations with AMD, 8 more with METIS, and ~16 bytes per non-zero of A for a moment); above, only when CG's
+#: measured rate predicts more than 1.5 :data:`CG_EXPECTED_ITERATIONS` (45; 30 were measured at 179k DOF, 203 at
+#: 66k). The plate with a hole's factorisation beat a 30-iteration CG up to ~70k DOF and lost from ~100k (predicted
+#: 0.46 s against 0.58 s at 37k, 5.0 s against 3.0 s at 179k), so a larger system is factored only for a slow CG.
+ANALYSE_FIRST_MAX = 100_000
 
 
 @dataclass(frozen=True)
@@ -80,19 +86,19 @@ def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
     return A.nnz * CG_SECONDS_PER_NNZ * (iterations + CG_SETUP_ITERATIONS)
 
 
-def choose_solver(A: sp.spmatrix) -> tuple[SolverChoice, Any]:
+def choose_solver(A: sp.spmatrix, analyse: bool = True) -> tuple[SolverChoice, Any]:
     """Direct or iterative for the SPD system ``A`` from a cost model: CHOLMOD's symbolic analysis predicts the
     factorisation's seconds and memory (:func:`mechverify.fea.factor.symbolic_cost`, AMD; METIS too when the
     factorisation is within a factor 2 of CG), CG is predicted at :data:`CG_EXPECTED_ITERATIONS`. Returns the
     :class:`SolverChoice` ("direct" or "amg") and the :class:`~mechverify.fea.factor.SymbolicCost` to factor with
     (None when CHOLMOD is absent, the system is above :data:`DIRECT_SWITCH_MAX` or its factor would take more than
-    :data:`DIRECT_BYTES_PER_DOF` per unknown)."""
+    :data:`DIRECT_BYTES_PER_DOF` per unknown). ``analyse=False`` predicts CG only (the analysis is left for later)."""
     from mechverify.fea.factor import symbolic_cost
 
     n = A.shape[0]
     t_cg = cg_seconds(A, CG_EXPECTED_ITERATIONS)
     cost, spent = None, 0.0
-    if n <= DIRECT_SWITCH_MAX:
+    if analyse and n <= DIRECT_SWITCH_MAX:
         cost = symbolic_cost(A, "amd")
         if cost is not None:
             spent = cost.seconds
@@ -229,13 +235,19 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     Kff = Kc[free][:, free]
     from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
 
-    cost, label = None, ""
+    cost, label, analysis = None, "", None
     if method == "auto":
         big = dim == 3 and free.size > ITERATIVE_THRESHOLD_3D and prolongation is not None
         method = "amg" if big else "direct"
         if big and cholmod_available():
-            choice, cost = choose_solver(Kff)
+            choice, cost = choose_solver(Kff, analyse=free.size <= ANALYSE_FIRST_MAX)
             method, label = choice.method, choice.describe()
+            if choice.direct_seconds is None and free.size <= DIRECT_SWITCH_MAX:
+                def analysis() -> float | None:  # run when CG turns out slower than expected
+                    nonlocal cost, label
+                    later, cost = choose_solver(Kff)
+                    label = later.describe() + " (analysed when CG was slow)"
+                    return None if cost is None else cost.factor_seconds
     if progress:
         progress(f"solving {free.size} unknowns ({method})")
     iters = 0
@@ -245,7 +257,8 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
         try:
             with one_blas_thread():  # vector operations: a second, busy-waiting BLAS thread only slows CG
                 x, iters = pcg(Kff, rhs, pmg_preconditioner(Kff, points, free, dim, prolongation), rtol,
-                               direct_seconds=None if cost is None else cost.factor_seconds)
+                               direct_seconds=analysis if analysis is not None else
+                               None if cost is None else cost.factor_seconds)
             if label:
                 method = f"amg ({label})"
         except SlowConvergence as slow:
@@ -334,13 +347,14 @@ class SlowConvergence(ModelError):
 
 def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np.ndarray], rtol: float,
         maxiter: int = 2000, predict_limit: int | None = None,
-        direct_seconds: float | None = None) -> tuple[np.ndarray, int]:
+        direct_seconds: float | Callable[[], float | None] | None = None) -> tuple[np.ndarray, int]:
     """Preconditioned conjugate gradients (ref. 2, Alg. 9.1), stopping on the true residual
     ``‖b - A x‖ ≤ rtol ‖b‖``; :class:`ModelError` when it does not get there. From iteration
     :data:`PREDICT_AFTER` on (every 10) the mean convergence factor so far predicts the iterations needed; it
     raises :class:`SlowConvergence` (the caller switches to a direct solve) when they exceed ``predict_limit``, or
     when the remaining iterations at the measured seconds per iteration exceed ``direct_seconds`` (the predicted
-    cost of a factorisation)."""
+    cost of a factorisation; a function giving it - or None, no factorisation - is called once, the first time
+    more than 1.5 :data:`CG_EXPECTED_ITERATIONS` are predicted)."""
     t0 = time.process_time()
     bnorm = float(np.linalg.norm(b))
     x = np.zeros_like(b)
@@ -365,7 +379,9 @@ def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np
             if predict_limit is not None and predicted > predict_limit:
                 raise SlowConvergence(f"CG would need about {predicted:.0f} iterations (convergence factor "
                                       f"{rate:.3f} over {k})", k, float(predicted))
-            if direct_seconds is not None and (predicted - k) * per_iteration > direct_seconds:
+            if callable(direct_seconds) and predicted > 1.5 * CG_EXPECTED_ITERATIONS:
+                direct_seconds = direct_seconds()
+            if isinstance(direct_seconds, (int, float)) and (predicted - k) * per_iteration > direct_seconds:
                 raise SlowConvergence(f"CG would need about {predicted:.0f} iterations (convergence factor "
                                       f"{rate:.3f} over {k}), {(predicted - k) * per_iteration:.2g} s more against "
                                       f"{direct_seconds:.2g} s to factor", k, float(predicted))
