@@ -19,9 +19,11 @@ models (:class:`~mechverify.fea.plane.PlaneModel`): the generalized eigenproblem
     (:func:`mechverify.fea.linsolve.pmg_preconditioner`), with the node mass ``m ⊗ I`` as an operator: no
     factor, so its memory grows as n where the factor's grows as n^(4/3) (:func:`memory_estimate`).
 
-  ``method="auto"`` takes the factorisation when its estimated memory fits (:func:`choose_method`), else
-  LOBPCG; a model too large for either is refused before assembly with the estimate and the largest model
-  that fits (:func:`require_memory`). A model with supports must be fully supported (the rigid motion
+  ``method="auto"`` takes the factorisation when its memory fits, else LOBPCG: with CHOLMOD, the factor's size
+  is counted by its symbolic analysis of the assembled K (:func:`mechverify.fea.factor.symbolic_cost`, METIS
+  ordering, reused by the factorisation); without it, by the measured rule (:func:`choose_method`). A model
+  too large for either path is refused before assembly with the estimate and the largest model that fits
+  (:func:`require_memory`). A model with supports must be fully supported (the rigid motion
   left free is named, as in statics); a model with *no* supports is analysed free-free: its rigid-body
   modes (6 in 3D, 3 in 2D) are the exact rigid motions at zero frequency, set apart so that the eigensolver
   seeks the elastic modes M-orthogonal to them (shift-invert: a projection; LOBPCG: its constraints ``Y``;
@@ -57,7 +59,7 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
-from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
+from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread, symbolic_cost
 from mechverify.fea.linsolve import check_supported, p1_prolongation, pmg_preconditioner, rigid_modes
 from mechverify.units import Q, to_si
 
@@ -418,10 +420,10 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     - ``"lobpcg"``: LOBPCG (ref. 4) preconditioned by the static solver's multigrid (solids and plane
       models; the lowest modes only, no ``shift``), to relative residuals ``rtol``: no factor, so a few kB per
       unknown where the factor of a large solid takes 15 or more.
-    - ``"auto"``: the factorisation (CHOLMOD when installed) when its estimated memory
-      (:func:`memory_estimate`) fits in :data:`MEMORY_SHARE` of the available memory (``memory`` [bytes]:
-      instead of the machine's) and the model is small enough for it to be the faster path
-      (:func:`choose_method`), else LOBPCG.
+    - ``"auto"``: the factorisation (CHOLMOD when installed) when its memory fits in
+      :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory (``memory`` [bytes]: instead of the
+      machine's), counted by CHOLMOD's symbolic analysis of K (else estimated, :func:`choose_method`), else
+      LOBPCG.
 
     A model too large for either path is refused *before* assembly with the estimate and the largest
     model that fits (:class:`ModelError`). Asking for as many modes as the model has free DOFs, or more, is
@@ -444,10 +446,19 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
                          "(method 'auto', 'cholmod' or 'superlu')")
     f0 = None if shift is None else shift_frequency(shift)
     used = choose_method(free.size, dim, n_modes, shift, memory) if method == "auto" else method
-    require_memory(free.size, dim, n_modes, used, memory)
+    # before assembling anything: what the least demanding allowed path needs must fit (the measured rule)
+    require_memory(free.size, dim, n_modes, "lobpcg" if method == "auto" and shift is None else used, memory)
     pattern = _pattern(model, dim, _parts(model)[1])
     # one matrix at a time, each cut to the free DOFs before the next (peak memory); CSR: the faster product
     Kf = stiffness_matrix(model, pattern).tocsr()[free][:, free].tocsr()
+    symbolic = None
+    if method == "auto" and shift is None and cholmod_available():
+        # CHOLMOD's symbolic analysis (METIS ordering) counts the factor exactly: it decides instead of the rule,
+        # and the factorisation reuses its ordering (K - σM has K's pattern)
+        symbolic = symbolic_cost(Kf, "metis")
+        if symbolic is not None:
+            need = symbolic.factor_bytes + (MATRIX_BYTES_PER_DOF + 8 * (2 * n_modes + 1)) * free.size
+            used = "cholmod" if need <= _available(memory) else "lobpcg"
     Mf: Any
     if used == "lobpcg":  # the node mass m (M = m ⊗ I): a ninth of M's memory and a cheaper product
         Mf = _NodeMass(node_mass_matrix(model, pattern), free, dim)
@@ -475,7 +486,8 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
         if sigma > 0:
             used = "superlu"  # K - σM is indefinite above the first eigenvalue
         try:
-            fac = factorize((Kf - sigma * Mf).tocsc(), used, what="K - σM")
+            fac = factorize((Kf - sigma * Mf).tocsc(), used, what="K - σM",
+                            symbolic=symbolic if used == "cholmod" else None)
         except ModelError as exc:
             raise ModelError(f"{exc} (σ = {sigma:.4g} rad²/s²; a shift on an eigenvalue: give another shift)") \
                 from None
