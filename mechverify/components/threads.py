@@ -32,6 +32,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import tomllib
@@ -393,12 +394,19 @@ def thread(designation: str | Thread) -> Thread:
     """A thread from its designation: ``"Tr10x2"``, ``"Tr16x8P4"``, ``"Tr16x8(P4)LH"``, ``"1/2-10 ACME"``,
     ``"1/2-0.1P-0.2L-ACME"``. A :class:`Thread` passes through.
 
-    Unknown designations raise :class:`UnknownNameError` with the closest known ones.
+    Unknown designations raise :class:`UnknownNameError` with the closest known ones. One :class:`Thread` per
+    designation (it is immutable; its derived geometry is then computed once, not per design or study sample).
     """
     if isinstance(designation, Thread):
         return designation
     if not isinstance(designation, str):
         raise InputError(f"thread: expected a designation string, got {type(designation).__name__}")
+    return _thread(designation)
+
+
+@functools.lru_cache(maxsize=512)
+def _thread(designation: str) -> Thread:
+    """:func:`thread` of a designation string (errors are raised each time, not cached)."""
     m = _TR.match(designation)
     if m:
         d = float(m["d"].replace(",", "."))
