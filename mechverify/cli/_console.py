@@ -3,19 +3,27 @@
 Imported by a command's ``run`` only (rich is not needed for ``--help``). Width: ``COLUMNS`` when
 set, else the terminal's width, else (output to a file or a CI log) 160 columns, wide enough for the
 results table.
+
+Output that is not a terminal and has no colour forced (a CI log, a pipe; :func:`plain_output`) gets the
+results table and the verdict lines from :mod:`mechverify.cli._table`, which draws them character for
+character as rich does without importing it: :func:`print_results` and :func:`print_line` (rich's import and
+layout were ~45 ms of a cold ``mechverify check``; issue 27).
 """
 
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from rich.console import Console
-from rich.table import Table
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.table import Table
 
 COLOURS = {"pass": "green", "warn": "yellow", "fail": "red"}
+_TAGS = re.compile(r"\[/?(?:green|yellow|red)\]")  # the colour tags of the verdict and bar cells
 
 
 def width(stream: Any = None) -> int | None:
@@ -34,8 +42,50 @@ def width(stream: Any = None) -> int | None:
 
 def console(stderr: bool = False) -> Console:
     """A console on the *current* sys.stdout/sys.stderr (so that tests capturing output see it)."""
+    from rich.console import Console
+
     stream = sys.stderr if stderr else sys.stdout
     return Console(file=stream, highlight=False, width=width(stream), soft_wrap=False)
+
+
+# Environment variables with which rich colours output that is not a terminal (rich.console.Console.__init__).
+_COLOUR_ENV = ("FORCE_COLOR", "TTY_COMPATIBLE", "TTY_INTERACTIVE")
+
+
+def plain_output(stream: Any = None) -> bool:
+    """True when rich would write ``stream`` (default sys.stdout) without colour: not a terminal, no colour forced."""
+    stream = stream or sys.stdout
+    if any(os.environ.get(k) for k in _COLOUR_ENV):
+        return False
+    try:
+        return not stream.isatty()
+    except (AttributeError, ValueError, OSError):
+        return False
+
+
+def print_results(rs: Any, units: dict[Any, str] | None = None) -> None:
+    """``out.print(results_table(rs, units))``, without rich when the output is plain (same characters)."""
+    if plain_output():
+        from mechverify.cli._table import render
+
+        title, headers, justify, rows = results_rows(rs, units)
+        lines = render(title, headers, justify, [[_TAGS.sub("", c) for c in r] for r in rows], width(sys.stdout))
+        if lines is not None:
+            sys.stdout.write("\n".join(lines) + "\n")
+            return
+    out.print(results_table(rs, units))
+
+
+def print_line(markup: str) -> None:
+    """``out.print(markup)`` for a line in mechverify's colour tags, without rich when the output is plain."""
+    if plain_output():
+        from mechverify.cli._table import strip_tags
+
+        text = strip_tags(markup)
+        if text is not None and len(text) <= (width(sys.stdout) or 0):
+            sys.stdout.write(text + "\n")
+            return
+    out.print(markup)
 
 
 class _Lazy:
@@ -57,16 +107,15 @@ def _bar(u: float, width: int = 10) -> str:
     return "█" * filled + "·" * (width - filled) + ("▶" if u > 1 else " ")
 
 
-def results_table(rs: Any, units: dict[Any, str] | None = None) -> Table:
-    """The table of one :class:`~mechverify.checks.ResultSet`, worst first; ``units``: the design file's own units
-    by kind (:func:`mechverify.reports.numbers.design_units`), shown beside the report's."""
+_COLUMNS = (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
+            ("capacity", "right"), ("u·SF", "right"), ("", "left"), ("SF req", "right"), ("governing case", "left"))
+
+
+def results_rows(rs: Any, units: dict[Any, str] | None = None) -> tuple[str, list[str], list[str], list[list[str]]]:
+    """Title, column headers, their justification and the rows (rich markup) of :func:`results_table`."""
     from mechverify.reports.numbers import number, quantity_in
 
-    t = Table(title=rs.name, title_justify="left", show_lines=False)
-    for col, just in (("verdict", "left"), ("component", "left"), ("check", "left"), ("demand", "right"),
-                      ("capacity", "right"), ("u·SF", "right"), ("", "left"), ("SF req", "right"),
-                      ("governing case", "left")):
-        t.add_column(col, justify=just)
+    rows = []
     for r in rs.sorted():
         c = COLOURS[r.verdict.value]
         fu = r.factored_utilisation
@@ -74,8 +123,22 @@ def results_table(rs: Any, units: dict[Any, str] | None = None) -> Table:
             demand, capacity, shown = "-", "-", "n/a"
         else:
             demand, capacity, shown = quantity_in(r.demand, units), quantity_in(r.capacity, units), number(fu)
-        t.add_row(f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, demand, capacity,
-                  shown, f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case)
+        rows.append([f"[{c}]{r.verdict.value.upper()}[/{c}]", r.component, r.title or r.check, demand, capacity,
+                     shown, f"[{c}]{_bar(fu)}[/{c}]", f"{r.required_sf:g}", r.load_case])
+    return rs.name, [c for c, _ in _COLUMNS], [j for _, j in _COLUMNS], rows
+
+
+def results_table(rs: Any, units: dict[Any, str] | None = None) -> Table:
+    """The table of one :class:`~mechverify.checks.ResultSet`, worst first; ``units``: the design file's own units
+    by kind (:func:`mechverify.reports.numbers.design_units`), shown beside the report's."""
+    from rich.table import Table
+
+    title, headers, justify, rows = results_rows(rs, units)
+    t = Table(title=title, title_justify="left", show_lines=False)
+    for col, just in zip(headers, justify):
+        t.add_column(col, justify=just)
+    for row in rows:
+        t.add_row(*row)
     return t
 
 
@@ -101,6 +164,8 @@ def combined_line(result_sets: list[Any]) -> str:
 
 def table(title: str, columns: list[str], rows: list[list[str]]) -> None:
     """Print a simple table: first column left-aligned, the others right-aligned."""
+    from rich.table import Table
+
     t = Table(title=title, title_justify="left")
     for c in columns:
         t.add_column(c, justify="left" if c in columns[:1] else "right")

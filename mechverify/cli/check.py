@@ -52,10 +52,8 @@ def run(args: argparse.Namespace) -> int:
     designs = load_designs(args.designs, args.allow_outside_includes)
     check_output_paths(outputs, input_files(designs, args.designs))  # the includes too
 
-    from rich.markup import escape
-
     from mechverify.checks import Verdict
-    from mechverify.cli._console import combined_line, out, results_table, verdict_line
+    from mechverify.cli._console import combined_line, out, print_line, print_results, verdict_line
     from mechverify.design.outputs import junit_xml, run_document, to_json
     from mechverify.errors import MechverifyError
 
@@ -88,13 +86,15 @@ def run(args: argparse.Namespace) -> int:
         if not args.quiet and len(rs):  # no check ran: the verdict line says so, no empty table
             from mechverify.reports.numbers import design_units
 
-            out.print(results_table(rs, design_units(getattr(getattr(design, "data", None), "raw", None) or {})))
+            print_results(rs, design_units(getattr(getattr(design, "data", None), "raw", None) or {}))
             for r in rs:  # a check that could not be evaluated fails: say why
                 for n in r.notes:
                     if n.startswith("Not verifiable"):
+                        from rich.markup import escape
+
                         out.print(f"[red]{r.component} / {r.check}:[/red] {escape(n)}")
-        out.print(verdict_line(rs))
+        print_line(verdict_line(rs))
     if len(runs) > 1:
-        out.print(combined_line([rs for _, rs in runs]))
+        print_line(combined_line([rs for _, rs in runs]))
     failed = worst is Verdict.FAIL or (args.fail_on == "warn" and worst is Verdict.WARN)
     return 1 if failed else 0
