@@ -77,8 +77,8 @@ class SolverChoice:
         if self.direct_seconds is None:
             return f"predicted CG {self.cg_seconds:.2g} s"
         over = "" if self.fits else ", over the memory budget"
-        return (f"predicted: factor {self.direct_seconds:.2g} s, {self.direct_bytes / 1e6:.0f} MB ({self.ordering}"
-                f"{over}), CG {self.cg_seconds:.2g} s")
+        return (f"predicted: direct {self.direct_seconds:.2g} s, factor {self.direct_bytes / 1e6:.0f} MB "
+                f"({self.ordering}{over}), CG {self.cg_seconds:.2g} s")
 
 
 def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
@@ -86,32 +86,38 @@ def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
     return A.nnz * CG_SECONDS_PER_NNZ * (iterations + CG_SETUP_ITERATIONS)
 
 
-def choose_solver(A: sp.spmatrix, analyse: bool = True) -> tuple[SolverChoice, Any]:
-    """Direct or iterative for the SPD system ``A`` from a cost model: CHOLMOD's symbolic analysis predicts the
-    factorisation's seconds and memory (:func:`mechverify.fea.factor.symbolic_cost`, AMD; METIS too when the
-    factorisation is within a factor 2 of CG), CG is predicted at :data:`CG_EXPECTED_ITERATIONS`. Returns the
-    :class:`SolverChoice` ("direct" or "amg") and the :class:`~mechverify.fea.factor.SymbolicCost` to factor with
-    (None when CHOLMOD is absent, the system is above :data:`DIRECT_SWITCH_MAX` or its factor would take more than
-    :data:`DIRECT_BYTES_PER_DOF` per unknown). ``analyse=False`` predicts CG only (the analysis is left for later)."""
+def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1) -> tuple[SolverChoice, Any]:
+    """Direct or iterative for the SPD system ``A`` with ``cases`` right-hand sides, from a cost model: CHOLMOD's
+    symbolic analysis predicts the factorisation's seconds and memory and the seconds per solve
+    (:func:`mechverify.fea.factor.symbolic_cost`, AMD; METIS too when the factorisation is within a factor 2 of CG),
+    CG is predicted at :data:`CG_EXPECTED_ITERATIONS` per case on one multigrid setup. Returns the
+    :class:`SolverChoice` ("direct" or "amg"; its seconds are the totals over the cases) and the
+    :class:`~mechverify.fea.factor.SymbolicCost` to factor with (None when CHOLMOD is absent, the system is above
+    :data:`DIRECT_SWITCH_MAX` or its factor would take more than :data:`DIRECT_BYTES_PER_DOF` per unknown).
+    ``analyse=False`` predicts CG only (the analysis is left for later)."""
     from mechverify.fea.factor import symbolic_cost
 
     n = A.shape[0]
-    t_cg = cg_seconds(A, CG_EXPECTED_ITERATIONS)
+    t_cg = A.nnz * CG_SECONDS_PER_NNZ * (CG_EXPECTED_ITERATIONS * cases + CG_SETUP_ITERATIONS)
+
+    def direct(c: Any) -> float:
+        return c.factor_seconds + cases * c.solve_seconds
+
     cost, spent = None, 0.0
     if analyse and n <= DIRECT_SWITCH_MAX:
         cost = symbolic_cost(A, "amd")
         if cost is not None:
             spent = cost.seconds
-            if cost.factor_seconds < 2 * t_cg:
+            if direct(cost) < 2 * t_cg:
                 metis = symbolic_cost(A, "metis")
                 if metis is not None:
                     spent += metis.seconds
-                    cost = min(cost, metis, key=lambda c: c.factor_seconds)
+                    cost = min(cost, metis, key=direct)
     if cost is None:
         return SolverChoice("amg", None, None, t_cg, None, spent, False), None
     fits = cost.factor_bytes <= DIRECT_BYTES_PER_DOF * n
-    method = "direct" if fits and cost.factor_seconds <= t_cg else "amg"
-    choice = SolverChoice(method, cost.factor_seconds, cost.factor_bytes, t_cg, cost.ordering, spent, fits)
+    method = "direct" if fits and direct(cost) <= t_cg else "amg"
+    choice = SolverChoice(method, direct(cost), cost.factor_bytes, t_cg, cost.ordering, spent, fits)
     return choice, cost if fits else None
 
 

@@ -32,11 +32,12 @@ import numpy as np
 import scipy.sparse as sp
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.factor import factorize
+from mechverify.fea.factor import cholmod_available, factorize
 from mechverify.fea.linsolve import (
     ITERATIVE_THRESHOLD_3D,
     SolveInfo,
     check_supported,
+    choose_solver,
     p1_prolongation,
     pcg,
     pmg_preconditioner,
@@ -65,8 +66,11 @@ class SharedSolve:
     rtol: float = 1e-10
 
     @classmethod
-    def of(cls, model: Any, method: str = "auto") -> SharedSolve:
-        """Assemble and factor the stiffness of ``model`` (a SolidModel or PlaneModel) once."""
+    def of(cls, model: Any, method: str = "auto", cases: int = 1) -> SharedSolve:
+        """Assemble and factor the stiffness of ``model`` (a SolidModel or PlaneModel) once. ``method="auto"``: a
+        factorisation up to :data:`ITERATIVE_THRESHOLD_3D` unknowns (and in 2D); above, with CHOLMOD installed, the
+        cheaper of a factorisation and multigrid CG for ``cases`` load cases by the cost model of
+        :func:`mechverify.fea.linsolve.choose_solver` (the more cases, the more a factorisation pays)."""
         from mechverify.fea.modal import stiffness_matrix
 
         t0 = time.perf_counter()
@@ -78,10 +82,14 @@ class SharedSolve:
         free = np.flatnonzero(mask)
         Kff = K[free][:, free].tocsr()
         dim = model.nodes.shape[0]
+        cost = None
         if method == "auto":
             method = "amg" if dim == 3 and free.size > ITERATIVE_THRESHOLD_3D else "direct"
+            if method == "amg" and cholmod_available():
+                choice, cost = choose_solver(Kff, cases=max(int(cases), 1))
+                method = choice.method
         if method == "direct":
-            apply = factorize(Kff, "auto").solve  # CHOLMOD when installed, else SuperLU
+            apply = factorize(Kff, "auto", symbolic=cost).solve  # CHOLMOD when installed, else SuperLU
         elif method == "amg":
             m = model.mesh.mesh
             P = p1_prolongation(m.nvertices, m.edges, 3)
@@ -134,7 +142,7 @@ def solve_cases(model: Any, load_cases: Sequence[Sequence[Any]], method: str = "
     factorisation of the stiffness (:class:`SharedSolve`); the supports, mesh and material are the model's."""
     if not load_cases:
         raise InputError("load_cases: give at least one tuple of loads")
-    shared = SharedSolve.of(model, method)
+    shared = SharedSolve.of(model, method, cases=len(load_cases))
     return [replace(model, loads=tuple(loads)).solve(factorization=shared, **kw) for loads in load_cases]
 
 
