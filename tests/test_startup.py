@@ -181,3 +181,27 @@ def test_type_order_does_not_depend_on_what_was_loaded_first(tmp_path):
     out = subprocess.run([sys.executable, "-c", code, str(design), str(published)], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "True"
+
+
+def test_command_table_names_every_command_of_its_module():
+    """``mechverify.cli.COMMANDS`` (a run of one command imports only that module) is what the modules register."""
+    import argparse
+
+    import mechverify.cli as cli
+
+    parser = cli.build_parser()
+    sub = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    registered = {name: p.get_default("run").__module__.rsplit(".", 1)[1] for name, p in sub.choices.items()}
+    assert registered == cli.COMMANDS
+    for name, module in cli.COMMANDS.items():  # the one-command parser: that command's module only
+        one = cli.build_parser(name)
+        choices = next(a for a in one._actions if isinstance(a, argparse._SubParsersAction)).choices
+        assert set(choices) == {n for n, m in cli.COMMANDS.items() if m == module}
+
+
+def test_a_command_imports_only_its_own_module():
+    lift = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+    loaded = _modules_after(f"from mechverify.cli import main\nmain(['check', {str(lift)!r}])")
+    commands = {m for m in loaded if m.startswith("mechverify.cli.") and not m.split(".")[-1].startswith("_")}
+    assert commands == {"mechverify.cli.check"}
+    assert "importlib.metadata" not in _modules_after("import mechverify.cli; mechverify.cli.build_parser()")

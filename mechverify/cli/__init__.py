@@ -66,13 +66,34 @@ def command_modules() -> list[ModuleType]:
     return sorted(mods, key=lambda m: (getattr(m, "ORDER", 100), m.__name__))
 
 
-def build_parser() -> argparse.ArgumentParser:
+#: Command -> the module of this package that defines it: a run of one command builds only that command's parser
+#: and imports only its module (``tests/test_cli_main.py`` checks this table against the modules).
+COMMANDS = {"check": "check", "study": "study", "select-motor": "select_motor", "size": "size", "diff": "diff",
+            "explain": "explain", "init": "init", "schema": "schema", "materials": "catalogues",
+            "threads": "catalogues", "bearings": "catalogues", "motors": "catalogues"}
+
+
+class _Version(argparse.Action):
+    """``--version``: the installed distribution's version, looked up only when asked for."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, default=argparse.SUPPRESS, help=None):
+        super().__init__(option_strings, dest=dest, default=default, nargs=0,
+                         help=help or "show program's version number and exit")
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        sys.stdout.write(f"mechverify {_version()}\n")  # on stdout, as argparse's own version action
+        parser.exit()
+
+
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The command line's parser; with ``command`` (one of :data:`COMMANDS`) only that command's sub-parser."""
     parser = _Parser(prog="mechverify", description="Verify the mechanical design of small machines and robots.",
                      epilog="Exit status: 0 all checks pass, 1 a check fails, 2 invalid input. "
                             "'mechverify COMMAND --help' describes a command.")
-    parser.add_argument("--version", action="version", version=f"mechverify {_version()}")
+    parser.add_argument("--version", action=_Version)
     sub = parser.add_subparsers(title="commands", metavar="COMMAND", parser_class=_Parser)
-    for mod in command_modules():
+    mods = [importlib.import_module(f"{__name__}.{COMMANDS[command]}")] if command in COMMANDS else command_modules()
+    for mod in mods:
         mod.add_parser(sub)
     return parser
 
@@ -110,8 +131,8 @@ def error(message: str) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point: parse, run the command, turn every error into a message and an exit status."""
-    parser = build_parser()
     argv = sys.argv[1:] if argv is None else list(argv)
+    parser = build_parser(argv[0] if argv else None)
     if not argv:
         parser.print_help(sys.stderr)
         return EXIT_INVALID
