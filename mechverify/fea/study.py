@@ -32,7 +32,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.factor import cholmod_available, factorize
+from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
 from mechverify.fea.linsolve import (
     ITERATIVE_THRESHOLD_3D,
     SolveInfo,
@@ -112,9 +112,10 @@ class SharedSolve:
             X = self._apply(R)
         else:
             X = np.empty_like(R)
-            for j in range(R.shape[1]):
-                X[:, j], it = pcg(self._Kff, R[:, j], self._apply, self.rtol)
-                iters = max(iters, it)
+            with one_blas_thread():  # CG's vector operations: a second BLAS thread only waits
+                for j in range(R.shape[1]):
+                    X[:, j], it = pcg(self._Kff, R[:, j], self._apply, self.rtol)
+                    iters = max(iters, it)
         U = np.zeros_like(F)
         U[self._free] = X
         res = float(np.linalg.norm(self._Kff @ X - R) / max(np.linalg.norm(R), 1e-300))
@@ -130,7 +131,8 @@ class SharedSolve:
         if self.method == "direct":
             x, iters = self._apply(rhs), 0
         else:
-            x, iters = pcg(self._Kff, rhs, self._apply, self.rtol)
+            with one_blas_thread():
+                x, iters = pcg(self._Kff, rhs, self._apply, self.rtol)
         u = np.zeros(self.K.shape[0])
         u[self._free] = x
         res = float(np.linalg.norm(self._Kff @ x - rhs) / max(np.linalg.norm(rhs), 1e-300))
