@@ -357,3 +357,40 @@ def test_size_thinnest_plate_against_roark_table_11_4_case_1a():
     r = size(PLATE, "components.p.thickness", until="plate_deflection_fea", bounds=("2 mm", "8 mm"), scan=3)
     assert r.unit == "mm" and r.limit == pytest.approx(t_hand, rel=0.01)
     assert r.today_fu < 1 and r.margin < 0  # 4 mm passes; the limit lies below it
+
+
+def test_explore_derived_parameter_follows_its_input(tmp_path):
+    """Review finding (session 3): a slider per expression parameter froze it at its old value, so moving the
+    input's slider changed nothing. The axial force of a link is `twice = "2 * load"`; at load = 180 N the
+    member's u·SF must be 1.8x that at 100 N (stress linear in the axial force: sigma = N/A, hand calculation)."""
+    pytest.importorskip("ipywidgets")
+    import re
+
+    from mechverify.errors import UnknownNameError
+    from mechverify.reports.explore import explore
+
+    path = tmp_path / "ex.toml"
+    path.write_text(
+        '[design]\nname = "ex"\n[parameters]\nload = "100 N"\ntwice = "2 * load"\n'
+        '[components.rod]\ntype = "link"\nlength = "200 mm"\nsection = "rectangle"\nwidth = "10 mm"\n'
+        'height = "10 mm"\nmaterial = "AISI 1045 CD"\nchecks = { member_buckling = false, link_deflection = false }\n'
+        '[load_cases.a]\nrod = { axial_force = "twice" }\n')
+    d = load(path)
+    e = explore(d)
+    assert list(e.sliders) == ["parameters.load"]  # no slider of its own for the derived parameter
+
+    def u(html: str) -> float:
+        return max(float(x) for x in re.findall(r"<td style='text-align:right'>([^<]*)</td>", html))
+
+    def exact(load_text: str) -> float:
+        return max(r.factored_utilisation for r in d.with_parameters(load=load_text).verify())
+
+    assert exact("180 N") == pytest.approx(1.8 * exact("100 N"), rel=1e-9)  # linear in the axial force
+    assert u(e.html) == float(f"{exact('100 N'):.3g}")  # the table prints 3 significant digits
+    e.sliders["parameters.load"].value = 180.0
+    assert u(e.html) == float(f"{exact('180 N'):.3g}") != float(f"{exact('100 N'):.3g}")
+    named = explore(d, ["parameters.load", "parameters.twice"])  # named explicitly: both sliders
+    named.sliders["parameters.load"].value = 180.0  # the unmoved `twice` slider must not freeze the expression
+    assert u(named.html) == float(f"{exact('180 N'):.3g}")
+    with pytest.raises(UnknownNameError, match="parameters.nope"):
+        e.update({"parameters.nope": 1.0})

@@ -1,7 +1,8 @@
 """Interactive exploration in Jupyter: sliders for a design's parameters, re-verified on every change.
 
-``explore(design)`` shows one slider per numeric ``[parameters]`` value (or per
-key path given), from half to twice today's value unless a range is given, the summary table of
+``explore(design)`` shows one slider per numeric ``[parameters]`` value (not for a parameter written as an
+expression: it follows its inputs), or per key path given, from half to twice today's value unless a range
+is given, the summary table of
 u·SF per check and the governing check's figure. Needs ``ipywidgets`` (``pip install
 'mechverify[explore]'``). Each change builds the variant with :meth:`Design.with_overrides` and
 verifies it; an invalid combination shows its message instead of the table.
@@ -13,9 +14,10 @@ import html
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from mechverify.errors import InputError, MechverifyError
+from mechverify.errors import InputError, MechverifyError, UnknownNameError
 from mechverify.studies.params import Parameter, resolver
 from mechverify.studies.study import design_and_source
+from mechverify.units import Q
 
 COLOURS = {"pass": "#1a7f37", "warn": "#9a6700", "fail": "#cf222e"}
 
@@ -27,7 +29,9 @@ def _parameters(design: Any, doc: Mapping[str, Any], names: Sequence[str] | Mapp
     if names is None:
         table = doc.get("parameters", {}) if isinstance(doc.get("parameters"), dict) else {}
         out = []
-        for k in table:
+        for k, raw in table.items():
+            if _is_expression(raw):
+                continue  # a derived parameter follows its inputs' sliders (a slider of its own would freeze it)
             try:
                 p = Parameter.of(doc, f"parameters.{k}", res)
             except MechverifyError:
@@ -51,6 +55,17 @@ def _parameters(design: Any, doc: Mapping[str, Any], names: Sequence[str] | Mapp
                 raise InputError(f"explore: {path}: expected low < high, got {rng!r}")
         out.append((p, lo, hi))
     return out
+
+
+def _is_expression(raw: Any) -> bool:
+    """A text value that is not a quantity: an expression such as ``"2 * load"``."""
+    if not isinstance(raw, str):
+        return False
+    try:
+        Q(raw)
+    except MechverifyError:
+        return True
+    return False
 
 
 def _default_range(p: Parameter) -> tuple[float, float]:
@@ -112,12 +127,19 @@ class Explorer:
         self.update({})
 
     def _changed(self) -> None:
-        self.update({path: s.value for path, s in self.sliders.items()})
+        # only the sliders moved away from the file's value: an unmoved slider must not replace what the file
+        # writes (a parameter named explicitly may be an expression of another slider's parameter)
+        base = {p.path: p.base for p, _, _ in self.params}
+        self.update({path: s.value for path, s in self.sliders.items() if s.value != base[path]})
 
     def update(self, values: Mapping[str, float]) -> str:
-        """Verify with ``values`` (key path -> number in the parameter's unit); the summary HTML."""
+        """Verify with ``values`` (key path -> number in the parameter's unit); the summary HTML.
+        A path that has no slider is an :class:`~mechverify.errors.UnknownNameError`."""
         by_path = {p.path: p for p, _, _ in self.params}
-        overrides = {k: by_path[k].text(v) for k, v in values.items() if k in by_path}
+        for k in values:
+            if k not in by_path:
+                raise UnknownNameError("explore slider", k, by_path)
+        overrides = {k: by_path[k].text(v) for k, v in values.items()}
         try:
             design = self.design.with_overrides(overrides) if overrides else self.design
             self.html = summary_html(design.verify())
