@@ -12,6 +12,10 @@ first run (bytecode, pint's registry cache); one untimed run of each primes them
 even where ``PYTHONDONTWRITEBYTECODE`` is set (as in some sandboxes: every process would then compile
 mechverify's sources again, while numpy and pint come with compiled wheels), into a separate
 ``PYTHONPYCACHEPREFIX`` so that the source tree stays clean. Issue 27.
+
+The output goes to /dev/null, not a terminal, as in a CI log: ``check`` then draws its table without rich
+(``mechverify/cli/_table.py``); in a terminal rich draws it, in colour, which adds ~45 ms CPU (rich's import
+and layout; docs/performance.md).
 """
 
 from __future__ import annotations
