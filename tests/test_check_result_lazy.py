@@ -222,3 +222,21 @@ def test_drive_figure_data_are_lazy_and_complete():
     assert {"rms_torque", "profile_time", "profile_velocity", "governing_speed", "motor_torque",
             "limit_torque", "margin"} <= set(peak.details)
     assert peak.details["profile_velocity"].units == Q(1, "mm/s").units
+
+
+@pytest.mark.parametrize("v", [0.0, 0.1, 1, 0.25, 1e30, 2e30, float("nan"), float("inf"), True, -0.3, np.float64(0.2),
+                               "0.2", Q(0.2, "")])
+def test_power_screw_dimensionless_fast_path_equals_to_si(v):
+    """The plain-number shortcut of the screw formulas' friction coefficients gives what to_si gives (value and
+    type), or the same error."""
+    from mechverify.components.power_screw import _dimensionless
+    from mechverify.units import to_si
+
+    def run(f):
+        try:
+            out = f(v, "dimensionless", "mu") if f is to_si else f(v, "mu")
+            return repr(out), type(out)
+        except Exception as exc:  # the same error type and message
+            return type(exc), str(exc)
+
+    assert run(_dimensionless) == run(to_si)

@@ -43,7 +43,7 @@ from mechverify.components.threads import Thread, thread
 from mechverify.errors import InputError, ValidityError
 from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
-from mechverify.units import QuantityLike, as_quantity, fmt, from_si, require_positive, si_function, to_si
+from mechverify.units import BOUNDS, QuantityLike, as_quantity, fmt, from_si, require_positive, si_function, to_si
 
 _DATA = Path(__file__).parent / "data" / "power_screw_factors.toml"
 
@@ -404,7 +404,17 @@ def _material(m: Material | str | None, name: str) -> Material | None:
 
 
 def _dimensionless(v: Any, name: str) -> float:
+    """A friction coefficient or ratio as a float; a plain finite number within the dimensionless bounds is
+    returned as :func:`to_si` returns it (without its quantity round trip: every torque call passes mu and the
+    collar's mu), anything else goes through :func:`to_si` (its checks and messages)."""
+    if type(v) is float or type(v) is int:
+        f = float(v)
+        if math.isfinite(f) and abs(f) <= _DIMENSIONLESS_MAX:
+            return f
     return to_si(v, "dimensionless", name)
+
+
+_DIMENSIONLESS_MAX = BOUNDS["dimensionless"][1]
 
 
 @dataclass(frozen=True)
