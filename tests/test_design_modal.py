@@ -185,3 +185,63 @@ def test_frame_point_masses(tmp_path):
     assert "components.beam.masses[0].mass" in _errors(tmp_path, bad)
     bad = SS_MASS.replace('inertia = "1e-6 kg*m**2"', 'inertia = ["1e-6 kg*m**2"]')
     assert "components.beam.masses[1].inertia" in _errors(tmp_path, bad)
+
+
+PANEL = """
+[design]
+name = "panel"
+
+[components.pl]
+type = "plate_fea"
+width = "400 mm"
+height = "200 mm"
+thickness = "2 mm"
+material = "Structural Steel"
+supports = [ { edges = "all", type = "pinned" } ]
+mesh_size = "10 mm"
+
+[load_cases.p.pl]
+pressure = "1 kPa"
+[load_cases.squeeze.pl]
+in_plane = IN_PLANE
+"""
+
+
+def test_plate_fea_buckling_timoshenko_gere(tmp_path):
+    """Simply supported 400 x 200 x 2 mm steel plate, in_plane nx = -50 N/mm: N_cr = k π² D / b² with k = 4 (a/b = 2,
+    Timoshenko & Gere eq. 9-9; hand calculation) = 144.6 N/mm, factor 2.89; the mesh (20 elements across b) gives
+    -0.6 % (tests/validation/test_timoshenko_gere_plate_buckling.py). The buckling SF class applies, the lateral
+    case runs the static checks only, and the result carries the mode-shape figure's data."""
+    D = E * 0.002**3 / (12 * (1 - 0.3**2))
+    factor_hand = 4 * math.pi**2 * D / 0.2**2 / 50e3
+    assert factor_hand == pytest.approx(2.892, abs=1e-3)
+    f = tmp_path / "d.toml"
+    f.write_text(PANEL.replace("IN_PLANE", '{ nx = "-50 N/mm" }'))
+    results = mechverify.load(f).verify()
+    bk = [r for r in results if r.check == "buckling_load_factor"]
+    assert [r.load_case for r in bk] == ["squeeze"]
+    assert bk[0].capacity.m == pytest.approx(factor_hand, rel=1e-2)
+    assert bk[0].required_sf == mechverify.load(f).data.safety_factors["buckling"] and not bk[0].passed
+    assert bk[0].details["mode_shape"].shape[1] == 3 and "mode_lines" not in bk[0].details
+    assert {r.check for r in results if r.load_case == "p"} >= {"plate_stress_fea", "plate_deflection_fea"}
+    w = bk[0].details["mode_shape"][:, 2]
+    assert w.min() == pytest.approx(-1.0, abs=0.05) and w.max() == pytest.approx(1.0, abs=0.05)  # m = 2 half-waves
+    from mechverify.reports.plots import fea as plots
+
+    fig = plots.buckling_shape_plot(bk[0])  # plan view coloured by the signed deflection
+    assert fig.axes[0].get_xlabel() == "x [mm]" and fig.axes[0].get_ylabel() == "y [mm]"
+    # a linear variation (in-plane bending: nx from -50 at y = 0 to +50 N/mm at y = 200 mm) and shear run too
+    f.write_text(PANEL.replace("IN_PLANE", '{ nx = ["-50 N/mm", "50 N/mm"], nxy = "5 N/mm" }'))
+    assert [r for r in mechverify.load(f).verify() if r.check == "buckling_load_factor"][0].capacity.m > factor_hand
+
+
+@pytest.mark.parametrize(("in_plane", "match"), [
+    ('{ nx = "-50" }', r"load_cases\.squeeze\.pl\.in_plane\.nx"),
+    ('{ nz = "-50 N/mm" }', r"load_cases\.squeeze\.pl\.in_plane\.nz: not a key"),
+    ('{ nx = ["-50 N/mm"] }', r"load_cases\.squeeze\.pl\.in_plane\.nx: one value or two"),
+    ('{ nx = "0 N/mm" }', r"load_cases\.squeeze\.pl\.in_plane: .*all zero"),
+    ('{ nx = "50 N/mm" }', r"load_cases\.squeeze\.pl\.in_plane: .*compresses no part of the plate"),
+])
+def test_plate_fea_bad_in_plane(tmp_path, in_plane, match):
+    msg = _errors(tmp_path, PANEL.replace("IN_PLANE", in_plane))
+    assert re.search(match, msg), msg

@@ -259,6 +259,11 @@ def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: Q
                          "refine the mesh or ask fewer")
     gb = Basis(sys_.mesh, ElementTriMorley(), intorder=4)
     field, method, notes = membrane_field(sys_, load, (gb.quadrature[0], gb.quadrature[1]), membrane)
+    nxx, nyy, nxy = field
+    n_min = (nxx + nyy) / 2 - np.sqrt(((nxx - nyy) / 2) ** 2 + nxy**2)  # the smaller principal stress resultant
+    if not np.any(n_min < -1e-9 * max(float(np.max(np.abs(field))), 1e-300)):
+        raise ModelError("plate buckling: the in-plane load compresses no part of the plate, so it cannot buckle "
+                         "(reverse the load to study the other direction)")
     G = geometric_stiffness(gb, field)
     Kf, Gf = K[free][:, free], G[free][:, free]
     if free.size <= DENSE_LIMIT:
@@ -268,8 +273,12 @@ def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: Q
 
         F = factorize(Kf, what="the plate's bending stiffness")
         k = min(n_modes + 4, free.size - 1)
-        th, V = spl.eigsh(-Gf.tocsc(), k=k, M=Kf.tocsc(), Minv=F.operator(), which="LA", tol=1e-10,
-                          v0=np.random.default_rng(0).standard_normal(free.size))
+        try:
+            th, V = spl.eigsh(-Gf.tocsc(), k=k, M=Kf.tocsc(), Minv=F.operator(), which="LA", tol=1e-10,
+                              maxiter=2000, v0=np.random.default_rng(0).standard_normal(free.size))
+        except spl.ArpackNoConvergence:
+            raise ModelError("plate buckling: the eigensolver did not converge (the compressed region is tiny, or its "
+                             "buckling factors lie very close together); ask fewer modes or change the mesh") from None
     order = np.argsort(-th)
     th, V = th[order], V[:, order]
     pos = th > 1e-9 * max(float(np.max(np.abs(th))), 1e-300)

@@ -1,7 +1,8 @@
 """Design-file keys of a natural-frequency requirement, shared by the ``frame`` and ``plate_fea`` types (the same
 keys and meaning as ``solid_fea``): ``min_frequency`` or ``excitation_band`` with ``frequency_margin``, and
-``modes`` (how many are computed). Parsing only; the check is :func:`mechverify.checks.fea.check_natural_frequency`.
-Declares no component type."""
+``modes`` (how many are computed); and the ``in_plane`` load-case key of ``plate_fea`` (membrane edge loads for
+``buckling_load_factor``). Parsing only; the checks are :func:`mechverify.checks.fea.check_natural_frequency` and
+:func:`~mechverify.checks.fea.check_buckling_load_factor`. Declares no component type."""
 
 from __future__ import annotations
 
@@ -22,6 +23,39 @@ MODAL_FIELDS = (
     Field("frequency_margin", "float", "separation from the excitation band (0.15 = 15 %)", default=0.15),
     Field("modes", "int", "natural frequencies computed", default=6),
 )
+
+
+IN_PLANE_FIELD = Field(
+    "in_plane", "table", "in-plane (membrane) edge loads for buckling_load_factor: {nx, ny, nxy} force per length on "
+    "the outline edges, tension positive (\"-10 N/mm\" compresses); nx = [at the lowest y, at the highest y] varies "
+    "linearly, ny = [at the lowest x, at the highest x] likewise", item="table")
+IN_PLANE_KEYS = ("nx", "ny", "nxy")
+
+
+def in_plane_load(v: Any, path: str) -> Any:
+    """The :class:`mechverify.fea.plate_buckling.InPlaneLoad` of a load case's ``in_plane`` table at key ``path``;
+    bad values are an :class:`InputError` naming the key."""
+    from mechverify.fea.plate_buckling import InPlaneLoad
+
+    if not isinstance(v, Mapping) or not v:
+        raise InputError(f"{path}: expected a table {{nx = \"-10 N/mm\", ny = ..., nxy = ...}}, got {v!r}")
+    bad = [k for k in v if k not in IN_PLANE_KEYS]
+    if bad:
+        raise InputError(f"{path}.{bad[0]}: not a key of in_plane (nx, ny, nxy)")
+    vals: dict[str, Any] = {}
+    for k, x in v.items():
+        if isinstance(x, list) and k != "nxy":
+            if len(x) != 2:
+                raise InputError(f"{path}.{k}: one value or two [at the low side, at the high side], got {x!r}")
+            vals[k] = tuple(as_quantity(q, "force_per_length", f"{path}.{k}[{i}]") for i, q in enumerate(x))
+        else:
+            vals[k] = as_quantity(x, "force_per_length", f"{path}.{k}")
+    load = InPlaneLoad(**vals)
+    try:
+        load.values()
+    except InputError as exc:
+        raise InputError(f"{path}: {str(exc).split(': ', 1)[-1]}") from None
+    return load
 
 
 @dataclass(frozen=True)

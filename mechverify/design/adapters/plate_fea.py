@@ -15,7 +15,9 @@ report figure (:mod:`mechverify.fea.plate_figure`):
 * ``plate_stress_fea`` — the largest von Mises stress at the plate surfaces (bending) against the yield
   strength, with the governing location in the notes;
 * ``plate_deflection_fea`` — the largest deflection against a limit (a length, ``"L/250"`` or a fraction
-  of the span: the ``span`` field, else the shorter side of the plate's bounding box).
+  of the span: the ``span`` field, else the shorter side of the plate's bounding box);
+* ``natural_frequency`` (with ``min_frequency`` or ``excitation_band``) and ``buckling_load_factor`` (load cases
+  with ``in_plane`` edge loads: :func:`mechverify.fea.plate_buckling.plate_buckling` on the same mesh).
 """
 
 from __future__ import annotations
@@ -33,8 +35,8 @@ from mechverify.checks import members as mc
 from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
+from mechverify.design.adapters import modal_parsing as mp
 from mechverify.design.adapters.bolts import plate_bolt_outputs
-from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
 from mechverify.design.adapters.plate_parsing import _cutouts, _holes, _loads, _points, _si, _supports
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
@@ -56,7 +58,7 @@ class PlateFEA:
     deflection_limit: Any
     span: Any
     unit: str = "mm"
-    modal: ModalSettings | None = None
+    modal: mp.ModalSettings | None = None
     solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
 
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
@@ -137,7 +139,7 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
         if k in p and not p[k].magnitude > 0:
             raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
-                    unit, modal_settings(p))
+                    unit, mp.modal_settings(p))
 
 
 # ------------------------------------------------------------------------------------------------------ checks
@@ -167,6 +169,24 @@ def _frequency(c: PlateFEA, loads: Any, ctx: Any) -> CheckResult | list[CheckRes
 
     res = c.modal.solve(plate_modes, pl.PlateModel(c.plate, c.supports), c.mesh_size, c.hole_mesh_size)
     return c.modal.check(res, c.name)
+
+
+def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
+    """buckling_load_factor of every load case that gives in_plane edge loads (lateral loads cause no membrane
+    force); none: the check does not run."""
+    from mechverify.fea.plate_buckling import plate_buckling
+
+    out = []
+    for case, comps in ctx.design.data.load_cases.items():
+        if "in_plane" in (comps.get(c.name) or {}):
+            path = f"load_cases.{case}.{c.name}.in_plane"
+            load = mp.in_plane_load(comps[c.name]["in_plane"], path)
+            try:
+                res = plate_buckling(pl.PlateModel(c.plate, c.supports), load, 3, c.mesh_size, c.hole_mesh_size)
+            except MechverifyError as exc:
+                raise type(exc)(f"{path}: {exc}") from None
+            out.append(feac.check_buckling_load_factor(res, component=c.name, load_case=case))
+    return out
 
 
 def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
@@ -220,7 +240,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
         Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
-        *MODAL_FIELDS,
+        *mp.MODAL_FIELDS,
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
@@ -230,6 +250,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                      "[points], force (total) | pressure} (along +z)", item="table"),
         Field("pressure", "pressure", "uniform pressure over the whole plate (along +z)"),
         Field("self_weight", "bool", "add the plate's weight rho g t (requirements.g) along -z"),
+        mp.IN_PLANE_FIELD,
     ),
     checks=(
         CheckSpec.of(pc.check_plate_stress_fea, lambda c, loads, ctx: _stress(c, loads, ctx),
@@ -237,6 +258,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
                      needs=("point_loads|patch_loads|pressure|self_weight",)),
         CheckSpec.of(feac.check_natural_frequency, _frequency),
+        CheckSpec.of(feac.check_buckling_load_factor, _buckling),
     ),
     outputs=plate_bolt_outputs(),  # bolt-hole support forces for bolted_joint / bolt_group (adapters/bolts.py)
     figures=_figures,

@@ -19,6 +19,18 @@ def _mode_figure(r: CheckResult, label: str) -> Any:
     P = d["mode_points"].m_as("mm")
     S = np.asarray(d["mode_shape"], dtype=float)
     span = float(np.max(np.ptp(P, axis=0))) or 1.0
+    flat = [k for k in range(3) if np.ptp(P[:, k]) <= 1e-9 * span and np.all(np.delete(S, k, axis=1) == 0)]
+    if flat and d.get("mode_lines") is None:  # a plate: plan view coloured by the signed deflection (half-waves)
+        k = flat[0]
+        i, j = (a for a in range(3) if a != k)
+        fig, ax = new_figure()
+        sc = ax.scatter(P[:, i], P[:, j], s=6, c=S[:, k], cmap="RdBu_r", vmin=-1, vmax=1, rasterized=True)
+        fig.colorbar(sc, ax=ax, label=f"deflection along {'xyz'[k]} (largest 1)")
+        ax.set_title(label, fontsize=8)
+        ax.set_xlabel(f"{'xyz'[i]} [mm]")
+        ax.set_ylabel(f"{'xyz'[j]} [mm]")
+        ax.set_aspect("equal", adjustable="datalim")
+        return fig
     D = P + 0.12 * span * S  # deformed, the largest motion drawn at 12 % of the model's size
     # view: the two axes of the largest extent of the deformed shape
     ext = np.ptp(np.vstack([P, D]), axis=0)
