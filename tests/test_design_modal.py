@@ -143,6 +143,15 @@ def test_frame_bad_modal_input(tmp_path, extra, match):
     assert re.search(match, msg), msg
 
 
+def test_too_many_modes_names_design_file_keys(tmp_path):
+    """The too-many-modes advice names design-file keys (members' divisions, mesh_size), not the API's
+    elements_per_member."""
+    msg = _errors(tmp_path, FRAME.format(extra='min_frequency = "10 Hz"\nmodes = 500'))
+    assert "members[i].divisions" in msg and "elements_per_member" not in msg, msg
+    msg = _errors(tmp_path, PLATE.format(mesh="100 mm", extra='min_frequency = "200 Hz"\nmodes = 5000'))
+    assert "lower mesh_size" in msg and "refine the mesh" not in msg, msg
+
+
 def test_plate_bad_modal_input(tmp_path):
     msg = _errors(tmp_path, PLATE.format(mesh="100 mm", extra='min_frequency = "200 Hz"\nmodes = 5000'))
     assert "components.pl.modes: 5000 modes asked" in msg
@@ -245,3 +254,64 @@ def test_plate_fea_buckling_timoshenko_gere(tmp_path):
 def test_plate_fea_bad_in_plane(tmp_path, in_plane, match):
     msg = _errors(tmp_path, PANEL.replace("IN_PLANE", in_plane))
     assert re.search(match, msg), msg
+
+
+COMBO = """
+[design]
+name = "column under combinations"
+
+[components.col]
+type = "frame"
+material = "Structural Steel"
+section = "circle"
+diameter = "20 mm"
+theory = "euler"
+nodes = { A = ["0 mm", "0 mm", "0 mm"], B = ["1000 mm", "0 mm", "0 mm"] }
+members = [ { name = "m", start = "A", end = "B" } ]
+supports = [ { at = "A", type = "fixed" } ]
+[components.col.checks]
+buckling_load_factor = true
+frame_stress = false
+frame_deflection = false
+
+[load_cases.dead.col]
+point_loads = [ { at = "B", force = ["-200 N", "0 N", "0 N"] } ]
+[load_cases.uplift.col]
+point_loads = [ { at = "B", force = ["400 N", "0 N", "0 N"] } ]
+[load_cases.live.col]
+point_loads = [ { at = "B", force = ["-1000 N", "0 N", "0 N"] } ]
+[load_cases.uls.col]
+combination = { dead = 1.35, live = 1.5 }
+[load_cases.lift.col]
+combination = { dead = 1.0, uplift = -1.5 }
+"""
+
+
+def test_frame_buckling_of_combinations(tmp_path):
+    """A combination's axial forces are the factored sum of its cases': the fixed-free Euler column of
+    test_frame_cantilever_frequency_and_euler_column (P_cr = π² EI / 4L² = 3875.8 N, Timoshenko & Gere Sec. 2.1,
+    hand calculation) under uls = 1.35 dead (200 N) + 1.5 live (1000 N) = 1770 N: factor 2.190, and under
+    lift = dead - 1.5 uplift (400 N tension): 200 + 600 = 800 N compression, factor 4.845 (hand). The governing case
+    is uls; an uplift case alone (tension) cannot buckle."""
+    A, I, L = _round_bar()
+    p_cr = math.pi**2 * E * I / (4 * L**2)
+    f = tmp_path / "d.toml"
+    f.write_text(COMBO)
+    design = mechverify.load(f)
+    by_case = {}
+    for case in ("dead", "live", "uls", "lift"):
+        from mechverify.design.design import CheckContext
+
+        entry = design.data.components["col"]
+        spec = next(s for s in entry.type.checks if s.name == "buckling_load_factor")
+        ctx = CheckContext("col", case, 3.0, design.data.requirements, design)
+        by_case[case] = spec.run(entry.obj, design.data.load_cases[case]["col"], ctx).capacity.m
+    assert by_case["dead"] == pytest.approx(p_cr / 200, rel=1e-4)
+    assert by_case["live"] == pytest.approx(p_cr / 1000, rel=1e-4)
+    assert by_case["uls"] == pytest.approx(p_cr / 1770, rel=1e-4)
+    assert by_case["lift"] == pytest.approx(p_cr / 800, rel=1e-4)
+    results = [r for r in mechverify.load(f).verify() if r.check == "buckling_load_factor"]
+    assert len(results) == 1 and results[0].load_case == "uls"  # the uplift case (tension only) gives no result
+    assert results[0].capacity.m == pytest.approx(by_case["uls"], rel=1e-12)
+    bad = COMBO.replace("uplift = -1.5", "wind = -1.5")
+    assert "load_cases.lift.col.combination.wind" in _errors(tmp_path, bad)

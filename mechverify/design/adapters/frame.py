@@ -104,17 +104,29 @@ def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[Ch
     if c.modal is None:
         return []
     if not c.modes:
-        c.modes.append(c.modal.solve(fe.frame_modes, c.frame, masses=c.masses))
+        c.modes.append(c.modal.solve(fe.frame_modes, c.frame, masses=c.masses, hint=(
+            "raise the members' divisions (members[i].divisions; at least 10 elements per member are used) or ask "
+            "fewer modes")))
     return c.modal.check(c.modes[0], c.frame.name)
 
 
 def _buckling(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
-    """buckling_load_factor of one load case (a combination case is not analysed: its loads are other cases')."""
-    if "combination" in loads:
+    """buckling_load_factor of one load case; of a combination case, the factored sum of its cases' axial forces.
+    A case that puts no member in compression cannot buckle: it gives no result."""
+    from mechverify.fea.frame.modal import NoCompressionError
+
+    name, g = c.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2"))
+    try:
+        if "combination" in loads:
+            mine = {k: comps[name] for k, comps in ctx.design.data.load_cases.items() if name in comps}
+            cases = {k: case_loads(v, k, name, g) for k, v in mine.items() if "combination" not in v}
+            combo = combination(loads, ctx.load_case, name, cases)
+            res = fe.frame_buckling(c.frame, {k: cases[k] for k in combo.factors}, 1, combination=combo.factors)
+        else:
+            res = fe.frame_buckling(c.frame, case_loads(loads, ctx.load_case, name, g), 1)
+    except NoCompressionError:
         return []
-    lds = case_loads(loads, ctx.load_case, c.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2")))
-    return feac.check_buckling_load_factor(fe.frame_buckling(c.frame, lds, 1), component=c.frame.name,
-                                           load_case=ctx.load_case)
+    return feac.check_buckling_load_factor(res, component=name, load_case=ctx.load_case)
 
 
 def _figures(c: FrameComponent, results: list[CheckResult]) -> list[tuple[str, Any]]:

@@ -67,13 +67,17 @@ class ModalSettings:
     band: tuple[Any, Any] | None = None
     margin: float = 0.15
 
-    def solve(self, fn: Any, *args: Any, **kw: Any) -> Any:
+    def solve(self, fn: Any, *args: Any, hint: str = "", **kw: Any) -> Any:
         """``fn(args[0], self.modes, *args[1:], **kw)`` (frame_modes, plate_modes); its "n_modes" errors name the
-        key ``modes``."""
+        key ``modes``, and ``hint`` (in design-file keys) replaces the API's advice after the last "; " of a
+        too-many-modes message."""
         try:
             return fn(*args[:1], self.modes, *args[1:], **kw)
         except InputError as exc:
-            raise InputError(f"modes: {str(exc).split(': ', 1)[-1]}") from None
+            msg = str(exc).split(": ", 1)[-1]
+            if hint and "modes asked" in msg and "; " in msg:
+                msg = f"{msg.rsplit('; ', 1)[0]}; {hint}"
+            raise InputError(f"modes: {msg}") from None
 
     def check(self, res: Any, component: str) -> CheckResult:
         """The natural_frequency check of modal results ``res`` (frame or plate)."""

@@ -167,7 +167,8 @@ def _frequency(c: PlateFEA, loads: Any, ctx: Any) -> CheckResult | list[CheckRes
         return []
     from mechverify.fea.plate_modal import plate_modes
 
-    res = c.modal.solve(plate_modes, pl.PlateModel(c.plate, c.supports), c.mesh_size, c.hole_mesh_size)
+    res = c.modal.solve(plate_modes, pl.PlateModel(c.plate, c.supports), c.mesh_size, c.hole_mesh_size,
+                        hint="lower mesh_size (finer mesh) or ask fewer modes")
     return c.modal.check(res, c.name)
 
 

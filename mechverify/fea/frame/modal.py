@@ -46,7 +46,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -242,6 +242,10 @@ class FrameModes:
                 "effective_mass_fraction": self.effective_mass_fraction().sum(axis=0).tolist()}
 
 
+class NoCompressionError(ModelError):
+    """No member of the frame is in compression under the loads, so nothing can buckle."""
+
+
 @dataclass(frozen=True, eq=False)
 class FrameBuckling:
     """Buckling load factors ``factors[k]`` (ascending, positive, multiplying every load of the case) and
@@ -435,25 +439,41 @@ def frame_modes(frame: Frame, n_modes: int = 6, *, masses: Sequence[PointMass] =
                       dict(mesh.named), tuple(mesh.notes) + tuple(notes))
 
 
-def frame_buckling(frame: Frame, loads: Iterable[Load], n_modes: int = 1, *,
-                   elements_per_member: int = ELEMENTS_PER_MEMBER) -> FrameBuckling:
+def frame_buckling(frame: Frame, loads: Iterable[Load] | Mapping[str, Iterable[Load]], n_modes: int = 1, *,
+                   elements_per_member: int = ELEMENTS_PER_MEMBER,
+                   combination: Mapping[str, float] | None = None) -> FrameBuckling:
     """Linear buckling load factors of ``frame`` under ``loads``: ``(K + μ K_G) φ = 0`` with ``K_G`` from the
     axial forces of the static solution (ref. 3, Sec. 9.3). Factors multiply all the loads; only positive
     factors are returned (the loads as given, not reversed). A load case without compression anywhere is a
-    :class:`ModelError`."""
+    :class:`NoCompressionError` (a :class:`ModelError`).
+
+    With ``combination = {case: factor}``, ``loads`` maps load-case names to their loads and the factored sum of
+    those cases is analysed: the axial forces are ``Σ factor · N_case`` (superposition, on one mesh of all the
+    cases' loads; with one-way springs the combined loads are solved together, as ``Frame.analyse`` does)."""
     n_modes = int(n_modes)
     if n_modes < 1:
         raise InputError(f"n_modes: ask for at least one mode, got {n_modes}")
-    loads = tuple(loads)
     fr = _refined(frame, elements_per_member)
-    res = fr.solve(loads)
+    if combination is None:
+        res = fr.solve(tuple(loads))  # type: ignore[arg-type]
+    else:
+        if not isinstance(loads, Mapping):
+            raise InputError("frame_buckling: with a combination, loads maps load-case names to their loads")
+        cases = {str(k): tuple(loads[k]) for k in combination if k in loads}
+        missing = [k for k in combination if k not in loads]
+        if missing:
+            from mechverify.errors import UnknownNameError
+
+            raise UnknownNameError("load case (in the combination)", missing[0], list(loads))
+        name = "+".join(cases) + " (combination)"
+        res = fr.analyse(cases, [_model.LoadCombination(name, dict(combination))]).results[name]
     mesh = res.mesh
     Ks, free, _ = _restrained_stiffness(fr, mesh)
     # axial force of each element: N = -F1x (start) and F2x (end) of its local end forces (mean over the element)
     N = (-res.end_forces[:, 0] + res.end_forces[:, 6]) / 2 if len(mesh.L) else np.zeros(0)
     if not np.any(N < 0):
-        raise ModelError(f"frame {frame.name!r}: no member is in compression under these loads, so it cannot "
-                         "buckle (reverse the loads to study the other direction)")
+        raise NoCompressionError(f"frame {frame.name!r}: no member is in compression under these loads, so it "
+                                 "cannot buckle (reverse the loads to study the other direction)")
     KG = _assemble(mesh, (element_geometric_stiffness(mesh.L[e], N[e], p.A, p.Iy, p.Iz, p.sy, p.sz, p.E)
                           for e, p in enumerate(mesh.props)))
     Kf, Gf = Ks[free][:, free], KG[free][:, free]
