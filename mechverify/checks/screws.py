@@ -88,9 +88,9 @@ def check_self_locking(screw: LeadScrew, nut: Nut, *, required_sf: float = 1.0, 
             rf",\quad \rho' = \arctan\frac{{{tex(mu_lo)}}}{{\cos({tex(th.normal_flank_angle, 'deg')})}}"
             rf" = {tex(rho)}"),
         notes=tuple(notes), warnings=tuple(warnings), load_case=load_case,
-        details={"lead_angle": lam, "friction_angle": rho, "normal_flank_angle": th.normal_flank_angle.to("deg"),
-                 "self_locking_mu": Q(mu_star, ""), "angle_margin": (rho - lam).to("deg"),
-                 "mu_margin": Q(mu_lo - mu_star, "")},
+        details=lambda: {"lead_angle": lam, "friction_angle": rho,
+                         "normal_flank_angle": th.normal_flank_angle.to("deg"), "self_locking_mu": Q(mu_star, ""),
+                         "angle_margin": (rho - lam).to("deg"), "mu_margin": Q(mu_lo - mu_star, "")},
     )
 
 
@@ -122,8 +122,8 @@ def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Qua
         inputs={"F": f, "mu_min": Q(mu_lo, ""), "holding_torque": cap, "lead": screw.lead, "d2": screw.thread.d2},
         substituted=lambda: _holding_substituted(screw, f, mu_lo, need),
         notes=tuple(notes), load_case=load_case,
-        details={"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
-                 "backdrive_efficiency": screw.backdrive_efficiency(mu_lo)},
+        details=lambda: {"lower_torque": screw.lower_torque(f, mu_lo).to("N*m"),
+                         "backdrive_efficiency": screw.backdrive_efficiency(mu_lo)},
     )
 
 
