@@ -102,3 +102,17 @@ def test_convergence_check_and_fatigue(tmp_path):
     assert fat.inputs["sigma_a"].m_as("MPa") == pytest.approx(stress.demand.m_as("MPa"), rel=1e-9)
     assert fat.inputs["sigma_m"].m_as("MPa") == 0
     assert fat.verdict == "fail"  # 119 MPa against S_f = 86 MPa at 1e6 cycles (structural steel, Shigley Marin)
+
+
+def test_gravity_load_case(tmp_path):
+    """`gravity = true` in a solid_fea load case (review finding 32: it was refused as "bare number 0.0").
+    Self-weight of the 200 x 10 x 10 mm steel cantilever: w = rho g A = 7850 * 9.80665 * 1e-4 = 7.698 N/m,
+    tip deflection w L^4 / (8 E I) = 7.698 * 0.2^4 / (8 * 200e9 * 1e-8 / 12) = 9.24e-3 mm (hand calculation,
+    Euler-Bernoulli, Shigley 10th ed. Table A-9 case 3; not a printed value)."""
+    f = tmp_path / "g.toml"
+    f.write_text(BASE.format(extra="", region='named = "xmax"').split("[load_cases.tip.bar]")[0]
+                 + "[load_cases.g.bar]\ngravity = true\n")
+    by = {r.check: r for r in mechverify.load(f).verify()}
+    w = 7850 * 9.80665 * 1e-4
+    assert by["solid_deflection"].demand.m_as("mm") == pytest.approx(w * 0.2**4 / (8 * 200e9 * 1e-8 / 12) * 1e3,
+                                                                   rel=0.03)

@@ -97,7 +97,7 @@ def _loads(loads: Mapping[str, Any], unit: str, path: str, g: Any) -> tuple[Any,
             raise InputError(f"{p}: expected {{region..., pressure = \"1 MPa\"}}")
         out.append(Pressure(_region(t, unit, p), as_quantity(t["pressure"], "pressure", f"{p}.pressure")))
     if loads.get("gravity"):
-        out.append(Gravity((0.0, 0.0, -g.m_as("m/s**2"))))
+        out.append(Gravity(tuple(Q(v, "m/s**2") for v in (0.0, 0.0, -g.m_as("m/s**2")))))
     return tuple(out)
 
 
