@@ -2,12 +2,14 @@
 # Install packages into the project's virtual environment, creating it when missing (what `make` runs).
 #   usage: scripts/install.sh PIP-INSTALL-ARGUMENTS...      e.g. scripts/install.sh -e '.[mesh]'
 # The installer is uv when it can be had: on PATH, already in the venv, or bootstrapped into the venv from
-# PyPI with the interpreter's own pip (one wheel, ~2 s). uv resolves, downloads and links the 45 wheels of
-# `make demo` in 2-4 s from a warm cache where pip takes 18 s (it unpacks and byte-compiles each one;
+# PyPI with the interpreter's own pip (one wheel, ~2 s CPU). uv resolves and links the 45 wheels of `make demo`
+# from its cache in ~3.6 s CPU where pip took ~22 s CPU (it unpacks and byte-compiles every file;
 # docs/performance.md). Without uv (offline and not cached, or MECHVERIFY_INSTALLER=pip) it is pip, as before:
 # the venv gets pip (ensurepip), pip is upgraded (Python 3.11's bundled pip 23.2 took twice as long).
 # Environment: VENV (default .venv), PYTHON (default python3), MECHVERIFY_INSTALLER=pip|uv (default: uv if
 # it can be had, else pip). A venv made by uv has no pip of its own: `.venv/bin/python -m ensurepip` adds it.
+# uv does not read pip's configuration (pip.conf, PIP_INDEX_URL ...): give a private index as UV_INDEX_URL /
+# UV_EXTRA_INDEX_URL, or install with MECHVERIFY_INSTALLER=pip.
 set -euo pipefail
 VENV=${VENV:-.venv}
 PYTHON=${PYTHON:-python3}
