@@ -145,6 +145,10 @@ def test_bad_method_rtol_mode_count_and_shift_are_named():
         modal.modal(model, 2, shift="100 mm")
     with pytest.raises(InputError, match="shift: LOBPCG finds the lowest modes"):
         modal.modal(model, 2, shift="100 Hz", method="lobpcg")
+    with pytest.raises(InputError, match="memory: a positive number of bytes"):
+        modal.modal(model, 2, memory=-1.0)
+    with pytest.raises(InputError, match="memory: a positive number of bytes"):
+        modal.modal(model, 2, memory="2 GB")
 
 
 def test_buckling_bad_input_named():

@@ -275,9 +275,14 @@ def memory_estimate(unknowns: int, dim: int = 3, n_modes: int = 10, method: str 
 
 
 def _available(memory: float | None) -> float:
+    """:data:`~mechverify.fea.study.MEMORY_SHARE` of ``memory`` [bytes] or, when None, of the machine's."""
     from mechverify.fea.study import MEMORY_SHARE, available_memory
 
-    return (available_memory() if memory is None else float(memory)) * MEMORY_SHARE
+    if memory is None:
+        return available_memory() * MEMORY_SHARE
+    if isinstance(memory, bool) or not isinstance(memory, int | float) or not memory > 0:
+        raise InputError(f"memory: a positive number of bytes (or None: the machine's), got {memory!r}")
+    return float(memory) * MEMORY_SHARE
 
 
 def choose_method(unknowns: int, dim: int = 3, n_modes: int = 10, shift: Any = None,
