@@ -28,7 +28,7 @@ def test_size_prints_the_limit_and_writes_json(tmp_path, capsys):
 
 def test_size_without_a_crossing_is_exit_2_with_both_ends(capsys):
     rc = main(["size", str(LIFT), "--vary", "components.lift.mass", "--until", "lift.motor_peak_torque",
-               "--bounds", "1:5"])
+               "--bounds", "1 kg:5 kg"])
     err = capsys.readouterr().err
     assert rc == 2 and "does not cross 1" in err and "at 1 kg" in err and "at 5 kg" in err
 

@@ -19,7 +19,7 @@ import numpy as np
 
 from mechverify.errors import InputError
 from mechverify.reports.plots import new_figure, svg_data_uri
-from mechverify.studies.study import StudyResult
+from mechverify.studies.study import StudyResult, pretty_unit
 
 MAX_CHECK_FIGURES = 12  # histograms or curves for the checks with the highest u·SF
 MAX_TABLE_ROWS = 300
@@ -34,8 +34,17 @@ def _num(v: float | None, digits: int = 4) -> str:
 
 
 def _label(result: StudyResult, name: str) -> str:
-    unit = next((a["unit"] for a in result.axes if a["name"] == name), "")
-    return f"{name} [{unit}]" if unit else name
+    return result.label(name)
+
+
+def _ylabel(check: str) -> str:
+    """``u·SF`` with the check's name on a second line when it would not fit beside the axis (a figure
+    2.6-3.2 in high holds about 30 characters of 8 pt text)."""
+    text = f"u·SF of {check}"
+    if len(text) <= 30:
+        return text
+    comp, _, name = check.rpartition(".")
+    return f"u·SF of {comp}.\n{name}" if comp and len(name) <= 30 else f"u·SF of\n{check}"
 
 
 def _ranked_checks(result: StudyResult) -> list[str]:
@@ -80,7 +89,7 @@ def scatter(result: StudyResult, name: str, check: str | None = None) -> str:
     ax.scatter(x, y, s=8, c=c)
     ax.axhline(1.0, color="k", lw=1)
     ax.set_xlabel(_label(result, name))
-    ax.set_ylabel("governing u·SF" if check is None else f"u·SF of {check}")
+    ax.set_ylabel("governing u·SF" if check is None else _ylabel(check), fontsize=8)
     return svg_data_uri(fig)
 
 
@@ -108,7 +117,7 @@ def sweep_curves(result: StudyResult, check: str) -> str:
         ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=label)
     ax.axhline(1.0, color="#cf222e", lw=1.2)
     ax.set_xlabel(_label(result, first))
-    ax.set_ylabel(f"u·SF of {check}")
+    ax.set_ylabel(_ylabel(check), fontsize=8)
     if others:
         ax.legend(fontsize=6)
     return svg_data_uri(fig)
@@ -126,7 +135,7 @@ def render_study_html(result: StudyResult, title: str | None = None) -> str:
     parts.append("<h2>Varied inputs</h2><table><tr><th>key path</th><th>values</th><th>unit</th>"
                  "<th>value in the file</th></tr>")
     for a in result.axes:
-        parts.append(f"<tr><td><code>{_e(a['name'])}</code></td><td>{_e(a['spec'])}</td><td>{_e(a['unit'])}</td>"
+        parts.append(f"<tr><td><code>{_e(a['name'])}</code></td><td>{_e(a['spec'])}</td><td>{_e(pretty_unit(a['unit']))}</td>"
                      f"<td>{_num(a['base'], 6)}</td></tr>")
     parts.append("</table>")
     checks = _ranked_checks(result)
@@ -141,7 +150,7 @@ def render_study_html(result: StudyResult, title: str | None = None) -> str:
         parts.append("</table>")
         w = result.worst()
         if w is not None:
-            ins = ", ".join(f"{k} = {v:.6g}" for k, v in w["inputs"].items())
+            ins = ", ".join(f"{k} = {result.value_text(k, v)}" for k, v in w["inputs"].items())
             parts.append(f"<p><b>Worst sample</b> {w['index']}: {_e(w['governing'])} u·SF = {_num(w['max_fu'])} "
                          f"({_e(ins)}); <code>mechverify study ... --reproduce {w['index']}</code> writes it as a "
                          "design file.</p>")
@@ -172,7 +181,8 @@ def render_study_html(result: StudyResult, title: str | None = None) -> str:
         for c in checks:
             parts.append(f"<figure><img alt='{_e(c)}' src='{sweep_curves(result, c)}'><figcaption>{_e(c)}"
                          "</figcaption></figure>")
-        parts.append("<h2>Samples</h2><table><tr><th>#</th>" + "".join(f"<th>{_e(n)}</th>" for n in result.names)
+        parts.append("<h2>Samples</h2><table><tr><th>#</th>"
+                     + "".join(f"<th>{_e(_label(result, n))}</th>" for n in result.names)
                      + "<th>governing</th><th>u·SF</th><th>verdict</th></tr>")
         for s in result.samples[:MAX_TABLE_ROWS]:
             cells = "".join(f"<td>{s['inputs'][n]:.6g}</td>" for n in result.names)

@@ -7,7 +7,8 @@ Values are held as plain floats in the unit the file writes (kg above) and writt
 ``"<value> <unit>"`` strings. Axes: a sweep ``START:STOP:N`` (``N`` evenly spaced values, both ends
 included) or a distribution ``normal:MEAN:SD``, ``uniform:LO:HI``, ``triangular:LO:MODE:HI``.
 A bare number in a spec takes the unit of the file's value; a number with a unit must have the
-same dimension (``UnitError`` otherwise).
+same dimension (``UnitError`` otherwise). For a value written as an expression (``"lifted_load / g"``)
+the file writes no unit: bare numbers are refused there (``InputError``), give a unit.
 """
 
 from __future__ import annotations
@@ -120,6 +121,9 @@ class Parameter:
     base: float
     unit: str
     integer: bool = False
+    #: the file's expression when the value is written as one (``"144 N*m / lifted_load"``); its ``unit`` is
+    #: then mechverify's unit for the result's dimension, which the file never wrote: bare numbers are refused
+    expression: str = ""
 
     @classmethod
     def of(cls, doc: Mapping[str, Any], path: str, resolved: Any = None) -> Parameter:
@@ -133,7 +137,7 @@ class Parameter:
                 q = resolved(path)
                 if isinstance(q, Quantity) and isinstance(q.magnitude, int | float):
                     unit = _si_unit(q)
-                    return cls(path, float(q.to(unit).magnitude), unit)
+                    return cls(path, float(q.to(unit).magnitude), unit, expression=raw)
         if isinstance(raw, bool) or not isinstance(raw, int | float | str):
             raise InputError(f"parameter {path!r}: its value {raw!r} is not numeric; only numbers and quantities "
                              "(a number with a unit, e.g. \"35 kg\") can be varied")
@@ -154,15 +158,17 @@ class Parameter:
         if isinstance(token, bool):
             raise InputError(f"{self.path}: expected a number, got {token!r}")
         if isinstance(token, int | float):
-            return float(token)
+            return self._bare(float(token), token)
         if isinstance(token, Quantity):
             q = token
         else:
             text = str(token).strip()
             try:
-                return float(text)
+                x = float(text)
             except ValueError:
                 pass
+            else:
+                return self._bare(x, token)
             try:
                 q = Q(text)
             except MechverifyError:
@@ -175,6 +181,15 @@ class Parameter:
                             f"({self.text(self.base)}) is {want}; a range cannot change a quantity's dimension")
         return float(q.to(target.units).magnitude)
 
+    def _bare(self, x: float, token: Any) -> float:
+        """A bare number: in the file's unit; refused for a value written as an expression (no unit was written)."""
+        if self.expression and self.unit:
+            raise InputError(f"{self.path}: the bare number {token!s} has no unit, and the design file writes this "
+                             f"value as an expression ({self.expression!r} = {self.base:.6g} {self.unit}); give the "
+                             f"unit with every number, e.g. '{_example(self.base)} {self.unit}' or in any unit of "
+                             "the same dimension")
+        return x
+
     def text(self, x: float) -> str | float | int:
         """The design-file value for ``x``: ``"21.5 kg"``, a number, or an integer."""
         if self.integer:
@@ -182,6 +197,10 @@ class Parameter:
         if not self.unit:
             return float(x)
         return f"{float(x)!r} {self.unit}"
+
+
+def _example(x: float) -> str:
+    return f"{x:.3g}"
 
 
 def _si_unit(q: Any) -> str:

@@ -114,6 +114,20 @@ class StudyResult:
             return math.inf if v is None else v
         return np.array([one(s) for s in self.ok], float)
 
+    def unit(self, name: str) -> str:
+        """The unit of input ``name`` as the study reads its values ('' for a bare number)."""
+        return next((a["unit"] for a in self.axes if a["name"] == name), "")
+
+    def label(self, name: str) -> str:
+        """``name [unit]`` (the unit in the console's plain form, ``m/s²``), or the name of a unitless input."""
+        u = self.unit(name)
+        return f"{name} [{pretty_unit(u)}]" if u else name
+
+    def value_text(self, name: str, x: float) -> str:
+        """``15.82 kg``: an input value with its unit."""
+        u = self.unit(name)
+        return f"{x:.6g} {pretty_unit(u)}" if u else f"{x:.6g}"
+
     # ------------------------------------------------------------------ statistics
     def failure_probability(self, z: float = Z95) -> dict[str, dict[str, Any]]:
         """Per check and ``"overall"`` (any check fails): failures k of n valid samples, p = k/n and its
@@ -241,7 +255,7 @@ class StudyResult:
             w = self.worst()
             if w is not None:
                 lines.append(f"worst sample {w['index']}: {w['governing']} u·SF = {_num(w['max_fu'])}  "
-                             + ", ".join(f"{k} = {v:.6g}" for k, v in w["inputs"].items()))
+                             + ", ".join(f"{k} = {self.value_text(k, v)}" for k, v in w["inputs"].items()))
             sens = {c: v for c, v in self.sensitivity().items() if v}
             if sens:
                 lines.append("sensitivity: Spearman rank correlation of u·SF with each input, strongest first")
@@ -249,9 +263,10 @@ class StudyResult:
                     lines.append(f"  {c:42s} " + ", ".join(f"{n} {r:+.3f}" for n, r in v))
         else:
             shown = self.changing_checks()[:3]
-            lines.append("  ".join(n for n in self.names) + "  " + "  ".join(shown) + "  governing (u·SF)  verdict")
+            heads = [self.label(n) for n in self.names]
+            lines.append("  ".join(heads) + "  " + "  ".join(shown) + "  governing (u·SF)  verdict")
             for s in self.samples:
-                ins = "  ".join(f"{s['inputs'][n]:>{len(n)}.6g}" for n in self.names)
+                ins = "  ".join(f"{s['inputs'][n]:>{len(h)}.6g}" for n, h in zip(self.names, heads))
                 if s["status"] == "ok":
                     fus = "  ".join(f"{_num(s['checks'].get(c, {}).get('fu')):>{len(c)}s}" for c in shown)
                     lines.append(f"{ins}  {fus}  {s['governing']} ({_num(s['max_fu'])})  {s['verdict']}")
@@ -262,6 +277,18 @@ class StudyResult:
         for s in self.errors[:5]:
             lines.append(f"sample {s['index']} invalid: {s['message'].splitlines()[-1].strip()[:100]}")
         return "\n".join(lines)
+
+
+def pretty_unit(unit: str) -> str:
+    """A unit string as printed (``m/s**2`` -> ``m/s²``, ``N*m`` -> ``N·m``); the input's own text otherwise."""
+    if not unit:
+        return ""
+    try:
+        from mechverify.units import Q
+
+        return format(Q(1.0, unit).units, "~P")
+    except Exception:  # (pint raises several types; the text is still right)
+        return unit
 
 
 def _full(v: float | None) -> str:
