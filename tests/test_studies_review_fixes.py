@@ -6,6 +6,7 @@ about the command line's behaviour (what is refused, what is printed), not about
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -50,3 +51,31 @@ def test_the_sweep_table_and_worst_sample_print_units(capsys):
     out = capsys.readouterr().out
     worst = next(line for line in out.splitlines() if line.startswith("worst sample"))
     assert rc == 0 and worst.rstrip().endswith(" kg"), worst
+
+
+# ---------------------------------------------------------------- finding 33: the no-crossing message
+
+
+def test_size_without_a_crossing_says_which_side_the_valid_points_lie(tmp_path, capsys):
+    """Finding 33: cable neck wire_d 2..4 mm: 2..2.75 mm invalid (the weight alone buckles the spine), 3..4 mm
+    all fail (spine_buckling_ratio u·SF 2.76..1.92). The message said 'below 1 over the range'; now 'above 1'
+    over the valid part, with the invalid part and its reason; --json holds the scan (limit null)."""
+    out = tmp_path / "nolimit.json"
+    rc = main(["size", str(EXAMPLES / "cable_neck" / "design.toml"), "--vary", "parameters.wire_d",
+               "--bounds", "2 mm:4 mm", "--json", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "above 1 (fails) over the valid part (3..4 mm)" in err and "below 1" not in err
+    assert "invalid at 4 of 9 scan points (2..2.75 mm)" in err and "alone buckles the spine" in err
+    data = json.loads(out.read_text())
+    assert data["limit"] is None and len(data["scan"]) == 9
+    assert [p["fu"] is None for p in data["scan"]] == [True] * 4 + [False] * 5
+    assert all(p["fu"] > 1 for p in data["scan"][4:]) and "buckles" in data["scan"][0]["invalid"]
+
+
+def test_sweep_lists_the_whole_reason_of_an_invalid_sample(capsys):
+    """Finding 33: the invalid reason was cut at 100 characters ('neck: the w')."""
+    rc = main(["study", str(EXAMPLES / "cable_neck" / "design.toml"), "--vary", "parameters.wire_d=2 mm:3 mm:2",
+               "--serial", "--no-progress"])
+    out = capsys.readouterr().out
+    assert rc == 0 and "sample 0 invalid:" in out and "reachable: no tilt" in out

@@ -16,7 +16,8 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                                    "file) at which the governing check, or a named one, reaches u·SF = 1: the "
                                    "range is scanned, then Brent's method solves each crossing. Prints the limit, "
                                    "the governing check there and the margin of today's value. Exit 0 with a "
-                                   "limit, 2 when none lies in the range (u·SF at both ends is printed).")
+                                   "limit, 2 when none lies in the range (u·SF at both ends is printed; --json then "
+                                   "holds the scan with limit null).")
     p.add_argument("design", type=Path, metavar="DESIGN", help="design file (TOML)")
     p.add_argument("--vary", required=True, metavar="KEY.PATH",
                    help="the parameter, e.g. components.lift.mass or parameters.payload")
@@ -44,13 +45,17 @@ def run(args: argparse.Namespace) -> int:
             raise Invalid(f"--bounds: expected LO:HI, e.g. '1 kg:100 kg', got {args.bounds!r}")
     from mechverify.cli._common import load_designs
     from mechverify.cli._console import console
-    from mechverify.studies import size
+    from mechverify.fileio import json_text
+    from mechverify.studies import SizingError, size
 
     (design,) = load_designs([args.design], args.allow_outside_includes)
-    r = size(design, args.vary, until=args.until, bounds=bounds, scan=args.scan)
+    try:
+        r = size(design, args.vary, until=args.until, bounds=bounds, scan=args.scan)
+    except SizingError as exc:  # no limit: a CI script still gets the scan (u·SF per point) to read
+        if args.json_out and exc.data:
+            write(args.json_out, json_text({**exc.data, "error": str(exc)}, indent=1) + "\n")
+        raise
     console().print(r.text(), markup=False, highlight=False, soft_wrap=True)
     if args.json_out:
-        from mechverify.fileio import json_text
-
         write(args.json_out, json_text(r.to_dict(), indent=1) + "\n")
     return 0

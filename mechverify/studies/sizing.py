@@ -25,7 +25,14 @@ from mechverify.studies.study import design_and_source
 
 
 class SizingError(InputError):
-    """No value in the allowed range brings the check to u·SF = 1 (or the design cannot be evaluated there)."""
+    """No value in the allowed range brings the check to u·SF = 1 (or the design cannot be evaluated there).
+
+    ``data``: what the scan found when there is no crossing (the scan points, their u·SF, or None where the
+    design is invalid, and the first invalid point's reason), for ``--json``; empty otherwise."""
+
+    def __init__(self, message: str, data: dict[str, Any] | None = None):
+        super().__init__(message)
+        self.data = dict(data or {})
 
 
 @dataclass(frozen=True)
@@ -123,9 +130,11 @@ def size(design: Any, vary: str, until: str = "governing", bounds: Sequence[Any]
 
     xs = np.linspace(lo, hi, scan + 1)
     vals: list[float | None] = []
+    reasons: list[str] = []
     for x in xs:
         rec = run(float(x))
         vals.append(fu(rec) - 1.0 if rec["status"] == "ok" else None)
+        reasons.append("" if rec["status"] == "ok" else _reason(rec["message"]))
     roots: list[float] = []
     tol = xtol if xtol is not None else 1e-10 * max(abs(lo), abs(hi))
     from scipy.optimize import brentq
@@ -142,15 +151,52 @@ def size(design: Any, vary: str, until: str = "governing", bounds: Sequence[Any]
     name = "the governing u·SF" if check == "governing" else f"u·SF of {check}"
     unit = f" {p.unit}" if p.unit else ""
     if not roots:
-        ends = ", ".join(f"{'invalid' if v is None else f'{v + 1:.4g}'} at {x:.6g}{unit}"
-                         for x, v in ((xs[0], vals[0]), (xs[-1], vals[-1])))
-        bad = sum(v is None for v in vals)
-        where = "above 1" if vals[0] is not None and vals[0] > 0 else "below 1"
-        raise SizingError(f"no limit of {vary} in {lo:.6g}..{hi:.6g}{unit}: {name} does not cross 1 "
-                          f"({ends}; {where} over the range" + (f", {bad} of {len(xs)} scan points invalid" if bad
-                                                               else "") + "); widen the bounds or vary another "
-                          "parameter")
+        raise _no_crossing(vary, name, p, xs, vals, reasons, unit)
     limit = min(roots, key=lambda r: abs(r - p.base))
     at = run(limit)
     gov = max(at["checks"].items(), key=lambda kv: math.inf if kv[1]["fu"] is None else kv[1]["fu"])[0]
     return SizingResult(vary, p.unit, check, p.base, fu(base), limit, gov, tuple(roots), (lo, hi), calls[0])
+
+
+def _reason(message: str) -> str:
+    """The last line of an invalid sample's message (the error itself, after the file's header line)."""
+    lines = [x.strip() for x in message.splitlines() if x.strip()]
+    return lines[-1] if lines else message
+
+
+def _span(xs: Sequence[float], unit: str) -> str:
+    return f"{xs[0]:.6g}{unit}" if len(xs) == 1 else f"{xs[0]:.6g}..{xs[-1]:.6g}{unit}"
+
+
+def _no_crossing(vary: str, name: str, p: Parameter, xs: np.ndarray, vals: Sequence[float | None],
+                 reasons: Sequence[str], unit: str) -> SizingError:
+    """The error for a scan without a crossing: u·SF at both ends, on which side of 1 the VALID points lie
+    (all above: the design fails wherever it can be evaluated), and where and why the design is invalid."""
+    lo, hi = float(xs[0]), float(xs[-1])
+    ends = ", ".join(f"{'invalid' if v is None else f'{v + 1:.4g}'} at {x:.6g}{unit}"
+                     for x, v in ((xs[0], vals[0]), (xs[-1], vals[-1])))
+    good = [float(x) for x, v in zip(xs, vals) if v is not None]
+    bad = [float(x) for x, v in zip(xs, vals) if v is None]
+    data: dict[str, Any] = {"parameter": vary, "unit": p.unit, "limit": None, "today": p.base,
+                            "bounds": [lo, hi], "scan": [{"value": float(x), "fu": None if v is None else v + 1,
+                                                          "invalid": r or None}
+                                                         for x, v, r in zip(xs, vals, reasons)]}
+    if not good:
+        first = next(r for r in reasons if r)
+        return SizingError(f"no limit of {vary} in {lo:.6g}..{hi:.6g}{unit}: the design is invalid at every one of "
+                           f"the {len(xs)} scan points ({first}); change the bounds", data)
+    fin = [v for v in vals if v is not None]
+    if all(v > 0 for v in fin):
+        side = "above 1 (fails)"
+    elif all(v < 0 for v in fin):
+        side = "below 1 (passes)"
+    else:
+        side = "on both sides of 1 with invalid points between"
+    where = "over the range" if not bad else f"over the valid part ({_span(good, unit)})"
+    text = f"{ends}; {side} {where}"
+    if bad:
+        first = next(r for r in reasons if r)
+        text += f"; invalid at {len(bad)} of {len(xs)} scan points ({_span(bad, unit)}): {first}"
+    data["side"] = side.split(" (")[0]
+    return SizingError(f"no limit of {vary} in {lo:.6g}..{hi:.6g}{unit}: {name} does not cross 1 ({text}); "
+                       "widen the bounds or vary another parameter", data)

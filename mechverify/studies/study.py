@@ -271,11 +271,12 @@ class StudyResult:
                     fus = "  ".join(f"{_num(s['checks'].get(c, {}).get('fu')):>{len(c)}s}" for c in shown)
                     lines.append(f"{ins}  {fus}  {s['governing']} ({_num(s['max_fu'])})  {s['verdict']}")
                 else:
-                    lines.append(f"{ins}  invalid: {s['message'].splitlines()[-1].strip()[:80]}")
+                    why = _last_line(s["message"])
+                    lines.append(f"{ins}  invalid: " + (why if len(why) <= 60 else why[:59] + "… (below)"))
             if shown:
                 lines.append("(u·SF of the checks that change over the sweep, highest first)")
         for s in self.errors[:5]:
-            lines.append(f"sample {s['index']} invalid: {s['message'].splitlines()[-1].strip()[:100]}")
+            lines.append(f"sample {s['index']} invalid: {_last_line(s['message'])}")
         return "\n".join(lines)
 
 
@@ -289,6 +290,12 @@ def pretty_unit(unit: str) -> str:
         return format(Q(1.0, unit).units, "~P")
     except Exception:  # (pint raises several types; the text is still right)
         return unit
+
+
+def _last_line(message: str) -> str:
+    """The error itself: the last non-empty line of a sample's message (after the file's header line)."""
+    lines = [x.strip() for x in message.splitlines() if x.strip()]
+    return lines[-1] if lines else ""
 
 
 def _full(v: float | None) -> str:
