@@ -2,8 +2,9 @@
 
 Measured: a warm ``verify()`` of the lift (same design object, repeated), one study sample
 (``Design.with_overrides`` + ``verify``, what a worker does: one input changed, then a Monte Carlo draw of
-the three inputs of VARY), the marginal cost of a plate-FEA sample that changes only the pressure with and
-without the reused factorisation (mechverify/fea/factorcache.py), a Monte Carlo study on the local
+the three inputs of VARY), the marginal cost of a plate-FEA sample that changes only the pressure and of a frame
+sample (a grillage) that changes only its load, with and without the reused factorisation
+(mechverify/fea/factorcache.py), a Monte Carlo study on the local
 process pool (one worker per core) and the same study on a Dask ``LocalCluster`` with as many
 single-threaded worker processes. Dask overhead per sample = (t_dask - t_pool) / n. Also the cost
 of a unit conversion by string (``q.to("kN")``) against a parsed unit, the share the issue names.
@@ -102,6 +103,64 @@ def _plate_rows(samples: int = 12) -> dict:
             "plate_sample_cpu_ms": cached * 1e3, "plate_sample_uncached_cpu_ms": uncached * 1e3}
 
 
+def _frame_grid(n: int = 4, divisions: int = 4) -> dict:
+    """A grillage of n x n cells (2 n (n + 1) steel members of a 20 x 12 mm hollow rectangle, each in
+    ``divisions`` elements), its four corners fixed, a load at the centre node: the design of the frame row."""
+    nodes = {f"N{i}_{j}": [f"{100 * i} mm", f"{100 * j} mm", "0 mm"] for i in range(n + 1) for j in range(n + 1)}
+    members = [{"start": f"N{i}_{j}", "end": f"N{i + 1}_{j}", "divisions": divisions}
+               for i in range(n) for j in range(n + 1)]
+    members += [{"start": f"N{i}_{j}", "end": f"N{i}_{j + 1}", "divisions": divisions}
+                for i in range(n + 1) for j in range(n)]
+    c = n // 2
+    return {"design": {"name": "grillage"},
+            "components": {"g": {"type": "frame", "section": "hollow_rectangle", "width": "20 mm", "height": "12 mm",
+                                 "thickness": "1.5 mm", "material": "Structural Steel", "nodes": nodes,
+                                 "members": members, "deflection_limit": "20 mm",
+                                 "supports": [{"at": f"N{i}_{j}", "type": "fixed"} for i in (0, n) for j in (0, n)]}},
+            "load_cases": {"q": {"g": {"point_loads": [{"at": f"N{c}_{c}", "force": ["0 N", "0 N", "-500 N"]}]}}}}
+
+
+def _frame_rows(samples: int = 7) -> dict:
+    """Marginal CPU per solve of a frame (the grillage of :func:`_frame_grid`) whose load changes from one solve
+    to the next, as in a study over a load: ``Frame.analyse`` with the stiffness, its checks and factorisation
+    reused (mechverify/fea/factorcache.py) and with the cache off. (A design-file sample of this frame spends most
+    of its time after the solve, in the stress and deflection recovery of the frame checks.)"""
+    import copy
+
+    from mechverify.design.design import Design
+    from mechverify.design.loader import parse
+    from mechverify.fea import factorcache
+    from mechverify.fea.frame import FramePointLoad
+
+    doc = _frame_grid()
+    fr = Design(parse(copy.deepcopy(doc)))["g"].frame
+    c = doc["load_cases"]["q"]["g"]["point_loads"][0]["at"]
+    loads = [FramePointLoad(c, force=["0 N", "0 N", f"{-200 - 50 * k} N"]) for k in range(samples)]
+
+    def run() -> float:
+        factorcache.CACHE.clear()
+        fr.analyse({"q": loads[:1]})  # (a study's base design: the first solve builds)
+        t0 = time.process_time()
+        for ld in loads[1:]:
+            fr.analyse({"q": [ld]})
+        return (time.process_time() - t0) / (samples - 1)
+
+    from mechverify.fea.factor import one_blas_thread
+
+    with one_blas_thread():  # as in a study worker (the dense mechanism check is an eigh)
+        cached = min(run() for _ in range(3))
+        builds = factorcache.CACHE.builds
+        key_of = factorcache.key_of
+        factorcache.key_of = lambda *parts: None
+        try:
+            uncached = min(run() for _ in range(2))
+        finally:
+            factorcache.key_of = key_of
+    dofs = fr.analyse({"q": loads[:1]}).results["q"].mesh.ndof
+    return {"frame_samples": samples, "frame_builds": builds, "frame_dofs": dofs,
+            "frame_solve_cpu_ms": cached * 1e3, "frame_solve_uncached_cpu_ms": uncached * 1e3}
+
+
 def main(argv: list[str]) -> dict:
     from mechverify.design import load
     from mechverify.studies import Study
@@ -125,6 +184,7 @@ def main(argv: list[str]) -> dict:
     mc_cpu = min(_cpu_per_call(mc, 40) for _ in range(5))
     override_cpu = min(_cpu_per_call(lambda: d.with_overrides(mc_ovs[0]), 40) for _ in range(5))
     plate = _plate_rows()
+    frame = _frame_rows()
     q, unit = Q(1234.0, "N"), ureg.Unit("kN")
     to_str = _per_call(lambda: q.to("kN"), 2000)
     to_unit = _per_call(lambda: q.to(unit), 2000)
@@ -138,7 +198,7 @@ def main(argv: list[str]) -> dict:
            "serial_samples_per_s": 1 / sample,
            "sample_cpu_ms": sample_cpu * 1e3, "samples_per_cpu_s": 1 / sample_cpu,
            "mc_sample_cpu_ms": mc_cpu * 1e3, "mc_samples_per_cpu_s": 1 / mc_cpu,
-           "mc_override_cpu_ms": override_cpu * 1e3, **plate,
+           "mc_override_cpu_ms": override_cpu * 1e3, **plate, **frame,
            "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_s": t_pool,
            "pool_samples_per_s_per_core": n / t_pool / cores, "load_average": _load(),
            "to_string_unit_us": to_str * 1e6, "to_parsed_unit_us": to_unit * 1e6, "target_per_core": 200}
@@ -175,6 +235,9 @@ def main(argv: list[str]) -> dict:
     print(f"plate FEA study over a pressure ({plate['plate_dofs']} DOF): {plate['plate_sample_cpu_ms']:.1f} ms CPU per "
           f"sample with the factorisation reused, {plate['plate_sample_uncached_cpu_ms']:.1f} ms without "
           f"({plate['plate_builds']} build for {plate['plate_samples']} samples)")
+    print(f"frame analysis over a load ({frame['frame_dofs']} DOF): {frame['frame_solve_cpu_ms']:.1f} ms CPU per solve "
+          f"with the stiffness and factorisation reused, {frame['frame_solve_uncached_cpu_ms']:.1f} ms without "
+          f"({frame['frame_builds']} build for {frame['frame_samples']} solves)")
     print(f"process pool, {cores} workers, {n} samples: {t_pool:.2f} s = {row['pool_samples_per_s_per_core']:.1f} "
           f"samples/s per core (wall; load average {_load():.1f}); worker CPU {cpu_pool / n * 1e3:.1f} ms per sample")
     if "dask_s" in row:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import json
+from collections.abc import Mapping
 from pathlib import Path
 
 import pytest
@@ -21,7 +22,12 @@ LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "d
 
 
 def _rows(rs):
-    return [{f.name: repr(getattr(r, f.name)) for f in dataclasses.fields(r)} for r in rs]
+    """Every field's repr; a lazy ``details`` mapping (checks/result.py) as the dict it computes (its repr says
+    whether it has been read yet, which differs between a reused result and a fresh one)."""
+    def value(v):
+        return repr(dict(v)) if isinstance(v, Mapping) else repr(v)
+
+    return [{f.name: value(getattr(r, f.name)) for f in dataclasses.fields(r)} for r in rs]
 
 
 @pytest.fixture(scope="module")
@@ -287,3 +293,36 @@ def test_text_that_is_not_an_expression_is_parsed_once():
         parse(text)
     assert str(first.value) == str(second.value) and first.value is not second.value
     assert _parse_or_error.cache_info().hits == hits + 1
+
+
+def test_a_variant_takes_over_validated_tables_whose_inputs_are_unchanged(base, monkeypatch):
+    """The tables a variant does not change (nor the parameters they read) are not validated again; what they
+    traced (derived inputs) is recorded again, so the variant's trace and notes equal a fresh build's; the
+    values are copies (resolving a connection in a variant never changes the base)."""
+    from mechverify.design import loader
+
+    seen = {}
+    real = loader.validated_before
+
+    def spy(path, *a):
+        seen[path] = out = real(path, *a)
+        return out
+
+    monkeypatch.setattr(loader, "validated_before", spy)
+    v = base.with_overrides({"parameters.lifted_load": "300 N"})
+    monkeypatch.setattr(loader, "validated_before", real)
+    taken = {p for p, hit in seen.items() if hit is not None}
+    assert {"components.lift_screw", "components.screw_bearing", "load_cases.horizontal.screw_horizontal"} <= taken
+    assert not taken & {"components.carriage", "load_cases.raise.lift_screw", "load_cases.raise.carriage"}
+    fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, list(v.data.files), {})
+    assert {k: (e[0], repr(e[1])) for k, e in v.data.trace.entries.items()} == \
+           {k: (e[0], repr(e[1])) for k, e in fresh.data.trace.entries.items()}
+    assert v.data.trace.edges == fresh.data.trace.edges
+    for name, e in v.data.components.items():
+        assert repr(e.params) == repr(fresh.data.components[name].params)
+        assert e.params is not base.data.components[name].params
+    tr = v.data.components["lift"].params["transmission"]
+    assert tr is not base.data.components["lift"].params["transmission"]
+    w = v.with_overrides({"components.lift.mass": "20 kg"})  # a variant of a variant
+    assert repr(w.verify().to_json()) == repr(_rebuild(copy.deepcopy(w.data.raw), w.data.path, list(w.data.files),
+                                                       {}).verify().to_json())

@@ -27,7 +27,13 @@ from mechverify.design.parameters import (
     substitute,
     value_or_deferred,
 )
-from mechverify.design.reuse import reuse_context, reused_object
+from mechverify.design.reuse import (
+    remember_validated,
+    reuse_context,
+    reused_object,
+    validated_before,
+    validation_key,
+)
 from mechverify.design.spec import DEFAULT_SAFETY_FACTORS, REGISTRY, ComponentType, Field
 from mechverify.errors import MechverifyError, suggest
 from mechverify.materials import MaterialLibrary, default_library, material_from_dict
@@ -270,6 +276,28 @@ def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: 
     return out
 
 
+def validate_reusing(fields: tuple[Field, ...], table: Mapping[str, Any], path: str, col: _Collector,
+                     ctx: dict[str, Any]) -> dict[str, Any]:
+    """:func:`_validate_fields` of a component's, profile's or load case's table, or, in a variant
+    (``Design.with_overrides``), the values the base design validated for the same table when everything the
+    validation reads is unchanged (:func:`mechverify.design.reuse.validated_before`): the derived values it traced
+    are recorded again. Every parse keeps its validated tables for its own variants."""
+    key = validation_key(table, ctx)
+    hit = validated_before(path, fields, key, ctx)
+    if hit is not None:
+        params, traced = hit
+        for args in traced:
+            ctx["trace"].add(*args)
+        return params
+    trace, n_err = ctx["trace"], len(col.errors)
+    before = set(trace.entries)
+    out = _validate_fields(fields, table, path, col, ctx)
+    if len(col.errors) == n_err:
+        traced = tuple((p, *trace.entries[p], trace.edges.get(p, ())) for p in trace.entries if p not in before)
+        remember_validated(path, fields, key, ctx, out, traced)
+    return out
+
+
 def _read_toml(path: Path, col: _Collector, where: str) -> dict[str, Any]:
     try:
         if path.exists() and not path.is_file() and not path.is_dir():  # a FIFO would block, a device never end
@@ -403,7 +431,7 @@ def _typed_section(doc: dict[str, Any], section: str, col: _Collector, ctx: dict
             continue
         ct = types[tname]
         body = {k: v for k, v in raw.items() if k not in ("type", "checks")}
-        params = _validate_fields(ct.fields, body, path, col, ctx)
+        params = validate_reusing(ct.fields, body, path, col, ctx)
         checks: dict[str, dict[str, Any]] = {}
         overrides = raw.get("checks", {})
         if not isinstance(overrides, dict):
@@ -587,8 +615,10 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     resolve_load_cases(load_cases, components, params, col.add, trace)
     if col.errors:
         raise DesignFileError(col.errors, str(path) if path else "")
-    return DesignData(path, files, name, str(revision), str(design.get("description", "")), requirements, sfs,
+    data = DesignData(path, files, name, str(revision), str(design.get("description", "")), requirements, sfs,
                       materials, profiles, components, load_cases, docs, doc, params, trace)
+    data.__dict__["_validated"] = ctx.get("_validated", {})  # for the variants of this design (design/reuse.py)
+    return data
 
 
 def _load_cases(doc: dict[str, Any], components: dict[str, Entry], col: _Collector,
@@ -616,7 +646,7 @@ def _load_cases(doc: dict[str, Any], components: dict[str, Entry], col: _Collect
             if not isinstance(loads, dict):
                 col.add(f"{path}.{comp}", "expected a table of loads")
                 continue
-            out[case][comp] = _validate_fields(components[comp].type.loads, loads, f"{path}.{comp}", col, ctx)
+            out[case][comp] = validate_reusing(components[comp].type.loads, loads, f"{path}.{comp}", col, ctx)
     return out, docs
 
 

@@ -19,6 +19,7 @@ unequal, so its checks run again.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 from collections.abc import Mapping
 from typing import Any
@@ -37,6 +38,10 @@ def _canon(v: Any) -> Any:
     t = type(v)
     if t is str or t is bool or t is int or t is float or v is None:
         return (t.__name__, v)
+    if t is dict:  # (exact types first: the abstract isinstance checks below cost more than the reduction)
+        return ("D", tuple((k, _canon(x)) for k, x in v.items()))
+    if t is list or t is tuple:
+        return ("L", tuple(_canon(x) for x in v))
     if isinstance(v, Quantity):
         return ("Q", _canon(v._magnitude), v._units)
     if isinstance(v, np.ndarray):
@@ -74,17 +79,38 @@ def _names(v: Any, known: Mapping[str, Any], out: set[str], words: bool = False)
     ``words``, also any identifier inside a string (``"arm.path_length"`` names ``arm``: conservative, a word that
     merely looks like a name makes a dependency, so its checks run again). Component tables need no ``words``:
     what an expression there reads is resolved into the values compared (``entry.params``, the resolved loads)."""
-    if isinstance(v, str):
+    t = type(v)
+    if t is str:
         if v in known:
             out.add(v)
         if words:
-            out.update(w for w in _WORD.findall(v) if w in known)
+            out.update(w for w in _words(v) if w in known)
+    elif t is dict or t is list or t is tuple:
+        for x in v.values() if t is dict else v:
+            if type(x) in _SCALARS:
+                if words and type(x) is str:
+                    out.update(w for w in _words(x) if w in known)
+                if type(x) is str and x in known:
+                    out.add(x)
+            else:
+                _names(x, known, out, words)
+    elif isinstance(v, str):
+        _names(str(v), known, out, words)
     elif isinstance(v, Mapping):
         for x in v.values():
             _names(x, known, out, words)
     elif isinstance(v, list | tuple):
         for x in v:
             _names(x, known, out, words)
+
+
+_SCALARS = frozenset({str, int, float, bool, type(None)})
+
+
+@functools.lru_cache(maxsize=4096)
+def _words(text: str) -> tuple[str, ...]:
+    """The identifiers in ``text`` (found once per distinct string)."""
+    return tuple(_WORD.findall(text))
 
 
 def design_wide(data: Any) -> Any:
@@ -288,3 +314,51 @@ def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
     if k not in keys:
         keys[k] = build_key(old, _parameters(base))
     return old.obj if build_key(entry, ctx.get("parameters") or {}) == keys[k] else None
+
+
+# ------------------------------------------------------------------------------------------ validated tables
+#
+# Validating a table (reading its unit strings and expressions) repeats for every variant. A table's validated values
+# depend on: the table (after templates), its type's fields, the values of the parameters its strings name, the
+# names of the components and profiles (a name read as a connection or a reference), and the design-wide values
+# (the design's own materials by name). When all are unchanged, a variant takes the base's values (containers copied,
+# so a variant's connections resolved in place never reach the base) and records the derived values they traced.
+
+
+def validation_key(table: Any, ctx: Mapping[str, Any]) -> Any:
+    """What validating ``table`` reads from the design (see above)."""
+    params = ctx.get("parameters") or {}
+    words: set[str] = set()
+    _names(table, params, words, words=True)
+    names = (frozenset(ctx.get("component_names") or ()), tuple(ctx.get("profiles") or ()),
+             tuple(ctx.get("components") or ()))
+    return (_canon(table), tuple((n, _canon(params[n])) for n in sorted(words)), names)
+
+
+def remember_validated(path: str, fields: Any, key: Any, ctx: dict[str, Any], values: Mapping[str, Any],
+                       traced: tuple[Any, ...]) -> None:
+    """Keep the validated ``values`` of the table at ``path`` for this design's variants."""
+    ctx.setdefault("_validated", {})[path] = (fields, key, _detach(values), traced)
+
+
+def validated_before(path: str, fields: Any, key: Any, ctx: dict[str, Any]) -> tuple[dict[str, Any], Any] | None:
+    """``(values, traced)`` the base design validated for the table at ``path`` with the same fields and
+    :func:`validation_key`, else ``None``. ``traced``: the ``Trace.add`` arguments of its derived values."""
+    base = ctx.get("reuse_base")
+    if base is None or ctx.get("reuse_wide") != base.__dict__.get("_build_keys", {}).get(""):
+        return None
+    hit = base.__dict__.get("_validated", {}).get(path)
+    if hit is None or hit[0] is not fields or hit[1] != key:
+        return None
+    ctx.setdefault("_validated", {})[path] = hit  # (for this variant's own variants)
+    return _detach(hit[2]), hit[3]
+
+
+def _detach(v: Any) -> Any:
+    """``v`` with its dicts and lists copied (the leaves, immutable values, shared)."""
+    t = type(v)
+    if t is dict:
+        return {k: _detach(x) for k, x in v.items()}
+    if t is list:
+        return [_detach(x) for x in v]
+    return v
