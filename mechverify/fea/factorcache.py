@@ -7,6 +7,12 @@ determine the mesh, the stiffness and the supports (their pickled bytes: equal b
 stores what it built under that key and re-solves with each new right-hand side. The counters say how many
 systems were built (factorised) and how many solves reused one, so tests and benchmarks can count them.
 
+Users: :func:`mechverify.fea.plate.solve_plate` (key: the plate, its supports and the mesh sizes; parts: mesh,
+stiffness, checked supports, and the factorisation of :func:`mechverify.fea.factor.factorize`, CHOLMOD when
+installed) and :meth:`mechverify.fea.frame.Frame.analyse` (key: the mesh's node positions, elements, local element
+stiffnesses, releases and springs, and the restraints; parts: the assembled stiffness after the support, release
+and mechanism checks - a dense eigenvalue check below 3000 unknowns - and its SuperLU factorisation).
+
 Results are bit-identical to a solve without the cache: the same matrices and the same factorisation solve
 the same right-hand side.
 """
