@@ -326,3 +326,12 @@ def test_a_variant_takes_over_validated_tables_whose_inputs_are_unchanged(base, 
     w = v.with_overrides({"components.lift.mass": "20 kg"})  # a variant of a variant
     assert repr(w.verify().to_json()) == repr(_rebuild(copy.deepcopy(w.data.raw), w.data.path, list(w.data.files),
                                                        {}).verify().to_json())
+
+
+def test_derived_values_are_shown_as_before_when_remembered():
+    """Trace lines format a scalar quantity once per (magnitude, unit); the text equals show()'s every time."""
+    from mechverify.design.parameters import _shown, show
+    from mechverify.units import Q
+
+    for v in (Q(350.0, "N"), Q(350, "N"), Q(1.5, "N/(m/s**2)"), Q(0.1, "m/s**2"), Q(2.0, "mm") * 3, 4.5, "x"):
+        assert _shown(v) == show(v) == _shown(v)

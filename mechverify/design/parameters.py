@@ -50,7 +50,24 @@ class Trace:
 
     def line(self, path: str, label: str | None = None) -> str:
         source, value = self.entries[path]
-        return f"{label or path.rsplit('.', 1)[-1]} = {show(value)} ← {source}"
+        return f"{label or path.rsplit('.', 1)[-1]} = {_shown(value)} ← {source}"
+
+
+def _shown(value: Any) -> str:
+    """:func:`show` of a value, remembered for a scalar quantity (a study's variants format the same derived values
+    again: the unchanged ones cost pint formatting every sample)."""
+    if type(value) is not Quantity or type(value._magnitude) not in (float, int):
+        return show(value)
+    key = (value._magnitude, value._units)
+    text = _SHOWN.get(key)
+    if text is None:
+        if len(_SHOWN) >= 1024:
+            _SHOWN.clear()
+        text = _SHOWN[key] = show(value)
+    return text
+
+
+_SHOWN: dict[tuple[Any, Any], str] = {}
 
 
 def simplify_units(q: Any, kind: str | None = None) -> Any:
