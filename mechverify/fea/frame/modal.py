@@ -352,6 +352,22 @@ def _mass_points(masses: Sequence[PointMass]) -> list[Load]:
     return out
 
 
+def _count_below(A: np.ndarray) -> int:
+    """The number of negative eigenvalues of the symmetric ``A`` (Sylvester's law of inertia on its LDLᵀ
+    factorisation: the negative eigenvalues of the 1x1 and 2x2 blocks of D); for ``A = K - σM`` the number of
+    modes with ω² < σ."""
+    _, D, _ = sla.ldl(A)
+    n, count, i = len(D), 0, 0
+    while i < n:
+        if i + 1 < n and D[i, i + 1] != 0:
+            count += int(np.sum(np.linalg.eigvalsh(D[i:i + 2, i:i + 2]) < 0))
+            i += 2
+        else:
+            count += int(D[i, i] < 0)
+            i += 1
+    return count
+
+
 # ---------------------------------------------------------------------------------------------- analyses
 def frame_modes(frame: Frame, n_modes: int = 6, *, masses: Sequence[PointMass] = (),
                 elements_per_member: int = ELEMENTS_PER_MEMBER, shift: QuantityLike | float | None = None
@@ -389,21 +405,21 @@ def frame_modes(frame: Frame, n_modes: int = 6, *, masses: Sequence[PointMass] =
     else:
         f0 = float(shift) if isinstance(shift, int | float) else to_si(shift, "frequency", "shift")
         sigma = (2 * math.pi * f0) ** 2
-    if free.size <= DENSE_LIMIT and shift is None:
-        # θ = 1/(ω² - σ) of M φ = θ (K - σM) φ, the largest ones: the Cholesky factor is of K - σM (positive
-        # definite here), not of M, whose conditioning grows with the fourth power of 1/element length for
-        # short Euler members (no rotary inertia) and made eigh(K, M)'s lowest ω² err by 3e-5, non-monotonically
-        # under refinement (the stepped drum shaft, issue 23)
+    if free.size <= DENSE_LIMIT:
+        # θ = 1/(ω² - σ0) of M φ = θ (K - σ0 M) φ: the Cholesky factor is of K - σ0 M (positive definite: σ0 = 0
+        # on supports, slightly negative for a free body), not of M, whose conditioning grows with the fourth power
+        # of 1/element length for short Euler members (no rotary inertia) and made eigh(K, M)'s lowest ω² err by
+        # 3e-5, non-monotonically under refinement (the stepped drum shaft, issue 23), and a user shift by 8e-5
         n = free.size
-        th, V = sla.eigh(Mf.toarray(), Kf.toarray() - sigma * Mf.toarray(), subset_by_index=[n - n_modes, n - 1])
-        w, V = 1.0 / th[::-1] + sigma, V[:, ::-1]
-    elif free.size <= DENSE_LIMIT:
-        A = Kf.toarray() - sigma * Mf.toarray()
-        w, V = sla.eigh(A, Mf.toarray())
-        w = w + sigma
-        if shift is not None:
-            order = np.argsort(np.where(w >= sigma - 1e-9 * abs(sigma), w, np.inf))[:n_modes]
-            w, V = w[order], V[:, order]
+        s0 = sigma if shift is None else (0.0 if frame.supports else -1e-6 * scale)
+        Md, Ks0 = Mf.toarray(), Kf.toarray() - s0 * Mf.toarray()
+        below = 0 if shift is None else _count_below(Kf.toarray() - sigma * Md)  # modes under the shift
+        if n_modes > n - below:
+            raise InputError(f"n_modes: only {n - below} modes lie above the shift {f0:g} Hz; ask fewer or lower "
+                             "the shift")
+        # the n_modes largest θ after the `below` largest ones: the lowest frequencies at or above the shift
+        th, V = sla.eigh(Md, Ks0, subset_by_index=[n - below - n_modes, n - below - 1])
+        w, V = 1.0 / th[::-1] + s0, V[:, ::-1]
     else:
         from mechverify.fea.frame.analysis import _node_order
 
