@@ -205,3 +205,33 @@ def test_a_command_imports_only_its_own_module():
     commands = {m for m in loaded if m.startswith("mechverify.cli.") and not m.split(".")[-1].startswith("_")}
     assert commands == {"mechverify.cli.check"}
     assert "importlib.metadata" not in _modules_after("import mechverify.cli; mechverify.cli.build_parser()")
+
+
+def test_the_command_exits_fast_with_its_status_output_and_exit_handlers(tmp_path):
+    """``mechverify`` (cli.entry) ends with os._exit once its output is flushed: the status, every line of the
+    output and the atexit handlers must survive it."""
+    lift = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+    out = tmp_path / "out.txt"
+    with out.open("w") as f:
+        proc = subprocess.run([sys.executable, "-m", "mechverify.cli", "check", str(lift)], stdout=f,
+                              stderr=subprocess.PIPE, text=True, env={**os.environ, "COLUMNS": "200"})
+    assert proc.returncode == 1, proc.stderr  # the lift fails three checks
+    assert out.read_text().rstrip().splitlines()[-1].startswith("FAIL Lead-screw lift")
+    marker = tmp_path / "atexit.txt"
+    code = (f"import atexit, sys; atexit.register(lambda: open({str(marker)!r}, 'w').write('ran'))\n"
+            "sys.argv = ['mechverify', '--version']\nfrom mechverify.cli import entry\nentry()")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert proc.returncode == 0 and proc.stdout.startswith("mechverify ")
+    assert marker.read_text() == "ran"
+
+
+def test_the_command_waits_for_a_running_thread(tmp_path):
+    """With another (non-daemon) thread still running, the exit is the normal one, which waits for it."""
+    marker = tmp_path / "thread.txt"
+    code = ("import sys, threading, time\n"
+            f"def late():\n    time.sleep(0.3)\n    open({str(marker)!r}, 'w').write('done')\n"
+            "threading.Thread(target=late).start()\n"
+            "sys.argv = ['mechverify', '--version']\nfrom mechverify.cli import entry\nentry()")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert marker.read_text() == "done"

@@ -27,6 +27,7 @@ import signal
 import sys
 import warnings
 from types import ModuleType
+from typing import NoReturn
 
 EXIT_PASS, EXIT_FAIL, EXIT_INVALID, EXIT_BUG = 0, 1, 2, 3
 
@@ -127,6 +128,33 @@ def error(message: str) -> None:
     """Print ``error: message`` on stderr (no rich: also used before anything heavy is imported)."""
     sys.stderr.write(f"error: {message}\n")
     sys.stderr.flush()
+
+
+def entry() -> NoReturn:
+    """The ``mechverify`` command (console script) and ``python -m mechverify.cli``: :func:`main`, then a fast exit.
+
+    Once the command has returned and its output is flushed, the process ends with ``os._exit``, as mypy's
+    ``--fast-exit`` does: the interpreter's teardown, which frees every module and object one by one, is skipped
+    (~80 ms CPU after a check of the lead-screw lift, ~50 ms after ``import numpy, pint`` alone; issue 27,
+    docs/performance.md). The atexit handlers still run (``weakref.finalize`` clean-ups such as temporary
+    folders, logging). With another thread still running, or ``MECHVERIFY_SLOW_EXIT`` set, the exit is the
+    normal one (which waits for non-daemon threads). Tests call :func:`main`, which returns the status.
+    """
+    import atexit
+    import os
+    import threading
+
+    code = main()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe (`mechverify materials | head`) or a closed stream
+            pass
+    run_exit_handlers = getattr(atexit, "_run_exitfuncs", None)
+    if threading.active_count() > 1 or os.environ.get("MECHVERIFY_SLOW_EXIT") or run_exit_handlers is None:
+        sys.exit(code)
+    run_exit_handlers()
+    os._exit(code)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -1,7 +1,5 @@
 """``python -m mechverify.cli``."""
 
-import sys
+from mechverify.cli import entry
 
-from mechverify.cli import main
-
-sys.exit(main())
+entry()
