@@ -13,7 +13,8 @@
   ref. 1 Sec. 4.2), as are membrane (in-plane) modes.
 - :func:`plate_modes` - the first ``n_modes`` eigenpairs of ``K φ = ω² M φ`` on the plate's supports
   (simply supported: deflection held; clamped: slope held as well), by ARPACK shift-invert Lanczos on
-  one sparse factorisation (dense ``eigh`` for small models). Results are
+  one sparse factorisation (:func:`mechverify.fea.factor.factorize`: CHOLMOD when installed, else SuperLU;
+  dense ``eigh`` for small models). Results are
   :class:`~mechverify.fea.modal.ModalResults` (shapes: deflection along z at the vertices, mass-normalised;
   effective mass along z; VTU export).
 
@@ -37,7 +38,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 from skfem import BilinearForm, asm
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError
 from mechverify.fea.modal import ModalResults
 from mechverify.units import QuantityLike
 
@@ -94,12 +95,9 @@ def plate_modes(model: Any, n_modes: int = 6, mesh_size: QuantityLike | None = N
     if free.size <= DENSE_LIMIT:
         w, V = sla.eigh(Kf.toarray(), Mf.toarray(), subset_by_index=[0, n_modes - 1])
     else:
-        try:
-            lu = spl.splu(Kf.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                          options={"SymmetricMode": True})
-        except RuntimeError as exc:
-            raise ModelError(f"the plate stiffness is singular ({exc}); check the supports") from None
-        op = spl.LinearOperator(Kf.shape, matvec=lu.solve, dtype=float)
+        from mechverify.fea.factor import factorize
+
+        op = factorize(Kf, what="the plate's bending stiffness (check the supports)").operator()
         v0 = np.random.default_rng(0).standard_normal(free.size)
         w, V = spl.eigsh(Kf.tocsc(), k=n_modes, M=Mf.tocsc(), sigma=0.0, which="LM", OPinv=op, v0=v0, tol=1e-10)
         order = np.argsort(w)
