@@ -61,13 +61,18 @@ def test_lobpcg_free_block_has_six_rigid_zeros():
 
 
 def test_lobpcg_plane_model():
-    """Plane stress cantilever strip: the 2D multigrid (P1 coarse level on the triangle edges) preconditions
-    LOBPCG; agreement with shift-invert to 1e-6."""
+    """Plane stress cantilever strip and the same strip free: the 2D multigrid (P1 coarse level on the triangle
+    edges) preconditions LOBPCG; agreement with shift-invert to 1e-6."""
     model = plane.PlaneModel(mesh2d.rectangle(0.2, 0.02, 40, 4), "2 mm", "Structural Steel",
                              supports=(Fixed(Plane(x="0 mm")),))
     ref = modal.modal(model, 5, method="superlu")
     res = modal.modal(model, 5, method="lobpcg")
     np.testing.assert_allclose(res.frequencies.m, ref.frequencies.m, rtol=1e-6)
+    # the same strip free: three in-plane rigid-body zeros (x, y, rotation about z), then the elastic modes
+    free = plane.PlaneModel(mesh2d.rectangle(0.2, 0.02, 40, 4), "2 mm", "Structural Steel")
+    ref, res = modal.modal(free, 6, method="superlu"), modal.modal(free, 6, method="lobpcg")
+    assert res.rigid_body_modes == 3 and np.all(res.frequencies.m[:3] == 0.0)
+    np.testing.assert_allclose(res.frequencies.m[3:], ref.frequencies.m[3:], rtol=1e-6)
 
 
 def test_auto_takes_lobpcg_when_the_factor_would_not_fit(monkeypatch):

@@ -76,13 +76,15 @@ LOBPCG_MAXITER = 500
 #: per unknown,
 MATRIX_BYTES_PER_DOF = 2500.0
 #: CHOLMOD's supernodal factor of a compact solid: ``FACTOR_BYTES_3D · n^(1/3)`` per unknown (nested dissection:
-#: fill grows as n^(4/3); peaks 8.1, 9.3 and 14.9 kB per DOF at 12.6k, 47.6k and 202k DOF); SuperLU's is
+#: fill grows as n^(4/3); total peaks 8.1, 10.8 and 13.1 kB per DOF at 12.6k, 47.6k and 203k DOF, the estimate
+#: 7.5, 10.3 and 15.0); SuperLU's is
 #: :data:`SUPERLU_FILL` times larger (its fill on the 46k-DOF lug, :mod:`mechverify.fea.factor`). A thin part
 #: fills less: the estimate is then conservative.
 FACTOR_BYTES_3D = 210.0
 SUPERLU_FILL = 4.0
 #: and for LOBPCG the multigrid hierarchy and work vectors per unknown, plus 12 block vectors of 8 bytes per
-#: block column (measured: 4.2 kB per DOF above the interpreter at 46k DOF with 15 columns).
+#: block column (measured with 15 columns: 4.2 kB per DOF above the interpreter at 46k DOF, a total peak of 4.6 kB
+#: per DOF at 203k; the estimate 4.9).
 MULTIGRID_BYTES_PER_DOF = 1000.0
 
 
