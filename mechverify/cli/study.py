@@ -18,7 +18,8 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                                    "--vary NAME=normal:MEAN:SD | uniform:LO:HI | triangular:LO:MODE:HI with "
                                    "--samples N. Bare numbers take the unit of the file's value. A sample that is "
                                    "invalid is recorded with its message. Exit 0 when the study ran, 2 on invalid "
-                                   "input or an unreachable scheduler.")
+                                   "input, an unreachable scheduler, or when no sample is valid (the outputs "
+                                   "are still written).")
     p.add_argument("design", type=Path, metavar="DESIGN", help="design file (TOML)")
     p.add_argument("--vary", action="append", required=True, metavar="NAME=SPEC",
                    help="a parameter and its range or distribution (repeat for several)")
@@ -32,7 +33,8 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
                         "available memory would not hold one per core")
     p.add_argument("--serial", action="store_true", help="run in this process (no worker processes)")
     p.add_argument("--scheduler", metavar="ADDRESS",
-                   help="run on the Dask cluster at tcp://host:8786 (default: $DASK_SCHEDULER_ADDRESS if set)")
+                   help="run on the Dask cluster at tcp://host:8786 (default: $DASK_SCHEDULER_ADDRESS if set and "
+                        "neither --serial, --workers nor --memory-per-worker is given)")
     p.add_argument("--timeout", type=float, default=10.0, metavar="S",
                    help="seconds to wait for the scheduler (default 10)")
     p.add_argument("--batch-size", type=int, metavar="N", help="samples per task (default: about 4 tasks a worker)")
@@ -52,6 +54,7 @@ def add_parser(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from mechverify.cli import Invalid
+    from mechverify.errors import InputError
     from mechverify.fileio import check_output_paths
 
     if args.report is not None and args.report.suffix.lower() not in (".html", ".htm", ".pdf"):
@@ -67,9 +70,21 @@ def run(args: argparse.Namespace) -> int:
         raise Invalid("--force: only with --reproduce I --out PATH")
     if args.out is not None and (args.out.exists() or args.out.is_symlink()) and not args.force:
         raise Invalid(f"--out: {args.out} exists; pass --force to overwrite it")
-    scheduler = args.scheduler or os.environ.get("DASK_SCHEDULER_ADDRESS") or None
-    if scheduler and args.serial:
-        raise Invalid("--serial and --scheduler: choose one")
+    for opt, n in (("--workers", args.workers), ("--batch-size", args.batch_size), ("--samples", args.samples)):
+        if n is not None and n < 1:
+            raise Invalid(f"{opt}: zero samples; give at least 1" if opt == "--samples" and n == 0 else
+                          f"{opt}: expected a positive integer, got {n}")
+    if args.timeout is not None and not args.timeout > 0:
+        raise Invalid(f"--timeout: expected a positive number of seconds, got {args.timeout:g}")
+    local = [o for o, given in (("--serial", args.serial), ("--workers", args.workers is not None),
+                                ("--memory-per-worker", args.memory_per_worker is not None)) if given]
+    if args.scheduler and local:
+        raise Invalid(f"{' and '.join(local)} and --scheduler: choose the local run or the cluster")
+    if args.serial and len(local) > 1:
+        raise Invalid(f"--serial runs in this process: {' and '.join(local[1:])} would be ignored; drop it")
+    # $DASK_SCHEDULER_ADDRESS is a default: an explicit local choice (--serial, --workers) beats it
+    env = os.environ.get("DASK_SCHEDULER_ADDRESS") or None
+    scheduler = args.scheduler or (None if local else env)
     outputs = {"--json": args.json_out, "--csv": args.csv, "--report": args.report, "--out": args.out}
     check_output_paths(outputs, [args.design])
 
@@ -78,8 +93,11 @@ def run(args: argparse.Namespace) -> int:
     from mechverify.studies import Study
 
     (design,) = load_designs([args.design], args.allow_outside_includes)
-    study = Study(design, vary=args.vary, samples=args.samples, method=args.method, seed=args.seed,
-                  batch_size=args.batch_size)
+    try:
+        study = Study(design, vary=args.vary, samples=args.samples, method=args.method, seed=args.seed,
+                      batch_size=args.batch_size)
+    except InputError as exc:  # name the option, not the Python argument
+        raise _as_option(exc) from None
     out = console()
     if args.reproduce is not None:
         if not 0 <= args.reproduce < study.n_samples:
@@ -92,11 +110,23 @@ def run(args: argparse.Namespace) -> int:
     if scheduler:
         from mechverify.studies import dask_executor
 
+        if not args.scheduler and not args.quiet:
+            _note(f"running on the Dask cluster at {scheduler} ($DASK_SCHEDULER_ADDRESS; --serial or --workers N "
+                  "run locally)")
         with dask_executor(scheduler, timeout=args.timeout) as executor:
             result = study.run(executor, progress=progress)
     else:
-        result = study.run("serial" if args.serial else None, workers=args.workers,
-                           memory_per_worker=args.memory_per_worker, progress=progress)
+        from mechverify.studies import execution
+
+        try:
+            if args.memory_per_worker is not None:
+                n = args.workers or execution.default_workers(args.memory_per_worker)
+                if not args.quiet:
+                    _note(execution.memory_note(args.memory_per_worker, n))
+            result = study.run("serial" if args.serial else None, workers=args.workers,
+                               memory_per_worker=args.memory_per_worker, progress=progress)
+        except InputError as exc:
+            raise _as_option(exc) from None
     text = result.summary()
     out.print(text.splitlines()[0] if args.quiet else text, markup=False, highlight=False, soft_wrap=True)
     if args.json_out:
@@ -107,4 +137,28 @@ def run(args: argparse.Namespace) -> int:
         from mechverify.reports.study import write_study_report
 
         write_study_report(result, args.report)
+    if result.samples and not result.ok:  # nothing was verified: a CI job must not pass (outputs are written)
+        from mechverify.studies.study import _last_line
+
+        raise Invalid(f"no valid sample: all {len(result.samples)} samples are invalid, so the study verified "
+                      f"nothing (sample 0: {_last_line(result.samples[0]['message'])})")
     return 0
+
+
+_OPTIONS = {"samples": "--samples", "batch_size": "--batch-size", "workers": "--workers",
+            "memory_per_worker": "--memory-per-worker", "method": "--method", "vary": "--vary"}
+
+
+def _as_option(exc: Exception) -> Exception:
+    """The same error with its leading Python argument name (``batch_size: ...``) as the option (``--batch-size``)."""
+    text = str(exc)
+    head, sep, rest = text.partition(": ")
+    if sep and head in _OPTIONS:
+        return type(exc)(f"{_OPTIONS[head]}: {rest}")
+    return exc
+
+
+def _note(text: str) -> None:
+    import sys
+
+    sys.stderr.write(f"note: {text}\n")

@@ -139,6 +139,22 @@ def default_workers(memory_per_worker: Any = None) -> int:
     return n
 
 
+def memory_note(memory_per_worker: Any, workers: int) -> str:
+    """What ``memory_per_worker`` did to the local worker count, for the console: the workers chosen, the
+    available memory, and a warning when even one sample may not fit."""
+    from mechverify.units import Q
+
+    per = float(Q(memory_per_worker).to("byte").magnitude)  # (validated by default_workers)
+    avail = available_memory()
+    if avail is None:
+        return f"{workers} local worker(s); the available memory is unknown on this system"
+    text = (f"{workers} local worker(s) for {per / 1e9:.3g} GB per sample ({avail / 1e9:.3g} GB of memory "
+            "available)")
+    if per > avail:
+        text += ": one sample may not fit in the available memory"
+    return text
+
+
 def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:
     """A local process pool (the platform's default start method), one BLAS thread per worker."""
     return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread)
@@ -162,21 +178,74 @@ class SchedulerError(MechverifyError):
 
 @contextmanager
 def dask_executor(address: str, timeout: float = 10.0) -> Iterator[cf.Executor]:
-    """An executor on the Dask cluster at ``address`` (``tcp://host:8786``), closed on exit."""
+    """An executor on the Dask cluster at ``address`` (``tcp://host:8786``), closed on exit.
+
+    The connection (the client's handshake and a first request to the scheduler) runs under a hard deadline
+    of ``timeout`` seconds: an address that does not answer, or answers but is not a Dask scheduler (a web
+    server, the dashboard's port 8787), is a :class:`SchedulerError` within the deadline, whatever the
+    client raised or however it hung; the half-made client is closed."""
+    client = connect_dask(address, timeout)
+    try:
+        yield client.get_executor(pure=False)
+    finally:
+        client.close()
+
+
+def connect_dask(address: str, timeout: float = 10.0) -> Any:
+    """A ``distributed.Client`` connected to ``address`` within ``timeout`` s, or a :class:`SchedulerError`."""
     try:
         from distributed import Client
     except ImportError:
         raise SchedulerError("running on a Dask cluster needs the 'cluster' extra: "
                              "pip install 'mechverify[cluster]'") from None
+    if not (isinstance(timeout, int | float) and math.isfinite(timeout) and timeout > 0):
+        raise SchedulerError(f"--timeout: expected a positive number of seconds, got {timeout!r}")
+    made: list[Any] = []
+
+    class _Client(Client):  # (keeps a reference to the client before it connects: a failed one is closed)
+        def start(self, **kwargs: Any) -> Any:
+            made.append(self)
+            return super().start(**kwargs)
+
+    box: dict[str, Any] = {}
+
+    def connect() -> None:
+        try:
+            c = _Client(address, timeout=timeout, set_as_default=False)
+            box["client"] = c
+            c.ncores()  # a first round trip: the scheduler answers requests, not only the handshake
+            box["ok"] = True
+        except BaseException as exc:  # (a non-Dask peer gives anything: MemoryError for a garbage frame size)
+            box["error"] = exc
+
+    t = threading.Thread(target=connect, name="mechverify-dask-connect", daemon=True)
+    t.start()
+    t.join(timeout)
+    if box.get("ok"):
+        return box["client"]
+    exc = box.get("error")
+    for c in made:
+        _discard(c)
+    why = "no answer" if exc is None else f"{type(exc).__name__}: {exc}"
+    raise SchedulerError(f"cannot reach the Dask scheduler at {address} within {timeout:g} s ({why[:300]}); give the "
+                         "scheduler's address, e.g. tcp://host:8786 (8787 is its dashboard), or run locally "
+                         "(--serial, --workers N)")
+
+
+def _discard(client: Any) -> None:
+    """Close a client that never connected, in the background and briefly; its ``__del__`` is disarmed (it
+    would block for twice the timeout and print a traceback at exit)."""
+    def close() -> None:
+        try:
+            client.close(timeout=1)
+        except BaseException:  # (nothing to report: the connection failed already)
+            pass
+
+    threading.Thread(target=close, name="mechverify-dask-close", daemon=True).start()
     try:
-        client = Client(address, timeout=timeout, set_as_default=False)
-    except (OSError, TimeoutError, ValueError) as exc:
-        raise SchedulerError(f"cannot reach the Dask scheduler at {address} within {timeout:g} s "
-                             f"({type(exc).__name__}: {exc})") from None
-    try:
-        yield client.get_executor(pure=False)
-    finally:
-        client.close()
+        client._Client__loop = None  # Client.__del__ closes only a client that has a loop
+    except AttributeError:
+        pass
 
 
 def run_batches(batch_fn: Callable[..., list[dict[str, Any]]], doc: Mapping[str, Any], path: str | None,

@@ -366,10 +366,13 @@ class Study:
         self.method = method if self.kind == "monte_carlo" else "grid"
         self.seed = seed
         if self.kind == "monte_carlo":
-            if samples is None or isinstance(samples, bool) or not isinstance(samples, int | np.integer):
-                raise InputError(f"samples: a Monte Carlo study needs the number of samples, got {samples!r}")
+            if samples is None:
+                raise InputError("samples: a Monte Carlo study (distributions in vary) needs the number of samples")
+            if isinstance(samples, bool) or not isinstance(samples, int | np.integer):
+                raise InputError(f"samples: expected a whole number of samples, got {samples!r}")
             if samples < 1:
-                raise InputError(f"samples: zero samples; give at least 1 (got {samples})")
+                raise InputError("samples: zero samples; give at least 1" if samples == 0 else
+                                 f"samples: expected at least 1 sample, got {samples}")
         self.n_samples = int(samples) if self.kind == "monte_carlo" else int(np.prod([a.args[2] for a in sweeps]))
         if batch_size is not None and not (isinstance(batch_size, int) and batch_size >= 1):
             raise InputError(f"batch_size: expected a positive integer, got {batch_size!r}")
