@@ -217,3 +217,57 @@ def test_a_study_with_no_valid_sample_exits_2_and_still_writes_its_outputs(tmp_p
     assert rc == 2 and "no valid sample: all 3 samples are invalid" in captured.err
     assert "3 invalid" in captured.out
     assert [s["status"] for s in json.loads(j.read_text())["samples"]] == ["error"] * 3
+
+
+# ---------------------------------------------------------------- finding 23: --reproduce --out elsewhere
+
+STEP_DESIGN = """[design]
+name = "step beam p"
+[parameters]
+q = "1 MPa"
+[components.beam]
+type = "solid_fea"
+step = "geometry/beam.step"
+material = "structural steel"
+mesh_size = "5 mm"
+supports = [{ face = 1 }]
+deflection_limit = "10 mm"
+[load_cases.tip.beam]
+pressures = [{ face = 6, pressure = "q" }]
+"""
+
+
+def test_reproduce_into_another_folder_rewrites_relative_file_names(tmp_path, capsys):
+    """Finding 23: 'step = "beam.step"' was copied verbatim into other/s1.toml, which then could not be checked
+    ('file .../other/beam.step does not exist'). The file name is rewritten relative to the output's folder."""
+    from mechverify.design import load
+    from mechverify.studies.study import FILE_KEYS, rebase_files
+
+    (tmp_path / "geometry").mkdir()
+    (tmp_path / "geometry" / "beam.step").write_text("ISO-10303-21;\n")  # only its existence is checked at load
+    design = tmp_path / "step_p.toml"
+    design.write_text(STEP_DESIGN)
+    out = tmp_path / "runs" / "deep" / "s1.toml"
+    out.parent.mkdir(parents=True)
+    rc = main(["study", str(design), "--vary", "parameters.q=normal:1 MPa:0.1 MPa", "--samples", "4",
+               "--reproduce", "1", "--out", str(out)])
+    assert rc == 0, capsys.readouterr().err
+    assert 'step = "../../geometry/beam.step"' in out.read_text()
+    assert load(out).data.raw["components"]["beam"]["step"] == "../../geometry/beam.step"  # it loads
+    # the same folder keeps the name; an absolute name is kept
+    same = tmp_path / "s2.toml"
+    assert main(["study", str(design), "--vary", "parameters.q=normal:1 MPa:0.1 MPa", "--samples", "4",
+                 "--reproduce", "1", "--out", str(same)]) == 0
+    assert 'step = "geometry/beam.step"' in same.read_text()
+    doc = {"components": {"b": {"stl": "/abs/x.stl"}}, "templates": {"t": {"step": "a.step"}}}
+    assert rebase_files(doc, tmp_path, tmp_path / "o") == {"components": {"b": {"stl": "/abs/x.stl"}},
+                                                           "templates": {"t": {"step": "../a.step"}}}
+    # every file-name key of the component types is rebased (a new one must join FILE_KEYS)
+    import re
+
+    from mechverify.design import adapters  # noqa: F401  (registers the types)
+    from mechverify.design.spec import REGISTRY
+
+    file_fields = {f.name for t in REGISTRY.types.values() for f in t.fields
+                   if f.kind == "str" and re.search(r"\bfile\b", f.doc or "", re.I)}
+    assert file_fields <= set(FILE_KEYS), file_fields

@@ -234,7 +234,8 @@ class StudyResult:
         from mechverify.fileio import atomic_write
         from mechverify.studies.tomlout import dumps
 
-        doc = apply_overrides(self.doc, self.overrides(i))
+        doc = rebase_files(apply_overrides(self.doc, self.overrides(i)),
+                           Path(self.path).resolve().parent if self.path else Path.cwd(), Path(path).resolve().parent)
         head = (f"# Sample {i} of a {self.kind.replace('_', ' ')} study of {self.design_name!r}"
                 + (f" ({self.path})" if self.path else "") + ":\n"
                 + "".join(f"#   {k} = {v!r}\n" for k, v in self.overrides(i).items()))
@@ -278,6 +279,31 @@ class StudyResult:
         for s in self.errors[:5]:
             lines.append(f"sample {s['index']} invalid: {_last_line(s['message'])}")
         return "\n".join(lines)
+
+
+#: Keys whose value is a file name relative to the design file (solid_fea's geometry); a design file written
+#: to another folder (``reproduce``) gets them relative to its own folder.
+FILE_KEYS = ("step", "stl")
+
+
+def rebase_files(doc: dict[str, Any], source_dir: Path, out_dir: Path) -> dict[str, Any]:
+    """``doc`` with every relative file name of a component or template (:data:`FILE_KEYS`) rewritten from
+    ``source_dir`` to ``out_dir`` (relative when both are on one drive, else absolute); in place, returned."""
+    import os
+
+    for section in ("components", "templates"):
+        for table in (doc.get(section) or {}).values():
+            if not isinstance(table, dict):
+                continue
+            for k in FILE_KEYS:
+                v = table.get(k)
+                if isinstance(v, str) and v and not Path(v).is_absolute():
+                    target = (source_dir / v).resolve()
+                    try:
+                        table[k] = Path(os.path.relpath(target, out_dir)).as_posix()
+                    except ValueError:  # (another drive on Windows)
+                        table[k] = str(target)
+    return doc
 
 
 def pretty_unit(unit: str) -> str:
