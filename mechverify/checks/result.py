@@ -242,12 +242,13 @@ class CheckResult:
     def _magnitudes(self) -> tuple[float, float]:
         """The demand in the capacity's unit and the capacity, as floats (no conversion when the units agree)."""
         dem, cap = self.demand, self.capacity
-        if dem._units == cap._units:  # the same unit: the magnitude as it is (what m_as returns then)
-            return float(dem._magnitude), float(cap._magnitude)
+        unit = cap.units
+        if dem.units == unit:  # the same unit: the magnitude as it is (what m_as returns then)
+            return float(dem.magnitude), float(cap.magnitude)
         if dem.dimensionality != cap.dimensionality:
             raise UnitError(f"{self.component}/{self.check}: demand {fmt(dem)} and capacity {fmt(cap)} have "
                             "different dimensions")
-        return float(dem.m_as(cap.units)), float(cap._magnitude)
+        return float(dem.m_as(unit)), float(cap.magnitude)
 
     @cached_property
     def utilisation(self) -> float:
