@@ -164,12 +164,13 @@ def supervariables(A: sp.csc_matrix) -> np.ndarray:
     return np.r_[0, np.flatnonzero(~same) + 1, n]
 
 
-def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
+def symbolic_cost(A: sp.spmatrix, ordering: str = "amd", groups: np.ndarray | None = None) -> SymbolicCost | None:
     """Order the symmetric ``A`` (``ordering``: "amd" or "metis") and count the non-zeros and flops of its Cholesky
     factor without computing it (CHOLMOD's ``cholmod_amd``/``cholmod_metis`` and ``cholmod_analyze_ordering``,
     ref. 1); ``None`` when CHOLMOD's library is not available. Only the pattern is read (a CSR matrix is read as
-    its transpose, the same for a symmetric one). METIS orders the graph of :func:`supervariables` (one vertex per
-    node of a finite-element mesh; AMD finds them itself), expanded to the DOFs."""
+    its transpose, the same for a symmetric one). METIS orders the graph of the supervariables ``groups`` (starts of
+    runs of columns with one pattern, e.g. a node's DOFs; found by :func:`supervariables` when not given; AMD finds
+    them itself), expanded to the DOFs."""
     if ordering not in ORDERINGS:
         raise InputError(f"ordering: one of {', '.join(ORDERINGS)}, got {ordering!r}")
     lib = _libcholmod()
@@ -180,7 +181,7 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd") -> SymbolicCost | None:
     if sp.issparse(A) and A.format == "csr":
         A = sp.csc_matrix((A.data, A.indices, A.indptr), shape=A.shape)  # Aᵀ = A: no conversion
     A = sp.csc_matrix(A)
-    starts = supervariables(A) if ordering == "metis" else np.arange(n + 1)
+    starts = np.arange(n + 1) if ordering == "amd" else supervariables(A) if groups is None else np.asarray(groups)
     sizes = np.diff(starts)
     nc = sizes.size
     C = A[starts[:-1]][:, starts[:-1]].tocsc() if nc < n else A
@@ -251,6 +252,8 @@ def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness m
         raise InputError(f"method: one of {', '.join(METHODS)}, got {method!r}")
     if method == "auto":
         method = "cholmod" if cholmod_available() else "superlu"
+    if sp.issparse(A) and A.format == "csr" and method == "cholmod":
+        A = sp.csc_matrix((A.data, A.indices, A.indptr), shape=A.shape)  # symmetric: Aᵀ = A, no conversion
     A = sp.csc_matrix(A)
     t0 = time.perf_counter()
     if method == "cholmod":

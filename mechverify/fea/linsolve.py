@@ -50,11 +50,12 @@ CG_EXPECTED_ITERATIONS = 30
 #: stays under :data:`DIRECT_BYTES_PER_DOF` per unknown (the static solver's budget is 5 kB per DOF in all).
 DIRECT_SWITCH_MAX = 300_000
 DIRECT_BYTES_PER_DOF = 3000.0
-#: Up to this many unknowns the factorisation is analysed before CG starts (the analysis costs about 5 CG
-#: iterations with AMD, 8 more with METIS, and ~16 bytes per non-zero of A for a moment); above, only when CG's
-#: measured rate predicts more than 1.5 :data:`CG_EXPECTED_ITERATIONS` (45; 30 were measured at 179k DOF, 203 at
-#: 66k). The plate with a hole's factorisation beat a 30-iteration CG up to ~70k DOF and lost from ~100k (predicted
-#: 0.46 s against 0.58 s at 37k, 5.0 s against 3.0 s at 179k), so a larger system is factored only for a slow CG.
+#: Up to this many unknowns the factorisation is analysed before CG starts (METIS on the node graph and CHOLMOD's
+#: column counts: about 8 CG iterations, 0.25 s CPU at 66k DOF, and ~16 bytes per non-zero of A for a moment); above,
+#: only when CG's measured rate predicts more than 1.5 :data:`CG_EXPECTED_ITERATIONS` (45; 30 were measured at 179k
+#: DOF, 203 at 66k). The plate with a hole's factorisation beat a 30-iteration CG up to ~70k DOF and lost from
+#: ~100k (predicted 0.46 s against 0.58 s at 37k, 5.0 s against 3.0 s at 179k), so a larger system is factored only
+#: for a slow CG.
 ANALYSE_FIRST_MAX = 100_000
 
 
@@ -86,10 +87,12 @@ def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
     return A.nnz * CG_SECONDS_PER_NNZ * (iterations + CG_SETUP_ITERATIONS)
 
 
-def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1) -> tuple[SolverChoice, Any]:
+def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1,
+                  groups: np.ndarray | None = None) -> tuple[SolverChoice, Any]:
     """Direct or iterative for the SPD system ``A`` with ``cases`` right-hand sides, from a cost model: CHOLMOD's
     symbolic analysis predicts the factorisation's seconds and memory and the seconds per solve
-    (:func:`mechverify.fea.factor.symbolic_cost`, AMD; METIS too when the factorisation is within a factor 2 of CG),
+    (:func:`mechverify.fea.factor.symbolic_cost` with METIS on the node graph ``groups``, AMD when METIS is absent;
+    METIS's factor took 0.6-0.9 of AMD's flops on the benchmark's plates and lug, its analysis 2x AMD's),
     CG is predicted at :data:`CG_EXPECTED_ITERATIONS` per case on one multigrid setup. Returns the
     :class:`SolverChoice` ("direct" or "amg"; its seconds are the totals over the cases) and the
     :class:`~mechverify.fea.factor.SymbolicCost` to factor with (None when CHOLMOD is absent, the system is above
@@ -105,14 +108,8 @@ def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1) -> tuple
 
     cost, spent = None, 0.0
     if analyse and n <= DIRECT_SWITCH_MAX:
-        cost = symbolic_cost(A, "amd")
-        if cost is not None:
-            spent = cost.seconds
-            if direct(cost) < 2 * t_cg:
-                metis = symbolic_cost(A, "metis")
-                if metis is not None:
-                    spent += metis.seconds
-                    cost = min(cost, metis, key=direct)
+        cost = symbolic_cost(A, "metis", groups) or symbolic_cost(A, "amd")
+        spent = 0.0 if cost is None else cost.seconds
     if cost is None:
         return SolverChoice("amg", None, None, t_cg, None, spent, False), None
     fits = cost.factor_bytes <= DIRECT_BYTES_PER_DOF * n
@@ -246,12 +243,13 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
         big = dim == 3 and free.size > ITERATIVE_THRESHOLD_3D and prolongation is not None
         method = "amg" if big else "direct"
         if big and cholmod_available():
-            choice, cost = choose_solver(Kff, analyse=free.size <= ANALYSE_FIRST_MAX)
+            groups = np.r_[0, np.flatnonzero(np.diff(free // dim)) + 1, free.size]  # each node's free DOFs
+            choice, cost = choose_solver(Kff, analyse=free.size <= ANALYSE_FIRST_MAX, groups=groups)
             method, label = choice.method, choice.describe()
             if choice.direct_seconds is None and free.size <= DIRECT_SWITCH_MAX:
                 def analysis() -> float | None:  # run when CG turns out slower than expected
                     nonlocal cost, label
-                    later, cost = choose_solver(Kff)
+                    later, cost = choose_solver(Kff, groups=groups)
                     label = later.describe() + " (analysed when CG was slow)"
                     return None if cost is None else cost.factor_seconds
     if progress:
