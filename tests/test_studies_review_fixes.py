@@ -271,3 +271,44 @@ def test_reproduce_into_another_folder_rewrites_relative_file_names(tmp_path, ca
     file_fields = {f.name for t in REGISTRY.types.values() for f in t.fields
                    if f.kind == "str" and re.search(r"\bfile\b", f.doc or "", re.I)}
     assert file_fields <= set(FILE_KEYS), file_fields
+
+
+# ---------------------------------------------------------------- finding 1: a key the file does not write
+
+
+def test_a_component_key_left_to_its_default_can_be_varied(tmp_path):
+    """Finding 1: a key the component type defines but the file does not write was 'unknown parameter'. The
+    screw bearing's reliability (ball_bearing default 0.9) is not in the lift's file; it can now be varied from
+    that default. Expected ratio: ISO 281:2007 Table 12 a1 = 1 at 90 %, 0.25 at 99 % (the table of
+    components/data/bearings_ball.toml), so the life check's u grows by 1/0.25 = 4 (hand calculation)."""
+    s = Study(LIFT, vary=["components.screw_bearing.reliability=0.9:0.99:2"])
+    assert s.axes[0].param.base == 0.9
+    res = s.run("serial")
+    u = [x["checks"]["screw_bearing.bearing_life"]["u"] for x in res.samples]
+    assert u[1] / u[0] == pytest.approx(1 / 0.25, rel=1e-3)
+    out = res.reproduce(1, tmp_path / "s1.toml")  # the key is written into the reproduced file
+    assert "reliability = 0.99" in out.read_text()
+
+
+def test_a_key_whose_default_is_not_one_number_is_a_clear_error(capsys):
+    """Finding 1: the screw stage's mu (the issue's friction example) defaults to the nut material's friction
+    range (both ends checked): not one base value. The message says to write the key into the file first."""
+    with pytest.raises(InputError, match=r"does not write 'mu' in components\.lift\.transmission\[0\].*write the "
+                                         r"key into the file"):
+        Study(LIFT, vary=["components.lift.transmission[0].mu=0.1:0.3:3"])
+    rc = main(["size", str(LIFT), "--vary", "components.lift.transmission[0].mu", "--until", "motor_peak_torque",
+               "--bounds", "0.05:0.3"])
+    assert rc == 2 and "write the key into the file" in capsys.readouterr().err
+
+
+def test_a_friction_written_into_the_file_is_varied(tmp_path):
+    """Finding 1, the documented way: with 'mu = 0.25' written into the screw stage, a sweep of mu runs and the
+    motor's torque grows with the friction (raise torque, Hamrock Eq. 16.10: monotonic in mu)."""
+    text = LIFT.read_text().replace('transmission = [{ type = "screw", screw = "lift_screw" }]',
+                                    'transmission = [{ type = "screw", screw = "lift_screw", mu = 0.25 }]')
+    assert "mu = 0.25 }]" in text
+    design = tmp_path / "design.toml"  # (the lift has no includes or file names: it can move)
+    design.write_text(text)
+    res = Study(design, vary=["components.lift.transmission[0].mu=0.1:0.3:3"]).run("serial")
+    fu = [x["checks"]["lift.motor_peak_torque"]["fu"] for x in res.samples]
+    assert fu[0] < fu[1] < fu[2]

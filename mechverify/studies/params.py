@@ -71,8 +71,44 @@ def _template_of(doc: Mapping[str, Any], steps: list[str | int]) -> dict[str, An
     return None
 
 
-def get_path(doc: Mapping[str, Any], path: str) -> Any:
-    """The value at ``path`` (a component's template value when the component does not set it)."""
+def _type_default(doc: Mapping[str, Any], steps: list[str | int]) -> tuple[bool | None, Any]:
+    """For components.<name>.<key> that the file does not write: (whether the component's type declares the key,
+    its default ``Field.default`` or None); (None, None) when that is not known (another path, an unknown type)."""
+    if len(steps) != 3 or steps[0] != "components" or not isinstance(steps[2], str):
+        return None, None
+    comp = doc.get("components", {}).get(steps[1])
+    if not isinstance(comp, dict):
+        return None, None
+    kind = comp.get("type")
+    if kind is None and isinstance(comp.get("extends"), str):
+        kind = (doc.get("templates", {}).get(comp["extends"]) or {}).get("type")
+    from mechverify.design import adapters  # noqa: F401  (registers the component types)
+    from mechverify.design.spec import REGISTRY
+
+    ct = REGISTRY.types.get(kind) if isinstance(kind, str) else None
+    if ct is None:
+        return None, None
+    field = next((f for f in ct.fields if f.name == steps[2]), None)
+    return field is not None, None if field is None else field.default
+
+
+def _not_written(path: str, doc: Mapping[str, Any], steps: list[str | int], table: Mapping[str, Any]) -> InputError:
+    """A key the file does not write in a table that exists: it may be a key whose default is not one number (a
+    screw stage's mu: the nut material's friction range, both ends checked), so it cannot be varied as is."""
+    key = steps[-1]
+    where = path[: len(path) - len(str(key)) - 1]
+    hint = [k for k in table if isinstance(k, str)]
+    return InputError(f"parameter {path!r}: the design file does not write {key!r} in {where} (keys there: "
+                      f"{', '.join(hint) or 'none'}). A key the file leaves to its default can be varied when the "
+                      "component type gives one number as the default; otherwise (a screw stage's mu defaults to "
+                      "the nut material's friction range, both ends checked) write the key into the file with "
+                      f"today's value ({key} = ...) and vary that")
+
+
+def get_path(doc: Mapping[str, Any], path: str, defaults: bool = False) -> Any:
+    """The value at ``path`` (a component's template value when the component does not set it). With
+    ``defaults``, a component key the file does not write gives its type's default (a number or a quantity
+    string), and a key missing from an existing table is an :class:`InputError` that says how to vary it."""
     steps = split_path(path)
     node: Any = doc
     for i, s in enumerate(steps):
@@ -84,18 +120,32 @@ def get_path(doc: Mapping[str, Any], path: str) -> Any:
             if not isinstance(node, dict):
                 raise _unknown(path, doc)
             if s not in node:
-                tpl = _template_of(doc, steps) if i == len(steps) - 1 else None
+                last = i == len(steps) - 1
+                tpl = _template_of(doc, steps) if last else None
                 if tpl is not None and s in tpl:
                     return tpl[s]
+                if defaults and last and i >= 2:
+                    known, d = _type_default(doc, steps)
+                    if known and isinstance(d, int | float | str) and not isinstance(d, bool):
+                        return d
+                    if known or (known is None and not _near(s, node)):
+                        raise _not_written(path, doc, steps, node)
                 raise _unknown(path, doc)
             node = node[s]
     return node
 
 
+def _near(key: str, table: Mapping[str, Any]) -> list[str]:
+    from mechverify.errors import suggest
+
+    return list(suggest(key, [k for k in table if isinstance(k, str)], 1))
+
+
 def set_path(doc: dict[str, Any], path: str, value: Any) -> None:
-    """Set ``path`` in ``doc`` in place (the key must exist, or come from the component's template)."""
+    """Set ``path`` in ``doc`` in place (the key must exist, come from the component's template, or be a key of
+    the component's type with a default)."""
     steps = split_path(path)
-    get_path(doc, path)  # raises for an unknown path
+    get_path(doc, path, defaults=True)  # raises for an unknown path
     node: Any = doc
     for s in steps[:-1]:
         node = node[s]
@@ -129,7 +179,7 @@ class Parameter:
     def of(cls, doc: Mapping[str, Any], path: str, resolved: Any = None) -> Parameter:
         """The parameter at ``path``. A value written as an expression (``"lifted_load / g"``) takes its
         resolved value from ``resolved(path)`` (a quantity or None); varying it replaces the expression."""
-        raw = get_path(doc, path)
+        raw = get_path(doc, path, defaults=True)
         if isinstance(raw, str) and resolved is not None:
             try:
                 Q(raw)
