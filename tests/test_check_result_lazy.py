@@ -224,6 +224,19 @@ def test_drive_figure_data_are_lazy_and_complete():
     assert peak.details["profile_velocity"].units == Q(1, "mm/s").units
 
 
+def test_a_verify_leaves_every_substituted_line_of_the_lift_uncomputed():
+    """design.verify and the adapters copy results with CheckResult.replace: no substituted text of the lift is
+    formatted (nor bracketed) until read, and reading gives the text."""
+    from mechverify.design import load
+
+    rs = load(ROOT / "examples" / DESIGNS[0]).verify()
+    raw = {(r.component, r.check): r.__dict__["substituted"] for r in rs}
+    assert len(raw) == len(rs) >= 10
+    assert all(type(v) is res._Pending and v.text is None for v in raw.values()), \
+        [k for k, v in raw.items() if type(v) is not res._Pending or v.text is not None]
+    assert all(r.substituted.count("=") >= 1 for r in rs)
+
+
 @pytest.mark.parametrize("v", [0.0, 0.1, 1, 0.25, 1e30, 2e30, float("nan"), float("inf"), True, -0.3, np.float64(0.2),
                                "0.2", Q(0.2, "")])
 def test_power_screw_dimensionless_fast_path_equals_to_si(v):

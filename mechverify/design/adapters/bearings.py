@@ -148,8 +148,9 @@ def _life(inst: BearingInstallation, loads: dict[str, Any], ctx: Any) -> Any:
     r = bc.check_bearing_life(inst.bearing, Fr, Fa, loads["speed"], required, reliability=inst.reliability,
                               duty_cycle=_cycle(inst, ctx))
     source = "component's required_life" if inst.required_life is not None else "requirements.bearing_life"
-    return dataclasses.replace(r, notes=(*r.notes, f"required life from the {source}"),
-                               details={**r.details, "a1": reliability_factor(inst.reliability)})
+    details = r.details  # figure data and the substituted line stay uncomputed until read (a study never reads them)
+    return r.replace(notes=(*r.notes, f"required life from the {source}"),
+                     details=lambda: {**details, "a1": reliability_factor(inst.reliability)})
 
 
 #: The checks of every rolling-bearing type (ball_bearing, rolling_bearing): life, modified life, static safety, speed.
