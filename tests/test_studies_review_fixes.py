@@ -312,3 +312,35 @@ def test_a_friction_written_into_the_file_is_varied(tmp_path):
     res = Study(design, vary=["components.lift.transmission[0].mu=0.1:0.3:3"]).run("serial")
     fu = [x["checks"]["lift.motor_peak_torque"]["fu"] for x in res.samples]
     assert fu[0] < fu[1] < fu[2]
+
+
+# ---------------------------------------------------------------- findings 16, 26: size's margin and options
+
+
+def _sized(today: float, today_fu: float, limit: float):
+    from mechverify.studies import SizingResult
+
+    return SizingResult("p", "mm", "governing", today, today_fu, limit, "c", (limit,), (1.0, 10.0), 9)
+
+
+def test_size_margin_is_spelt_out_by_direction_and_verdict():
+    """Finding 16: 'margin -7.3% to the limit' meant 'room to thin by 7.3 %' for a plate that passes and
+    'short by 58.3 %' for a lift that fails. The text now says which way and what it means (hand arithmetic:
+    (3.708 - 4)/4 = -7.3 %, (145.8 - 350)/350 = -58.3 %)."""
+    passes = _sized(4.0, 0.7968, 3.708).text()
+    assert "the limit is 7.3 % below today's value: it may fall by 7.3 % before u·SF reaches 1" in passes
+    fails = _sized(350.0, 2.38, 145.82).text()
+    assert "the limit is 58.3 % below today's value: it must fall by 58.3 % for u·SF to come down to 1" in fails
+    assert "rise by 25.0 %" in _sized(4.0, 0.8, 5.0).text()
+    assert _sized(4.0, 0.8, 5.0).to_dict()["margin"] == pytest.approx(0.25)  # the JSON keeps the signed number
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--vary", "parameters.lifted_load", "--bounds", "500 N:50 N"], "--bounds: expected low < high"),
+    (["--vary", "parameters.lifted_load", "--scan", "0"], "--scan: expected a positive integer"),
+    (["--vary", "parameters.lifted_load", "--until", "lift_screw.nope"], "unknown check"),
+])
+def test_size_messages_name_the_options(argv, message, capsys):
+    """Finding 26: 'bounds: give the range ...' named the Python argument; the option is --bounds."""
+    assert main(["size", str(LIFT), *argv]) == 2
+    assert message in capsys.readouterr().err

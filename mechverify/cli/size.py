@@ -45,6 +45,7 @@ def run(args: argparse.Namespace) -> int:
             raise Invalid(f"--bounds: expected LO:HI, e.g. '1 kg:100 kg', got {args.bounds!r}")
     from mechverify.cli._common import load_designs
     from mechverify.cli._console import console
+    from mechverify.errors import InputError
     from mechverify.fileio import json_text
     from mechverify.studies import SizingError, size
 
@@ -54,6 +55,11 @@ def run(args: argparse.Namespace) -> int:
     except SizingError as exc:  # no limit: a CI script still gets the scan (u·SF per point) to read
         if args.json_out and exc.data:
             write(args.json_out, json_text({**exc.data, "error": str(exc)}, indent=1) + "\n")
+        raise
+    except InputError as exc:  # name the option, not the Python argument
+        head, sep, rest = str(exc).partition(": ")
+        if sep and head in ("bounds", "scan", "until"):
+            raise type(exc)(f"--{head}: {rest}") from None
         raise
     console().print(r.text(), markup=False, highlight=False, soft_wrap=True)
     if args.json_out:

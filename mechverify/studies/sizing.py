@@ -60,12 +60,25 @@ class SizingResult:
         side = "passes" if self.today_fu <= 1 else "fails"
         lines = [f"{self.parameter}: limit {self.limit:.6g}{u} ({self.until} u·SF = 1; "
                  f"governing there: {self.governing})",
-                 f"today {self.today:.6g}{u}: u·SF = {self.today_fu:.4g} ({side}); "
-                 f"margin {self.margin:+.1%} to the limit"]
+                 f"today {self.today:.6g}{u}: u·SF = {self.today_fu:.4g} ({side}); {self.margin_text()}"]
         if len(self.limits) > 1:
             lines.append("other crossings in the range: " + ", ".join(f"{x:.6g}{u}" for x in self.limits
                                                                         if x != self.limit))
         return "\n".join(lines)
+
+    def margin_text(self) -> str:
+        """The margin in words, its sign spelt out: 'the limit is 7.3 % below today's value: it may fall by
+        7.3 % before u·SF reaches 1' (passes today) or '... it must fall by 58.3 % for u·SF to reach 1' (fails)."""
+        m = self.margin
+        if not math.isfinite(m):
+            return f"the limit is {self.limit:.6g} (today's value is zero)"
+        if m == 0:
+            return "today's value is the limit"
+        way, verb = ("above", "rise") if m > 0 else ("below", "fall")
+        pct = f"{abs(m):.1%}".replace("%", " %")
+        if self.today_fu <= 1:
+            return f"the limit is {pct} {way} today's value: it may {verb} by {pct} before u·SF reaches 1"
+        return f"the limit is {pct} {way} today's value: it must {verb} by {pct} for u·SF to come down to 1"
 
     def to_dict(self) -> dict[str, Any]:
         return {"parameter": self.parameter, "unit": self.unit, "until": self.until, "today": self.today,
