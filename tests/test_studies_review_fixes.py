@@ -344,3 +344,42 @@ def test_size_messages_name_the_options(argv, message, capsys):
     """Finding 26: 'bounds: give the range ...' named the Python argument; the option is --bounds."""
     assert main(["size", str(LIFT), *argv]) == 2
     assert message in capsys.readouterr().err
+
+
+# ---------------------------------------------------------------- finding 6: --reproduce keeps the file's comments
+
+
+def test_reproduce_rewrites_only_the_changed_values_and_keeps_the_comments(tmp_path):
+    """Finding 6: --reproduce wrote the design from its data: every comment of the source (its sources and
+    assumptions) was lost, and 'acceleration = "0.0618... m/s**2"' came in pint's spelling. Now only the
+    varied values' lines change (their comments kept, in the file's unit spelling), and the file reads back
+    as the sample's data."""
+    import tomllib
+
+    from mechverify.studies.params import apply_overrides
+
+    s = Study(LIFT, vary=["parameters.lifted_load=normal:140 N:10 N",
+                          "profiles.raise.acceleration=triangular:0.05 m/s^2:0.1 m/s^2:0.2 m/s^2"], samples=8, seed=1)
+    out = s.reproduce(5, tmp_path / "s5.toml")
+    src, new = LIFT.read_text().splitlines(), out.read_text().splitlines()
+    head = [x for x in new if x.startswith("# Sample") or x.startswith("#   ")]
+    body = new[len(head):]
+    assert len(head) == 3 and len(body) == len(src)
+    changed = [(a, b) for a, b in zip(src, body) if a != b]
+    assert [a.split("=")[0].strip() for a, _ in changed] == ["lifted_load", "acceleration"]
+    for a, b in changed:
+        assert b.split("#", 1)[1] == a.split("#", 1)[1]  # the comment is kept
+    assert " m/s^2\"" in changed[1][1] and "**" not in out.read_text()
+    assert tomllib.loads(out.read_text()) == apply_overrides(s.doc, s.result_skeleton().overrides(5))
+
+
+def test_reproduce_falls_back_to_the_whole_document_when_a_value_is_not_on_its_own_line(tmp_path):
+    """A value the source does not write on its own line (a key left to its default) is written through
+    the TOML writer; the result still reads back as the sample's data."""
+    import tomllib
+
+    s = Study(LIFT, vary=["components.screw_bearing.reliability=0.9:0.99:2"])
+    out = s.reproduce(1, tmp_path / "s1.toml")
+    data = tomllib.loads(out.read_text())
+    assert data["components"]["screw_bearing"]["reliability"] == 0.99
+    assert data["parameters"]["lifted_load"] == "350 N"

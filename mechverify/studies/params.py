@@ -200,7 +200,7 @@ class Parameter:
                              "(a number with a unit, e.g. \"35 kg\") can be varied") from None
         if not isinstance(q.magnitude, int | float) or isinstance(q.magnitude, bool):
             raise InputError(f"parameter {path!r}: its value {raw!r} is not a single number")
-        unit = _unit_text(q)
+        unit = _written_unit(raw, q) or _unit_text(q)
         return cls(path, float(q.magnitude), unit)
 
     def value(self, token: str | float | int) -> float:
@@ -279,6 +279,20 @@ def resolver(design: Any) -> Any:
             return None
         return None
     return get
+
+
+_NUMBER_THEN_UNIT = re.compile(r"^\s*[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?\s*(\S.*?)\s*$")
+
+
+def _written_unit(raw: str, q: Any) -> str:
+    """The unit as the file writes it (``m/s^2`` of ``"0.1 m/s^2"``), when it reads back as q's unit; else ''."""
+    m = _NUMBER_THEN_UNIT.match(raw)
+    if not m:
+        return ""
+    try:
+        return m.group(1) if Q(1.0, m.group(1)).units == q.units else ""
+    except Exception:  # (pint raises several types)
+        return ""
 
 
 def _unit_text(q: Any) -> str:

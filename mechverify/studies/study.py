@@ -236,10 +236,49 @@ class StudyResult:
 
         doc = rebase_files(apply_overrides(self.doc, self.overrides(i)),
                            Path(self.path).resolve().parent if self.path else Path.cwd(), Path(path).resolve().parent)
+        body = self._rewritten_source(doc, i) or dumps(doc)
         head = (f"# Sample {i} of a {self.kind.replace('_', ' ')} study of {self.design_name!r}"
                 + (f" ({self.path})" if self.path else "") + ":\n"
                 + "".join(f"#   {k} = {v!r}\n" for k, v in self.overrides(i).items()))
-        return atomic_write(Path(path), head + dumps(doc))
+        return atomic_write(Path(path), head + body)
+
+    def _rewritten_source(self, doc: dict[str, Any], i: int) -> str | None:
+        """The source design file's text with only the changed values rewritten on their lines (its comments,
+        the sources and assumptions they record, and its layout kept), when that text reads back as exactly
+        ``doc``; None otherwise (includes, a value from a template or a default, a value in an inline table)."""
+        import tomllib
+
+        from mechverify.studies.params import get_path, split_path
+        from mechverify.studies.tomlout import rewrite_values
+
+        if not self.path:
+            return None
+        try:
+            source = Path(self.path).read_text(encoding="utf-8")
+            original = tomllib.loads(source)
+        except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError):
+            return None
+        values: dict[tuple[str, ...], Any] = {}
+        for k in self.overrides(i):
+            steps = split_path(k)
+            if any(isinstance(x, int) for x in steps):
+                return None
+            values[tuple(str(x) for x in steps)] = get_path(doc, k)
+        for section in ("components", "templates"):  # file names rebased for another folder
+            for name, table in (doc.get(section) or {}).items():
+                for key in FILE_KEYS:
+                    if isinstance(table, dict) and key in table:
+                        was = ((original.get(section) or {}).get(name) or {}).get(key)
+                        if was != table[key]:
+                            values[(section, name, key)] = table[key]
+        text = rewrite_values(source, values)
+        if text is None:
+            return None
+        try:
+            same = tomllib.loads(text) == doc
+        except tomllib.TOMLDecodeError:
+            return None
+        return text if same else None
 
     def summary(self) -> str:
         """A plain-text summary: counts, the failure probabilities or the sweep table."""

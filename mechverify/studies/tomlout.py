@@ -59,3 +59,82 @@ def dumps(doc: dict[str, Any]) -> str:
 
     table(doc, ())
     return "\n".join(lines) + "\n"
+
+
+_HEADER = re.compile(r"^\s*\[(?!\[)\s*([^\]]+?)\s*\]\s*(#.*)?$")
+_ASSIGN = re.compile(r"^(\s*)([A-Za-z0-9_-]+|\"[^\"]*\")(\s*=\s*)(.*)$")
+
+
+def _split_comment(rest: str) -> tuple[str, str] | None:
+    """``value  # comment`` -> (value, '  # comment'); None when the value does not end on this line."""
+    quote = None
+    i = 0
+    while i < len(rest):
+        ch = rest[i]
+        if quote:
+            if ch == "\\" and quote == '"':
+                i += 2
+                continue
+            if ch == quote:
+                quote = None
+        elif ch in "\"'":
+            quote = ch
+        elif ch == "#":
+            j = i
+            while j > 0 and rest[j - 1] in " \t":
+                j -= 1
+            return rest[:j], rest[j:]
+        i += 1
+    return (None if quote else (rest.rstrip(), rest[len(rest.rstrip()):]))
+
+
+def _header_path(text: str) -> tuple[str, ...] | None:
+    parts = []
+    for p in text.split("."):
+        p = p.strip()
+        if _BARE.match(p):
+            parts.append(p)
+        elif len(p) >= 2 and p[0] == p[-1] == '"':
+            parts.append(json.loads(p))
+        else:
+            return None
+    return tuple(parts)
+
+
+def rewrite_values(text: str, values: dict[tuple[str, ...], Any]) -> str | None:
+    """``text`` (a design file) with the value of each key (a table path plus the key, e.g.
+    ``("parameters", "lifted_load")``) replaced on its own line, everything else (comments, layout, the
+    line's own trailing comment) kept. None when a key is not written as ``key = value`` on one line
+    of its table (a template's value, a default, an inline table, a value over several lines): the
+    caller then writes the whole document with :func:`dumps`."""
+    lines = text.splitlines(keepends=True)
+    table: tuple[str, ...] = ()
+    todo = dict(values)
+    for n, line in enumerate(lines):
+        body = line.rstrip("\r\n")
+        m = _HEADER.match(body)
+        if m:
+            path = _header_path(m.group(1))
+            if path is None:
+                return None
+            table = path
+            continue
+        m = _ASSIGN.match(body)
+        if not m:
+            continue
+        key = json.loads(m.group(2)) if m.group(2).startswith('"') else m.group(2)
+        target = (*table, key)
+        if target not in todo:
+            continue
+        split = _split_comment(m.group(4))
+        if split is None or not split[0]:
+            return None
+        new = _value(todo.pop(target))
+        comment = split[1]
+        if comment.strip():  # keep the comment's column where the new value leaves room
+            gap = len(comment) - len(comment.lstrip())
+            comment = " " * max(1, gap + len(split[0]) - len(new)) + comment.lstrip()
+        lines[n] = f"{m.group(1)}{m.group(2)}{m.group(3)}{new}{comment}" + line[len(body):]
+    if todo:
+        return None
+    return "".join(lines)
