@@ -2,7 +2,8 @@
 
 Only what design files hold: tables, arrays, strings, numbers, booleans (no dates). Tables become
 ``[a.b]`` sections; arrays and tables inside arrays are written inline. ``tomllib.loads(dumps(doc))
-== doc`` for every such document (tested).
+== doc`` for every such document (tested). :func:`rewrite_values` instead changes single values in a
+file's own text, keeping its comments and layout (``study --reproduce``).
 """
 
 from __future__ import annotations
