@@ -68,12 +68,12 @@ def print_results(rs: Any, units: dict[Any, str] | None = None) -> None:
     if plain_output():
         from mechverify.cli._table import render
 
-        title, headers, justify, rows = results_rows(rs, units)
+        title, headers, justify, rows = results_rows(rs, units, width(sys.stdout))
         lines = render(title, headers, justify, [[_TAGS.sub("", c) for c in r] for r in rows], width(sys.stdout))
         if lines is not None:
             sys.stdout.write("\n".join(lines) + "\n")
             return
-    out.print(results_table(rs, units))
+    out.print(results_table(rs, units, width(sys.stdout)))
 
 
 def print_line(markup: str) -> None:
@@ -111,8 +111,27 @@ _COLUMNS = (("verdict", "left"), ("component", "left"), ("check", "left"), ("dem
             ("capacity", "right"), ("u·SF", "right"), ("", "left"), ("SF req", "right"), ("governing case", "left"))
 
 
-def results_rows(rs: Any, units: dict[Any, str] | None = None) -> tuple[str, list[str], list[str], list[list[str]]]:
-    """Title, column headers, their justification and the rows (rich markup) of :func:`results_table`."""
+#: Below this many columns the table shows the check's name instead of its title and no u·SF bar; below
+#: NARROWER also no required SF and no governing case (an 80-column terminal: one or two lines a row, not five).
+NARROW, NARROWER = 120, 100
+
+
+def results_rows(rs: Any, units: dict[Any, str] | None = None,
+                 columns: int | None = None) -> tuple[str, list[str], list[str], list[list[str]]]:
+    """Title, column headers, their justification and the rows (rich markup) of :func:`results_table`;
+    ``columns``: the console's width (None: every column, the titles in full)."""
+    title, headers, justify, rows = _all_rows(rs, units)
+    if columns is None or columns >= NARROW:
+        return title, headers, justify, rows
+    checks = [r.check for r in rs.sorted()]
+    rows = [[*row[:2], name, *row[3:]] for row, name in zip(rows, checks)]
+    drop = {""} | ({"SF req", "governing case"} if columns < NARROWER else set())
+    keep = [i for i, h in enumerate(headers) if h not in drop]
+    return (title, [headers[i] for i in keep], [justify[i] for i in keep],
+            [[row[i] for i in keep] for row in rows])
+
+
+def _all_rows(rs: Any, units: dict[Any, str] | None = None) -> tuple[str, list[str], list[str], list[list[str]]]:
     from mechverify.reports.numbers import number, quantity_in
 
     rows = []
@@ -128,12 +147,13 @@ def results_rows(rs: Any, units: dict[Any, str] | None = None) -> tuple[str, lis
     return rs.name, [c for c, _ in _COLUMNS], [j for _, j in _COLUMNS], rows
 
 
-def results_table(rs: Any, units: dict[Any, str] | None = None) -> Table:
+def results_table(rs: Any, units: dict[Any, str] | None = None, columns: int | None = None) -> Table:
     """The table of one :class:`~mechverify.checks.ResultSet`, worst first; ``units``: the design file's own units
-    by kind (:func:`mechverify.reports.numbers.design_units`), shown beside the report's."""
+    by kind (:func:`mechverify.reports.numbers.design_units`), shown beside the report's; ``columns``: the
+    console's width (a narrow one gets fewer columns, :func:`results_rows`)."""
     from rich.table import Table
 
-    title, headers, justify, rows = results_rows(rs, units)
+    title, headers, justify, rows = results_rows(rs, units, columns)
     t = Table(title=title, title_justify="left", show_lines=False)
     for col, just in zip(headers, justify):
         t.add_column(col, justify=just)
