@@ -114,6 +114,9 @@ def buckling(model: Any, n_modes: int = 1, method: str = "auto", memory: float |
     Kf = K[free][:, free].tocsc()
     fac = factorize(Kf, method, what="the stiffness matrix")  # CHOLMOD when installed, else SuperLU
     f = model.load_vector()
+    if not np.any(f[free]):  # every load on held nodes: nothing is stressed (ARPACK would fail on K_G = 0)
+        model.loads_on_held()  # names them (a ModelError)
+        raise ModelError("buckling: the loads reach no free node, so nothing is stressed and nothing can buckle")
     u = np.zeros(K.shape[0])
     u[free] = fac.solve(f[free])
     G = geometric_stiffness(model, u).tocsr()

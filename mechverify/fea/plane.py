@@ -51,7 +51,7 @@ from mechverify.fea.loads import (
 from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
-from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
+from mechverify.fea.solid import _as_material, _equilibrium, held_load_names, held_load_warnings, nodal_reactions
 from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import QuantityLike, from_si, to_si
@@ -316,6 +316,12 @@ class PlaneModel:
             return getattr(self.mesh, "measures", {}).get(region.name)
         return region.measure(2)
 
+    def loads_on_held(self, held: np.ndarray | None = None) -> list[str]:
+        """The loads that fall wholly on held DOFs (:func:`mechverify.fea.solid.held_load_names`; a
+        :class:`ModelError` when that is every load)."""
+        held = self.held_dofs() if held is None else held
+        return held_load_names(self.loads, [f for _, f in self._load_parts()], held)
+
     def held_dofs(self) -> np.ndarray:
         """Indices of the DOFs the supports hold at zero."""
         if not self.supports:
@@ -351,8 +357,10 @@ class PlaneModel:
                 blocks = asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness_si)
                 _, area = asm.barycentric_gradients(m.p, m.t)
             K = asm.assemble_blocks(blocks, pattern, 2)
-            f = self.load_vector(area)
+            parts = [fi for _, fi in self._load_parts(area)]
+            f = np.sum(parts, axis=0) if parts else np.zeros(2 * self.basis.N)
             held = self.held_dofs()
+            on_held = held_load_names(self.loads, parts, held)
             timings["assembly"] = time.perf_counter() - t0
             u, info = solve(K, f, held, self.nodes, method="direct", progress=step)
             timings["solve"] = info.seconds
@@ -380,7 +388,8 @@ class PlaneModel:
             kind=f"plane {self.plane}", points=pts, u=uu, sigma=sigma, material=mat,
             reaction=np.r_[reaction, 0.0], applied=np.r_[applied, 0.0],
             cells=[("triangle6", b.element_dofs.T.copy())], surface=m.t.T.copy(), info=info, timings=timings,
-            regions=reports, warnings=tuple(r.warning for r in reports if r.warning), recovery=recovery,
+            regions=reports, warnings=(*held_load_warnings(on_held), *(r.warning for r in reports if r.warning)),
+            recovery=recovery,
             elements=b.element_dofs.T.copy(),
             ip_points=np.concatenate([rec.ip_points, np.zeros(rec.ip_points.shape[:2] + (1,))], axis=2),
             ip_sigma=_plane_tensors(rec.ip_values, nu if self.plane == "strain" else 0.0),

@@ -28,6 +28,7 @@ References
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -339,6 +340,14 @@ class SolidModel:
         """Indices of the DOFs the supports hold at zero."""
         return self._held()
 
+    def loads_on_held(self, held: np.ndarray | None = None) -> list[str]:
+        """The loads whose nodal forces all fall on held DOFs: they go straight into the supports and load
+        nothing (a load on a supported face, or supports that catch the loaded face). Raises
+        :class:`ModelError` when that is every load: the model would report zero stress and deflection."""
+        held = self._held() if held is None else held
+        _, measure = asm.barycentric_gradients(self.mesh.mesh.p, self.mesh.mesh.t)
+        return held_load_names(self.loads, [f for _, f in self._load_parts(measure)], held)
+
     def _held(self) -> np.ndarray:
         if not self.supports:
             raise ModelError("the model has no supports; add Fixed(...) or Restraint(...) on a region")
@@ -383,8 +392,10 @@ class SolidModel:
                 _, measure = asm.barycentric_gradients(m.p, m.t)
             if factorization is None:
                 K = asm.assemble_blocks(blocks, pattern, 3)
-            f = self._load_vector(measure)
+            parts = [fi for _, fi in self._load_parts(measure)] if self.loads else []
+            f = np.sum(parts, axis=0) if parts else np.zeros(self.mesh.n_dofs)
             held = self._held()
+            on_held = held_load_names(self.loads, parts, held)
             timings["assembly"] = time.perf_counter() - t0
             if factorization is not None:
                 u, info = factorization.solve(f, held)
@@ -407,7 +418,7 @@ class SolidModel:
             kind="solid", points=self.nodes.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
             surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
-            warnings=tuple(r.warning for r in reports if r.warning), recovery=recovery,
+            warnings=(*held_load_warnings(on_held), *(r.warning for r in reports if r.warning)), recovery=recovery,
             elements=b.element_dofs.T.copy(), ip_points=rec.ip_points, ip_sigma=_tensors(rec.ip_values),
             element_error=rec.element_error, error_estimate=rec.error_estimate)
 
@@ -437,6 +448,32 @@ def _tensors(c: np.ndarray) -> np.ndarray:
     out[..., 1, 2] = out[..., 2, 1] = c[..., 4]
     out[..., 0, 2] = out[..., 2, 0] = c[..., 5]
     return out
+
+
+def held_load_names(loads: Sequence[Any], parts: Sequence[np.ndarray], held: np.ndarray) -> list[str]:
+    """Names of the ``loads`` whose nodal force vectors ``parts`` lie wholly on the ``held`` DOFs (solid and
+    plane models); a :class:`ModelError` when every load does (nothing would be loaded: zero stress, a silent
+    PASS)."""
+    free = np.ones(parts[0].size if parts else 0, bool)
+    free[held] = False
+    out = []
+    for i, (ld, fi) in enumerate(zip(loads, parts, strict=True)):
+        total = float(np.abs(fi).sum())
+        if total > 0 and float(np.abs(fi[free]).sum()) <= 1e-12 * total:
+            region = getattr(ld, "region", None)
+            out.append(f"load {i} ({type(ld).__name__.lower()}"
+                       + (f" on {region.describe()})" if region is not None else ")"))
+    if out and len(out) == len(loads):
+        raise ModelError("every load acts only on held nodes (" + "; ".join(out) + "): it goes straight into the "
+                         "supports and the model carries nothing; check that the loaded face is not also a "
+                         "supported face and that no support region catches it")
+    return out
+
+
+def held_load_warnings(names: Sequence[str]) -> tuple[str, ...]:
+    """The result warning for each load of :func:`held_load_names`."""
+    return tuple(f"{name} acts only on held nodes: all of it goes straight into the supports and it loads nothing "
+                 "(a load on a supported face, or a support region that catches the loaded face)" for name in names)
 
 
 def nodal_reactions(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray) -> np.ndarray:
