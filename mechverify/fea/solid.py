@@ -336,6 +336,17 @@ class SolidModel:
         _, measure = asm.barycentric_gradients(self.mesh.mesh.p, self.mesh.mesh.t)
         return self._load_vector(measure)
 
+    def support_near(self, node: int) -> int | None:
+        """Index of the first support that holds ``node`` or a node of an element containing it (a peak there is
+        usually the stress singularity of a rigid support: it grows as the mesh is refined), else None."""
+        elems = np.asarray(self.mesh.basis.element_dofs)
+        near = np.unique(elems[:, np.any(elems == int(node), axis=0)])
+        near = np.union1d(near, [int(node)])
+        for k, s in enumerate(self.supports):
+            if np.intersect1d(self._support_nodes(s.region, np.empty(0)), near).size:
+                return k
+        return None
+
     def held_dofs(self) -> np.ndarray:
         """Indices of the DOFs the supports hold at zero."""
         return self._held()
