@@ -167,19 +167,131 @@ def nearest_feature(model: pl.PlateModel, xy: np.ndarray) -> str:
     return what if d <= tol else "inside the plate, away from holes and edges"
 
 
-def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
-    xy = res.points[node, :2]
+def singular_features(model: pl.PlateModel) -> list[tuple[str, np.ndarray, float]]:
+    """Where the Kirchhoff model's stress is singular (it grows or wanders without converging as the mesh is
+    refined): point loads and point supports (a concentrated force on a plate gives an infinite moment, Timoshenko
+    & Woinowsky-Krieger sec. 19) and the edge of a washer disc, which the model holds rigidly over the mesh edges
+    inside the washer circle: that jagged edge of a rigid support has re-entrant corners, singular in plate bending
+    (Williams 1952). Each is ``(description, centre [m], radius [m])``, radius 0 for a point."""
+    out: list[tuple[str, np.ndarray, float]] = []
+    for ld in model.loads:
+        if isinstance(ld, pl.PlatePointLoad):
+            out.append((f"point load at {_mm(ld.point)}", np.asarray(ld.point, dtype=float), 0.0))
+    for s in model.supports:
+        if isinstance(s, pl.PointSupport):
+            out.append((f"point support at {_mm(s.point)}", np.asarray(s.point, dtype=float), 0.0))
+        elif isinstance(s, pl.HoleSupport) and s.washer_diameter:
+            for hole in s.resolve(model.plate):
+                out.append((f"edge of the washer (d = {s.washer_diameter * 1e3:.4g} mm) of hole {hole.name!r}",
+                            np.asarray(hole.center, dtype=float), s.washer_diameter / 2))
+    return out
+
+
+def local_size(res: FieldResults, node: int) -> float:
+    """The mean length of the element edges at ``node`` [m] (the mesh's median edge where it has none)."""
+    tri = np.asarray(res.surface)
     pts = res.points[:, :2]
-    h = float(np.median(np.linalg.norm(pts[res.surface[:, 1]] - pts[res.surface[:, 0]], axis=1)))
-    near = [f"point load at {_mm(ld.point)}" for ld in model.loads if isinstance(ld, pl.PlatePointLoad)
-            and np.hypot(*(xy - np.asarray(ld.point))) <= 2.5 * h]
-    near += [f"point support at {_mm(s.point)}" for s in model.supports if isinstance(s, pl.PointSupport)
-             and np.hypot(*(xy - np.asarray(s.point))) <= 2.5 * h]
-    if not near:
+    rows = tri[np.any(tri == node, axis=1)]
+    if rows.size == 0:
+        rows = tri
+    edges = np.linalg.norm(pts[rows] - pts[np.roll(rows, 1, axis=1)], axis=2)
+    return float(np.mean(edges))
+
+
+def _distance(xy: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:
+    """Distance [m] of points ``xy[..., 2]`` from a singular feature (0 inside a washer disc)."""
+    return np.maximum(np.linalg.norm(xy - centre, axis=-1) - radius, 0.0)
+
+
+def singular_at(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, float] | None:
+    """The singular feature (:func:`singular_features`) within 2.5 local element sizes of ``node``, with that
+    size [m]; None when the node lies away from all of them."""
+    h = local_size(res, node)
+    xy = res.points[node, :2]
+    near = [(float(_distance(xy, c, r)), what) for what, c, r in singular_features(model)]
+    near = [x for x in near if x[0] <= 2.5 * h]
+    return (min(near)[1], h) if near else None
+
+
+def peak_away(model: pl.PlateModel, res: FieldResults, distance: float) -> tuple[float, int] | None:
+    """The largest von Mises stress [Pa] and its node among the nodes farther than ``distance`` [m] from every
+    singular feature (:func:`singular_features`); None when there is no such node."""
+    xy = res.points[:, :2]
+    ok = np.ones(len(xy), dtype=bool)
+    for _, c, r in singular_features(model):
+        ok &= _distance(xy, c, r) > distance
+    if not ok.any():
+        return None
+    vm = np.asarray(res.von_mises.m_as("Pa"))
+    k = int(np.flatnonzero(ok)[np.argmax(vm[ok])])
+    return float(vm[k]), k
+
+
+def away_distance(model: pl.PlateModel, h: float) -> float:
+    """How far from a singular feature the stress is judged [m]: one plate thickness (within about a thickness of
+    a support or load, plate theory itself does not hold) and at least two local element sizes ``h``."""
+    return max(model.plate.thickness, 2.0 * h)
+
+
+def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
+    hit = singular_at(model, res, node)
+    if hit is None:
         return ()
-    return (f"the largest stress is at a {near[0]}: plate theory makes the stress under a concentrated force or "
-            "support infinite, so this value depends on the mesh; spread the load over its real footprint "
-            "(patch_loads) or support on a hole rim or edge",)
+    what, h = hit
+    if not what.startswith("edge of the washer"):
+        return (f"the largest stress is at a {what}: plate theory makes the stress under a concentrated force or "
+                "support infinite, so this value depends on the mesh; spread the load over its real footprint "
+                "(patch_loads) or support on a hole rim or edge",)
+    d = away_distance(model, h)
+    away = peak_away(model, res, d)
+    there = "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from every washer edge: "
+                                     f"{away[0] / 1e6:.4g} MPa at {_mm(res.points[away[1], :2])})")
+    return (f"the largest stress is at the {what}: the model holds the plate rigidly over the washer disc, and the "
+            "edge of that rigid clamp is a stress singularity of the Kirchhoff plate model, so this peak does not "
+            "converge - it grows and wanders as the mesh is refined, and refining will not settle it; judge the "
+            f"stress at a distance of about one plate thickness{there}, or model the clamp (pinned hole rims with "
+            "the washer's clamping spread as a patch load)",)
+
+
+def plate_convergence(model: pl.PlateModel, coarse: FieldResults, fine: FieldResults, ratio: float,
+                      tolerance: float, sizes: tuple[float, float]) -> tuple[FieldResults, list[str], list[str]]:
+    """Two-mesh check of the peak von Mises stress (:func:`mechverify.fea.study.two_mesh_check`, order 2: the
+    Morley peak stresses converge as h^2, measured on Roark's Table 11.4 squares): ``coarse`` on the design's mesh
+    (element sizes ``sizes`` = (mesh_size, hole_mesh_size) [m]), ``fine`` on one ``ratio`` times finer. Returns
+    the result with the larger peak (the demand), the notes and the warnings. A peak at a singular feature
+    (:func:`singular_features`) is named as such instead of asking for a finer mesh that would not settle it."""
+    from mechverify.fea.study import two_mesh_check
+
+    a, b = (float(r.max_von_mises.value.m_as("MPa")) for r in (coarse, fine))
+    chk = two_mesh_check(a, b, ratio, 2.0, tolerance)
+    gov = fine if b >= a else coarse
+    notes = [f"two-mesh check: peak von Mises {a:.4g} MPa on the design's mesh, {b:.4g} MPa with elements "
+             f"{ratio:g}x smaller (change {100 * chk.change:.3g} %, Richardson error estimate of the finer mesh "
+             f"{100 * chk.estimated_error:.3g} %); the larger is the demand"]
+    hits = [singular_at(model, r, int(r.max_von_mises.node)) for r in (coarse, fine)]
+    hit = next((x for x in hits if x is not None), None)
+    warnings: list[str] = []
+    if hit is not None:
+        d = away_distance(model, max(x[1] for x in hits if x is not None))
+        pa, pb = (peak_away(model, r, d) for r in (coarse, fine))
+        if pa is not None and pb is not None:
+            away = two_mesh_check(pa[0], pb[0], ratio, 2.0, tolerance)
+            notes.append(f"the peak is at the {hit[0]} (singular); {d * 1e3:.3g} mm or more from every singular "
+                         f"point the largest stress is {pa[0] / 1e6:.4g} MPa and {pb[0] / 1e6:.4g} MPa on the two "
+                         f"meshes (change {100 * away.change:.3g} %)")
+    if chk.change <= tolerance:
+        return gov, notes, warnings
+    head = (f"mesh convergence: the peak von Mises stress changed by {100 * chk.change:.3g} % between the design's "
+            f"mesh and one {ratio:g}x finer (tolerance {100 * tolerance:.3g} %)")
+    if hit is not None:
+        warnings.append(f"{head}; it sits at the {hit[0]}, a singularity of the plate model: a finer mesh will not "
+                        "converge it (see the warning on the singular point)")
+    else:
+        k = chk.refinement_needed
+        warnings.append(f"{head}; estimated error of the finer mesh {100 * chk.estimated_error:.3g} %: for a change "
+                        f"within the tolerance use about mesh_size = {sizes[0] / k * 1e3:.3g} mm and hole_mesh_size = "
+                        f"{sizes[1] / k * 1e3:.3g} mm ({k:.2g}x smaller than the design's)")
+    return gov, notes, warnings
 
 
 def describe_support(s: Any) -> str:
@@ -205,10 +317,11 @@ def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
                 "(Kirchhoff plate FEA, Morley triangles) against the yield strength; Timoshenko & "
                 "Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."))
 def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component: str = "",
-                           required_sf: float = 1.0, load_case: str = "", notes: Sequence[str] = ()) -> CheckResult:
+                           required_sf: float = 1.0, load_case: str = "", notes: Sequence[str] = (),
+                           warnings: Sequence[str] = ()) -> CheckResult:
     """The largest surface von Mises stress of a solved plate model (:func:`mechverify.fea.plate.solve_plate`)
     against the yield strength; the governing location, its moments and stresses are in the notes.
-    ``notes`` are added (e.g. the mesh used)."""
+    ``notes`` and ``warnings`` are added (e.g. the mesh used, a two-mesh check: :func:`plate_convergence`)."""
     plate = model.plate
     mx = res.max_von_mises
     sy = plate.material.require("yield_strength").to("MPa")
@@ -232,7 +345,8 @@ def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component
                 "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": plate.material.require("E").to("GPa"),
                 "nu": plate.material.require("nu")},
         substituted=_vm_substituted(s, mx.value),
-        notes=tuple(all_notes), warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings),
+        notes=tuple(all_notes),
+        warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings, *warnings),
         load_case=load_case, details={"location": Q(xy, "m").to("mm"), "node": node})
 
 
@@ -266,4 +380,5 @@ def check_plate_deflection_fea(model: pl.PlateModel, res: FieldResults, limit: A
 
 
 __all__ = ["check_plate_stress_roark", "check_plate_deflection_roark", "check_plate_stress_fea",
-           "check_plate_deflection_fea", "nearest_feature", "describe_support", "FEA_SOURCE", "VM_SOURCE"]
+           "check_plate_deflection_fea", "nearest_feature", "describe_support", "singular_features", "singular_at",
+           "peak_away", "plate_convergence", "FEA_SOURCE", "VM_SOURCE"]

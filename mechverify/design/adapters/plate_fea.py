@@ -59,6 +59,7 @@ class PlateFEA:
     span: Any
     unit: str = "mm"
     modal: mp.ModalSettings | None = None
+    convergence: float | None = None  # the two-mesh check's tolerance when convergence_check is on
     solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
 
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
@@ -138,8 +139,11 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
     for k in ("mesh_size", "hole_mesh_size", "span"):
         if k in p and not p[k].magnitude > 0:
             raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
+    tol = float(p.get("convergence_tolerance", 0.05))
+    if not 0 < tol < 1:
+        raise InputError(f"convergence_tolerance: a fraction between 0 and 1 (0.05 = 5 %), got {tol:g}")
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
-                    unit, mp.modal_settings(p))
+                    unit, mp.modal_settings(p), tol if p.get("convergence_check") else None)
 
 
 # ------------------------------------------------------------------------------------------------------ checks
@@ -151,9 +155,23 @@ def _mm(xy: Any) -> str:
     return f"({xy[0] * 1e3:.4g}, {xy[1] * 1e3:.4g}) mm"
 
 
+#: The two-mesh check's second mesh has elements this many times smaller (as solid_fea's).
+REFINE = 1.5
+
+
 def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
-    return pc.check_plate_stress_fea(model, res, component=c.name, notes=_mesh_notes(c, res))
+    notes, warns = _mesh_notes(c, res), []
+    if c.convergence is not None:  # convergence_check: the peak again on a mesh REFINE times finer
+        from mechverify.fea.plate import solve_plate
+
+        x0, y0, x1, y1 = c.plate.region.bounds
+        h = min(x1 - x0, y1 - y0) / 16 if c.mesh_size is None else c.mesh_size.m_as("m")
+        hh = h / 3 if c.hole_mesh_size is None else c.hole_mesh_size.m_as("m")
+        fine = solve_plate(model, Q(h / REFINE, "m"), Q(hh / REFINE, "m"))
+        res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, (h, hh))
+        notes += more
+    return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns)
 
 
 def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
@@ -242,6 +260,10 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
         Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
         *mp.MODAL_FIELDS,
+        Field("convergence_check", "bool", "also solve at mesh_size / 1.5 and hole_mesh_size / 1.5 and WARN when the "
+                                           "peak stress changes more than convergence_tolerance (with the mesh sizes "
+                                           "needed, or naming a singular peak); the larger peak is the demand"),
+        Field("convergence_tolerance", "float", "tolerance of the two-mesh check", default=0.05),
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
