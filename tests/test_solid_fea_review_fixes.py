@@ -61,3 +61,39 @@ def test_convergence_warning_names_the_mesh_size_needed():
     w = convergence_warning(chk, Q(6, "mm"), [{"named": "xmin"}], None)
     assert "a mesh_size of about 4.45 mm (now 6 mm)" in w
     assert convergence_warning(two_mesh_check(100.0, 101.0, 1.5, 2.0, 0.05), Q(6, "mm"), [], None) is None
+
+
+# ------------------------------------------------------------------------------------------- finding 8
+def test_a_pull_case_passes_buckling_and_the_push_case_governs(tmp_path):
+    """A steel bar 100 x 10 x 10 mm fixed at x = 0 with a push case (-1000 N x) and a pull case (+1000 N x): the
+    design used to be an error ('the loads cause no buckling') with no results at all. Now the pull case passes
+    with a note and the push case governs: Euler fixed-free P_cr = π²EI/(4L²) = π²·200e9·(1e-2)^4/12/(4·0.1²) =
+    41.1 kN, a factor of 41.1 (hand calculation, Timoshenko & Gere sec. 2.1; the FEA gives 41.09)."""
+    tail = '[load_cases.pull.bar]\nforces = [{ named = "xmax", force = "1000, 0, 0" }]\n'
+    d = _design(tmp_path, box="100, 10, 10", force="-1000, 0, 0", tail=tail,
+                extra="checks.solid_stress = false\nchecks.solid_deflection = false\nchecks.buckling_load_factor = true")
+    res = d.verify()
+    rows = [r for r in res if r.check == "buckling_load_factor"]
+    gov = min(rows, key=lambda r: r.capacity.m)
+    euler = 3.141592653589793**2 * 200e9 * (1e-2) ** 4 / 12 / (4 * 0.1**2) / 1000
+    assert gov.load_case == "tip" and gov.capacity.m == pytest.approx(euler, rel=0.02)
+    assert gov.verdict.name == "PASS" and any("others: pull" in n for n in gov.notes)
+
+
+def test_tension_only_buckling_is_fast_and_bounded():
+    """The pull alone: a NoBucklingFactorError with a finite bound above the reversed load's factor (41.1), found
+    by the largest-magnitude iteration (it took 4 s CPU on this 20 x 2 x 2 mesh through the 'LA' iteration)."""
+    import time
+
+    from mechverify.fea import buckling, mesh, solid
+    from mechverify.fea.loads import Fixed, Force
+    from mechverify.fea.regions import Named
+
+    m = mesh.box(("100 mm", "10 mm", "10 mm"), (20, 2, 2))
+    col = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("xmin")),),
+                           loads=(Force(Named("xmax"), ("1000 N", "0 N", "0 N")),))
+    t = time.process_time()
+    with pytest.raises(buckling.NoBucklingFactorError, match=r"reversed loads would buckle it at 41\.\d") as e:
+        buckling.buckling(col, 1)
+    assert e.value.bound > 41.1
+    assert time.process_time() - t < 2.0

@@ -175,6 +175,22 @@ def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None =
         warnings=tuple(warnings), load_case=load_case, substituted=sub, details=details)
 
 
+def no_buckling_result(bound: float, reason: str, *, component: str = "", required_sf: float = 1.0,
+                      load_case: str = "") -> CheckResult:
+    """``buckling_load_factor`` of a load case whose loads have no positive buckling factor (no compression that
+    can destabilise the model): demand 1, capacity ``bound`` (every positive factor, if any, exceeds it; inf when
+    there is none), and ``reason`` as a note. The envelope over the load cases is governed by the others."""
+    cap = float(bound)
+    shown = f"{cap:.4g}" if np.isfinite(cap) else r"\infty"
+    return CheckResult(
+        check="buckling_load_factor", component=component, demand=Q(1.0, ""), capacity=Q(cap, ""),
+        required_sf=required_sf, title="Buckling load factor (FEA)", formula=r"\lambda_{cr} \ge SF",
+        source=BUCKLE_SOURCE, inputs={"lambda_cr": cap},
+        notes=("no compression that can buckle the model in this load case: " + reason,
+               "capacity: the factor every positive buckling factor would exceed"),
+        load_case=load_case, substituted=rf"\lambda_{{cr}} > {shown}")
+
+
 @check("buckling_load_factor", title="Buckling load factor (FEA)", sf_kind="buckling", source=BUCKLE_SOURCE,
        explain=("Lowest linear (eigenvalue) buckling load factor of the FEA model under its loads, the geometric "
                 "stiffness from the static stress state, against the required buckling safety factor. Linear "

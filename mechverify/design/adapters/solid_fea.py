@@ -191,11 +191,17 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
 
 
 def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
-    from mechverify.fea.buckling import buckling
+    """buckling_load_factor of one load case; a case without compression (a pull) cannot buckle: its result passes
+    with the bound every positive factor would exceed as capacity and a note, so the envelope is governed by the
+    compressive cases (it made the whole design an error, review finding 8)."""
+    from mechverify.fea.buckling import NoBucklingFactorError, buckling
 
     model = c.model(_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
     with c.regions():
-        return fc.check_buckling_load_factor(buckling(model, 1), component=c.name)
+        try:
+            return fc.check_buckling_load_factor(buckling(model, 1), component=c.name)
+        except NoBucklingFactorError as exc:
+            return fc.no_buckling_result(exc.bound, str(exc), component=c.name)
 
 
 SOLID_FEA = REGISTRY.register(ComponentType(
