@@ -143,8 +143,9 @@ def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None =
         raise InputError("natural_frequency: the modal results hold no elastic mode; compute more modes")
     notes = ["frequencies " + ", ".join(f"{x:.4g}" for x in f) + " Hz",
              f"{res.rigid_body_modes} rigid-body modes (free body)" if res.rigid_body_modes else "",
-             f"effective mass of the modes computed: {np.round(100 * res.effective_mass_fraction().sum(axis=0), 1)} "
-             "% of the total (x, y, z)"]
+             "effective mass of the modes computed: " + ", ".join(
+                 f"{100 * float(m):.3g} % along {ax}" for ax, m in zip("xyz", res.effective_mass_fraction().sum(0)))
+             + " of the total"]
     warnings: list[str] = []
     if minimum is not None:
         fmin = to_si(minimum, "frequency", "minimum")
@@ -171,7 +172,8 @@ def check_natural_frequency(res: ModalResults, *, minimum: QuantityLike | None =
     return CheckResult(
         check="natural_frequency", component=component, demand=Q(demand, "Hz"), capacity=Q(capacity, "Hz"),
         required_sf=required_sf, title="Natural frequency", formula=formula, source=MODAL_SOURCE,
-        inputs={"margin": margin}, notes=tuple(n for n in notes if n) + (f"governing mode {mode}",),
+        inputs={"margin": margin} if band is not None else {"f_req": Q(demand, "Hz")},  # the margin: bands only
+        notes=tuple(n for n in notes if n) + (f"governing mode {mode}",),
         warnings=tuple(warnings), load_case=load_case, substituted=sub, details=details)
 
 

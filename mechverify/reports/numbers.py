@@ -43,6 +43,7 @@ _KINDS: list[tuple[str, str, str, bool, int]] = [
     ("pv", "MPa*m/s", "MPa·m/s", False, 3),  # plain-bearing and nut pv rating
 ]
 
+_FREQUENCY = next(k for k in _KINDS if k[0] == "frequency")
 _PREFIX = {-12: "p", -9: "n", -6: "µ", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -130,11 +131,15 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     kind = _dims().get(q.dimensionality)
     if kind is None:  # an uncommon kind (pv, N/mm², ...): in the units the check gave it
         return f"{number(float(q.magnitude), digits or 3)} {unit_symbol(q.units)}"
+    if kind[0] == "speed" and "hertz" in q.units._units:  # a frequency the check gave in Hz (natural frequencies,
+        kind = _FREQUENCY  # excitation): Hz, as structures are read; rpm stays for speeds and critical speeds
     name, base, symbol, prefixable, d = kind
     d = digits or d
     m = float(q.m_as(base))
     if name == "length":
         mm = m * 1e3
+        if 0 < abs(mm) < 1e-2:  # a few µm: 0.74 µm, not 740×10⁻⁶ mm
+            return f"{number(mm * 1e3, d)} µm"
         if abs(mm) < 1e4 or not math.isfinite(mm):
             return f"{number(mm, d)} mm"
         if abs(m) >= 1e4:  # travel lives, rating distances: 50 km, not 50000 m or 5.00×10⁶ m

@@ -134,7 +134,8 @@ OVERRIDES.update({
     ("workspace_payload", "motor_torque"): ("T_m", "torque the joint's motor provides"),
     # FEA, motors
     ("buckling_load_factor", "lambda_cr"): ("λ_cr", "lowest buckling load factor"),
-    ("natural_frequency", "margin"): ("", "required margin above the excitation frequency"),
+    ("natural_frequency", "margin"): ("", "separation required from the excitation band (0.15 = 15 %)"),
+    ("natural_frequency", "f_req"): ("f_req", "required lowest natural frequency"),
     ("motor_peak_torque", "peak torque"): ("T_peak", "largest torque of the cycle at the motor"),
     ("motor_peak_torque", "peak speed"): ("n_peak", "speed at the peak torque"),
     ("motor_rms_torque", "cycle time"): ("t_cycle", "duration of the duty cycle"),

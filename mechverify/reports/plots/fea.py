@@ -53,7 +53,8 @@ def _mode_figure(r: CheckResult, label: str) -> Any:
     ax.set_xlabel(f"{names[i]} [mm]")
     ax.set_ylabel(f"{names[j]} [mm]")
     ax.set_aspect("equal", adjustable="datalim")
-    ax.legend(loc="best", fontsize=7)
+    # above the axes: inside them "best" still sat on the model's points (a mesh fills the whole view)
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=2, fontsize=7, frameon=False, borderaxespad=0.0)
     return fig
 
 
