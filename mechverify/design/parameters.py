@@ -289,7 +289,26 @@ def substitute(v: Any, path: str, ctx: Mapping[str, Any], skip: tuple[str, ...] 
             val = e.evaluate(params)
             ctx["trace"].add(path, e.source, val, tuple(sorted(e.names)))
             return format_value(val)
+    elif isinstance(v, str) and "," in v:  # a vector "fx, fy, fz" whose components use parameters ("0, 0, -P")
+        parts = _top_level_split(v)
+        exprs = [parse(x) if is_expression(x) else None for x in parts]
+        if any(exprs) and all(e is None or e.names <= set(params) for e in exprs):
+            vals = [x.strip() if e is None else format_value(e.evaluate(params)) for x, e in zip(parts, exprs)]
+            names = tuple(sorted(set().union(*(e.names for e in exprs if e is not None))))
+            ctx["trace"].add(path, v, ", ".join(vals), names)
+            return ", ".join(vals)
     return v
+
+
+def _top_level_split(text: str) -> list[str]:
+    """``text`` split at the commas outside brackets (``"0, max(P, Q), 0"`` -> three parts)."""
+    parts, depth, start = [], 0, 0
+    for i, ch in enumerate(text):
+        depth += (ch in "([") - (ch in ")]")
+        if ch == "," and depth == 0:
+            parts.append(text[start:i])
+            start = i + 1
+    return [*parts, text[start:]]
 
 
 # ---------------------------------------------------------------------------------- per-case connections

@@ -12,7 +12,11 @@ from mechverify.errors import InputError, suggest
 from mechverify.units import Q, as_quantity
 
 
-def _num(s: str, unit: str, dim: str, path: str) -> float:
+def _num(s: Any, unit: str, dim: str, path: str) -> float:
+    if isinstance(s, (int, float)) and not isinstance(s, bool):
+        return float(Q(float(s), unit).to_base_units().m)
+    if not isinstance(s, str):  # a quantity (a parameter resolved in a list)
+        return float(as_quantity(s, dim, path).to_base_units().m)
     s = s.strip()
     try:
         return float(Q(float(s), unit).to_base_units().m)
@@ -20,11 +24,25 @@ def _num(s: str, unit: str, dim: str, path: str) -> float:
         return float(as_quantity(s, dim, path).to_base_units().m)
 
 
+def _shown(x: Any) -> str:
+    """A component as the user reads it: ``-50 N``, not pint's ``-50 newton`` or its repr."""
+    try:
+        q = x if hasattr(x, "units") else Q(x) if isinstance(x, str) else None
+    except Exception:  # not a quantity: shown as written
+        q = None
+    return f"{q:~P}" if q is not None and not q.dimensionless else str(x)
+
+
 def _vec(v: Any, unit: str, dim: str, path: str) -> tuple[float, float, float]:
-    parts = v.split(",") if isinstance(v, str) else []
+    """Three components, as ``"x, y, z"`` or a list ``[x, y, z]`` (numbers in ``unit``, quantities, or
+    parameters: ``"0, 0, -P"``, ``["0 N", "0 N", "-P"]``)."""
+    parts = v.split(",") if isinstance(v, str) else list(v) if isinstance(v, list) else []
     if len(parts) != 3:
-        raise InputError(f"{path}: expected three components \"x, y, z\" (numbers in {unit} or quantities), got {v!r}")
-    return tuple(_num(p, unit, dim, f"{path}") for p in parts)  # type: ignore[return-value]
+        shown = ", ".join(_shown(x) for x in v) if isinstance(v, list) else v
+        raise InputError(f"{path}: expected three components \"x, y, z\" or [x, y, z] (numbers in {unit} or "
+                         f"quantities), got {shown!r}")
+    return tuple(_num(p, unit, dim, f"{path}[{i}]" if isinstance(v, list) else path)  # type: ignore[return-value]
+                 for i, p in enumerate(parts))
 
 
 def _region(t: Any, unit: str, path: str) -> Any:
