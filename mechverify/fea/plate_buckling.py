@@ -224,6 +224,15 @@ def geometric_stiffness(basis: Any, field: np.ndarray) -> sp.csr_matrix:
     return asm(kg, basis, nxx=field[0], nyy=field[1], nxy=field[2]).tocsr()
 
 
+def _no_compression() -> ModelError:
+    """The error of a load that compresses nothing: :class:`mechverify.fea.frame.modal.NoCompressionError` (a
+    ModelError), so a design file's pull case passes as 'cannot buckle' as a frame's does."""
+    from mechverify.fea.frame.modal import NoCompressionError
+
+    return NoCompressionError("plate buckling: the in-plane load compresses no part of the plate, so it cannot buckle "
+                              "(reverse the load to study the other direction)")
+
+
 def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: QuantityLike | None = None,
                    hole_mesh_size: QuantityLike | None = None, *, membrane: str = "auto") -> PlateBuckling:
     """The lowest ``n_modes`` positive buckling load factors and mode shapes of the
@@ -262,8 +271,7 @@ def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: Q
     nxx, nyy, nxy = field
     n_min = (nxx + nyy) / 2 - np.sqrt(((nxx - nyy) / 2) ** 2 + nxy**2)  # the smaller principal stress resultant
     if not np.any(n_min < -1e-9 * max(float(np.max(np.abs(field))), 1e-300)):
-        raise ModelError("plate buckling: the in-plane load compresses no part of the plate, so it cannot buckle "
-                         "(reverse the load to study the other direction)")
+        raise _no_compression()
     G = geometric_stiffness(gb, field)
     Kf, Gf = K[free][:, free], G[free][:, free]
     if free.size <= DENSE_LIMIT:
@@ -284,8 +292,7 @@ def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: Q
     pos = th > 1e-9 * max(float(np.max(np.abs(th))), 1e-300)
     th, V = th[pos][:n_modes], V[:, pos][:, :n_modes]
     if not len(th):
-        raise ModelError("plate buckling: the in-plane load compresses no part of the plate, so it cannot buckle "
-                         "(reverse the load to study the other direction)")
+        raise _no_compression()
     full = np.zeros((K.shape[0], len(th)))
     full[free] = V
     vd = sys_.basis.nodal_dofs[0]

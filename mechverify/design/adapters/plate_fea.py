@@ -192,7 +192,8 @@ def _frequency(c: PlateFEA, loads: Any, ctx: Any) -> CheckResult | list[CheckRes
 
 def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
     """buckling_load_factor of every load case that gives in_plane edge loads (lateral loads cause no membrane
-    force); none: the check does not run."""
+    force); none: the check does not run. A case whose in-plane load compresses nothing passes with a note."""
+    from mechverify.fea.frame.modal import NoCompressionError
     from mechverify.fea.plate_buckling import plate_buckling
 
     out = []
@@ -202,6 +203,9 @@ def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
             load = mp.in_plane_load(comps[c.name]["in_plane"], path)
             try:
                 res = plate_buckling(pl.PlateModel(c.plate, c.supports), load, 3, c.mesh_size, c.hole_mesh_size)
+            except NoCompressionError as exc:  # a pull: the envelope is governed by the compressive cases
+                out.append(feac.no_buckling_result(float("inf"), str(exc), component=c.name, load_case=case))
+                continue
             except MechverifyError as exc:
                 raise type(exc)(f"{path}: {exc}") from None
             out.append(feac.check_buckling_load_factor(res, component=c.name, load_case=case))
