@@ -87,3 +87,16 @@ def test_plate_push_and_pull(tmp_path):
     (r,) = _buckling(tmp_path, PANEL)  # before: an error at load_cases.stretch.pl.in_plane
     assert r.load_case == "squeeze" and r.capacity.m == pytest.approx(hand, rel=0.03)
     assert any("stretch: u=0" in n for n in r.notes)
+
+
+def test_frame_uls_combination_review_24(tmp_path):
+    """Review finding 24's case: dead = live = 1000 N on the column, ULS = 1.35 dead + 1.5 live = 2850 N:
+    factor 4569 / 2850 = 1.603 < 2 (buckling SF) -> FAIL, u·SF 1.25 (the reviewer's hand calculation); it was a
+    PASS of 4.569 with the combination skipped."""
+    cases = ('[load_cases.dead.col]\npoint_loads = [{ at = "B", force = ["0 N", "0 N", "-1000 N"] }]\n'
+             '[load_cases.live.col]\npoint_loads = [{ at = "B", force = ["0 N", "0 N", "-1000 N"] }]\n'
+             '[load_cases.ULS.col]\ncombination = { dead = 1.35, live = 1.5 }\n')
+    (r,) = _buckling(tmp_path, FRAME.replace("CASES", cases))
+    p_cr = math.pi**2 * 200e9 * (0.01**4 / 12) / (4 * 0.3**2)
+    assert r.load_case == "ULS" and r.capacity.m == pytest.approx(p_cr / 2850, rel=1e-3)
+    assert r.capacity.m == pytest.approx(1.603, abs=1e-3) and not r.passed
