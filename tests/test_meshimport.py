@@ -144,7 +144,7 @@ def test_refused_and_bad_meshes(tmp_path):
     with pytest.raises(InputError, match="no such mesh file"):
         meshimport.read_mesh(tmp_path / "missing.msh")
     (tmp_path / "bad.msh").write_text("not a mesh\n")
-    with pytest.raises(InputError, match="cannot read it as a gmsh mesh"):
+    with pytest.raises(InputError, match="cannot read it as a Gmsh mesh"):
         meshimport.read_mesh(tmp_path / "bad.msh")
     tilted = meshio.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 1]], float), [("triangle", np.array([[0, 1, 2]]))])
     tilted.write(tmp_path / "tilted.vtu")

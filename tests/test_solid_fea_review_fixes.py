@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import mechverify
@@ -139,3 +140,73 @@ def test_solid_force_list_of_wrong_length_is_named(tmp_path):
     f.write_text(CANT.format(force='["0 N", "-P"]'))
     with pytest.raises(MechverifyError, match=r"forces\[0\]\.force: expected three components.*got '0 N, -50 N'"):
         mechverify.load(f).verify()
+
+
+# ------------------------------------------------------------------------------------- findings 12, 35
+def _gmsh_p2_inp(tmp_path):
+    """A bar 100 x 10 x 10 mm meshed by gmsh, second order, written by gmsh as Abaqus .inp (C3D10 with CPS6
+    boundary triangles: meshio 5.3 alone refuses CPS6), physical surfaces 'fixed' / 'loaded', volume 'body'."""
+    from mechverify.fea import mesh as fmesh
+
+    gmsh = fmesh.import_gmsh()
+    fmesh.gmsh_session(gmsh, 0.004)
+    try:
+        occ = gmsh.model.occ
+        vol = occ.addBox(0, 0, 0, 0.1, 0.01, 0.01)
+        occ.synchronize()
+        faces = {round(occ.getCenterOfMass(2, t)[0], 9): t for _, t in gmsh.model.getEntities(2)}
+        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [faces[0.0]]), "fixed")
+        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [faces[0.1]]), "loaded")
+        gmsh.model.setPhysicalName(3, gmsh.model.addPhysicalGroup(3, [vol]), "body")
+        gmsh.model.mesh.generate(3)
+        gmsh.model.mesh.setOrder(2)
+        gmsh.option.setNumber("Mesh.SaveGroupsOfNodes", 1)
+        path = tmp_path / "bar_p2.inp"
+        gmsh.write(str(path))
+    finally:
+        gmsh.finalize()
+    return path
+
+
+def test_gmsh_second_order_inp_solves_and_a_volume_group_is_named(tmp_path):
+    """gmsh's P2 Abaqus export (CPS6 triangles) is read; the bar in tension stretches u = F L / (E A) =
+    1000 · 0.1 / (200e9 · 1e-4) = 5.0e-6 m (Hooke's law, Timoshenko & Gere, Mechanics of Materials, sec. 2.2;
+    hand calculation). The volume group 'body' used as a region is named as a volume group with the regions."""
+    pytest.importorskip("gmsh")
+    from mechverify.fea import meshimport, solid
+    from mechverify.fea.loads import Fixed, Force
+    from mechverify.fea.regions import Named
+
+    m = meshimport.read_solid_mesh(_gmsh_p2_inp(tmp_path))
+    assert {"fixed", "loaded"} <= set(m.named) and "body" not in m.named and "body" in m.volumes
+    res = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("fixed")),),
+                           loads=(Force(Named("loaded"), ("1000 N", "0 N", "0 N")),)).solve()
+    ux = res.u[np.argmax(res.points[:, 0]), 0]
+    assert ux == pytest.approx(1000 * 0.1 / (200e9 * 1e-4), rel=0.02)
+    with pytest.raises(MechverifyError, match=r"'body' is a volume group.*regions.*fixed.*loaded"):
+        solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("body")),)).solve()
+
+
+def test_mesh_import_messages(tmp_path):
+    """meshio's reason instead of 'SystemExit: 1' and 'a abaqus'; a unit that is not a length is a UnitError; a mesh
+    without named groups (VTU) says so and points to Box/Plane."""
+    meshio = pytest.importorskip("meshio")
+    from mechverify.errors import InputError, UnitError
+    from mechverify.fea import meshimport, solid
+    from mechverify.fea.loads import Fixed
+    from mechverify.fea.regions import Named
+
+    (tmp_path / "bad.inp").write_text("*NODE\n1, 0, 0, 0\n*ELEMENT, type=XYZ99, ELSET=a\n1, 1\n")
+    with pytest.raises(InputError) as e:
+        meshimport.read_solid_mesh(tmp_path / "bad.inp")
+    assert "SystemExit" not in str(e.value) and "an Abaqus/CalculiX mesh" in str(e.value) and "XYZ99" in str(e.value)
+    (tmp_path / "bad.msh").write_text("not a mesh\n")
+    with pytest.raises(InputError, match=r"a Gmsh mesh \(meshio found no valid data") as e:
+        meshimport.read_solid_mesh(tmp_path / "bad.msh")
+    tet = meshio.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float), [("tetra", np.array([[0, 1, 2, 3]]))])
+    tet.write(tmp_path / "t.vtu")
+    with pytest.raises(UnitError, match="length unit"):
+        meshimport.read_solid_mesh(tmp_path / "t.vtu", unit="kg")
+    m = meshimport.read_solid_mesh(tmp_path / "t.vtu")
+    with pytest.raises(MechverifyError, match="no named regions.*Box or Plane"):
+        solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("fixed")),)).solve()

@@ -82,6 +82,7 @@ class SolidMesh:
     named: Mapping[str, np.ndarray] = field(default_factory=dict)  # name -> sorted vertex tuples [k, 3|2|1]
     measures: Mapping[str, float] = field(default_factory=dict)  # name -> CAD area [m²] / length [m]
     curved: np.ndarray | None = None  # [3, n] P2 nodes on the CAD geometry (gmsh second order), else None
+    volumes: tuple[str, ...] = ()  # names of the volume groups of an imported mesh file (not regions)
 
     @cached_property
     def basis(self) -> Basis:
@@ -110,7 +111,17 @@ class SolidMesh:
         """2 for a named surface, 1 for a curve, 0 for points."""
         from mechverify.errors import UnknownNameError
         if name not in self.named:
-            raise UnknownNameError("mesh region", name, list(self.named))
+            err = UnknownNameError("mesh region", name, list(self.named))
+            names = ", ".join(sorted(self.named))
+            if name in self.volumes:
+                err.args = (f"mesh region {name!r} is a volume group of the mesh file, not a region: regions are "
+                            f"its named surfaces, curves and points ({names or 'none'})",)
+            elif not self.named:
+                err.args = (f"unknown mesh region {name!r}: the mesh has no named regions (its file carries no "
+                            "named groups, as VTK files do not); select the region with Box or Plane",)
+            elif not err.suggestions:
+                err.args = (f"{err.args[0]} (regions: {names})",)
+            raise err
         return int(self.named[name].shape[1]) - 1
 
     def named_nodes(self, name: str) -> np.ndarray:

@@ -2,8 +2,12 @@
 
 ``read_solid_mesh("part.msh")`` returns a :class:`~mechverify.fea.mesh.SolidMesh`, ``read_plane_mesh(...)``
 a :class:`~mechverify.fea.mesh2d.NamedMeshTri`; ``read_mesh`` picks by the cells present. Formats are
-meshio's, by file extension: Gmsh ``.msh`` (2.2 and 4.1), Abaqus/CalculiX ``.inp``, Nastran ``.bdf``/``.nas``,
-VTK ``.vtu``/``.vtk`` (:data:`FORMATS`).
+meshio's, by file extension: Gmsh ``.msh`` (2.2 and 4.1), Abaqus/CalculiX ``.inp`` (gmsh's second-order export
+with CPS6 boundary triangles included), Nastran ``.bdf``/``.nas`` (free-field bulk data with a ``BEGIN BULK`` line;
+gmsh's own Nastran export has none and is refused with meshio's reason), VTK ``.vtu``/``.vtk`` (no named groups:
+select regions with Box or Plane) (:data:`FORMATS`). A file meshio cannot read is an :class:`InputError` with
+meshio's reason; a ``unit`` that is not a length a :class:`~mechverify.errors.UnitError`; a volume group used as a
+region is named as such with the list of regions.
 
 - Elements: tetrahedra (4 or 10 nodes) for solids, triangles (3 or 6 nodes) for plane models. The models
   always solve with quadratic elements (P2) on the mesh's vertices: a linear mesh is promoted, a quadratic
@@ -23,6 +27,9 @@ install command), and it is pinned to the tested range in ``pyproject.toml``.
 
 from __future__ import annotations
 
+import contextlib
+import io
+import re
 from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -64,10 +71,41 @@ def _read(path: str | Path) -> Any:
     if not path.is_file():
         raise InputError(f"{path}: no such mesh file")
     meshio = import_meshio()
+    if fmt == "abaqus":
+        _abaqus_types(meshio)
+    said = io.StringIO()
     try:
-        return meshio.read(path, file_format=fmt)
-    except (Exception, SystemExit) as exc:  # ReadError, KeyError, ValueError ...; its gmsh reader may sys.exit
-        raise InputError(f"{path.name}: cannot read it as a {fmt} mesh ({type(exc).__name__}: {exc})") from None
+        with contextlib.redirect_stdout(said), contextlib.redirect_stderr(said):
+            return meshio.read(path, file_format=fmt)
+    except (Exception, SystemExit) as exc:  # ReadError, KeyError, ValueError ...; its readers may sys.exit
+        # meshio prints its reason and then exits: keep what it said, not "SystemExit: 1"
+        text = re.sub(r"\x1b\[[0-9;]*m", "", said.getvalue()).split("Error: Couldn't read file")[0]
+        lines = [x.strip() for x in text.splitlines() if x.strip()]
+        if isinstance(exc, SystemExit):
+            reason = "; ".join(lines) or "meshio found no valid data of that format in it"
+        else:
+            reason = f"{type(exc).__name__}: {exc}"
+        raise InputError(f"{path.name}: cannot read it as {FORMAT_NAMES[fmt]} mesh ({reason})") from None
+
+
+#: How a message names each format.
+FORMAT_NAMES = {"gmsh": "a Gmsh", "abaqus": "an Abaqus/CalculiX", "nastran": "a Nastran (free-field bulk data)",
+                "vtu": "a VTU", "vtk": "a VTK"}
+
+#: Abaqus element types gmsh writes that meshio 5.3 does not know (gmsh's second-order boundary triangles of a
+#: C3D10 mesh are CPS6): the same cells as their known siblings.
+ABAQUS_EXTRA = {"CPS6": "triangle6", "CPE3": "triangle", "CAX3": "triangle", "CAX6": "triangle6"}
+
+
+def _abaqus_types(meshio: Any) -> None:
+    try:
+        from meshio.abaqus import _abaqus
+    except Exception:  # another meshio layout: its own table applies
+        return
+    table = getattr(_abaqus, "abaqus_to_meshio_type", None)
+    if isinstance(table, dict):
+        for k, v in ABAQUS_EXTRA.items():
+            table.setdefault(k, v)
 
 
 def read_mesh(path: str | Path, unit: str = "m") -> SolidMesh | NamedMeshTri:
@@ -125,7 +163,13 @@ def _groups(m: Any, kinds: Mapping[str, int]) -> dict[str, np.ndarray]:
 
 
 def _scale(unit: str) -> float:
-    return float(Q(1, unit).m_as("m"))
+    from mechverify.errors import UnitError
+
+    try:
+        return float(Q(1, unit).m_as("m"))
+    except Exception as exc:  # an unknown unit or one that is not a length
+        raise UnitError(f"unit: the mesh's coordinates need a length unit (m, mm, in), got {unit!r} "
+                        f"({type(exc).__name__})") from None
 
 
 def _cells(m: Any, name: str, unit: str, kinds: Mapping[str, int],
@@ -164,16 +208,17 @@ def _solid(m: Any, name: str, unit: str) -> SolidMesh:
     tt = remap[t].T
     tet = MeshTet(*contiguous(p, orient(p, tt)))
     boundary = np.sort(tet.facets[:, tet.boundary_facets()].T, axis=1)
+    volumes = tuple(sorted(_groups(m, _VOLUME)))
     for gname, idx in (m.point_sets or {}).items():
         r = remap[np.asarray(idx, np.int64)]
         r = np.unique(r[r >= 0])  # mid-side nodes of a quadratic mesh are not vertices: dropped
-        if not len(r) or gname in named:
+        if not len(r) or gname in named or gname in volumes:  # gmsh writes an *NSET of each volume group too
             continue
         # a node set holding whole boundary facets (an Abaqus *NSET of a face) is that surface, so that its
         # mid-side nodes are held too; otherwise a set of points
         faces = boundary[np.all(np.isin(boundary, r), axis=1)]
         named[gname] = faces if len(faces) else r[:, None]
-    return SolidMesh(tet, named)
+    return SolidMesh(tet, named, volumes=volumes)
 
 
 def _plane(m: Any, name: str, unit: str) -> NamedMeshTri:
