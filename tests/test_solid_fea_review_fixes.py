@@ -210,3 +210,38 @@ def test_mesh_import_messages(tmp_path):
     m = meshimport.read_solid_mesh(tmp_path / "t.vtu")
     with pytest.raises(MechverifyError, match="no named regions.*Box or Plane"):
         solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("fixed")),)).solve()
+
+
+MESHED = """
+[design]
+name = "imported"
+[components.bar]
+type = "solid_fea"
+mesh = "{mesh}"
+unit = "m"
+material = "Structural Steel"
+supports = [{{ named = "{support}" }}]
+deflection_limit = "1 mm"
+[load_cases.pull.bar]
+forces = [{{ named = "loaded", force = "1000 N, 0 N, 0 N" }}]
+"""
+
+
+def test_design_file_solid_from_another_tools_mesh(tmp_path):
+    """solid_fea `mesh = "bar_p2.inp"` (issue 27: bring the mesh of an existing study): gmsh's physical groups are
+    the regions; the bar in tension stretches F L / (E A) = 5.0e-6 m (Hooke's law, hand calculation). A wrong
+    region name is reported at supports[0].named with the file's regions; an unreadable file at the key `mesh`."""
+    pytest.importorskip("gmsh")
+    _gmsh_p2_inp(tmp_path)
+    f = tmp_path / "d.toml"
+    f.write_text(MESHED.format(mesh="bar_p2.inp", support="fixed"))
+    by = _by(mechverify.load(f).verify())
+    assert by[("solid_deflection", "pull")].demand.m_as("m") == pytest.approx(1000 * 0.1 / (200e9 * 1e-4), rel=0.02)
+    f.write_text(MESHED.format(mesh="bar_p2.inp", support="fixd"))
+    with pytest.raises(MechverifyError, match=r"components\.bar\.supports\[0\]\.named: unknown mesh region 'fixd'; "
+                                              r"did you mean 'fixed'\?.*valid regions: .*fixed, loaded"):
+        mechverify.load(f)
+    (tmp_path / "junk.msh").write_text("junk\n")
+    f.write_text(MESHED.format(mesh="junk.msh", support="fixed"))
+    with pytest.raises(MechverifyError, match=r"components\.bar\.mesh: junk\.msh: cannot read it as a Gmsh mesh"):
+        mechverify.load(f)

@@ -1,4 +1,4 @@
-"""``solid_fea``: a 3D solid (P2 tetrahedra) from a STEP or STL file or a block with through-holes.
+"""``solid_fea``: a 3D solid (P2 tetrahedra) from a STEP or STL file, a block with through-holes or another tool's mesh.
 
 Parses the design file and calls :mod:`mechverify.fea` (mesh, :class:`~mechverify.fea.solid.SolidModel`,
 :mod:`~mechverify.fea.modal`, :mod:`~mechverify.fea.buckling`, :mod:`~mechverify.fea.study`) and
@@ -75,10 +75,10 @@ class SolidStudy:
 
 
 def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
-    sources = [k for k in ("step", "stl", "box") if k in p]
+    sources = [k for k in ("step", "stl", "box", "mesh") if k in p]
     if len(sources) != 1:
-        raise InputError(f"step: give exactly one geometry: step, stl or box (got {sources or 'none'})")
-    for k in ("step", "stl"):
+        raise InputError(f"step: give exactly one geometry: step, stl, box or mesh (got {sources or 'none'})")
+    for k in ("step", "stl", "mesh"):
         if k in p:
             design = ctx.get("path") if isinstance(ctx, Mapping) else None
             base = Path(design).resolve().parent if design else Path.cwd()
@@ -86,7 +86,21 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
             if not path.exists():
                 raise InputError(f"{k}: file {str(path)!r} does not exist")
             p[k] = str(path)
-    if not p["mesh_size"].magnitude > 0:
+    imported = None
+    if "mesh" in p:  # another tool's mesh: read now, so that its errors are reported once, at the key
+        if p.get("convergence_check"):
+            raise InputError("convergence_check: needs a mesh mechverify makes (step, stl or box) to refine; "
+                             "an imported mesh is solved as it is")
+        from mechverify.errors import MechverifyError
+        from mechverify.fea.meshimport import read_solid_mesh
+
+        try:
+            imported = read_solid_mesh(p["mesh"], unit=p["unit"])
+        except MechverifyError as exc:
+            raise InputError(f"mesh: {exc}") from None
+    elif p.get("mesh_size") is None:
+        raise InputError("mesh_size: required with step, stl or box (the element size)")
+    elif not p["mesh_size"].magnitude > 0:
         raise InputError("mesh_size: must be positive")
     if "min_frequency" in p and "excitation_band" in p:
         raise InputError("min_frequency: give min_frequency or excitation_band, not both")
@@ -94,7 +108,9 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         holes = p.get("holes") or []
         names = [f"{c}{e}" for c in "xyz" for e in ("min", "max")] + [f"hole{i}" for i in range(len(holes))]
         named_regions(p.get("supports"), names, "supports")
-    return SolidStudy(p["_name"], p, p["unit"], _supports(p.get("supports"), p["unit"]))
+    if imported is not None:
+        named_regions(p.get("supports"), imported.named, "supports")
+    return SolidStudy(p["_name"], p, p["unit"], _supports(p.get("supports"), p["unit"]), _mesh=imported)
 
 
 #: The two-mesh check's second mesh has elements this many times smaller.
@@ -213,12 +229,14 @@ SOLID_FEA = REGISTRY.register(ComponentType(
         Field("step", "str", "STEP file (path relative to the design file; gmsh needed); faces are face<k>"),
         Field("stl", "str", "watertight STL file (gmsh needed); its surface is the region 'surface'"),
         Field("box", "str", "a block \"x, y, z\" from the origin (faces xmin ... zmax)"),
+        Field("mesh", "str", "a tetrahedral mesh made by another tool (.msh, .inp, .bdf, .vtu, .vtk; coordinates in "
+                             "unit): its named groups are the regions, no mesh_size"),
         Field("holes", "list", "through-holes along z of the block: {center = \"x, y\", diameter} (walls hole0, "
                                "hole1, ...; gmsh needed)", item="table"),
         Field("unit", "str", "unit of bare numbers (points, box, STEP files without units)", default="mm"),
         Field("material", "material", "material (E, nu, yield strength; density for frequency and gravity)",
               required=True),
-        Field("mesh_size", "length", "element size", required=True),
+        Field("mesh_size", "length", "element size (required with step, stl or box)"),
         Field("supports", "list", "supports: {named | face | plane = \"x = 0\" | box = [corner, corner], hold = "
                                   "\"x, y, z\" (default all)}", required=True, item="table"),
         Field("deflection_limit", "str", "limit on the largest displacement: a length or 'L/250' of span"),
