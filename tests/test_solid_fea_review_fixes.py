@@ -245,3 +245,13 @@ def test_design_file_solid_from_another_tools_mesh(tmp_path):
     f.write_text(MESHED.format(mesh="junk.msh", support="fixed"))
     with pytest.raises(MechverifyError, match=r"components\.bar\.mesh: junk\.msh: cannot read it as a Gmsh mesh"):
         mechverify.load(f)
+
+
+def test_reproduce_rebases_an_imported_mesh(tmp_path):
+    """study --reproduce --out into another folder rewrites solid_fea's `mesh` file name like `step`/`stl`."""
+    from mechverify.studies.study import rebase_files
+
+    doc = {"components": {"bar": {"type": "solid_fea", "mesh": "bar.inp"}}}
+    (tmp_path / "other").mkdir()
+    rebase_files(doc, tmp_path, tmp_path / "other")
+    assert doc["components"]["bar"]["mesh"] == "../bar.inp"

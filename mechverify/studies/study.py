@@ -322,7 +322,7 @@ class StudyResult:
 
 #: Keys whose value is a file name relative to the design file (solid_fea's geometry); a design file written
 #: to another folder (``reproduce``) gets them relative to its own folder.
-FILE_KEYS = ("step", "stl")
+FILE_KEYS = ("step", "stl", "mesh")
 
 
 def rebase_files(doc: dict[str, Any], source_dir: Path, out_dir: Path) -> dict[str, Any]:
