@@ -255,3 +255,16 @@ def test_reproduce_rebases_an_imported_mesh(tmp_path):
     (tmp_path / "other").mkdir()
     rebase_files(doc, tmp_path, tmp_path / "other")
     assert doc["components"]["bar"]["mesh"] == "../bar.inp"
+
+
+# ------------------------------------------------------------------------------------------- finding 9
+def test_free_motions_are_named_as_translations_and_rotations(tmp_path):
+    """A bar 100 x 10 x 10 mm held only in x on its end face is free to translate along y and z and to rotate
+    about its own axis (the line y = z = 5 mm, parallel to x): it was described as three rotations about axes far
+    away ('through (50, -1.733e+04, 8166) mm')."""
+    _design(tmp_path, box="100, 10, 10")  # writes d.toml
+    f = tmp_path / "d.toml"
+    f.write_text(f.read_text().replace('supports = [{ named = "xmin" }]', 'supports = [{ named = "xmin", hold = "x" }]'))
+    with pytest.raises(MechverifyError, match=r"leave free translation along y; translation along z; rotation about "
+                                              r"an axis parallel to x through \(50, 5, 5\) mm\."):
+        mechverify.load(f).verify()

@@ -177,6 +177,23 @@ def describe_mode(v: np.ndarray, names: list[str], centroid: np.ndarray, scale: 
     return words
 
 
+def plain_basis(free: np.ndarray, tol: float = 1e-6) -> np.ndarray:
+    """An orthonormal basis ``[m, k]`` of the span of ``free`` (orthonormal columns) that uses the coordinate
+    motions (translation along x, ..., rotation about z through the centroid) lying in it, the rest completed
+    orthogonally: eigh mixes them into rotations about far-away axes (review finding 9: a bar held in x only
+    was 'free to rotate about an axis parallel to x through (50, -1.733e+04, 8166) mm', which is mostly a
+    translation)."""
+    m, k = free.shape
+    P = free @ free.T
+    picked = [np.eye(m)[:, i] for i in range(m) if np.linalg.norm(P[:, i]) > 1 - tol]
+    picked = picked[:k]
+    if len(picked) == k:
+        return np.column_stack(picked) if picked else free
+    rest = free - (np.column_stack(picked) @ (np.column_stack(picked).T @ free) if picked else 0.0)
+    u, sv, _ = np.linalg.svd(rest, full_matrices=False)
+    return np.column_stack([*picked, *u[:, :k - len(picked)].T])
+
+
 def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarray | None = None) -> None:
     """Raise :class:`ModelError` naming every rigid motion the held DOFs do not prevent.
 
@@ -194,6 +211,7 @@ def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarra
         c = points.mean(axis=1)
         scale = max(float(np.max(np.ptp(points, axis=1))), 1e-300)
         # present the free space in the plainest basis: snap to coordinate modes where possible
+        free = plain_basis(free)
         motions = [describe_mode(free[:, k], names, c, scale) for k in range(free.shape[1])]
         raise ModelError("the model is not fully supported: the supports leave free "
                          + "; ".join(motions) + ". Add a support that prevents this motion.")
