@@ -377,9 +377,20 @@ def _materials(doc: dict[str, Any], col: _Collector, pctx: dict[str, Any]) -> Ma
                 lib.add(base.with_(name=name, **ok))
             else:
                 lib.add(material_from_dict({"name": name, **entry}, where=path))
-        except MechverifyError as exc:
+        except MechverifyError as exc:  # "mystery.density: must be positive" -> at materials.mystery.density
             msg = str(exc)
-            col.add(path, msg.split(f"{path}.", 1)[-1] if msg.startswith(path) else msg)
+            for prefix in (f"{path}.", f"{name}."):
+                key, sep, rest = msg[len(prefix):].partition(": ")
+                if msg.startswith(prefix) and sep and key.isidentifier():
+                    col.add(f"{path}.{key}", rest)
+                    break
+            else:
+                col.add(path, msg)
+            if "base" in entry and name not in lib:  # the design is refused already: no second error at every
+                try:  # component that uses the material ("unknown material")
+                    lib.add(lib.get(entry["base"]).with_(name=name))
+                except MechverifyError:
+                    pass
     return lib
 
 
