@@ -35,3 +35,16 @@ def test_material_error_at_its_key_once(tmp_path):
     assert "materials.mystery.density: must be positive" in text
     assert "mystery.density: mystery" not in text and "materials.mystery: mystery." not in text
     assert "unknown material" not in text and "1 error" in text
+
+
+def test_readme_lists_every_extra():
+    """Review finding 25: the README's extras table lacked `explore` and `docs`; every optional dependency group of
+    pyproject.toml has its row."""
+    import re
+    import tomllib
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    extras = tomllib.loads((root / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+    rows = set(re.findall(r"^\| `([\w-]+)` \|", (root / "README.md").read_text(), flags=re.M))
+    assert set(extras) <= rows, set(extras) - rows
