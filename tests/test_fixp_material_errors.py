@@ -48,3 +48,15 @@ def test_readme_lists_every_extra():
     extras = tomllib.loads((root / "pyproject.toml").read_text())["project"]["optional-dependencies"]
     rows = set(re.findall(r"^\| `([\w-]+)` \|", (root / "README.md").read_text(), flags=re.M))
     assert set(extras) <= rows, set(extras) - rows
+
+
+def test_plate_negative_min_frequency_reads_as_a_quantity(tmp_path):
+    """Review finding 26 (plate part): 'must be positive, got <Quantity(-5, 'hertz')>' (pint's repr)."""
+    f = tmp_path / "d.toml"
+    f.write_text('[design]\nname = "p"\n[components.p]\ntype = "plate_fea"\nwidth = "400 mm"\nheight = "200 mm"\n'
+                 'thickness = "4 mm"\nmaterial = "Structural Steel"\nsupports = [{ edges = "all", type = "pinned" }]\n'
+                 'min_frequency = "-5 Hz"\n[load_cases.a.p]\npressure = "1 kPa"\n')
+    with pytest.raises(DesignFileError) as exc:
+        mechverify.load(f).verify()
+    assert "components.p.min_frequency: must be positive" in str(exc.value)
+    assert "Quantity" not in str(exc.value) and "-5 Hz" in str(exc.value)

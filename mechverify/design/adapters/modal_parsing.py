@@ -14,7 +14,7 @@ from mechverify.checks import fea as fc
 from mechverify.checks.result import CheckResult
 from mechverify.design.spec import Field
 from mechverify.errors import InputError, MechverifyError
-from mechverify.units import as_quantity
+from mechverify.units import as_quantity, fmt
 
 MODAL_FIELDS = (
     Field("min_frequency", "frequency", "the first natural frequency must reach this (check natural_frequency)"),
@@ -99,7 +99,7 @@ def modal_settings(p: Mapping[str, Any]) -> ModalSettings | None:
     if "min_frequency" in p:
         fmin = p["min_frequency"]
         if not fmin.magnitude > 0:
-            raise InputError(f"min_frequency: must be positive, got {fmin!r}")
+            raise InputError(f"min_frequency: must be positive, got {fmt(fmin, 'Hz')}")
         return ModalSettings(modes, minimum=fmin, margin=float(margin))
     if "excitation_band" not in p:
         return None
