@@ -268,3 +268,39 @@ def test_free_motions_are_named_as_translations_and_rotations(tmp_path):
     with pytest.raises(MechverifyError, match=r"leave free translation along y; translation along z; rotation about "
                                               r"an axis parallel to x through \(50, 5, 5\) mm\."):
         mechverify.load(f).verify()
+
+
+# ------------------------------------------------------------------------------------ findings 10, 26, 22
+@pytest.mark.parametrize(("extra", "key", "text"), [
+    ("min_frequency = \"10 Hz\"\nmodes = 100000", "modes", r"100000 modes asked.*use a smaller mesh_size"),
+    ("min_frequency = \"10 Hz\"\nmodes = 0", "modes", "a whole number >= 1, got 0"),
+    ("excitation_band = [\"900 Hz\", \"800 Hz\"]", "excitation_band", r"0 <= lo <= hi"),
+])
+def test_modal_input_errors_are_at_their_keys(tmp_path, extra, key, text):
+    """Too many modes, zero modes and a reversed band are reported at components.bar.<key> (they were at
+    checks.natural_frequency with Python argument names, 'refine the mesh' and the band's list repr)."""
+    with pytest.raises(MechverifyError) as e:
+        _design(tmp_path, extra=extra).verify()
+    msg = str(e.value)
+    assert f"components.bar.{key}: " in msg and "checks.natural_frequency" not in msg and "n_modes" not in msg
+    import re
+
+    assert re.search(text, msg)
+
+
+def test_gmsh_missing_is_one_error_at_the_geometry_key(tmp_path, monkeypatch):
+    """Without gmsh a block with holes is one error at components.bar.holes with the install hint, not one per
+    check and load case at components.bar.checks.<check> [case]."""
+    from mechverify.errors import ModelError
+    from mechverify.fea import mesh as fmesh
+
+    def missing():
+        raise ModelError("meshing needs gmsh: pip install mechverify[mesh] [no module named gmsh]")
+
+    monkeypatch.setattr(fmesh, "import_gmsh", missing)
+    tail = '[load_cases.two.bar]\nforces = [{ named = "xmax", force = "0, 0, -10" }]\n'
+    with pytest.raises(MechverifyError) as e:
+        _design(tmp_path, box="100, 40, 10", extra='holes = [{ center = "15, 20", diameter = "8 mm" }]\n'
+                'deflection_limit = "1 mm"', tail=tail).verify()
+    msg = str(e.value)
+    assert msg.count("pip install") == 1 and "components.bar.holes: " in msg and "checks." not in msg

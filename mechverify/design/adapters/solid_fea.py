@@ -18,9 +18,10 @@ from typing import Any
 from mechverify.checks import fea as fc
 from mechverify.checks.fatigue import check_fatigue_field
 from mechverify.checks.result import CheckResult
+from mechverify.design.adapters.modal_parsing import modal_settings
 from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
-from mechverify.errors import InputError, UnknownNameError
+from mechverify.errors import InputError, MechverifyError, UnknownNameError
 from mechverify.units import Q
 
 LOADS = ("forces|pressures|pin_loads|gravity",)
@@ -40,8 +41,20 @@ class SolidStudy:
     solved: dict[str, Any] = dataclasses.field(default_factory=dict)
 
     def mesh(self) -> Any:
+        """The mesh, made once; a failure (gmsh missing, a STEP file gmsh cannot read) is raised at the geometry's
+        key (``step``, ``stl``, ``holes``), so each check and load case reports it as one error, there."""
+        if isinstance(self._mesh, Exception):
+            raise self._mesh
         if self._mesh is None:
-            self._mesh = _make_mesh(self.p, self.unit)
+            try:
+                self._mesh = _make_mesh(self.p, self.unit)
+            except MechverifyError as exc:
+                msg = str(exc)
+                if not msg.startswith(("components.", "mesh_size", "box", "holes")):
+                    key = next((k for k in ("step", "stl", "holes") if self.p.get(k)), "box")
+                    exc = InputError(f"{key}: {msg}")
+                self._mesh = exc
+                raise exc from None
         return self._mesh
 
     def model(self, loads: tuple[Any, ...] = ()) -> Any:
@@ -102,8 +115,7 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         raise InputError("mesh_size: required with step, stl or box (the element size)")
     elif not p["mesh_size"].magnitude > 0:
         raise InputError("mesh_size: must be positive")
-    if "min_frequency" in p and "excitation_band" in p:
-        raise InputError("min_frequency: give min_frequency or excitation_band, not both")
+    p["_modal"] = modal_settings(p)  # modes, band and margin checked at their keys
     if "box" in p:  # a block's region names are known before meshing: a misspelt one is reported here, once
         holes = p.get("holes") or []
         names = [f"{c}{e}" for c in "xyz" for e in ("min", "max")] + [f"hole{i}" for i in range(len(holes))]
@@ -193,17 +205,16 @@ def _deflection(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[Check
 
 
 def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
-    if "min_frequency" not in c.p and "excitation_band" not in c.p:
+    settings = c.p.get("_modal")
+    if settings is None:
         return []
     from mechverify.fea.modal import modal
 
     with c.regions():
-        res = modal(c.model(), int(c.p.get("modes", 6)))
-    band = c.p.get("excitation_band")
-    if band is not None and (not isinstance(band, list) or len(band) != 2):
-        raise InputError(f"excitation_band: expected [\"lo Hz\", \"hi Hz\"], got {band!r}")
-    return fc.check_natural_frequency(res, minimum=c.p.get("min_frequency"), band=band,
-                                      margin=float(c.p.get("frequency_margin", 0.15)), component=c.name)
+        model = c.model()
+        res = settings.solve(modal, model, hint=(
+            "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"))
+    return settings.check(res, c.name)
 
 
 def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
