@@ -206,14 +206,16 @@ def test_a_parameter_read_inside_a_path_expression_invalidates(tmp_path):
 def test_a_variant_takes_over_unchanged_immutable_objects(base, override, rebuilt):
     """Oracle: the same variant built without a base (every object built); its results are compared field by
     field in test_variant_equals_a_fresh_build_and_reuses_only_unchanged_components. Here: which objects are the
-    base's own. Never shared: the drive (it memoises per design) and the link (its section holds a dict)."""
+    base's own. Never shared: the drive (it memoises per design). The link (its section's dimensions read-only, its
+    outline arrays read-only) and the profile (its samples memoised outside it) are (task 19c)."""
     from mechverify.design.reuse import shareable
 
     v = base.with_overrides(override)
     entries = {**v.data.components, **v.data.profiles}
     old = {**base.data.components, **base.data.profiles}
     shared = {k for k, e in entries.items() if e.obj is old[k].obj}
-    assert "lift" not in shared and "screw_horizontal" not in shared
+    assert "lift" not in shared
+    assert shareable(old["screw_horizontal"].obj) and shareable(old["raise"].obj)
     expected = set() if rebuilt == "all" else {k for k in entries if shareable(old[k].obj)} - rebuilt
     assert shared == expected
     if rebuilt != "all":
@@ -335,3 +337,123 @@ def test_derived_values_are_shown_as_before_when_remembered():
 
     for v in (Q(350.0, "N"), Q(350, "N"), Q(1.5, "N/(m/s**2)"), Q(0.1, "m/s**2"), Q(2.0, "mm") * 3, 4.5, "x"):
         assert _shown(v) == show(v) == _shown(v)
+
+
+# ------------------------------------------------------------------ task 19c: shared profiles and links, load-free checks
+
+def test_a_sampled_profile_stays_shareable_and_its_samples_are_kept_outside_it():
+    """Profile.sample is memoised per profile and point count in motion.profiles._SAMPLES (not in the instance),
+    so a sampled profile is still immutable all the way down (design/reuse.shareable); the samples equal a fresh
+    computation (_sample) bit for bit and are read-only."""
+    import numpy as np
+
+    from mechverify.design.reuse import shareable
+    from mechverify.motion import profiles
+    from mechverify.motion.profiles import trapezoidal
+
+    p = trapezoidal("450 mm", max_velocity="18 mm/s", acceleration="0.1 m/s^2")
+    s = p.sample(41)
+    assert p.sample(41) is s and p.sample(11) is not s
+    assert shareable(p) and "_samples" not in p.__dict__
+    fresh = p._sample(41)
+    for k in ("t", "x", "v", "a", "j"):
+        assert np.array_equal(getattr(s, k), getattr(fresh, k)) and not getattr(s, k).flags.writeable
+    twin = trapezoidal("450 mm", max_velocity="18 mm/s", acceleration="0.1 m/s^2")  # an equal profile: its own entry (keyed by identity)
+    assert twin.sample(41) is not s and np.array_equal(twin.sample(41).v, s.v)
+    n = profiles._SAMPLES_MAX
+    for _ in range(n + 1):  # bounded
+        trapezoidal("10 mm", max_velocity="18 mm/s", acceleration="0.1 m/s^2").sample(5)
+    assert len(profiles._SAMPLES) <= n
+
+
+def test_a_section_is_immutable_so_a_link_is_shared(base):
+    """A section's dimensions are a read-only mapping (equal to the dict, pickled as it) and its outline arrays are
+    read-only, so the lift's link (screw_horizontal) is shareable and an unchanged one is taken over by a variant."""
+    import pickle
+
+    import numpy as np
+
+    from mechverify.components.sections import circle
+    from mechverify.design.reuse import shareable
+
+    sec = circle("7.5 mm")
+    assert dict(sec.dimensions) == {"diameter": sec.dimensions["diameter"]} and sec.dimensions == dict(sec.dimensions)
+    with pytest.raises(TypeError):
+        sec.dimensions["diameter"] = 1  # type: ignore[index]
+    assert all(not r.flags.writeable for r in sec.outline)
+    back = pickle.loads(pickle.dumps(sec))
+    assert back == sec and repr(back) == repr(sec) and np.array_equal(back.outline[0], sec.outline[0])
+    assert shareable(sec)
+    _ = sec.geometry  # a cached shapely polygon (immutable) keeps it shareable
+    assert shareable(circle("7.5 mm")) and shareable(base["screw_horizontal"])
+    v = base.with_overrides({"components.lift.mass": "15.0 kg"})
+    assert v["screw_horizontal"] is base["screw_horizontal"]
+
+
+@pytest.fixture()
+def self_locking(base):
+    """The registry's self_locking spec (a frozen CheckSpec), its ``run`` restored after the test."""
+    spec = next(s for s, _ in base.enabled_checks(base.data.components["lift_screw"]) if s.name == "self_locking")
+    run = spec.run
+    yield spec, run
+    object.__setattr__(spec, "run", run)
+
+
+def _count_runs(spec, run):
+    calls = []
+
+    def counted(c, loads, ctx):
+        calls.append(ctx.component)
+        return run(c, loads, ctx)
+
+    object.__setattr__(spec, "run", counted)
+    return calls
+
+
+def test_a_check_without_loads_on_a_taken_over_object_is_not_run_again(base, self_locking):
+    """lift_screw.self_locking (needs=()) on the base's screw object: a variant that changes the screw's loads
+    (lifted_load) runs the loaded checks again but takes self_locking's output; the variant's results equal a fresh
+    build's field by field (oracle) and in the JSON. A changed screw, a changed design-wide value (requirements) or
+    a changed safety factor runs it again."""
+    d = base.with_overrides({})
+    d.verify()
+    calls = _count_runs(*self_locking)
+    v = d.with_overrides({"parameters.lifted_load": "300 N"})
+    assert v["lift_screw"] is d["lift_screw"] and "lift_screw" not in v._reusable()
+    rs = v.verify()
+    assert calls == []
+    fresh = _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides).verify()
+    assert len(calls) == 1  # (the fresh build has no base: it runs)
+    assert _rows(rs) == _rows(fresh) and rs.to_json() == fresh.to_json()
+    vv = v.with_overrides({"parameters.lifted_load": "320 N"})  # a variant of a variant: still taken over
+    vv.verify()
+    assert len(calls) == 1
+    for change in ({"components.lift_screw.nut_length": "12 mm"}, {"requirements.bearing_life": "20000 h"}):
+        calls.clear()
+        w = d.with_overrides(change)
+        rs = w.verify()
+        assert calls == ["lift_screw"], change
+        assert _rows(rs) == _rows(_rebuild(copy.deepcopy(w.data.raw), w.data.path, [], w.overrides).verify())
+
+
+def test_a_check_without_loads_that_reads_the_design_runs_again(base, self_locking):
+    """A load-free check whose adapter reads ``ctx.design`` (the rest of the design file, as plate_fea's buckling
+    reads the load cases) is never taken over: the context notes the read."""
+    from mechverify.design.design import _Watched
+
+    spec, run = self_locking
+    calls = []
+
+    def reads_design(c, loads, ctx):
+        calls.append(len(ctx.design.data.load_cases))
+        return run(c, loads, ctx)
+
+    object.__setattr__(spec, "run", reads_design)
+    d = load(LIFT)
+    d.verify()
+    assert len(calls) == 1
+    d.with_overrides({"parameters.lifted_load": "300 N"}).verify()
+    assert len(calls) == 2
+    ctx = _Watched("c", "", 1.0, {}, None)
+    assert "read_design" not in ctx.__dict__ and ctx.required_sf == 1.0 and "read_design" not in ctx.__dict__
+    assert ctx.design is None and ctx.__dict__["read_design"]

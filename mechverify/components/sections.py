@@ -85,6 +85,31 @@ _FIELDS = {  # attribute -> dimension
 }
 
 
+class Dimensions(Mapping[str, pint.Quantity]):
+    """A section's dimensions by name: a read-only mapping (a :class:`Section` is immutable all the way down, so
+    the designs of a study may share it: ``mechverify.design.reuse.shareable``); pickles and compares like a dict."""
+
+    __slots__ = ("_values",)
+
+    def __init__(self, values: Mapping[str, pint.Quantity] = ()) -> None:  # type: ignore[assignment]
+        self._values = dict(values)
+
+    def __getitem__(self, key: str) -> pint.Quantity:
+        return self._values[key]
+
+    def __iter__(self) -> Any:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return repr(self._values)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Dimensions, (self._values,))
+
+
 @dataclass(frozen=True)
 class Section:
     """Properties of a cross-section (see the module docstring for every attribute)."""
@@ -193,8 +218,11 @@ def _build(kind: str, dims: Mapping[str, float], v: Mapping[str, float], method:
     vals.setdefault("shear_center_y", vals["centroid_y"])
     vals.setdefault("shear_center_z", vals["centroid_z"])
     q = {name: from_si(vals[name], dim) for name, dim in _FIELDS.items()}
-    return Section(kind=kind, dimensions={k: Q(x, "m").to("mm") for k, x in dims.items()}, method=method,
-                   source=source, outline=tuple(np.asarray(r, dtype=float) for r in rings), **q)
+    outline = tuple(np.array(r, dtype=float) for r in rings)
+    for ring in outline:  # (read-only, as the dimensions: the section may be shared)
+        ring.setflags(write=False)
+    return Section(kind=kind, dimensions=Dimensions({k: Q(x, "m").to("mm") for k, x in dims.items()}),
+                   method=method, source=source, outline=outline, **q)
 
 
 def _cowper_tube(m: float, nu: float = NU_SHEAR) -> float:

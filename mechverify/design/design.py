@@ -28,6 +28,17 @@ class CheckContext:
     design: Design
 
 
+class _Watched(CheckContext):
+    """A :class:`CheckContext` that notes whether the check read ``design`` (the rest of the design file): a check
+    without loads that did not reads only its component object, safety factor and the requirements, so a variant
+    holding the same object may take its result (:meth:`Design.verify`)."""
+
+    def __getattribute__(self, name: str) -> Any:
+        if name == "design":
+            object.__getattribute__(self, "__dict__")["read_design"] = True
+        return object.__getattribute__(self, name)
+
+
 class Design:
     """A validated design file. ``verify()`` returns a :class:`~mechverify.checks.ResultSet`.
 
@@ -193,6 +204,7 @@ class Design:
         errors: list[tuple[str, str]] = []
         reusable = self._reusable()
         done: dict[str, tuple[list[CheckResult], int]] = {}  # component -> its results, progress steps
+        before, loadfree = self._loadfree_before(), {}  # (component, check) -> (object, spec, sf, output)
         for entry in self.data.components.values():
             if entry.name in reusable:  # inputs as in the design this one was made from: its results
                 rs_done, steps = reusable[entry.name]
@@ -200,6 +212,7 @@ class Design:
                 for _ in range(steps if progress is not None else 0):
                     progress()
                 done[entry.name] = reusable[entry.name]
+                loadfree.update((k, v) for k, v in before.items() if k[0] == entry.name)  # (for its own variants)
                 continue
             start, n_err, steps = len(results), len(errors), 0
             for spec, sf in self.enabled_checks(entry):
@@ -207,9 +220,16 @@ class Design:
                 cases = self._cases_for(entry, spec) if spec.needs else [("", None)]
                 found: dict[str, list[CheckResult]] = {}
                 for case, loads in cases:
-                    ctx = CheckContext(entry.name, case, sf, self.data.requirements, self)
+                    ctx = (CheckContext if spec.needs else _Watched)(entry.name, case, sf, self.data.requirements, self)
                     try:
-                        out = spec.run(entry.obj, loads, ctx)
+                        key = (entry.name, spec.name)
+                        hit = None if spec.needs else before.get(key)
+                        if hit is not None and hit[0] is entry.obj and hit[1] is spec and hit[2] == sf:
+                            out = hit[3]  # a check without loads on the base design's (immutable) object
+                        else:
+                            out = spec.run(entry.obj, loads, ctx)
+                        if not spec.needs and "read_design" not in ctx.__dict__:
+                            loadfree[key] = (entry.obj, spec, sf, out)
                     except ValidityError as exc:  # an engineering limit of the method: a FAIL with the reason
                         out = _beyond_validity(spec, entry.name, case, exc)
                     except MechverifyError as exc:  # at the key it names (once), else at the check [case]
@@ -247,6 +267,7 @@ class Design:
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
         self.__dict__["_results_by_component"] = done
+        self.__dict__["_loadfree_results"] = loadfree
         label = f"{self.name} rev {self.revision}" if self.revision else self.name
         return ResultSet(results, label)
 
@@ -256,6 +277,17 @@ class Design:
 
             self.__dict__["_fingerprints_cache"] = (design_wide(self.data), fingerprints(self.data))
         return self.__dict__["_fingerprints_cache"]
+
+    def _loadfree_before(self) -> dict[tuple[str, str], tuple[Any, CheckSpec, float, Any]]:
+        """(component, check) -> (object, spec, safety factor, output) of the checks without loads (``needs=()``)
+        that ran in the design this variant was made from without reading the rest of the design: a component
+        whose object the variant took over (design/reuse.py ``reused_object``: immutable, same build inputs) gets
+        the same output, when the design-wide values (requirements) are unchanged too; empty otherwise."""
+        base = self.__dict__.get("_reuse_base")
+        before = getattr(base, "__dict__", {}).get("_loadfree_results")
+        if not before or self._fingerprints()[0] != base._fingerprints()[0]:
+            return {}
+        return before
 
     def _reusable(self) -> dict[str, tuple[list[CheckResult], int]]:
         """Component -> (results, progress steps) of the design this variant was made from, for the components

@@ -21,7 +21,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, MutableMapping
 from typing import Any
 
 import numpy as np
@@ -251,12 +251,22 @@ def _immutable(v: Any, seen: set[int]) -> bool:
         return True
     if t is tuple or t is frozenset:
         return all(_immutable(x, seen) for x in v)
+    if isinstance(v, Mapping) and not isinstance(v, MutableMapping) and t.__module__.startswith("mechverify."):
+        return all(_immutable(k, seen) and _immutable(x, seen) for k, x in v.items())  # (a section's Dimensions)
+    if t.__module__.startswith("shapely.") and _is_geometry(v):  # (immutable since shapely 2: a cached outline)
+        return True
     if dataclasses.is_dataclass(v) and not isinstance(v, type):
         if not v.__dataclass_params__.frozen:  # type: ignore[attr-defined]
             return False
         fields = [getattr(v, f.name) for f in dataclasses.fields(v)]
         return all(_immutable(x, seen) for x in (*fields, *getattr(v, "__dict__", {}).values()))
     return False
+
+
+def _is_geometry(v: Any) -> bool:
+    from shapely.geometry.base import BaseGeometry
+
+    return isinstance(v, BaseGeometry)
 
 
 def _wide_key(raw: Any, requirements: Any, materials: Any, path: Any) -> Any:

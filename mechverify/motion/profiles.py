@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -116,6 +115,13 @@ class ProfileSamples:
                 "j": Q(self.j, u[3])}
 
 
+#: :meth:`Profile.sample` results: ``id(profile) -> (profile, {points_per_segment: samples})``. The entry holds the
+#: profile, so its id is not reused while the entry lives; bounded (cleared when full: a study builds a profile
+#: per sample whose inputs change).
+_SAMPLES: dict[int, tuple[Any, dict[int, ProfileSamples]]] = {}
+_SAMPLES_MAX = 256
+
+
 @dataclass(frozen=True)
 class Profile:
     """A motion profile made of constant-jerk :class:`JerkSegment` s (SI inside)."""
@@ -152,22 +158,24 @@ class Profile:
     def _bounds(self) -> np.ndarray:
         return np.concatenate([[0.0], np.cumsum([s.duration for s in self.segments])])
 
-    @cached_property
-    def _samples(self) -> dict[int, ProfileSamples]:
-        """:meth:`sample` results by ``points_per_segment`` (the profile is immutable, so are they)."""
-        return {}
-
     def sample(self, points_per_segment: int = 41) -> ProfileSamples:
         """Sample every segment at ``points_per_segment`` points, boundaries included.
 
         Computed once per profile and number of points (a drive's demand and its figure data read the same
-        samples); the arrays are read-only, so a caller cannot change what the next one gets.
+        samples); the arrays are read-only, so a caller cannot change what the next one gets. The memo lives
+        outside the profile (:data:`_SAMPLES`), so the profile stays immutable all the way down and the
+        variants of a study share it with its samples (``mechverify.design.reuse.shareable``).
         """
         if points_per_segment < 2:
             raise InputError("points_per_segment must be >= 2")
-        s = self._samples.get(points_per_segment)
+        hit = _SAMPLES.get(id(self))
+        if hit is None or hit[0] is not self:
+            if len(_SAMPLES) >= _SAMPLES_MAX:
+                _SAMPLES.clear()
+            hit = _SAMPLES[id(self)] = (self, {})
+        s = hit[1].get(points_per_segment)
         if s is None:
-            s = self._samples[points_per_segment] = self._sample(points_per_segment)
+            s = hit[1][points_per_segment] = self._sample(points_per_segment)
         return s
 
     def _sample(self, points_per_segment: int) -> ProfileSamples:
