@@ -304,3 +304,22 @@ def test_gmsh_missing_is_one_error_at_the_geometry_key(tmp_path, monkeypatch):
                 'deflection_limit = "1 mm"', tail=tail).verify()
     msg = str(e.value)
     assert msg.count("pip install") == 1 and "components.bar.holes: " in msg and "checks." not in msg
+
+
+# ------------------------------------------------------------------------------------------ finding 11
+def test_unreadable_step_keeps_opencascade_reason_at_the_key(tmp_path, capfd):
+    """A STEP file that is text: OpenCASCADE's syntax error (printed by native code straight to the terminal, in
+    red) is in the error at components.bar.step, and the terminal gets nothing raw; gmsh's own exception only says
+    'Could not read file'."""
+    pytest.importorskip("gmsh")
+    (tmp_path / "junk.step").write_text("garbage\n")
+    f = tmp_path / "d.toml"
+    f.write_text(BLOCK.format(box="1, 1, 1", extra="", force="0, 0, -1").replace('box = "1, 1, 1"', 'step = "junk.step"')
+                 .replace('named = "xmin"', "face = 1").replace('named = "xmax"', "face = 2"))
+    with pytest.raises(MechverifyError) as e:
+        mechverify.load(f).verify()
+    msg = str(e.value)
+    assert "components.bar.step: junk.step" in msg and "OpenCASCADE said:" in msg and "Incorrect syntax" in msg
+    assert msg.count("junk.step: gmsh could not read") == 1
+    out, err = capfd.readouterr()
+    assert "StepFile" not in out + err

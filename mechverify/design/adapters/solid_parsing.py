@@ -4,8 +4,13 @@ unit, regions (``named``, ``face``, ``plane``, ``box``), supports, loads, and th
 
 from __future__ import annotations
 
+import contextlib
 import math
-from collections.abc import Mapping
+import os
+import re
+import sys
+import tempfile
+from collections.abc import Iterator, Mapping
 from typing import Any
 
 from mechverify.errors import InputError, suggest
@@ -119,14 +124,50 @@ def _loads(loads: Mapping[str, Any], unit: str, path: str, g: Any) -> tuple[Any,
     return tuple(out)
 
 
+@contextlib.contextmanager
+def _native_output() -> Iterator[dict[str, Any]]:
+    """Capture what native code (gmsh, OpenCASCADE) writes to the process's stdout/stderr, which Python's
+    redirection does not see: OpenCASCADE prints a STEP file's syntax error in red and gmsh's exception only says
+    'Could not read file' (review finding 11). The text is ``said["text"]`` after the block; unless the block
+    sets ``said["failed"]``, it goes to stderr as before."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
+    out: dict[str, Any] = {"text": "", "failed": None}
+    with tempfile.TemporaryFile() as tmp:
+        try:
+            os.dup2(tmp.fileno(), 1)
+            os.dup2(tmp.fileno(), 2)
+            yield out
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            os.close(saved[0])
+            os.close(saved[1])
+            tmp.seek(0)
+            out["text"] = tmp.read().decode(errors="replace")
+            if out["failed"] is None and out["text"].strip():
+                sys.stderr.write(out["text"])
+
+
 def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
     from mechverify.fea import mesh, study
 
     h = p["mesh_size"].m_as("m")
     what = f"components.{p['_name']}.mesh_size"
     if "step" in p:
-        study.require_memory(study.step_volume(p["step"]), h, what)
-        return mesh.from_step(p["step"], p["mesh_size"], unit=unit)
+        from mechverify.errors import MechverifyError
+
+        with _native_output() as said:
+            try:
+                study.require_memory(study.step_volume(p["step"]), h, what)
+                return mesh.from_step(p["step"], p["mesh_size"], unit=unit)
+            except MechverifyError as exc:
+                failed = said["failed"] = exc
+        reason = re.sub(r"\x1b\[[0-9;]*m|\*{4}", " ", said["text"]).split()
+        if not reason:
+            raise failed
+        raise type(failed)(f"{failed}; OpenCASCADE said: {' '.join(reason)[:300]}") from None
     if "stl" in p:
         study.require_memory(mesh.stl_properties(p["stl"], unit).volume.m_as("m**3"), h, what)
         return mesh.from_stl(p["stl"], p["mesh_size"], unit=unit)
