@@ -265,7 +265,8 @@ def test_free_motions_are_named_as_translations_and_rotations(tmp_path):
     _design(tmp_path, box="100, 10, 10")  # writes d.toml
     f = tmp_path / "d.toml"
     f.write_text(f.read_text().replace('supports = [{ named = "xmin" }]', 'supports = [{ named = "xmin", hold = "x" }]'))
-    with pytest.raises(MechverifyError, match=r"leave free translation along y; translation along z; rotation about "
+    with pytest.raises(MechverifyError, match=r"components\.bar\.supports: the model is not fully supported: the "
+                                              r"supports leave free translation along y; translation along z; rotation about "
                                               r"an axis parallel to x through \(50, 5, 5\) mm\."):
         mechverify.load(f).verify()
 
@@ -323,3 +324,15 @@ def test_unreadable_step_keeps_opencascade_reason_at_the_key(tmp_path, capfd):
     assert msg.count("junk.step: gmsh could not read") == 1
     out, err = capfd.readouterr()
     assert "StepFile" not in out + err
+
+
+def test_loads_on_held_nodes_are_one_error_at_the_load_key(tmp_path):
+    """Every load on a supported face: one error at load_cases.tip.bar.forces (it was one per check, at
+    checks.<check> [tip])."""
+    f = tmp_path / "d.toml"
+    _design(tmp_path, extra='deflection_limit = "1 mm"')
+    f.write_text(f.read_text().replace('supports = [{ named = "xmin" }]', 'supports = [{ named = "xmin" }, { named = "xmax" }]'))
+    with pytest.raises(MechverifyError) as e:
+        mechverify.load(f).verify()
+    msg = str(e.value)
+    assert msg.count("load_cases.tip.bar.forces: every load acts only on held nodes") == 1 and "checks." not in msg

@@ -21,7 +21,7 @@ from mechverify.checks.result import CheckResult
 from mechverify.design.adapters.modal_parsing import modal_settings
 from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
-from mechverify.errors import InputError, MechverifyError, UnknownNameError
+from mechverify.errors import InputError, MechverifyError, ModelError, UnknownNameError
 from mechverify.units import Q
 
 LOADS = ("forces|pressures|pin_loads|gravity",)
@@ -71,20 +71,30 @@ class SolidStudy:
                 named_regions(loads.get(key), self.mesh().named, f"load_cases.{case}.{self.name}.{key}")
 
             model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
-            with self.regions():
+            with self.regions(loads):
                 if self._shared is None:
                     self._shared = SharedSolve.of(model)
                 self.solved[case] = model.solve(factorization=self._shared)
         return self.solved[case]
 
     @contextlib.contextmanager
-    def regions(self) -> Iterator[None]:
-        """An unknown region name becomes an InputError listing every region of the mesh."""
+    def regions(self, loads: Mapping[str, Any] | None = None) -> Iterator[None]:
+        """An unknown region name becomes an InputError listing every region of the mesh; supports that leave a
+        rigid motion free are an error at the key ``supports``, and loads that all act on held nodes at the
+        load case's load key (``forces`` ...), once each instead of once per check (review finding 9)."""
         try:
             yield
         except UnknownNameError as exc:
             names = ", ".join(sorted(self.mesh().named))
             raise InputError(f"{str(exc).split(';')[0]}; valid regions: {names}") from None
+        except ModelError as exc:
+            msg = str(exc)
+            if "not fully supported" in msg:
+                raise InputError(f"supports: {msg}") from None
+            key = next((k for k in ("forces", "pressures", "pin_loads", "gravity") if (loads or {}).get(k)), None)
+            if key and msg.startswith("every load acts only on held nodes"):
+                raise InputError(f"{key}: {msg}") from None
+            raise
 
 
 def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
@@ -224,7 +234,7 @@ def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     from mechverify.fea.buckling import NoBucklingFactorError, buckling
 
     model = c.model(_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
-    with c.regions():
+    with c.regions(loads):
         try:
             return fc.check_buckling_load_factor(buckling(model, 1), component=c.name)
         except NoBucklingFactorError as exc:
