@@ -457,3 +457,20 @@ def test_a_check_without_loads_that_reads_the_design_runs_again(base, self_locki
     ctx = _Watched("c", "", 1.0, {}, None)
     assert "read_design" not in ctx.__dict__ and ctx.required_sf == 1.0 and "read_design" not in ctx.__dict__
     assert ctx.design is None and ctx.__dict__["read_design"]
+
+
+def test_the_variant_copy_of_the_toml_data_equals_deepcopy():
+    """Design.with_overrides copies the TOML data with design._copy_doc: equal to copy.deepcopy (tables and arrays
+    new objects, a table reached twice copied once, other objects deep-copied) and independent of the original."""
+    import datetime
+
+    from mechverify.design.design import _copy_doc
+
+    shared = {"x": "1 mm"}
+    doc = {"a": [1, 2.5, True, None, {"b": "s"}], "t": shared, "u": shared, "d": datetime.date(2026, 1, 2),
+           "n": {"m": [[1], [2]]}}
+    out = _copy_doc(doc, {})
+    assert out == copy.deepcopy(doc) == doc
+    assert out["t"] is out["u"] and out["t"] is not shared and out["a"][4] is not doc["a"][4]
+    out["n"]["m"][0].append(3)
+    assert doc["n"]["m"][0] == [1]

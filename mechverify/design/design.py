@@ -62,7 +62,7 @@ class Design:
         "25 mm"}``. Every key on the way must exist except the last one; a bad path or value is a
         :class:`DesignFileError` with the key path.
         """
-        doc = copy.deepcopy(self.data.raw)
+        doc = _copy_doc(self.data.raw, {})
         errors = []
         for key, value in overrides.items():
             try:
@@ -135,18 +135,31 @@ class Design:
 
     # ----------------------------------------------------------------- checks
     def enabled_checks(self, entry: Entry) -> Iterator[tuple[CheckSpec, float]]:
+        memo = self.__dict__.setdefault("_enabled", {})  # (the plan and verify read it: found once per design)
+        hit = memo.get(entry.name)
+        if hit is None or hit[0] is not entry:
+            hit = memo[entry.name] = (entry, list(self._enabled_checks(entry)))
+        return iter(hit[1])
+
+    def _enabled_checks(self, entry: Entry) -> Iterator[tuple[CheckSpec, float]]:
         for spec in entry.type.checks:
             setting = entry.checks.get(spec.name, {})
             if setting.get("enabled", spec.default):
                 yield spec, float(setting.get("required_sf", self.data.safety_factors[spec.sf_kind]))
 
     def _cases_for(self, entry: Entry, spec: CheckSpec) -> list[tuple[str, dict[str, Any]]]:
+        memo = self.__dict__.setdefault("_cases", {})  # (the plan and verify read it: found once per design)
+        key = (entry.name, spec.needs)
+        hit = memo.get(key)
+        if hit is not None and hit[0] is entry:
+            return list(hit[1])
         out = []
         for case, comps in self.data.load_cases.items():
             loads = comps.get(entry.name)
             if loads is not None and all(any(a in loads for a in n.split("|")) for n in spec.needs):
                 out.append((case, loads))
-        return out
+        memo[key] = (entry, out)
+        return list(out)
 
     def _check_plan(self) -> None:
         errors = []
@@ -361,6 +374,32 @@ def _set_path(doc: dict[str, Any], key: str, value: Any) -> None:
         raise _PathError(f"{'.'.join(str(p) for p in parts[:-1])}: not a table")
     else:
         node[last] = value
+
+
+_ATOMS = frozenset({str, int, float, bool, type(None)})
+
+
+def _copy_doc(v: Any, memo: dict[int, Any]) -> Any:
+    """``copy.deepcopy`` of TOML data, faster: its tables and arrays copied (a table reached twice copied once, as
+    deepcopy does), strings, numbers and booleans shared (immutable), anything else through ``copy.deepcopy``."""
+    t = type(v)
+    if t in _ATOMS:
+        return v
+    hit = memo.get(id(v))
+    if hit is not None:
+        return hit
+    if t is dict:
+        out: Any = {}
+        memo[id(v)] = out
+        for k, x in v.items():
+            out[k] = x if type(x) in _ATOMS else _copy_doc(x, memo)
+        return out
+    if t is list:
+        out = []
+        memo[id(v)] = out
+        out.extend(x if type(x) in _ATOMS else _copy_doc(x, memo) for x in v)
+        return out
+    return copy.deepcopy(v, memo)
 
 
 def _toml_value(v: Any) -> Any:
