@@ -100,6 +100,19 @@ class InPlaneLoad:
         return N
 
 
+def nominal_membrane_von_mises(load: InPlaneLoad, bounds: tuple[float, float, float, float], thickness: float
+                               ) -> float:
+    """The largest von Mises stress [Pa] of the in-plane ``load``'s own field ``N / t`` on a plate with ``bounds``
+    [m] and ``thickness`` [m]: the field is linear, so the peak of the (convex) von Mises norm is at a corner
+    (Hill, The Mathematical Theory of Plasticity, 1950: the von Mises criterion). Before any concentration at
+    holes (Kirsch: up to 3x the nominal stress at a round hole under uniaxial load)."""
+    N = load.field(bounds)
+    x0, y0, x1, y1 = bounds
+    nxx, nyy, nxy = (np.asarray(c, float) / thickness for c in N(np.array([x0, x1, x0, x1]),
+                                                                np.array([y0, y0, y1, y1])))
+    return float(np.max(np.sqrt(nxx**2 - nxx * nyy + nyy**2 + 3 * nxy**2)))
+
+
 @dataclass(frozen=True, eq=False)
 class PlateBuckling:
     """Buckling load factors ``factors[k]`` (ascending, positive, multiplying the in-plane load), mode shapes

@@ -171,6 +171,14 @@ def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
         fine = solve_plate(model, Q(h / REFINE, "m"), Q(hh / REFINE, "m"))
         res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, (h, hh))
         notes += more
+    if "in_plane" in loads:  # the bending model carries no membrane stress: say how large it is, never drop it
+        from mechverify.fea.plate_buckling import nominal_membrane_von_mises
+
+        load = mp.in_plane_load(loads["in_plane"], f"load_cases.{ctx.load_case}.{c.name}.in_plane")
+        vm = nominal_membrane_von_mises(load, c.plate.region.bounds, c.plate.thickness_q.m_as("m"))
+        warns = [*warns, f"this case's in_plane loads put a membrane stress of {vm / 1e6:.4g} MPa (von Mises of N/t, "
+                 "before any concentration at holes: up to 3x at a round hole) into the plate, which this bending "
+                 "stress does not include: check membrane + bending by hand or in a solid_fea study"]
     return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns)
 
 
