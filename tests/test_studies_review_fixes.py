@@ -431,3 +431,20 @@ def test_narrow_results_tables_are_still_drawn_like_rich():
         assert mine == [x.rstrip("\n") for x in buf.getvalue().splitlines()], width
         drawn += 1
     assert drawn >= 1  # (a name cropped with "…" is left to rich: the renderer declines)
+
+
+def test_size_margin_words_for_negative_values():
+    """Review 2 finding 2 (session 3): a compressive in-plane load sized from -10 to its limit -53.46 N/mm read
+    'the limit is 434.6 % above today's value: it may rise' (it must become more negative). For two negative values
+    the words speak of the magnitude; a limit across zero says so."""
+    from mechverify.studies.sizing import SizingResult
+
+    def r(today: float, limit: float, fu: float = 0.5) -> SizingResult:
+        return SizingResult("p", "N/mm", "governing", today, fu, limit, "x", (limit,), (-200.0, -1.0), 10)
+
+    assert r(-10.0, -53.4638).margin_text() == ("the limit is 434.6 % above today's value in magnitude: it may grow "
+                                                "by 434.6 % before u·SF reaches 1")
+    assert r(-10.0, -5.0, 2.0).margin_text() == ("the limit is 50.0 % below today's value in magnitude: it must "
+                                                 "shrink by 50.0 % for u·SF to come down to 1")
+    assert r(10.0, 12.0).margin_text().startswith("the limit is 20.0 % above today's value: it may rise by 20.0 %")
+    assert "other side of zero" in r(-10.0, 5.0).margin_text()

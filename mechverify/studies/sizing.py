@@ -74,11 +74,20 @@ class SizingResult:
             return f"the limit is {self.limit:.6g} (today's value is zero)"
         if m == 0:
             return "today's value is the limit"
-        way, verb = ("above", "rise") if m > 0 else ("below", "fall")
         pct = f"{abs(m):.1%}".replace("%", " %")
+        if self.today < 0 < self.limit or self.limit < 0 < self.today:
+            way = "above" if self.limit > self.today else "below"
+            goal = "reach 1" if self.today_fu <= 1 else "come down to 1"
+            return (f"the limit lies {way} today's value, on the other side of zero: it changes sign before u·SF "
+                    f"can {goal}")
+        # m = (limit - today) / today: for two negative values its sign is that of the change in magnitude
+        size = " in magnitude" if self.today < 0 else ""
+        way, verb = ("above", "rise") if m > 0 else ("below", "fall")
+        if self.today < 0:
+            way, verb = ("above", "grow") if m > 0 else ("below", "shrink")
         if self.today_fu <= 1:
-            return f"the limit is {pct} {way} today's value: it may {verb} by {pct} before u·SF reaches 1"
-        return f"the limit is {pct} {way} today's value: it must {verb} by {pct} for u·SF to come down to 1"
+            return f"the limit is {pct} {way} today's value{size}: it may {verb} by {pct} before u·SF reaches 1"
+        return f"the limit is {pct} {way} today's value{size}: it must {verb} by {pct} for u·SF to come down to 1"
 
     def to_dict(self) -> dict[str, Any]:
         return {"parameter": self.parameter, "unit": self.unit, "until": self.until, "today": self.today,
