@@ -35,7 +35,7 @@ FEA_SOURCE = ref("zienkiewicz_taylor_zhu", "ch. 6 (3D elasticity, quadratic tetr
 MODAL_SOURCE = (f"{ref('zienkiewicz_taylor_zhu', 'sec. 16.2 (consistent mass, eigenproblem)')}; verified against "
                 f"{ref('blevins', 'Table 8-1')} and CalculiX *FREQUENCY")
 BUCKLE_SOURCE = (f"linearized buckling with the initial-stress matrix; verified against "
-                 f"{ref('timoshenko_gere_stability', 'sec. 2.1')} and CalculiX *BUCKLE")
+                 f"{ref('timoshenko_gere_stability', 'sec. 2.1 (columns), ch. 9 (plates)')} and CalculiX *BUCKLE")
 
 
 def _where(res: Any, node: int) -> str:
