@@ -51,8 +51,10 @@ if [ -n "$uv" ]; then
   # ever be written, and every run would compile again, so then uv compiles at install as pip does.
   compile=()
   [ -n "${PYTHONDONTWRITEBYTECODE:-}" ] && compile=(--compile-bytecode)
+  echo "scripts/install.sh: installing $* into $VENV with uv (a first install downloads the wheels)" >&2
   exec "$uv" pip install -q ${compile[@]+"${compile[@]}"} --python "$py" "$@"
 fi
 "$py" -m pip --version >/dev/null 2>&1 || "$py" -m ensurepip >/dev/null
 "$py" -m pip install -q --upgrade pip
+echo "scripts/install.sh: installing $* into $VENV with pip (a first install downloads the wheels)" >&2
 exec "$py" -m pip install -q "$@"
