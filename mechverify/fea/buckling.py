@@ -41,6 +41,7 @@ from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
 from mechverify.fea.factor import METHODS, cholmod_available, factorize
 from mechverify.fea.modal import _parts, _pattern, mode_count, require_memory, stiffness_matrix
+from mechverify.fea.reproducible import reproducible
 
 
 class NoBucklingFactorError(ModelError):
@@ -92,6 +93,7 @@ class BucklingResults:
         return float(self.factors[0])
 
 
+@reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
 def buckling(model: Any, n_modes: int = 1, method: str = "auto", memory: float | None = None) -> BucklingResults:
     """The ``n_modes`` lowest positive buckling load factors of ``model`` under its loads (see module doc).
 

@@ -61,6 +61,7 @@ from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
 from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread, symbolic_cost
 from mechverify.fea.linsolve import check_supported, p1_prolongation, pmg_preconditioner, rigid_modes
+from mechverify.fea.reproducible import reproducible
 from mechverify.units import Q, to_si
 
 #: ``method`` values of :func:`modal`.
@@ -413,6 +414,7 @@ def _lobpcg(model: Any, Kf: sp.csr_matrix, Mf: _NodeMass, free: np.ndarray, dim:
                      "method='cholmod' (a factorisation) if it fits in memory")
 
 
+@reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
 def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto", rtol: float = 1e-5,
           memory: float | None = None) -> ModalResults:
     """The ``n_modes`` natural frequencies of ``model`` nearest above ``shift`` (a frequency; default: the

@@ -58,6 +58,7 @@ from mechverify.fea.loads import (
 from mechverify.fea.mesh import SolidMesh
 from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
+from mechverify.fea.reproducible import reproducible
 from mechverify.fea.results import FieldResults
 from mechverify.frozen import set_fields
 from mechverify.materials.database import get as get_material
@@ -389,6 +390,7 @@ class SolidModel:
             _, measure = asm.barycentric_gradients(m.p, m.t)
         return asm.assemble_blocks(blocks, pattern, 3), measure
 
+    @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, method: str = "auto", progress: bool | None = None,
               recovery: str = rc.DEFAULT_METHOD, factorization: Any = None) -> FieldResults:
         """Assemble, check the supports, solve, recover stresses, check equilibrium.

@@ -42,6 +42,7 @@ from mechverify.fea.linsolve import (
     pcg,
     pmg_preconditioner,
 )
+from mechverify.fea.reproducible import reproducible
 
 #: Memory of the static solver per unknown [bytes] (FEA benchmark: 4.3 kB per DOF at 200k-830k DOF).
 BYTES_PER_DOF = 4300.0
@@ -66,6 +67,7 @@ class SharedSolve:
     rtol: float = 1e-10
 
     @classmethod
+    @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def of(cls, model: Any, method: str = "auto", cases: int = 1) -> SharedSolve:
         """Assemble and factor the stiffness of ``model`` (a SolidModel or PlaneModel) once. ``method="auto"``: a
         factorisation up to :data:`ITERATIVE_THRESHOLD_3D` unknowns (and in 2D); above, with CHOLMOD installed, the
@@ -98,6 +100,7 @@ class SharedSolve:
             raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
         return cls(K, held, method, apply, Kff, free, time.perf_counter() - t0)
 
+    @reproducible
     def solve_many(self, F: np.ndarray) -> tuple[np.ndarray, SolveInfo]:
         """``U[n, k]`` with ``K U = F`` for the ``k`` load vectors ``F[n, k]`` (zero at the held DOFs): one block
         solve on the factorisation (BLAS-3: a fraction of ``k`` single solves), or one CG run per column on the
@@ -122,6 +125,7 @@ class SharedSolve:
         return U, SolveInfo(f"{self.method} (shared, block of {F.shape[1]})", int(self._free.size), iters, res,
                             time.perf_counter() - t0)
 
+    @reproducible
     def solve(self, f: np.ndarray, held: np.ndarray | None = None) -> tuple[np.ndarray, SolveInfo]:
         """``u`` with ``K u = f`` at the free DOFs, zero at the held ones, and how it was solved."""
         if held is not None and not np.array_equal(np.unique(held), self.held):

@@ -22,6 +22,7 @@ from mechverify.design.adapters.modal_parsing import modal_settings
 from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, ModelError, UnknownNameError
+from mechverify.fea.reproducible import one_blas_thread, reproducible
 from mechverify.units import Q
 
 LOADS = ("forces|pressures|pin_loads|gravity",)
@@ -62,6 +63,7 @@ class SolidStudy:
 
         return SolidModel(self.mesh(), self.p["material"], supports=self.supports, loads=loads)
 
+    @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
         if case not in self.solved:
             from mechverify.fea.study import SharedSolve
@@ -156,7 +158,7 @@ def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
         fine_mesh = _make_mesh({**c.p, "mesh_size": c.p["mesh_size"] / REFINE}, c.unit)
         model = SolidModel(fine_mesh, c.p["material"], supports=c.supports,
                            loads=_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
-        with c.regions():
+        with c.regions(), one_blas_thread():
             fine_res = model.solve()
         fine = fine_res.max_von_mises.value.m_as("MPa")
         chk = two_mesh_check(res.max_von_mises.value.m_as("MPa"), fine, REFINE, 2.0,
