@@ -45,12 +45,16 @@ _limiter: Any = None
 
 @functools.cache
 def _controller() -> Any:
-    """A ``threadpoolctl.ThreadpoolController`` of the BLAS libraries this process uses, CHOLMOD's included (it is
-    imported first: a controller lists only the libraries loaded when it is made); None without threadpoolctl."""
+    """A ``threadpoolctl.ThreadpoolController`` of the BLAS libraries this process uses: numpy's, scipy's (ARPACK,
+    LAPACK) and CHOLMOD's are loaded first, since a controller lists only the libraries loaded when it is made (scipy's
+    own OpenBLAS was missing when the first solve came before any scipy.linalg import, and buckling's ARPACK then ran
+    on two threads); None without threadpoolctl."""
     try:
         from threadpoolctl import ThreadpoolController
     except ImportError:
         return None
+    import scipy.linalg  # scipy's BLAS/LAPACK library
+    import scipy.sparse.linalg  # noqa: F401  (ARPACK)
     with contextlib.suppress(Exception):  # optional; a broken build is the factor module's business
         import sksparse.cholmod  # noqa: F401
     return ThreadpoolController()
