@@ -377,10 +377,12 @@ def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np
     ``‖b - A x‖ ≤ rtol ‖b‖``; :class:`ModelError` when it does not get there. From iteration
     :data:`PREDICT_AFTER` on (every 10) the mean convergence factor so far predicts the iterations needed; it
     raises :class:`SlowConvergence` (the caller switches to a direct solve) when they exceed ``predict_limit``, or
-    when the remaining iterations at the measured seconds per iteration exceed ``direct_seconds`` (the predicted
-    cost of a factorisation; a function giving it - or None, no factorisation - is called once, the first time
-    more than 1.5 :data:`CG_EXPECTED_ITERATIONS` are predicted)."""
-    t0 = time.process_time()
+    when the remaining iterations at the model's seconds per iteration (``A.nnz`` ·
+    :data:`CG_SECONDS_PER_NNZ`, not the measured time: the choice, and so the result's last digits, must not
+    depend on the machine's load or the executor) exceed ``direct_seconds`` (the predicted cost of a
+    factorisation; a function giving it - or None, no factorisation - is called once, the first time more than
+    1.5 :data:`CG_EXPECTED_ITERATIONS` are predicted)."""
+    per_iteration = A.nnz * CG_SECONDS_PER_NNZ
     bnorm = float(np.linalg.norm(b))
     x = np.zeros_like(b)
     if bnorm == 0:
@@ -400,7 +402,6 @@ def pcg(A: sp.csr_matrix, b: np.ndarray, precondition: Callable[[np.ndarray], np
         if (predict_limit is not None or direct_seconds is not None) and k >= PREDICT_AFTER and k % 10 == 0:
             rate = (rnorm / bnorm) ** (1.0 / k)
             predicted = np.log(rtol) / np.log(rate) if rate < 1 else np.inf
-            per_iteration = (time.process_time() - t0) / k
             if predict_limit is not None and predicted > predict_limit:
                 raise SlowConvergence(f"CG would need about {predicted:.0f} iterations (convergence factor "
                                       f"{rate:.3f} over {k})", k, float(predicted))
