@@ -156,8 +156,15 @@ def memory_note(memory_per_worker: Any, workers: int) -> str:
 
 
 def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:
-    """A local process pool (the platform's default start method), one BLAS thread per worker."""
-    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread)
+    """A local process pool, one BLAS thread per worker. Workers start from a fork server (a clean process), not
+    by forking this one: a fork copies gmsh's and the BLAS libraries' thread state, and workers forked after a
+    solid_fea study in the same process hung at 0 % CPU."""
+    import multiprocessing
+
+    ctx = multiprocessing.get_context("forkserver" if "forkserver" in multiprocessing.get_all_start_methods()
+                                      else "spawn")
+    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread,
+                                  mp_context=ctx)
 
 
 class SerialExecutor(cf.Executor):
