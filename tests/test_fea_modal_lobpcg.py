@@ -171,3 +171,17 @@ def test_buckling_bad_input_named():
         buckling.buckling(held, 10_000)
     assert buckling.buckling(held, 1, method="superlu").first_factor == pytest.approx(
         buckling.buckling(held, 1).first_factor, rel=1e-9)
+
+
+def test_lobpcg_refuses_a_block_larger_than_a_fifth_of_the_model():
+    """Review 2 (session 3): 1000 of 3000 free DOF with method='lobpcg' was a raw ValueError from SciPy's dense
+    fallback (another return signature); now a named InputError before assembly."""
+    from mechverify.errors import InputError
+    from mechverify.fea import mesh, modal, solid
+    from mechverify.fea.loads import Fixed
+    from mechverify.fea.regions import Plane
+
+    model = solid.SolidModel(mesh.box(("100 mm", "10 mm", "10 mm"), (20, 2, 2)), "Structural Steel",
+                             supports=(Fixed(Plane(x="0 mm")),))
+    with pytest.raises(InputError, match="too many for LOBPCG"):
+        modal.modal(model, n_modes=1000, method="lobpcg")

@@ -454,6 +454,13 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
         raise InputError("shift: LOBPCG finds the lowest modes; modes near a frequency need a factorisation "
                          "(method 'auto', 'cholmod' or 'superlu')")
     f0 = None if shift is None else shift_frequency(shift)
+    # SciPy's lobpcg turns to a dense eigensolver (with another return signature) when its block exceeds a fifth
+    # of the unknowns: so many modes are a factorisation's job
+    block_fits = 5 * (n_modes + max(LOBPCG_GUARD, n_modes // 2) + 6) < free.size
+    if method == "lobpcg" and not block_fits:
+        raise InputError(f"n_modes: {n_modes} modes of a model with {free.size} free degrees of freedom are too many "
+                         "for LOBPCG (its block must stay under a fifth of the unknowns): ask fewer modes or use "
+                         "method 'auto', 'cholmod' or 'superlu'")
     used = choose_method(free.size, dim, n_modes, shift, memory) if method == "auto" else method
     # before assembling anything: what the least demanding allowed path needs must fit (the measured rule)
     require_memory(free.size, dim, n_modes, "lobpcg" if method == "auto" and shift is None else used, memory)
@@ -468,6 +475,8 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
         if symbolic is not None:
             need = symbolic.factor_bytes + (MATRIX_BYTES_PER_DOF + 8 * (2 * n_modes + 1)) * free.size
             used = "cholmod" if need <= _available(memory) else "lobpcg"
+    if used == "lobpcg" and not block_fits:
+        used = "cholmod" if cholmod_available() else "superlu"
     Mf: Any
     if used == "lobpcg":  # the node mass m (M = m ⊗ I): a ninth of M's memory and a cheaper product
         Mf = _NodeMass(node_mass_matrix(model, pattern), free, dim)
