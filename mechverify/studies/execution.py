@@ -156,15 +156,9 @@ def memory_note(memory_per_worker: Any, workers: int) -> str:
 
 
 def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:
-    """A local process pool, one BLAS thread per worker. Workers start from a fork server (a clean process), not
-    by forking this one: a fork copies gmsh's and the BLAS libraries' thread state, and workers forked after a
-    solid_fea study in the same process hung at 0 % CPU."""
-    import multiprocessing
-
-    ctx = multiprocessing.get_context("forkserver" if "forkserver" in multiprocessing.get_all_start_methods()
-                                      else "spawn")
-    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread,
-                                  mp_context=ctx)
+    """A local process pool (the platform's default start method: a script without an ``if __name__ ==
+    "__main__"`` guard keeps working), one BLAS thread per worker."""
+    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread)
 
 
 class SerialExecutor(cf.Executor):
