@@ -145,7 +145,7 @@ def _frame_rows(samples: int = 7) -> dict:
             fr.analyse({"q": [ld]})
         return (time.process_time() - t0) / (samples - 1)
 
-    from mechverify.fea.factor import one_blas_thread
+    from mechverify.fea.reproducible import one_blas_thread
 
     with one_blas_thread():  # as in a study worker (the dense mechanism check is an eigh)
         cached = min(run() for _ in range(3))

@@ -36,12 +36,10 @@ References
 
 from __future__ import annotations
 
-import contextlib
 import ctypes
 import ctypes.util
 import functools
 import time
-from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -50,6 +48,7 @@ import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
 from mechverify.errors import InputError, ModelError
+from mechverify.fea.reproducible import one_blas_thread
 
 METHODS = ("auto", "cholmod", "superlu")
 ORDERINGS = ("amd", "metis")
@@ -73,31 +72,6 @@ def cholmod_available() -> bool:
     except Exception:  # ImportError, or a broken build against another SuiteSparse
         return False
     return True
-
-
-@contextlib.contextmanager
-def one_blas_thread() -> Iterator[None]:
-    """Limit BLAS to one thread inside the block (``threadpoolctl`` when installed, else no effect).
-
-    One ``ThreadpoolController`` per process (it lists the loaded libraries once): ``threadpool_limits``
-    builds a new one on every call, 1-8 ms, which every solve of an ARPACK loop paid (0.03 ms this way)."""
-    controller = _controller()
-    if controller is None:
-        yield
-        return
-    with controller.limit(limits=1, user_api="blas"):
-        yield
-
-
-@functools.cache
-def _controller() -> Any:
-    """The process's ``threadpoolctl.ThreadpoolController`` (numpy's and scipy's BLAS are loaded by now: this
-    module imports scipy.sparse.linalg), or None without threadpoolctl."""
-    try:
-        from threadpoolctl import ThreadpoolController
-    except ImportError:
-        return None
-    return ThreadpoolController()
 
 
 @dataclass(frozen=True, eq=False)

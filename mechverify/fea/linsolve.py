@@ -257,7 +257,8 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     rhs = f[free] - (Kr[:, held] @ u[held] if prescribed is not None and np.any(u[held]) else 0.0)
     Kff = Kr[:, free]
     del Kr
-    from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
+    from mechverify.fea.factor import cholmod_available, factorize
+    from mechverify.fea.reproducible import one_blas_thread
 
     cost, label, analysis = None, "", None
     if method == "auto":

@@ -59,9 +59,9 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
-from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread, symbolic_cost
+from mechverify.fea.factor import cholmod_available, factorize, symbolic_cost
 from mechverify.fea.linsolve import check_supported, p1_prolongation, pmg_preconditioner, rigid_modes
-from mechverify.fea.reproducible import reproducible
+from mechverify.fea.reproducible import one_blas_thread, reproducible
 from mechverify.units import Q, to_si
 
 #: ``method`` values of :func:`modal`.

@@ -32,7 +32,7 @@ import numpy as np
 import scipy.sparse as sp
 
 from mechverify.errors import InputError, ModelError
-from mechverify.fea.factor import cholmod_available, factorize, one_blas_thread
+from mechverify.fea.factor import cholmod_available, factorize
 from mechverify.fea.linsolve import (
     ITERATIVE_THRESHOLD_3D,
     SolveInfo,
@@ -42,7 +42,7 @@ from mechverify.fea.linsolve import (
     pcg,
     pmg_preconditioner,
 )
-from mechverify.fea.reproducible import reproducible
+from mechverify.fea.reproducible import one_blas_thread, reproducible
 
 #: Memory of the static solver per unknown [bytes] (FEA benchmark: 4.3 kB per DOF at 200k-830k DOF).
 BYTES_PER_DOF = 4300.0
