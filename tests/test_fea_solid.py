@@ -88,7 +88,7 @@ def test_missing_gmsh_gives_install_command(monkeypatch):
         return real(name, *a, **k)
 
     monkeypatch.setattr(builtins, "__import__", fake)
-    with pytest.raises(ModelError, match=r"pip install 'mechverify\[mesh\]'"):
+    with pytest.raises(ModelError, match=r"scripts/install\.sh -e '\.\[mesh\]'"):
         mesh.cylinder("5 mm", "50 mm", "2 mm")
 
 

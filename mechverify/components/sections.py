@@ -61,7 +61,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import pint
 
-from mechverify.errors import InputError, ModelError, UnknownNameError, suggest
+from mechverify.errors import InputError, ModelError, UnknownNameError, install_hint, suggest
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, from_si, to_si
 
@@ -69,7 +69,7 @@ if TYPE_CHECKING:
     from shapely.geometry import Polygon as ShapelyPolygon
 
 SECTIONS_HINT = ("arbitrary polygon sections need sectionproperties, an optional extra: "
-                 "pip install 'mechverify[sections]'  (or: pip install sectionproperties)")
+                 + install_hint("sections", "sectionproperties"))
 _ARC_POINTS = 48  # straight segments per fillet arc of the closed-form outlines
 
 NU_SHEAR = 0.0  # Poisson ratio for shear areas: 5/6 A for a rectangle in both the closed form and sectionproperties

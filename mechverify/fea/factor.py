@@ -47,7 +47,7 @@ import numpy as np
 import scipy.sparse as sp
 import scipy.sparse.linalg as spl
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError, ModelError, install_hint
 from mechverify.fea.reproducible import one_blas_thread
 
 METHODS = ("auto", "cholmod", "superlu")
@@ -245,7 +245,7 @@ def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness m
     t0 = time.perf_counter()
     if method == "cholmod":
         if not cholmod_available():
-            raise InputError("method 'cholmod' needs scikit-sparse: pip install 'mechverify[direct]' (it builds "
+            raise InputError(f"method 'cholmod' needs scikit-sparse: {install_hint('direct')} (it builds "
                              "against SuiteSparse: apt-get install libsuitesparse-dev)")
         from sksparse.cholmod import CholmodError, cholesky
 

@@ -21,11 +21,10 @@ from typing import Any
 import numpy as np
 from skfem import Basis, ElementTetP2, MeshTet
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError, ModelError, install_hint
 from mechverify.units import Q, QuantityLike, to_si
 
-GMSH_HINT = ("this needs the gmsh mesher, an optional extra (GPL-licensed): "
-             "pip install 'mechverify[mesh]'  (or: pip install gmsh)")
+GMSH_HINT = "this needs the gmsh mesher, an optional extra (GPL-licensed): " + install_hint("mesh", "gmsh")
 
 
 def import_gmsh() -> Any:

@@ -3,9 +3,9 @@
 ``explore(design)`` shows one slider per numeric ``[parameters]`` value (not for a parameter written as an
 expression: it follows its inputs), or per key path given, from half to twice today's value unless a range
 is given, the summary table of
-u·SF per check and the governing check's figure. Needs ``ipywidgets`` (``pip install
-'mechverify[explore]'``). Each change builds the variant with :meth:`Design.with_overrides` and
-verifies it; an invalid combination shows its message instead of the table.
+u·SF per check and the governing check's figure. Needs ``ipywidgets`` (the ``explore`` extra:
+``scripts/install.sh -e '.[explore]'`` in a clone). Each change builds the variant with
+:meth:`Design.with_overrides` and verifies it; an invalid combination shows its message instead of the table.
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ import html
 from collections.abc import Mapping, Sequence
 from typing import Any
 
-from mechverify.errors import InputError, MechverifyError, UnknownNameError
+from mechverify.errors import InputError, MechverifyError, UnknownNameError, install_hint
 from mechverify.studies.params import Parameter, resolver
 from mechverify.studies.study import design_and_source
 from mechverify.units import Q
@@ -109,7 +109,7 @@ class Explorer:
         try:
             import ipywidgets as w
         except ImportError:
-            raise InputError("explore() needs ipywidgets: pip install 'mechverify[explore]'") from None
+            raise InputError(f"explore() needs ipywidgets: {install_hint('explore', 'ipywidgets')}") from None
         self.doc, self.path, self.design = design_and_source(design)
         self.params = _parameters(self.design, self.doc, names)
         self.html = ""

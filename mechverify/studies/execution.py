@@ -21,7 +21,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from mechverify.errors import MechverifyError
+from mechverify.errors import MechverifyError, install_hint
 
 _LIMITED = False
 
@@ -198,7 +198,7 @@ def connect_dask(address: str, timeout: float = 10.0) -> Any:
         from distributed import Client
     except ImportError:
         raise SchedulerError("running on a Dask cluster needs the 'cluster' extra: "
-                             "pip install 'mechverify[cluster]'") from None
+                             + install_hint("cluster")) from None
     if not (isinstance(timeout, int | float) and math.isfinite(timeout) and timeout > 0):
         raise SchedulerError(f"--timeout: expected a positive number of seconds, got {timeout!r}")
     made: list[Any] = []
