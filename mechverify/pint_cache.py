@@ -77,12 +77,14 @@ def install(ureg: Any) -> None:
     def fast_define(*args: Any, **kwargs: Any) -> Any:
         parsed.clear()
         factors.clear()
+        targets.clear()
         return define(*args, **kwargs)
 
     ureg.parse_units_as_container = parse_units_as_container
     ureg.convert = fast_convert
     ureg.define = fast_define
     _fast_quantities(ureg, UnitsContainer)
+    targets = _fast_to(ureg, UnitsContainer, fast_convert)
     _cached_unit_text(ureg)
     ureg._mechverify_fast = True
 
@@ -111,6 +113,56 @@ def _fast_quantities(ureg: Any, units_container: type) -> None:
         return base_new(klass, value, units)
 
     cls.__new__ = __new__
+
+
+def _fast_to(ureg: Any, units_container: type, convert: Any) -> dict[str, Any]:
+    """``q.to(unit)`` and ``q.m_as(unit)`` of this registry's quantities with the target unit's container looked up
+    in a dict (pint runs its preprocessors and ``to_units_container`` on every call) and converted by ``convert``
+    (:func:`install`'s, the one pint's ``to`` reaches too): the same magnitude and units as pint's ``to``. Contexts,
+    and any target that is not a string, a unit or a units container, go to pint's own methods. Returns the dict of
+    targets (cleared with the other caches when a unit is defined, and when the registry's preprocessors change)."""
+    from pint.util import to_units_container
+
+    cls = ureg.Quantity
+    unit_cls = ureg.Unit
+    base_to, base_m_as = cls.to, cls.m_as
+    targets: dict[str, Any] = {}
+    count = [len(ureg.preprocessors)]
+
+    def target(other: Any) -> Any:
+        t = type(other)
+        if t is str:
+            if len(ureg.preprocessors) != count[0]:  # a preprocessor added or removed: parse anew
+                targets.clear()
+                count[0] = len(ureg.preprocessors)
+            dst = targets.get(other)
+            if dst is None:
+                dst = to_units_container(other, ureg)
+                if len(targets) < 4096:
+                    targets[other] = dst
+            return dst
+        if t is unit_cls:
+            return other._units
+        if t is units_container:
+            return other
+        return None
+
+    def to(self: Any, other: Any = None, *contexts: Any, **ctx_kwargs: Any) -> Any:
+        if not contexts and not ctx_kwargs:
+            dst = target(other)
+            if dst is not None:
+                return self.__class__(convert(self._magnitude, self._units, dst), dst)
+        return base_to(self, other, *contexts, **ctx_kwargs)
+
+    def m_as(self: Any, units: Any) -> Any:
+        dst = target(units)
+        if dst is not None:
+            return convert(self._magnitude, self._units, dst)
+        return base_m_as(self, units)
+
+    to.__doc__, m_as.__doc__ = base_to.__doc__, base_m_as.__doc__
+    cls.to, cls.m_as = to, m_as
+    return targets
 
 
 def _cached_unit_text(ureg: Any) -> None:

@@ -114,3 +114,30 @@ def test_unit_texts_are_pints(plain: pint.UnitRegistry, unit: str) -> None:
         for _ in range(2):  # the second answer comes from the cache
             assert format(ours, spec) == format(ref, spec)
     assert str(ours) == str(ref)
+
+
+@pytest.mark.parametrize(("src", "dst"), PAIRS)
+def test_to_and_m_as_by_unit_and_container_are_pints(plain: pint.UnitRegistry, src: str, dst: str) -> None:
+    """``to``/``m_as`` look the target up in a dict (issue 19): a string, a unit or a units container as target
+    gives pint's magnitude bit for bit and pint's units."""
+    for value in (1.0, 350.0, -2.5e-7, 7, np.array([0.1, 3.3])):
+        ref = plain.Quantity(value, src).to(dst)
+        for target in (dst, ureg.Unit(dst), ureg.Unit(dst)._units):
+            q = Q(value, src).to(target)
+            assert np.array_equal(q.magnitude, ref.magnitude) and type(q.magnitude) is type(ref.magnitude)
+            assert q.units == ureg.Unit(dst) and type(q) is ureg.Quantity
+            m = Q(value, src).m_as(target)
+            assert np.array_equal(m, ref.magnitude) and type(m) is type(ref.magnitude)
+
+
+def test_to_steps_aside_for_contexts_and_follows_new_preprocessors() -> None:
+    with ureg.context("sp"):
+        assert Q(500.0, "nm").to("THz").magnitude == pytest.approx(599.584916)
+    assert Q(500.0, "nm").to("THz", "sp").magnitude == pytest.approx(599.584916)  # a context passed to to()
+    assert Q(2.0, "m").to("mm").magnitude == 2000.0
+    ureg.preprocessors.append(lambda s: s.replace("mechverify_milli_test", "mm"))
+    try:  # a preprocessor added later is applied to targets parsed after it
+        assert Q(2.0, "m").to("mechverify_milli_test").magnitude == 2000.0
+        assert Q(2.0, "m").m_as("mechverify_milli_test") == 2000.0
+    finally:
+        ureg.preprocessors.pop()

@@ -12,7 +12,7 @@ import pytest
 
 from mechverify import Q, UnitError, ureg
 from mechverify.errors import InputError, MechverifyError
-from mechverify.units import as_quantity, from_si, require_positive, si_function, to_si
+from mechverify.units import DIMENSIONS, as_quantity, from_si, require_positive, si_function, to_si
 
 G0 = 9.80665
 LB = 0.45359237
@@ -121,3 +121,66 @@ def test_require_positive_shows_the_unit_with_dim():
 
 def test_from_si_unit():
     assert from_si(2.0, "torque").m_as("N*mm") == pytest.approx(2000.0)
+
+
+def test_si_function_fast_binding_equals_the_signature_binding():
+    """The wrapper binds simple calls itself (issue 19: ``inspect.Signature.bind`` cost ~10 us a call): the SI
+    function must receive exactly what ``sig.bind`` + ``apply_defaults`` + the conversion give, in every form of
+    call, and a wrong call must raise the TypeError of the signature binding."""
+    import inspect
+
+    seen = []
+
+    def raw(F, A="2 mm**2", *, k=1.0, L=None, tag="x"):
+        seen.append((F, A, k, L, tag))
+        return F / (A or 1.0) * k
+
+    f = si_function(returns="pressure", F="force", A="area", L="length")(raw)
+    sig = inspect.signature(raw)
+    dims = {"F": "force", "A": "area", "L": "length"}
+
+    def expected(*args, **kwargs):
+        b = sig.bind(*args, **kwargs)
+        b.apply_defaults()
+        for p, d in dims.items():
+            if b.arguments.get(p) is not None:
+                b.arguments[p] = to_si(b.arguments[p], d, p)
+        return (b.arguments["F"], b.arguments["A"], b.arguments["k"], b.arguments["L"], b.arguments["tag"])
+
+    calls = [((Q(2.0, "kN"),), {}), (("2 kN", Q(4.0, "mm**2")), {}), ((Q(1.0, "N"),), {"A": "3 cm**2", "k": 2.0}),
+             ((), {"F": "5 N", "A": Q(1.0, "m**2"), "L": "3 mm"}), ((Q(7.0, "lbf"), "1 inch**2"), {"tag": "y"}),
+             ((Q(1.0, "N"), None), {})]
+    for args, kwargs in calls:
+        seen.clear()
+        out = f(*args, **kwargs)
+        assert seen == [expected(*args, **kwargs)], (args, kwargs)
+        assert type(out.magnitude) is float
+    for args, kwargs in [((), {}), ((1, 2, 3), {}), ((Q(1.0, "N"),), {"F": Q(1.0, "N")}),
+                         ((Q(1.0, "N"),), {"nope": 1})]:
+        with pytest.raises(TypeError):
+            sig.bind(*args, **kwargs)
+        with pytest.raises(TypeError):
+            f(*args, **kwargs)
+    with pytest.raises(UnitError, match="A: expected an area"):
+        f("1 N", "1 mm")
+
+
+def test_the_fast_unit_checks_still_reject_bad_magnitudes():
+    """as_quantity/to_si remember units a quantity passed with; a later value in them is still bound-checked:
+    NaN, infinite and out-of-range magnitudes raise as on the first call, and the SI value is the same float."""
+    assert to_si(Q(350.0, "N"), "force") == 350.0 and to_si(Q(2.0, "kN"), "force") == 2000.0
+    assert type(to_si(Q(2.0, "kN"), "force")) is float
+    assert as_quantity(Q(3.0, "mm"), "length").m_as("m") == 0.003
+    for bad in (float("nan"), float("inf"), -float("inf")):
+        with pytest.raises(UnitError, match="F: expected a finite force"):
+            to_si(Q(bad, "kN"), "force", "F")
+        with pytest.raises(UnitError, match="F: expected a finite force"):
+            as_quantity(Q(bad, "kN"), "force", "F")
+    with pytest.raises(InputError, match="physically meaningful range"):
+        to_si(Q(1e10, "kN"), "force", "F")
+    with pytest.raises(UnitError, match="expected a length"):
+        to_si(Q(1.0, "kN"), "length", "F")  # the same units, another dimension
+    for value, unit in [(0.1, "mm"), (3.3, "rpm"), (7.25, "MPa*m/s"), (1e-7, "g*cm**2"), (12.0, "deg")]:
+        dim = {"mm": "length", "rpm": "angular_velocity", "MPa*m/s": "pv", "g*cm**2": "inertia", "deg": "angle"}[unit]
+        q = Q(value, unit)
+        assert to_si(q, dim) == float(q.to(DIMENSIONS[dim][1]).magnitude)

@@ -26,7 +26,7 @@ import pint
 
 from mechverify.errors import InputError, UnitError
 from mechverify.frozen import set_fields
-from mechverify.units import Q, Quantity, fmt
+from mechverify.units import Q, Quantity, fmt, same_units
 
 WARN_LEVEL = 0.9
 #: Compute lazy ``details`` and ``substituted`` when a result is made (for tests comparing lazy and eager values).
@@ -143,6 +143,13 @@ _FAST_FIELDS = frozenset({"check", "component", "title", "formula", "source", "l
                           "inputs", "details", "substituted", "required_sf"})
 
 
+def _utilisation(d: float, c: float) -> float:
+    """demand / capacity from their magnitudes in one unit (``inf`` for zero capacity, 0 for 0/0)."""
+    if c == 0:
+        return 0.0 if d == 0 else math.inf
+    return d / c
+
+
 def _details(details: Any) -> Mapping[str, Any]:
     """A result's details as stored: a function becomes a :class:`LazyDetails`, a mapping a new dict."""
     if isinstance(details, LazyDetails):
@@ -184,7 +191,7 @@ class CheckResult:
     def __post_init__(self) -> None:
         for name in ("demand", "capacity"):
             v = getattr(self, name)
-            if not isinstance(v, Quantity):
+            if type(v) is not Quantity and not isinstance(v, Quantity):
                 set_fields(self, **{name: Q(v)})
         d, c = self._magnitudes()
         if not (math.isfinite(d) and not math.isnan(c)):
@@ -197,6 +204,8 @@ class CheckResult:
         details = _details(self.details)
         set_fields(self, notes=tuple(self.notes), warnings=tuple(self.warnings), inputs=dict(self.inputs),
                    details=details)
+        # utilisation (a cached_property) from the magnitudes just read: the same value, one conversion less
+        self.__dict__["utilisation"] = _utilisation(d, c)
         if EAGER:
             self.substituted  # noqa: B018  # computed now (tests compare with the lazy values)
             if isinstance(details, LazyDetails):
@@ -242,21 +251,17 @@ class CheckResult:
     def _magnitudes(self) -> tuple[float, float]:
         """The demand in the capacity's unit and the capacity, as floats (no conversion when the units agree)."""
         dem, cap = self.demand, self.capacity
-        unit = cap.units
-        if dem.units == unit:  # the same unit: the magnitude as it is (what m_as returns then)
+        if same_units(dem, cap):  # the same unit: the magnitude as it is (what m_as returns then)
             return float(dem.magnitude), float(cap.magnitude)
         if dem.dimensionality != cap.dimensionality:
             raise UnitError(f"{self.component}/{self.check}: demand {fmt(dem)} and capacity {fmt(cap)} have "
                             "different dimensions")
-        return float(dem.m_as(unit)), float(cap.magnitude)
+        return float(dem.m_as(cap.units)), float(cap.magnitude)
 
     @cached_property
     def utilisation(self) -> float:
         """demand / capacity (dimensionless; ``inf`` for zero capacity)."""
-        d, c = self._magnitudes()
-        if c == 0:
-            return 0.0 if d == 0 else math.inf
-        return d / c
+        return _utilisation(*self._magnitudes())
 
     @property
     def factored_utilisation(self) -> float:
