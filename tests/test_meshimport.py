@@ -12,39 +12,16 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError, MechverifyError, ModelError, UnitError
 from mechverify.fea import mesh as fmesh
 from mechverify.fea import meshimport, solid
 from mechverify.fea.loads import Fixed, Force
 from mechverify.fea.plane import PlaneModel
 from mechverify.fea.regions import Named, Plane
 from mechverify.fea.vtu import write_vtu, write_vtu_own
+from tests.builders import gmsh_bar
 
 L, B = 0.1, 0.01  # bar 100 x 10 x 10 mm
-
-
-def _gmsh_bar(tmp_path, order=2, fmt="4.1"):
-    """A bar meshed by gmsh's Python API, physical surfaces 'fixed' (x = 0) and 'loaded' (x = L); written to .msh
-    by gmsh itself, and the same model read directly (mechverify.fea.mesh.from_gmsh_model)."""
-    gmsh = fmesh.import_gmsh()
-    fmesh.gmsh_session(gmsh, 0.004)
-    try:
-        occ = gmsh.model.occ
-        vol = occ.addBox(0, 0, 0, L, B, B)
-        occ.synchronize()
-        faces = {round(occ.getCenterOfMass(2, t)[0], 9): t for _, t in gmsh.model.getEntities(2)}
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [faces[0.0]]), "fixed")
-        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [faces[L]]), "loaded")
-        gmsh.model.setPhysicalName(3, gmsh.model.addPhysicalGroup(3, [vol]), "body")
-        gmsh.model.mesh.generate(3)
-        direct = fmesh.from_gmsh_model(gmsh)  # (the direct path reads linear tetrahedra)
-        gmsh.model.mesh.setOrder(order)
-        gmsh.option.setNumber("Mesh.MshFileVersion", float(fmt))
-        path = tmp_path / f"bar_{order}_{fmt}.msh"
-        gmsh.write(str(path))
-    finally:
-        gmsh.finalize()
-    return path, direct
 
 
 def _bar_model(m):
@@ -60,7 +37,7 @@ def _by_position(points, values):
 @pytest.mark.parametrize(("order", "fmt"), [(2, "4.1"), (1, "2.2")])
 def test_gmsh_msh_solves_like_the_direct_model(tmp_path, order, fmt):
     pytest.importorskip("gmsh")
-    path, direct = _gmsh_bar(tmp_path, order, fmt)
+    path, direct = gmsh_bar(tmp_path, order, fmt)
     imported = meshimport.read_solid_mesh(path)
     assert set(imported.named) == {"fixed", "loaded"}  # the volume group 'body' is not a boundary region
     assert imported.mesh.nelements == direct.mesh.nelements and imported.mesh.nvertices == direct.mesh.nvertices
@@ -243,3 +220,39 @@ def test_every_format_round_trip(tmp_path, suffix):
         return r.max_displacement.value.m_as("m")
 
     assert tip(imported) == pytest.approx(tip(m), rel=1e-9)
+
+
+# ------------------------------------------------------------------ review findings 12, 35 (round 2 session 3)
+def test_gmsh_second_order_inp_solves_and_a_volume_group_is_named(tmp_path):
+    """gmsh's P2 Abaqus export (CPS6 triangles; meshio 5.3 alone refuses CPS6) is read; the bar in tension
+    stretches u = F L / (E A) = 1000 · 0.1 / (200e9 · 1e-4) = 5.0e-6 m (Hooke's law, Timoshenko & Gere, Mechanics
+    of Materials, sec. 2.2; hand calculation). The volume group 'body' used as a region is named as a volume group
+    with the regions."""
+    pytest.importorskip("gmsh")
+    m = meshimport.read_solid_mesh(gmsh_bar(tmp_path, suffix=".inp", name="bar_p2.inp")[0])
+    assert {"fixed", "loaded"} <= set(m.named) and "body" not in m.named and "body" in m.volumes
+    res = _bar_model(m).solve()
+    ux = res.u[np.argmax(res.points[:, 0]), 0]
+    assert ux == pytest.approx(1000 * 0.1 / (200e9 * 1e-4), rel=0.02)
+    with pytest.raises(MechverifyError, match=r"'body' is a volume group.*regions.*fixed.*loaded"):
+        solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("body")),)).solve()
+
+
+def test_mesh_import_messages(tmp_path):
+    """meshio's reason instead of 'SystemExit: 1' and 'a abaqus'; a unit that is not a length is a UnitError; a mesh
+    without named groups (VTU) says so and points to Box/Plane."""
+    meshio = pytest.importorskip("meshio")
+    (tmp_path / "bad.inp").write_text("*NODE\n1, 0, 0, 0\n*ELEMENT, type=XYZ99, ELSET=a\n1, 1\n")
+    with pytest.raises(InputError) as e:
+        meshimport.read_solid_mesh(tmp_path / "bad.inp")
+    assert "SystemExit" not in str(e.value) and "an Abaqus/CalculiX mesh" in str(e.value) and "XYZ99" in str(e.value)
+    (tmp_path / "bad.msh").write_text("not a mesh\n")
+    with pytest.raises(InputError, match=r"a Gmsh mesh \(meshio found no valid data") as e:
+        meshimport.read_solid_mesh(tmp_path / "bad.msh")
+    tet = meshio.Mesh(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float), [("tetra", np.array([[0, 1, 2, 3]]))])
+    tet.write(tmp_path / "t.vtu")
+    with pytest.raises(UnitError, match="length unit"):
+        meshimport.read_solid_mesh(tmp_path / "t.vtu", unit="kg")
+    m = meshimport.read_solid_mesh(tmp_path / "t.vtu")
+    with pytest.raises(MechverifyError, match="no named regions.*Box or Plane"):
+        solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("fixed")),)).solve()
