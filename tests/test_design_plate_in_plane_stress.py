@@ -1,10 +1,15 @@
-"""plate_fea: a load case with `in_plane` loads and a lateral load (review 2 finding 1, session 3: the bending
-stress check PASSed at 8.7 MPa while the membrane stress was 1000 MPa, with only a note). The bending model carries
-no membrane stress, so plate_stress_fea WARNs with the membrane stress's size.
+"""plate_fea: plate_stress_fea checks membrane + bending, sigma = N/t +- 6 M/t^2 on both faces (task 23e; review 2
+finding 1: a 1000 MPa membrane stress PASSed at 8.7 MPa bending). The membrane field is the in_plane load's own
+field on a plate without holes and the plane-stress solution around holes.
 
-Number: nx = 2000 N/mm on a 2 mm plate is sigma_x = N/t = 1000 MPa, von Mises 1000 MPa (uniaxial); with
-nx = 300 N/mm and ny = -300 N/mm (pure shear in principal axes) sigma_vM = sqrt(3) * 150 = 259.8 MPa (hand
-calculations from the von Mises criterion, not printed values)."""
+Numbers (hand calculations from sigma = N/t and the von Mises criterion, not printed values):
+- nx = 2000 N/mm on a 2 mm plate: sigma_x = N/t = 1000 MPa (uniaxial, von Mises 1000 MPa);
+- nx = 300 N/mm, ny = -300 N/mm (pure shear in principal axes): sigma_vM = sqrt(3) * 150 = 259.8 MPa;
+- a 20 mm hole in a 200 mm wide plate (d/H = 0.1) under nx = 2000 N/mm: Peterson's eq. (4.1) / Roark 8th ed.
+  Table 17.1 (central circular hole, axial tension) K_tn = 3 - 3.13 (0.1) + 3.66 (0.1)^2 - 1.53 (0.1)^3 = 2.7221
+  on the net section, K_tg = 2.7221 / 0.9 = 3.0245 on the gross: about 3025 MPa at the hole
+  (tests/validation/test_roark_plate_membrane_bending.py checks it closely on a fine mesh).
+"""
 
 import math
 
@@ -24,28 +29,60 @@ thickness = "2 mm"
 material = "AISI 1045 CD"
 supports = [{{ edges = "all", type = "pinned" }}]
 mesh_size = "25 mm"
+{holes}
 [load_cases.pull.panel]
-pressure = "1 kPa"
-in_plane = {{ {in_plane} }}
+{pressure}
+{in_plane}
 """
 
 
-def _stress(tmp_path, in_plane):
+def _stress(tmp_path, in_plane, pressure='pressure = "1 kPa"', holes=""):
     f = tmp_path / "m.toml"
-    text = DESIGN.format(in_plane=in_plane)
-    f.write_text(text if in_plane else text.replace("in_plane = {  }\n", ""))
+    f.write_text(DESIGN.format(in_plane=f"in_plane = {{ {in_plane} }}" if in_plane else "", pressure=pressure,
+                               holes=holes))
     checks = [r for r in mechverify.load(f).verify() if r.check == "plate_stress_fea"]
     assert len(checks) == 1
     return checks[0]
 
 
-def test_membrane_stress_is_named_in_a_warning(tmp_path):
+def test_membrane_stress_is_added_to_the_bending_stress(tmp_path):
+    plain = _stress(tmp_path, "")  # bending only: about 8.7 MPa
     r = _stress(tmp_path, 'nx = "2000 N/mm"')
-    assert r.verdict.value == "warn"
-    assert any("membrane stress of 1000 MPa" in w for w in r.warnings)
-    plain = _stress(tmp_path, "")  # the same plate without in_plane: no such warning
-    assert not any("membrane" in w for w in plain.warnings)
-    assert plain.demand == r.demand  # the bending stress itself is the lateral load's
+    assert plain.passed and r.verdict.value == "fail"
+    assert r.details["membrane_stress"].m_as("MPa")[0] == pytest.approx(1000.0, rel=1e-9)
+    # the governing face is the one where the bending stress adds to the tension
+    mem, bend = (r.details[k].m_as("MPa") for k in ("membrane_stress", "bending_stress"))
+    assert bend[0] > 0 and r.demand.m_as("MPa") > 1000.0
+    assert r.demand.m_as("MPa") < 1000.0 + plain.demand.m_as("MPa") + 1e-9  # von Mises is convex: at most the sum
+    assert r.details["face"] in ("top", "bottom")
+    assert any("membrane N/t" in n and "bending" in n for n in r.notes)
+    assert not any("membrane stress of" in w for w in r.warnings)  # the stop-gap WARN is gone
+
+
+def test_in_plane_alone_is_checked(tmp_path):
+    """A buckling-only panel (in_plane, no lateral load) now runs plate_stress_fea on the membrane stress."""
+    r = _stress(tmp_path, 'nx = "300 N/mm", ny = "-300 N/mm"', pressure="")
+    assert r.demand.m_as("MPa") == pytest.approx(math.sqrt(3) * 150.0, rel=1e-9)
+    assert r.details["bending_stress"].m_as("MPa") == pytest.approx([0.0, 0.0, 0.0], abs=1e-9)
+    assert r.details["principal_stresses"].m_as("MPa") == pytest.approx([150.0, -150.0], rel=1e-9)
+
+
+def test_hole_concentrates_the_membrane_stress(tmp_path):
+    holes = 'holes = [{ name = "h", diameter = "20 mm", centers = ["150, 100"] }]\nhole_mesh_size = "2 mm"'
+    r = _stress(tmp_path, 'nx = "2000 N/mm"', pressure="", holes=holes)
+    ktg = (3 - 3.13 * 0.1 + 3.66 * 0.01 - 1.53 * 0.001) / 0.9
+    assert ktg == pytest.approx(3.0245, abs=1e-4)
+    assert r.demand.m_as("MPa") == pytest.approx(1000 * ktg, rel=0.02)
+    assert "hole 'h'" in r.notes[0]
+    x, y = r.details["location"].m_as("mm")
+    assert x == pytest.approx(150, abs=0.5) and abs(y - 100) == pytest.approx(10, abs=0.5)  # the top/bottom of the hole
+    assert any("plane stress" in n for n in r.notes)
+
+
+def test_no_in_plane_note(tmp_path):
+    r = _stress(tmp_path, "")
+    assert any("no in-plane loads, so no membrane stress" in n for n in r.notes)
+    assert "membrane_stress" in r.details and not r.details["membrane_stress"].m.any()
 
 
 def test_nominal_membrane_von_mises_hand_values():

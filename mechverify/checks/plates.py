@@ -31,8 +31,8 @@ if TYPE_CHECKING:  # annotations only: importing the checks does not import the 
 
 FEA_SOURCE = (f"Kirchhoff plate bending, Morley triangles ({ref('morley1971')}; "
               f"{ref('timoshenko_woinowsky', 'ch. 4')}); verified against {ref('roark8', 'Tables 11.2 and 11.4')}")
-VM_SOURCE = (f"surface bending stresses sigma = 6 M / t^2 ({ref('timoshenko_woinowsky', 'Eq. (101)')}); von Mises "
-             f"criterion, {ref('shigley10', 'Eq. (5-13)')}")
+VM_SOURCE = (f"surface stresses sigma = N / t +- 6 M / t^2, membrane + bending "
+             f"({ref('timoshenko_woinowsky', 'Eq. (101)')}); von Mises criterion, {ref('shigley10', 'Eq. (5-13)')}")
 
 
 # ------------------------------------------------------------------------------------------------ Roark
@@ -311,48 +311,73 @@ def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
             f"applied load {res.applied[2]:.4g} N along z, reactions {res.reaction[2]:.4g} N (equilibrium checked)"]
 
 
-@check("plate_stress_fea", title="Plate bending stress (FEA)", sf_kind="static", aliases=("plate_fea.stress",),
+@check("plate_stress_fea", title="Plate stress (FEA)", sf_kind="static", aliases=("plate_fea.stress",),
        source=f"{VM_SOURCE}; {FEA_SOURCE}",
-       explain=("Largest von Mises stress of the bending stresses sigma = 6 M / t^2 at the plate surfaces "
-                "(Kirchhoff plate FEA, Morley triangles) against the yield strength; Timoshenko & "
-                "Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."))
+       explain=("Largest von Mises stress at the plate's two faces, sigma = N/t +- 6 M/t^2: the membrane stress of "
+                "the case's in_plane edge loads (plane stress on the plate mesh, so it concentrates at holes) plus "
+                "the bending stress of its lateral loads (Kirchhoff plate FEA, Morley triangles), against the yield "
+                "strength; Timoshenko & Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."))
 def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component: str = "",
                            required_sf: float = 1.0, load_case: str = "", notes: Sequence[str] = (),
                            warnings: Sequence[str] = ()) -> CheckResult:
-    """The largest surface von Mises stress of a solved plate model (:func:`mechverify.fea.plate.solve_plate`)
-    against the yield strength; the governing location, its moments and stresses are in the notes.
-    ``notes`` and ``warnings`` are added (e.g. the mesh used, a two-mesh check: :func:`plate_convergence`)."""
+    """The largest surface von Mises stress of a solved plate model (:func:`mechverify.fea.plate.solve_plate`:
+    membrane + bending, sigma = N/t ± 6 M/t² on each face) against the yield strength; the governing location,
+    face, moments and the membrane and bending parts there are in the notes and details
+    (:func:`mechverify.fea.plate_stress.governing_stress`). ``notes`` and ``warnings`` are added (e.g. the mesh
+    used, a two-mesh check: :func:`plate_convergence`)."""
+    from mechverify.fea.plate_stress import governing_stress
+
     plate = model.plate
     mx = res.max_von_mises
     sy = plate.material.require("yield_strength").to("MPa")
     node = int(mx.node)
-    xy = res.points[node, :2]
-    s = res.sigma[node]
+    g = governing_stress(res, node)
+    xy = g.point
     mom = [res.extra[k][node] for k in ("moment_xx_N", "moment_yy_N", "moment_xy_N")]
     t = plate.thickness_q.to("mm")
-    all_notes = [f"governing location {_mm(xy)}, {nearest_feature(model, xy)}",
-                 f"there M_xx = {mom[0]:.4g}, M_yy = {mom[1]:.4g}, M_xy = {mom[2]:.4g} N·m/m; surface stresses "
-                 f"sigma_x = {abs(s[0, 0]) / 1e6:.4g}, sigma_y = {abs(s[1, 1]) / 1e6:.4g} MPa in magnitude "
-                 f"(top and bottom differ in sign only), tau_xy = {abs(s[0, 1]) / 1e6:.4g} MPa",
+    has_membrane = bool(np.any(g.membrane))
+
+    def comps(v: np.ndarray) -> str:
+        return f"sigma_x = {v[0] / 1e6:.4g}, sigma_y = {v[1] / 1e6:.4g}, tau_xy = {v[2] / 1e6:.4g} MPa"
+
+    there = (f"there M_xx = {mom[0]:.4g}, M_yy = {mom[1]:.4g}, M_xy = {mom[2]:.4g} N·m/m; on the {g.face} face "
+             f"(z = {'+' if g.face == 'top' else '-'}t/2)")
+    if has_membrane:
+        parts = (f"{there}: membrane N/t {comps(g.membrane)}; bending {'+' if g.face == 'top' else '-'}6M/t^2 "
+                 f"{comps(g.bending)}; total {comps(g.total)}; principal sigma_1 = {g.principal[0] / 1e6:.4g}, "
+                 f"sigma_2 = {g.principal[1] / 1e6:.4g} MPa")
+    else:
+        parts = (f"{there} bending stresses {comps(g.total)} (no in-plane loads: the other face differs in sign "
+                 "only)")
+    all_notes = [f"governing location {_mm(xy)}, {nearest_feature(model, xy)}", parts,
                  *res.notes, *notes, *_load_notes(model, res)]
+    MPa = [Q(float(v), "Pa").to("MPa") for v in (*g.total, *g.membrane, *g.bending)]
     return CheckResult(
         check="plate_stress_fea", component=component or plate.name, demand=mx.value.to("MPa"), capacity=sy,
-        required_sf=required_sf, title="Plate bending stress (FEA, von Mises at the surfaces)",
-        formula=r"\sigma_{vM} = \sqrt{\sigma_x^2 - \sigma_x \sigma_y + \sigma_y^2 + 3 \tau_{xy}^2},\ "
-                r"\sigma = \frac{6 M}{t^2} \le S_y",
+        required_sf=required_sf, title="Plate stress (FEA, membrane + bending)",
+        formula=r"\sigma = \frac{N}{t} \pm \frac{6 M}{t^2},\ "
+                r"\sigma_{vM} = \sqrt{\sigma_x^2 - \sigma_x \sigma_y + \sigma_y^2 + 3 \tau_{xy}^2} \le S_y",
         source=f"{VM_SOURCE}; {FEA_SOURCE}",
-        inputs={"t": t, "sigma_x": Q(abs(s[0, 0]), "Pa").to("MPa"), "sigma_y": Q(abs(s[1, 1]), "Pa").to("MPa"),
-                "tau_xy": Q(abs(s[0, 1]), "Pa").to("MPa"), "Sy": sy, "E": plate.material.require("E").to("GPa"),
-                "nu": plate.material.require("nu")},
-        substituted=_vm_substituted(s, mx.value),
+        inputs={"t": t, "sigma_x": MPa[0], "sigma_y": MPa[1], "tau_xy": MPa[2],
+                **({"sigma_m_x": MPa[3], "sigma_m_y": MPa[4], "tau_m_xy": MPa[5],
+                    "sigma_b_x": MPa[6], "sigma_b_y": MPa[7], "tau_b_xy": MPa[8]} if has_membrane else {}),
+                "Sy": sy, "E": plate.material.require("E").to("GPa"), "nu": plate.material.require("nu")},
+        substituted=_vm_substituted(g.membrane, g.bending, mx.value),
         notes=tuple(all_notes),
         warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings, *warnings),
-        load_case=load_case, details={"location": Q(xy, "m").to("mm"), "node": node})
+        load_case=load_case,
+        details={"location": Q(xy, "m").to("mm"), "node": node, "face": g.face,
+                 "membrane_stress": Q(g.membrane, "Pa").to("MPa"), "bending_stress": Q(g.bending, "Pa").to("MPa"),
+                 "principal_stresses": Q(g.principal, "Pa").to("MPa")})
 
 
-def _vm_substituted(s: np.ndarray, vm: Any) -> str:
-    """sigma_vM = sqrt(sx^2 - sx sy + sy^2 + 3 txy^2) with the governing node's (signed) surface stresses."""
-    x, y, t = (tex(Q(v / 1e6, "MPa")) for v in (s[0, 0], s[1, 1], s[0, 1]))
+def _vm_substituted(membrane: np.ndarray, bending: np.ndarray, vm: Any) -> str:
+    """sigma_vM = sqrt(sx^2 - sx sy + sy^2 + 3 txy^2) at the governing point and face, each component written as
+    membrane + bending (N/t ± 6 M/t²) when there is a membrane part, else the (signed) bending stress alone."""
+    if np.any(membrane):
+        x, y, t = (rf"{tex(Q(m / 1e6, 'MPa'))} + ({tex(Q(b / 1e6, 'MPa'))})" for m, b in zip(membrane, bending))
+    else:
+        x, y, t = (tex(Q(v / 1e6, "MPa")) for v in bending)
     return (rf"\sigma_{{vM}} = \sqrt{{({x})^{{2}} - ({x})\cdot ({y}) + ({y})^{{2}} + 3\cdot ({t})^{{2}}}}"
             rf" = {tex(vm, 'MPa')}")
 

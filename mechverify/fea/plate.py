@@ -12,10 +12,12 @@ Supports: outline edges, bolt-hole rims (optionally widened to the washer), poin
 supported (deflection held) or clamped (slope held as well). Loads: point loads (moments as a
 force couple across one element), patches, uniform pressure, self-weight; all along z.
 
-Stresses: bending only (no in-plane loads), so the surfaces carry
-``σ = ∓ 6 M / t²`` with the moments ``M = -D[(1-ν) κ + ν tr(κ) I]`` from the curvatures ``κ = ∇∇w``
-(constant per Morley element), smoothed to the vertices by lumped L2 projection.
-``FieldResults.sigma`` holds the top surface (z = +t/2; the bottom is its negative).
+Stresses: the surfaces carry the bending stress ``σ = ± 6 M / t²`` with the moments
+``M = -D[(1-ν) κ + ν tr(κ) I]`` from the curvatures ``κ = ∇∇w`` (constant per Morley element), smoothed to the
+vertices by lumped L2 projection, plus, when in-plane edge loads are given, the membrane stress ``N / t``
+(:mod:`mechverify.fea.plate_stress`): ``σ = N/t ± 6 M/t²`` on the top and bottom faces.
+``FieldResults.sigma`` holds at each vertex the face with the larger von Mises stress (the top face, z = +t/2,
+where they tie, as they do without membrane loads: the bottom is then its negative).
 
 References
 ----------
@@ -267,12 +269,19 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
 
 
 def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
-                hole_mesh_size: QuantityLike | None = None) -> FieldResults:
+                hole_mesh_size: QuantityLike | None = None, in_plane: Any = None, *,
+                membrane: str = "auto") -> FieldResults:
     """Solve a :class:`mechverify.components.plates.PlateModel` for deflection and surface stresses.
 
     ``mesh_size`` (default: shorter side / 16) and ``hole_mesh_size`` (default: mesh_size / 3) are
-    lengths. Returns :class:`FieldResults` (``kind="plate"``): vertex deflections along z, top-surface
-    stress tensors in ``sigma``, ``extra`` with bottom-surface von Mises and the moments.
+    lengths. ``in_plane`` (a :class:`mechverify.fea.plate_buckling.InPlaneLoad`, optional) adds the membrane
+    stress of in-plane edge loads (:func:`mechverify.fea.plate_stress.membrane_stress`, ``membrane`` its method) to
+    the bending stress: each face carries ``sigma = N/t ± 6 M/t²``. Returns :class:`FieldResults`
+    (``kind="plate"``): vertex deflections along z; in ``sigma`` at each vertex the stress tensor of the face with
+    the larger von Mises stress (the top face on a tie, so without membrane loads the top face, the bottom being its
+    negative); ``extra`` with both faces' von Mises stresses (``von_mises_top_Pa``, ``von_mises_bottom_Pa``), the
+    face in ``sigma`` (``face_sign``: +1 top, -1 bottom), the membrane stress ``membrane_{xx,yy,xy}_Pa`` (N/t, zero
+    without ``in_plane``), the top face's bending stress ``bending_{xx,yy,xy}_Pa`` (6 M/t²) and the moments.
     """
     from mechverify.units import to_si
 
@@ -313,29 +322,62 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
         raise ModelError(f"plate equilibrium not met: reactions {reaction:.6g} N vs loads {total:.6g} N")
     t2 = time.perf_counter()
     sigma_top, moments = _surface_stress(sys_, w)
+    bending = np.column_stack([sigma_top[:, 0, 0], sigma_top[:, 1, 1], sigma_top[:, 0, 1]])
+    if in_plane is None:
+        mem = np.zeros_like(bending)
+        mem_notes: tuple[str, ...] = ()
+    else:
+        from mechverify.fea.plate_stress import membrane_stress
+
+        ms = membrane_stress(model.plate, mesh, in_plane, membrane)
+        mem, mem_notes = ms.stress, ms.notes
+    faces = _faces(mem, bending)
     t_rec = time.perf_counter() - t2
     n = mesh.nvertices
     pts = np.column_stack([mesh.p.T, np.zeros(n)])
     u = np.zeros((n, 3))
     u[:, 2] = w[vd]
-    from mechverify.fea.results import von_mises
 
     span = min(np.ptp(mesh.p[0]), np.ptp(mesh.p[1]))
-    notes = ["Kirchhoff thin-plate bending (Morley triangles); stresses are bending stresses at the surfaces, "
-             "sigma = top surface (z = +t/2), bottom = -top; no membrane (in-plane) stresses are modelled."]
+    if in_plane is None:
+        notes = ["Kirchhoff thin-plate bending (Morley triangles); stresses are bending stresses at the surfaces, "
+                 "sigma = top surface (z = +t/2), bottom = -top; no in-plane loads, so no membrane stress."]
+    else:
+        notes = ["Kirchhoff thin-plate bending (Morley triangles) plus the membrane stress of the in-plane loads: "
+                 "sigma = N/t +- 6 M/t^2 on the top and bottom faces; sigma = the face with the larger von Mises "
+                 "stress at each vertex.", *mem_notes]
     warns = []
     if span / sys_.t < 10:
         warns.append(thick_plate_warning(span, sys_.t, model.plate.material.nu.m_as("")))
     info = SolveInfo("direct", int(free.size), 0, res_norm, t_solve)
     return FieldResults(
-        kind="plate", points=pts, u=u, sigma=sigma_top, material=model.plate.material,
+        kind="plate", points=pts, u=u, sigma=faces["sigma"], material=model.plate.material,
         reaction=np.array([0.0, 0.0, reaction]), applied=np.array([0.0, 0.0, total]),
         cells=[("triangle", mesh.t.T.copy())], surface=mesh.t.T.copy(), info=info,
         timings={"assembly": t_asm, "solve": t_solve, "recovery": t_rec},
         extra={"reaction_z_N": np.where(held_mask[vd], r[vd], 0.0),  # vertical reaction per vertex (0 where free)
-               "von_mises_bottom_Pa": von_mises(-sigma_top), "moment_xx_N": moments[:, 0],
-               "moment_yy_N": moments[:, 1], "moment_xy_N": moments[:, 2]},
+               "von_mises_top_Pa": faces["top"], "von_mises_bottom_Pa": faces["bottom"],
+               "face_sign": faces["sign"],
+               "membrane_xx_Pa": mem[:, 0], "membrane_yy_Pa": mem[:, 1], "membrane_xy_Pa": mem[:, 2],
+               "bending_xx_Pa": bending[:, 0], "bending_yy_Pa": bending[:, 1], "bending_xy_Pa": bending[:, 2],
+               "moment_xx_N": moments[:, 0], "moment_yy_N": moments[:, 1], "moment_xy_N": moments[:, 2]},
         notes=tuple(notes), warnings=tuple(warns))
+
+
+def _faces(membrane: np.ndarray, bending: np.ndarray) -> dict[str, np.ndarray]:
+    """Both faces' von Mises stresses [Pa] (``top``, ``bottom``), ``sign`` (+1 where the top face governs, ties
+    included, else -1) and ``sigma[n, 3, 3]`` the governing face's stress tensors: sigma = N/t ± 6 M/t²
+    (:func:`mechverify.fea.plate_stress.surface_stresses`)."""
+    from mechverify.fea.plate_stress import plane_von_mises, surface_stresses
+
+    top, bottom = surface_stresses(membrane, bending)
+    vt, vb = plane_von_mises(top), plane_von_mises(bottom)
+    sign = np.where(vt >= vb, 1.0, -1.0)
+    c = np.where(sign[:, None] > 0, top, bottom)
+    sig = np.zeros((c.shape[0], 3, 3))
+    sig[:, 0, 0], sig[:, 1, 1] = c[:, 0], c[:, 1]
+    sig[:, 0, 1] = sig[:, 1, 0] = c[:, 2]
+    return {"top": vt, "bottom": vb, "sign": sign, "sigma": sig}
 
 
 def _system(model: Any, h: float | None, hh: float | None) -> tuple[MeshTri, _PlateSystem, sp.csr_matrix]:

@@ -226,8 +226,8 @@ def _loads(loads: Mapping[str, Any], base: str, unit: str, g: Any) -> list[Any]:
         out.append(pl.PressureLoad(loads["pressure"]))
     if loads.get("self_weight"):
         out.append(pl.PlateSelfWeight(g=g))
-    if not out:
-        raise InputError(f"{base}: no load (point_loads, patch_loads, pressure or self_weight = true)")
+    if not out and "in_plane" not in loads:  # in-plane edge loads alone: membrane stress, no bending
+        raise InputError(f"{base}: no load (point_loads, patch_loads, pressure, self_weight = true or in_plane)")
     return out
 
 
