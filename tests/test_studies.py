@@ -12,18 +12,17 @@ from __future__ import annotations
 import json
 import math
 import tomllib
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from mechverify.cli import main
 from mechverify.design import load
 from mechverify.errors import InputError, UnitError, UnknownNameError
 from mechverify.studies import SizingError, Study, get_path, parse_vary, size, wilson_interval
 from mechverify.studies.params import apply_overrides, resolver, split_path
 from mechverify.studies.tomlout import dumps
-
-LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+from tests.builders import LIFT
 
 
 def _doc() -> dict:
@@ -394,3 +393,134 @@ def test_explore_derived_parameter_follows_its_input(tmp_path):
     assert u(named.html) == float(f"{exact('180 N'):.3g}")
     with pytest.raises(UnknownNameError, match="parameters.nope"):
         e.update({"parameters.nope": 1.0})
+
+
+# ------------------------------------------------ review (round 2 session 3) finding 34: bare numbers for an expression
+def test_bare_numbers_are_refused_for_a_value_written_as_an_expression(capsys):
+    """Finding 34: the carriage's load_offset is written as '2 * (120 N * 400 mm + 30 N * 800 mm) / lifted_load'
+    (411 mm); '300:500:2' used to sweep 300..500 METRES (u·SF 3601) without a word. Now refused, naming a unit."""
+    with pytest.raises(InputError, match=r"bare number 300 has no unit.*expression.*0\.411 m"):
+        Study(LIFT, vary=["components.carriage.load_offset=300:500:2"])
+    with pytest.raises(InputError, match="has no unit"):
+        Study(LIFT, vary=["components.carriage.load_offset=normal:400:10"], samples=4)
+    with pytest.raises(InputError, match="has no unit"):
+        size(LIFT, "components.carriage.load_offset", bounds=(300, 500))
+    rc = main(["study", str(LIFT), "--vary", "components.carriage.load_offset=300:500:2", "--serial",
+               "--no-progress"])
+    assert rc == 2 and "give the unit" in capsys.readouterr().err
+    # with a unit it is read as written; bare numbers of a value written with a unit keep the file's unit
+    s = Study(LIFT, vary=["components.carriage.load_offset=300 mm:500 mm:2"])
+    assert s.axes[0].args[:2] == pytest.approx((0.3, 0.5))
+    assert Study(LIFT, vary=["components.lift_screw.length=400:500:2"]).axes[0].param.unit == "mm"
+
+
+# ------------------------------------------------ review finding 1: a key the file does not write
+def test_a_component_key_left_to_its_default_can_be_varied(tmp_path):
+    """Finding 1: a key the component type defines but the file does not write was 'unknown parameter'. The
+    screw bearing's reliability (ball_bearing default 0.9) is not in the lift's file; it can now be varied from
+    that default. Expected ratio: ISO 281:2007 Table 12 a1 = 1 at 90 %, 0.25 at 99 % (the table of
+    components/data/bearings_ball.toml), so the life check's u grows by 1/0.25 = 4 (hand calculation)."""
+    s = Study(LIFT, vary=["components.screw_bearing.reliability=0.9:0.99:2"])
+    assert s.axes[0].param.base == 0.9
+    res = s.run("serial")
+    u = [x["checks"]["screw_bearing.bearing_life"]["u"] for x in res.samples]
+    assert u[1] / u[0] == pytest.approx(1 / 0.25, rel=1e-3)
+    out = res.reproduce(1, tmp_path / "s1.toml")  # the key is written into the reproduced file
+    assert "reliability = 0.99" in out.read_text()
+
+
+def test_a_key_whose_default_is_not_one_number_is_a_clear_error(capsys):
+    """Finding 1: the screw stage's mu (the issue's friction example) defaults to the nut material's friction
+    range (both ends checked): not one base value. The message says to write the key into the file first."""
+    with pytest.raises(InputError, match=r"does not write 'mu' in components\.lift\.transmission\[0\].*write the "
+                                         r"key into the file"):
+        Study(LIFT, vary=["components.lift.transmission[0].mu=0.1:0.3:3"])
+    rc = main(["size", str(LIFT), "--vary", "components.lift.transmission[0].mu", "--until", "motor_peak_torque",
+               "--bounds", "0.05:0.3"])
+    assert rc == 2 and "write the key into the file" in capsys.readouterr().err
+
+
+def test_a_friction_written_into_the_file_is_varied(tmp_path):
+    """Finding 1, the documented way: with 'mu = 0.25' written into the screw stage, a sweep of mu runs and the
+    motor's torque grows with the friction (raise torque, Hamrock Eq. 16.10: monotonic in mu)."""
+    text = LIFT.read_text().replace('transmission = [{ type = "screw", screw = "lift_screw" }]',
+                                    'transmission = [{ type = "screw", screw = "lift_screw", mu = 0.25 }]')
+    assert "mu = 0.25 }]" in text
+    design = tmp_path / "design.toml"  # (the lift has no includes or file names: it can move)
+    design.write_text(text)
+    res = Study(design, vary=["components.lift.transmission[0].mu=0.1:0.3:3"]).run("serial")
+    fu = [x["checks"]["lift.motor_peak_torque"]["fu"] for x in res.samples]
+    assert fu[0] < fu[1] < fu[2]
+
+
+# ------------------------------------------------ review findings 16, 26: size's margin
+def _sized(today: float, today_fu: float, limit: float):
+    from mechverify.studies import SizingResult
+
+    return SizingResult("p", "mm", "governing", today, today_fu, limit, "c", (limit,), (1.0, 10.0), 9)
+
+
+def test_size_margin_is_spelt_out_by_direction_and_verdict():
+    """Finding 16: 'margin -7.3% to the limit' meant 'room to thin by 7.3 %' for a plate that passes and
+    'short by 58.3 %' for a lift that fails. The text now says which way and what it means (hand arithmetic:
+    (3.708 - 4)/4 = -7.3 %, (145.8 - 350)/350 = -58.3 %)."""
+    passes = _sized(4.0, 0.7968, 3.708).text()
+    assert "the limit is 7.3 % below today's value: it may fall by 7.3 % before u·SF reaches 1" in passes
+    fails = _sized(350.0, 2.38, 145.82).text()
+    assert "the limit is 58.3 % below today's value: it must fall by 58.3 % for u·SF to come down to 1" in fails
+    assert "rise by 25.0 %" in _sized(4.0, 0.8, 5.0).text()
+    assert _sized(4.0, 0.8, 5.0).to_dict()["margin"] == pytest.approx(0.25)  # the JSON keeps the signed number
+
+
+def test_size_margin_words_for_negative_values():
+    """Review 2 finding 2 (session 3): a compressive in-plane load sized from -10 to its limit -53.46 N/mm read
+    'the limit is 434.6 % above today's value: it may rise' (it must become more negative). For two negative values
+    the words speak of the magnitude; a limit across zero says so."""
+    from mechverify.studies.sizing import SizingResult
+
+    def r(today: float, limit: float, fu: float = 0.5) -> SizingResult:
+        return SizingResult("p", "N/mm", "governing", today, fu, limit, "x", (limit,), (-200.0, -1.0), 10)
+
+    assert r(-10.0, -53.4638).margin_text() == ("the limit is 434.6 % above today's value in magnitude: it may grow "
+                                                "by 434.6 % before u·SF reaches 1")
+    assert r(-10.0, -5.0, 2.0).margin_text() == ("the limit is 50.0 % below today's value in magnitude: it must "
+                                                 "shrink by 50.0 % for u·SF to come down to 1")
+    assert r(10.0, 12.0).margin_text().startswith("the limit is 20.0 % above today's value: it may rise by 20.0 %")
+    assert "other side of zero" in r(-10.0, 5.0).margin_text()
+
+
+# ------------------------------------------------ review finding 6: --reproduce keeps the file's comments
+def test_reproduce_rewrites_only_the_changed_values_and_keeps_the_comments(tmp_path):
+    """Finding 6: --reproduce wrote the design from its data: every comment of the source (its sources and
+    assumptions) was lost, and 'acceleration = "0.0618... m/s**2"' came in pint's spelling. Now only the
+    varied values' lines change (their comments kept, in the file's unit spelling), and the file reads back
+    as the sample's data."""
+    import tomllib
+
+    from mechverify.studies.params import apply_overrides
+
+    s = Study(LIFT, vary=["parameters.lifted_load=normal:140 N:10 N",
+                          "profiles.raise.acceleration=triangular:0.05 m/s^2:0.1 m/s^2:0.2 m/s^2"], samples=8, seed=1)
+    out = s.reproduce(5, tmp_path / "s5.toml")
+    src, new = LIFT.read_text().splitlines(), out.read_text().splitlines()
+    head = [x for x in new if x.startswith("# Sample") or x.startswith("#   ")]
+    body = new[len(head):]
+    assert len(head) == 3 and len(body) == len(src)
+    changed = [(a, b) for a, b in zip(src, body) if a != b]
+    assert [a.split("=")[0].strip() for a, _ in changed] == ["lifted_load", "acceleration"]
+    for a, b in changed:
+        assert b.split("#", 1)[1] == a.split("#", 1)[1]  # the comment is kept
+    assert " m/s^2\"" in changed[1][1] and "**" not in out.read_text()
+    assert tomllib.loads(out.read_text()) == apply_overrides(s.doc, s.result_skeleton().overrides(5))
+
+
+def test_reproduce_falls_back_to_the_whole_document_when_a_value_is_not_on_its_own_line(tmp_path):
+    """A value the source does not write on its own line (a key left to its default) is written through
+    the TOML writer; the result still reads back as the sample's data."""
+    import tomllib
+
+    s = Study(LIFT, vary=["components.screw_bearing.reliability=0.9:0.99:2"])
+    out = s.reproduce(1, tmp_path / "s1.toml")
+    data = tomllib.loads(out.read_text())
+    assert data["components"]["screw_bearing"]["reliability"] == 0.99
+    assert data["parameters"]["lifted_load"] == "350 N"

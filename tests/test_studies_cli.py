@@ -8,13 +8,11 @@ from __future__ import annotations
 
 import json
 import time
-from pathlib import Path
 
 import pytest
 
 from mechverify.cli import main
-
-LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
+from tests.builders import EXAMPLES, LIFT
 
 
 def test_size_prints_the_limit_and_writes_json(tmp_path, capsys):
@@ -104,3 +102,155 @@ def test_report_histogram_of_a_nearly_constant_check():
                for i in range(64)]
     res = StudyResult("monte_carlo", "lhs", 0, [{"name": "x", "unit": "", "spec": "", "base": 0.0}], samples, "d")
     assert histogram(res, "a.b").startswith("data:image/svg+xml;base64,")
+
+
+# ------------------------------------------------ review (round 2 session 3) findings 34, 6: units in the console
+def test_the_sweep_table_and_worst_sample_print_units(capsys):
+    """Findings 34 and 6: the console's sweep header and the worst-sample line carry the unit."""
+    rc = main(["study", str(LIFT), "--vary", "components.carriage.load_offset=300 mm:500 mm:2", "--serial",
+               "--no-progress"])
+    out = capsys.readouterr().out
+    assert rc == 0 and "components.carriage.load_offset [m]" in out
+    rc = main(["study", str(LIFT), "--vary", "components.lift.mass=normal:15 kg:1 kg", "-n", "4", "--serial",
+               "--no-progress"])
+    out = capsys.readouterr().out
+    worst = next(line for line in out.splitlines() if line.startswith("worst sample"))
+    assert rc == 0 and worst.rstrip().endswith(" kg"), worst
+
+
+# ------------------------------------------------ review finding 33: the no-crossing message
+def test_size_without_a_crossing_says_which_side_the_valid_points_lie(tmp_path, capsys):
+    """Finding 33: cable neck wire_d 2..4 mm: 2..2.75 mm invalid (the weight alone buckles the spine), 3..4 mm
+    all fail (spine_buckling_ratio u·SF 2.76..1.92). The message said 'below 1 over the range'; now 'above 1'
+    over the valid part, with the invalid part and its reason; --json holds the scan (limit null)."""
+    out = tmp_path / "nolimit.json"
+    rc = main(["size", str(EXAMPLES / "cable_neck" / "design.toml"), "--vary", "parameters.wire_d",
+               "--bounds", "2 mm:4 mm", "--json", str(out)])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "above 1 (fails) over the valid part (3..4 mm)" in err and "below 1" not in err
+    assert "invalid at 4 of 9 scan points (2..2.75 mm)" in err and "alone buckles the spine" in err
+    data = json.loads(out.read_text())
+    assert data["limit"] is None and len(data["scan"]) == 9
+    assert [p["fu"] is None for p in data["scan"]] == [True] * 4 + [False] * 5
+    assert all(p["fu"] > 1 for p in data["scan"][4:]) and "buckles" in data["scan"][0]["invalid"]
+
+
+def test_sweep_lists_the_whole_reason_of_an_invalid_sample(capsys):
+    """Finding 33: the invalid reason was cut at 100 characters ('neck: the w')."""
+    rc = main(["study", str(EXAMPLES / "cable_neck" / "design.toml"), "--vary", "parameters.wire_d=2 mm:3 mm:2",
+               "--serial", "--no-progress"])
+    out = capsys.readouterr().out
+    assert rc == 0 and "sample 0 invalid:" in out and "reachable: no tilt" in out
+
+
+# ------------------------------------------------ review findings 5, 26, 30: options and exit status
+MC = ["--vary", "parameters.lifted_load=normal:300 N:10 N"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--samples", "2", "--batch-size", "0"], "--batch-size: expected a positive integer, got 0"),
+    (["--samples", "2", "--workers", "0"], "--workers: expected a positive integer, got 0"),
+    (["--samples", "2", "--memory-per-worker", "2 kg"], "--memory-per-worker: expected a memory size"),
+    (["--samples", "-3"], "--samples: expected a positive integer, got -3"),
+    ([], "--samples: a Monte Carlo study (distributions in vary) needs the number of samples"),
+    (["--samples", "2", "--serial", "--memory-per-worker", "1 GB"], "--memory-per-worker would be ignored"),
+    (["--samples", "2", "--workers", "2", "--scheduler", "tcp://127.0.0.1:9"], "--workers and --scheduler"),
+])
+def test_study_messages_name_the_options(argv, message, capsys):
+    """Finding 5 (and 28): the messages named Python arguments (batch_size, memory_per_worker, 'got None');
+    --memory-per-worker was ignored silently with --serial, --workers with --scheduler."""
+    rc = main(["study", str(LIFT), *MC, "--no-progress", *argv])
+    err = capsys.readouterr().err
+    assert rc == 2 and message in err and "None" not in err, err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--vary", "parameters.lifted_load", "--bounds", "500 N:50 N"], "--bounds: expected low < high"),
+    (["--vary", "parameters.lifted_load", "--scan", "0"], "--scan: expected a positive integer"),
+    (["--vary", "parameters.lifted_load", "--until", "lift_screw.nope"], "unknown check"),
+])
+def test_size_messages_name_the_options(argv, message, capsys):
+    """Finding 26: 'bounds: give the range ...' named the Python argument; the option is --bounds."""
+    assert main(["size", str(LIFT), *argv]) == 2
+    assert message in capsys.readouterr().err
+
+
+def test_a_study_with_no_valid_sample_exits_2_and_still_writes_its_outputs(tmp_path, capsys):
+    """Finding 30: every sample invalid (a negative load) exited 0 with no statistics: a CI job passed."""
+    j = tmp_path / "allinv.json"
+    rc = main(["study", str(LIFT), "--vary", "parameters.lifted_load=normal:-300 N:10 N", "--samples", "3",
+               "--serial", "--no-progress", "--json", str(j)])
+    captured = capsys.readouterr()
+    assert rc == 2 and "no valid sample: all 3 samples are invalid" in captured.err
+    assert "3 invalid" in captured.out
+    assert [s["status"] for s in json.loads(j.read_text())["samples"]] == ["error"] * 3
+
+
+# ------------------------------------------------ review finding 23: --reproduce --out elsewhere
+STEP_DESIGN = """[design]
+name = "step beam p"
+[parameters]
+q = "1 MPa"
+[components.beam]
+type = "solid_fea"
+step = "geometry/beam.step"
+material = "structural steel"
+mesh_size = "5 mm"
+supports = [{ face = 1 }]
+deflection_limit = "10 mm"
+[load_cases.tip.beam]
+pressures = [{ face = 6, pressure = "q" }]
+"""
+
+
+def test_reproduce_into_another_folder_rewrites_relative_file_names(tmp_path, capsys):
+    """Finding 23: 'step = "beam.step"' was copied verbatim into other/s1.toml, which then could not be checked
+    ('file .../other/beam.step does not exist'). The file name is rewritten relative to the output's folder."""
+    from mechverify.design import load
+    from mechverify.studies.study import file_keys, rebase_files
+
+    (tmp_path / "geometry").mkdir()
+    (tmp_path / "geometry" / "beam.step").write_text("ISO-10303-21;\n")  # only its existence is checked at load
+    design = tmp_path / "step_p.toml"
+    design.write_text(STEP_DESIGN)
+    out = tmp_path / "runs" / "deep" / "s1.toml"
+    out.parent.mkdir(parents=True)
+    rc = main(["study", str(design), "--vary", "parameters.q=normal:1 MPa:0.1 MPa", "--samples", "4",
+               "--reproduce", "1", "--out", str(out)])
+    assert rc == 0, capsys.readouterr().err
+    assert 'step = "../../geometry/beam.step"' in out.read_text()
+    assert load(out).data.raw["components"]["beam"]["step"] == "../../geometry/beam.step"  # it loads
+    # the same folder keeps the name; an absolute name is kept
+    same = tmp_path / "s2.toml"
+    assert main(["study", str(design), "--vary", "parameters.q=normal:1 MPa:0.1 MPa", "--samples", "4",
+                 "--reproduce", "1", "--out", str(same)]) == 0
+    assert 'step = "geometry/beam.step"' in same.read_text()
+    doc = {"components": {"b": {"stl": "/abs/x.stl"}}, "templates": {"t": {"step": "a.step"}}}
+    assert rebase_files(doc, tmp_path, tmp_path / "o") == {"components": {"b": {"stl": "/abs/x.stl"}},
+                                                           "templates": {"t": {"step": "../a.step"}}}
+    # every file-name key of the component types is rebased (declared Field(..., file=True))
+    import re
+
+    from mechverify.design.spec import REGISTRY
+
+    file_fields = {f.name for t in REGISTRY.types.values() for f in t.fields
+                   if f.kind == "str" and re.search(r"\bfile\b", f.doc or "", re.I)}
+    assert file_fields <= set(file_keys()), file_fields
+    assert {"step", "stl", "mesh"} <= set(file_keys())
+
+
+def test_file_keys_come_from_the_component_types(tmp_path, monkeypatch):
+    """The keys rebased for another folder are the fields a component type declares as files (cleanup2: they were
+    a hand list, FILE_KEYS = ("step", "stl", "mesh"), in studies/study.py that a new type's file key had to join):
+    a type registered with Field("drawing", "str", ..., file=True) gets its file rebased, with no list to edit."""
+    from mechverify.design.spec import REGISTRY, ComponentType, Field
+    from mechverify.studies.study import file_keys, rebase_files
+
+    REGISTRY.types  # noqa: B018  (every built-in type registered first)
+    ct = ComponentType("drawing_test", "a test type", (Field("drawing", "str", "a DXF file", file=True),),
+                       build=lambda p, ctx: None)
+    monkeypatch.setitem(REGISTRY._types, ct.name, ct)
+    assert "drawing" in file_keys()
+    doc = {"components": {"d": {"type": "drawing_test", "drawing": "parts/d.dxf"}}}
+    assert rebase_files(doc, tmp_path, tmp_path / "out")["components"]["d"]["drawing"] == "../parts/d.dxf"

@@ -13,10 +13,11 @@ from pathlib import Path
 
 import pytest
 
+from mechverify.cli import main
 from mechverify.studies import SchedulerError, Study, dask_executor
 from mechverify.studies import execution as ex
+from tests.builders import LIFT
 
-LIFT = Path(__file__).resolve().parents[1] / "examples" / "lead_screw_lift" / "design.toml"
 VARY = {"components.lift.mass": "uniform:10 kg:20 kg", "profiles.raise.acceleration": "normal:0.1 m/s^2:0.02 m/s^2"}
 
 
@@ -114,3 +115,110 @@ def test_workers_sized_by_memory(monkeypatch):
     assert ex.default_workers("100 MB") == cores
     with pytest.raises(InputError, match="memory size"):
         ex.default_workers("2 kg")
+
+
+# ------------------------------------------------ review (round 2 session 3) findings 3, 4: a scheduler that is not one
+class _FakePeer:
+    """A TCP server on 127.0.0.1 that is not a Dask scheduler: it accepts and sends ``reply`` (or nothing)."""
+
+    def __init__(self, reply: bytes):
+        import socket
+        import threading
+
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(8)
+        self.reply, self.conns = reply, []
+        self.address = f"tcp://127.0.0.1:{self.sock.getsockname()[1]}"
+        threading.Thread(target=self._serve, daemon=True).start()
+
+    def _serve(self) -> None:
+        while True:
+            try:
+                c, _ = self.sock.accept()
+            except OSError:
+                return
+            self.conns.append(c)
+            if self.reply:
+                c.sendall(self.reply)
+
+    def close(self) -> None:
+        for c in self.conns:
+            c.close()
+        self.sock.close()
+
+
+@pytest.mark.parametrize("reply", [b"", b"HTTP/1.0 400 Bad Request\r\n\r\n" + b"\xff" * 64],
+                         ids=["silent", "garbage"])
+def test_a_peer_that_is_not_a_dask_scheduler_is_a_named_error_within_the_timeout(reply, capsys):
+    """Findings 3 and 4: a silent peer hung past --timeout; a peer sending bytes that are not Dask frames gave
+    'internal error: MemoryError: Unable to allocate 3.07 EiB', exit 3. Now exit 2 within the deadline."""
+    pytest.importorskip("distributed")
+    import time
+
+    peer = _FakePeer(reply)
+    try:
+        import distributed  # noqa: F401  (imported before the clock starts: its import takes seconds here)
+
+        t = time.perf_counter()
+        rc = main(["study", str(LIFT), "--vary", "parameters.lifted_load=normal:300 N:10 N", "--samples", "2",
+                   "--scheduler", peer.address, "--timeout", "2", "--no-progress"])
+        took = time.perf_counter() - t
+    finally:
+        peer.close()
+    err = capsys.readouterr().err
+    assert rc == 2 and f"cannot reach the Dask scheduler at {peer.address} within 2 s" in err
+    assert "internal error" not in err
+    assert took < 2 + 3  # the deadline plus loading the design
+
+
+def test_a_half_made_client_is_closed_without_a_traceback():
+    """Finding 4: 'nonsense' (no port) left a half-made Client whose __del__ waited 6 s at exit and printed
+    'Exception ignored in: <function Client.__del__> ... TimeoutError'. Run in a fresh interpreter (the
+    traceback comes at its exit)."""
+    pytest.importorskip("distributed")
+    import subprocess
+    import sys
+    import time
+
+    code = ("import time\nfrom mechverify.studies import SchedulerError, dask_executor\n"
+            "try:\n    with dask_executor('nonsense', timeout=3):\n        pass\n"
+            "except SchedulerError as e:\n    print('named:', e)\n"
+            "import atexit\nt = time.perf_counter()\natexit.register(lambda: print('exit', time.perf_counter() - t))\n")
+    t = time.perf_counter()
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    took = time.perf_counter() - t
+    assert "named: cannot reach the Dask scheduler at nonsense" in p.stdout, p.stdout + p.stderr
+    assert "Exception ignored" not in p.stderr and "Traceback" not in p.stderr, p.stderr
+    assert took < 15  # (the old half-made client alone waited 6 s at exit)
+
+
+# ------------------------------------------------ review findings 28, 29: where a study runs
+MC = ["--vary", "parameters.lifted_load=normal:300 N:10 N"]
+
+
+def test_memory_per_worker_says_what_it_chose(capsys, monkeypatch):
+    """Finding 28: '--memory-per-worker 100 GB' on a smaller box ran silently; now a note with the workers chosen
+    and a warning that one sample may not fit."""
+    from mechverify.studies import execution
+
+    monkeypatch.setattr(execution, "available_memory", lambda: 16e9)
+    monkeypatch.setattr(execution, "process_pool", lambda workers=None: execution.SerialExecutor())
+    rc = main(["study", str(LIFT), *MC, "--samples", "2", "--memory-per-worker", "100 GB", "--no-progress"])
+    err = capsys.readouterr().err
+    assert rc == 0 and "note: 1 local worker(s) for 100 GB per sample (16 GB of memory available)" in err
+    assert "one sample may not fit" in err
+
+
+@pytest.mark.parametrize("local", [["--serial"], ["--workers", "1"]])
+def test_an_explicit_local_run_beats_dask_scheduler_address(local, capsys, monkeypatch):
+    """Finding 29: with DASK_SCHEDULER_ADDRESS set, --serial was refused ('--serial and --scheduler: choose one')
+    and --workers went to the cluster. The variable is a default; an explicit local choice wins."""
+    from mechverify.studies import execution
+
+    monkeypatch.setenv("DASK_SCHEDULER_ADDRESS", "tcp://127.0.0.1:9")
+    monkeypatch.setattr(execution, "process_pool", lambda workers=None: execution.SerialExecutor())
+    rc = main(["study", str(LIFT), *MC, "--samples", "2", "--no-progress", *local])
+    captured = capsys.readouterr()
+    assert rc == 0, captured.err
+    assert "Monte Carlo study" in captured.out and "Dask" not in captured.err

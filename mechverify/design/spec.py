@@ -30,6 +30,8 @@ class Field:
     ``kind`` is a dimension name (``"length"``: the value is a string with units such as
     ``"350 mm"``) or one of :data:`PLAIN_KINDS`. ``ref`` names another section of the design
     (e.g. ``"profiles"``) whose entry the value must name. ``item`` is the kind of a list's items.
+    ``file``: the value is a file name relative to the design file (a design written to another folder,
+    ``study --reproduce --out``, gets it rebased: :func:`mechverify.studies.study.file_keys`).
     """
 
     name: str
@@ -40,6 +42,7 @@ class Field:
     choices: tuple[str, ...] = ()
     item: str = ""
     ref: str = ""
+    file: bool = False
 
     def __post_init__(self) -> None:
         for k in (self.kind, *([self.item] if self.item else [])):

@@ -264,9 +264,10 @@ class StudyResult:
             if any(isinstance(x, int) for x in steps):
                 return None
             values[tuple(str(x) for x in steps)] = get_path(doc, k)
+        keys = file_keys()
         for section in ("components", "templates"):  # file names rebased for another folder
             for name, table in (doc.get(section) or {}).items():
-                for key in FILE_KEYS:
+                for key in keys:
                     if isinstance(table, dict) and key in table:
                         was = ((original.get(section) or {}).get(name) or {}).get(key)
                         if was != table[key]:
@@ -320,21 +321,27 @@ class StudyResult:
         return "\n".join(lines)
 
 
-#: Keys whose value is a file name relative to the design file (solid_fea's geometry); a design file written
-#: to another folder (``reproduce``) gets them relative to its own folder.
-FILE_KEYS = ("step", "stl", "mesh")
+def file_keys() -> tuple[str, ...]:
+    """Keys whose value is a file name relative to the design file: the fields the component types declare with
+    ``Field(..., file=True)`` (design/spec.py; solid_fea's step, stl and mesh), so a new one is rebased without a
+    list to keep here. A design file written to another folder (``reproduce``) gets them relative to its own
+    folder."""
+    from mechverify.design.spec import REGISTRY
+
+    return tuple(sorted({f.name for t in REGISTRY.types.values() for f in t.fields if f.file}))
 
 
 def rebase_files(doc: dict[str, Any], source_dir: Path, out_dir: Path) -> dict[str, Any]:
-    """``doc`` with every relative file name of a component or template (:data:`FILE_KEYS`) rewritten from
+    """``doc`` with every relative file name of a component or template (:func:`file_keys`) rewritten from
     ``source_dir`` to ``out_dir`` (relative when both are on one drive, else absolute); in place, returned."""
     import os
 
+    keys = file_keys()
     for section in ("components", "templates"):
         for table in (doc.get(section) or {}).values():
             if not isinstance(table, dict):
                 continue
-            for k in FILE_KEYS:
+            for k in keys:
                 v = table.get(k)
                 if isinstance(v, str) and v and not Path(v).is_absolute():
                     target = (source_dir / v).resolve()

@@ -249,11 +249,12 @@ SOLID_FEA = REGISTRY.register(ComponentType(
         "supports and loads on named faces, planes or boxes; checks of von Mises stress, deflection, natural "
         "frequency and linear buckling.",
     fields=(
-        Field("step", "str", "STEP file (path relative to the design file; gmsh needed); faces are face<k>"),
-        Field("stl", "str", "watertight STL file (gmsh needed); its surface is the region 'surface'"),
+        Field("step", "str", "STEP file (path relative to the design file; gmsh needed); faces are face<k>",
+              file=True),
+        Field("stl", "str", "watertight STL file (gmsh needed); its surface is the region 'surface'", file=True),
         Field("box", "str", "a block \"x, y, z\" from the origin (faces xmin ... zmax)"),
         Field("mesh", "str", "a tetrahedral mesh made by another tool (.msh, .inp, .bdf, .vtu, .vtk; coordinates in "
-                             "unit): its named groups are the regions, no mesh_size"),
+                             "unit): its named groups are the regions, no mesh_size", file=True),
         Field("holes", "list", "through-holes along z of the block: {center = \"x, y\", diameter} (walls hole0, "
                                "hole1, ...; gmsh needed)", item="table"),
         Field("unit", "str", "unit of bare numbers (points, box, STEP files without units)", default="mm"),
