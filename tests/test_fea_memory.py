@@ -61,11 +61,68 @@ def test_element_blocks_are_freed_before_the_solve(monkeypatch, curved):
     assert res.u[:, 2].min() < 0  # the load bends the bar down: the solve ran on the assembled K
 
 
+def test_plane_element_blocks_are_freed_before_the_solve(monkeypatch):
+    """``PlaneModel.solve`` held its element blocks in a local through the solve and the recovery (the defect
+    1de1158 removed from ``SolidModel.solve``); they die right after the assembly now."""
+    from mechverify.fea import mesh2d, plane
+
+    refs: list[weakref.ref] = []
+    make_blocks = assembly.elasticity_blocks
+
+    def watched(*a, **k):
+        out = make_blocks(*a, **k)
+        refs.append(weakref.ref(out))
+        return out
+
+    alive: dict[str, bool] = {}
+
+    def during(label, fn):
+        def wrapped(*a, **k):
+            alive[label] = any(r() is not None for r in refs)
+            return fn(*a, **k)
+        return wrapped
+
+    monkeypatch.setattr(assembly, "elasticity_blocks", watched)
+    monkeypatch.setattr(plane, "solve", during("linear solve", plane.solve))
+    monkeypatch.setattr(rc, "recover", during("recovery", rc.recover))
+    model = plane.PlaneModel(mesh2d.rectangle(0.1, 0.02, 10, 2), "5 mm", "Structural Steel",
+                             supports=(Fixed(Plane(x="0 m")),), loads=(Force(Plane(x="0.1 m"), ("0 N", "-100 N")),))
+    res = model.solve()
+    assert len(refs) == 1, "the stiffness blocks were not built through the watched function"
+    assert set(alive) == {"linear solve", "recovery"}
+    assert not any(alive.values()), f"element blocks still alive during: {[k for k, v in alive.items() if v]}"
+    assert res.u[:, 1].min() < 0
+
+
+@pytest.mark.parametrize("share", [1.0, 0.9, 0.5, 0.02, 0.0])
+@pytest.mark.parametrize("chunk", [1, 7, 1 << 16])
+def test_free_submatrix_is_scipys_slice(share, chunk):
+    """``assembly.free_submatrix`` reads K[free][:, free] straight from the BSR matrix: the same CSR (indptr,
+    indices, data: bit for bit, so CG and the factorisation see the same matrix) as SciPy's
+    ``K.tocsr()[free][:, free]``, for any mask (whole nodes or single components held) and chunk size, and from a
+    CSR input too."""
+    import numpy as np
+
+    model = _model(False)
+    m = model.mesh
+    K, _ = model._stiffness(assembly.block_pattern(m.basis.element_dofs, m.basis.N), *assembly.lame(200e9, 0.3))
+    free = np.random.default_rng(7).random(K.shape[0]) < share
+    idx = np.flatnonzero(free)
+    ref = K.tocsr()[idx][:, idx]
+    for A in (assembly.free_submatrix(K, free, chunk=chunk), assembly.free_submatrix(K.tocsr(), free, chunk=chunk)):
+        assert A.shape == ref.shape
+        assert np.array_equal(A.indptr, ref.indptr)
+        assert np.array_equal(A.indices, ref.indices)
+        assert np.array_equal(A.data, ref.data)
+
+
 def test_linear_solve_keeps_one_copy_of_the_free_stiffness(monkeypatch):
     """``linsolve.solve`` kept a full CSR copy of K (``Kc``) beside its free part ``Kff`` until it returned, and
     built ``Kff`` with both alive (K + Kc + Kc[free] + Kff): at the factorisation (or CG) 2.05 x Kff's bytes were
-    alive beyond the caller's K, the peak was 3.08 x; now 1.03 x and 2.06 x (tracemalloc, a 12k-DOF bar of
-    24 x 4 x 4 cells; this test's 6 x 2 x 2 bar: 2.15 x alive before). The lug's peak at 47k DOF: 288 -> 234 MB."""
+    alive beyond the caller's K, the peak was 3.08 x; then 1.03 x and 2.06 x (tracemalloc, a 12k-DOF bar of
+    24 x 4 x 4 cells; this test's 6 x 2 x 2 bar: 2.15 x alive before). The lug's peak at 47k DOF: 288 -> 234 MB.
+    Since ``assembly.free_submatrix`` reads Kff from K without a CSR copy the peak on the 12k bar is 1.3 x (its
+    work arrays are bounded by a chunk of blocks; on this small bar one chunk holds all: 2.1 x)."""
     import tracemalloc
 
     import numpy as np

@@ -181,6 +181,63 @@ def assemble_blocks(blocks: np.ndarray, pattern: BlockPattern, dim: int) -> sp.b
     return sp.bsr_matrix((data, pattern.indices, pattern.indptr), shape=(n, n))
 
 
+def free_submatrix(K: sp.spmatrix, free: np.ndarray, chunk: int = 1 << 16) -> sp.csr_matrix:
+    """``K[free][:, free]`` as CSR (the same entries in the same order as SciPy's slicing, so a solve on it gives the
+    same bits), read straight from a BSR ``K`` without a CSR copy of the whole matrix.
+
+    ``free`` is a boolean mask ``[n]`` of the kept rows and columns. SciPy's ``K.tocsr()[free][:, free]`` holds
+    K's CSR copy, the row slice and the result (2-3 times the result's bytes) beside ``K`` at its peak; here only
+    the result and work arrays of at most ``chunk`` blocks exist beside ``K`` (issue 23: memory per DOF).
+    """
+    free = np.asarray(free, dtype=bool)
+    if not sp.issparse(K) or K.format != "bsr":
+        K = sp.bsr_matrix(K.tocsr(), blocksize=(1, 1))
+    R = K.blocksize[0]
+    if K.blocksize != (R, R) or K.shape[0] != K.shape[1] or free.shape != (K.shape[0],):
+        raise ValueError("free_submatrix: a square BSR matrix with square blocks and a mask of its size")
+    K.sort_indices()
+    nbr = K.shape[0] // R
+    bptr, bcol, data = K.indptr, K.indices, K.data  # data[block, i, j]
+    fb = free.reshape(nbr, R)
+    # kept columns of each block, and each block row's kept entries per row (the same for its R rows)
+    per_block = fb.sum(axis=1)[bcol]
+    row_len = np.add.reduceat(np.r_[per_block, 0], bptr[:-1]) * (np.diff(bptr) > 0)
+    lengths = (row_len[:, None] * fb).ravel()[free]  # each kept row's length
+    index_type = np.int32 if lengths.sum() < np.iinfo(np.int32).max else np.int64
+    indptr = np.zeros(lengths.size + 1, dtype=index_type)
+    np.cumsum(lengths, out=indptr[1:])
+    nnz = int(indptr[-1])
+    out_data = np.empty(nnz)
+    out_ind = np.empty(nnz, dtype=index_type)
+    new = (np.cumsum(free) - 1).astype(index_type)  # new index of each kept row/column
+    small = np.int32 if K.shape[0] < np.iinfo(np.int32).max // R else np.int64  # work arrays of entry indices
+    brow = np.repeat(np.arange(nbr, dtype=small), np.diff(bptr))  # block row of each block
+    lanes = np.arange(R, dtype=small)
+    start = 0
+    while start < nbr:  # chunks of whole block rows, at most ~chunk blocks each
+        stop = max(int(np.searchsorted(bptr, bptr[start] + chunk, side="right")) - 1, start + 1)
+        b0, b1 = bptr[start], bptr[stop]
+        cols = (R * bcol[b0:b1, None].astype(small) + lanes).ravel()  # [blocks * R], (block, j) order
+        keep = free[cols]
+        # position of each kept (block, j) in its row: running count minus the count before its block row
+        pos = np.cumsum(keep, dtype=small)
+        before = np.r_[small(0), pos[R - 1::R]][bptr[start:stop] - b0]
+        pos -= np.repeat(before, np.diff(bptr[start:stop + 1]) * R)
+        pos = pos[keep] - 1
+        rows = np.repeat(brow[b0:b1], R)[keep]
+        cols = new[cols[keep]]
+        block = data[b0:b1]
+        for i in range(R):
+            if not np.any(fb[start:stop, i]):
+                continue
+            on = fb[rows, i]  # entries of kept rows R * block_row + i
+            dst = indptr[new[R * rows[on] + i]] + pos[on]
+            out_data[dst] = block[:, i, :].reshape(-1)[keep][on]
+            out_ind[dst] = cols[on]
+        start = stop
+    return sp.csr_matrix((out_data, out_ind, indptr), shape=(lengths.size, lengths.size))
+
+
 def vector_dofs(element_dofs: np.ndarray, dim: int) -> np.ndarray:
     """Vector DOFs ``[e, nb*dim]`` ordered (node a, component i) -> dim*dof + i."""
     return (dim * element_dofs.T[:, :, None] + np.arange(dim)[None, None, :]).reshape(element_dofs.shape[1], -1)

@@ -357,6 +357,7 @@ class PlaneModel:
                 blocks = asm.elasticity_blocks(m.p, m.t, lam, mu, self.thickness_si)
                 _, area = asm.barycentric_gradients(m.p, m.t)
             K = asm.assemble_blocks(blocks, pattern, 2)
+            del blocks  # 1.4 x K's data: not kept through the solve and the recovery (issue 23, as in solid.py)
             parts = [fi for _, fi in self._load_parts(area)]
             f = np.sum(parts, axis=0) if parts else np.zeros(2 * self.basis.N)
             held = self.held_dofs()

@@ -134,9 +134,14 @@ def _monomials(X: np.ndarray, degree: int) -> np.ndarray:
     return np.stack(cols, axis=-1)
 
 
+#: Vertex-element pairs handled at once by :func:`patch_recovery` (its work arrays are ~2.5 kB per pair: the whole
+#: mesh at once made the recovery the peak of the 200k-DOF solve, +2 kB/DOF; issue 23).
+PATCH_CHUNK = 1 << 14
+
+
 def patch_recovery(points: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, sample_points: np.ndarray,
                    sample_values: np.ndarray, n: int, fallback: np.ndarray, degree: int = 2,
-                   interior_only: bool = True) -> np.ndarray:
+                   interior_only: bool = True, chunk: int = PATCH_CHUNK) -> np.ndarray:
     """Superconvergent patch recovery (ref. 2): around each vertex, a least-squares polynomial of
     ``degree`` fitted to the sampled stresses of the elements sharing it; each node gets the average
     of the fits of all patches that contain it (ref. 2, part 1, sec. 3 - nodes on the boundary are
@@ -147,29 +152,36 @@ def patch_recovery(points: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, 
     elements, superconvergent for stresses), ``fallback[n, m]`` for nodes no valid patch reaches.
     A patch is valid when its normal matrix is well conditioned (enough points, not all on a line or
     plane); ``interior_only`` leaves out the patches of boundary vertices (their fits extrapolate), so a
-    node no interior patch reaches keeps ``fallback``.
+    node no interior patch reaches keeps ``fallback``. The (vertex, element) pairs are taken ``chunk`` at a time
+    (bounded work memory; the sums run in the same order, so the result does not depend on ``chunk``).
     """
     nv = t.shape[0]
-    ne = t.shape[1]
     nverts = int(t.max()) + 1
-    v = t.T.ravel()  # pair k = (vertex v[k], element e[k])
-    e = np.repeat(np.arange(ne), nv)
-    xv = points[:, v].T  # k, d
+    v = t.T.ravel()  # pair k = (vertex v[k], element k // nv)
+    npairs = v.size
+    spans = [(k0, min(k0 + chunk, npairs)) for k0 in range(0, npairs, max(int(chunk), 1))]
     # patch size: the largest distance from the vertex to its elements' vertices
-    reach = np.linalg.norm(points[:, t[:, e]].transpose(2, 1, 0) - xv[:, None, :], axis=2).max(axis=1)
     h = np.zeros(nverts)
-    np.maximum.at(h, v, reach)
-    X = (sample_points[e] - xv[:, None, :]) / h[v][:, None, None]  # k, q, d
-    P = _monomials(X, degree)  # k, q, mm
-    mm = P.shape[-1]
+    for k0, k1 in spans:
+        e = np.arange(k0, k1) // nv
+        xv = points[:, v[k0:k1]].T  # k, d
+        reach = np.linalg.norm(points[:, t[:, e]].transpose(2, 1, 0) - xv[:, None, :], axis=2).max(axis=1)
+        np.maximum.at(h, v[k0:k1], reach)
+    mm = _monomials(np.zeros((1, points.shape[0])), degree).shape[-1]
     A = np.zeros((nverts, mm, mm))
-    np.add.at(A, v, np.einsum("kqa,kqb->kab", P, P))
     B = np.zeros((nverts, mm, sample_values.shape[2]))
-    np.add.at(B, v, np.einsum("kqa,kqc->kac", P, sample_values[e]))
+    for k0, k1 in spans:
+        e, vk = np.arange(k0, k1) // nv, v[k0:k1]
+        X = (sample_points[e] - points[:, vk].T[:, None, :]) / h[vk][:, None, None]  # k, q, d
+        P = _monomials(X, degree)  # k, q, mm
+        np.add.at(A, vk, np.einsum("kqa,kqb->kab", P, P))
+        np.add.at(B, vk, np.einsum("kqa,kqc->kac", P, sample_values[e]))
     w = np.linalg.eigvalsh(A)
     valid = w[:, 0] > 1e-8 * np.maximum(w[:, -1], 1e-300)
+    del w
     coef = np.zeros_like(B)
     coef[valid] = np.linalg.solve(A[valid], B[valid])
+    del A, B
     out = fallback.copy()
     # only interior patches by default: nodes they do not reach keep the fallback (extrapolate-and-average).
     # Boundary patches extrapolate their fit: measured on the thin 3D Lamé ring (few interior vertices)
@@ -177,18 +189,23 @@ def patch_recovery(points: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, 
     passes = [valid & ~_boundary_vertices(t, nverts)] if interior_only else [valid]
     done = np.zeros(n, bool)
     for use in passes:
-        ok = use[v]
-        if not np.any(ok):
+        ok = np.flatnonzero(use[v])
+        if not ok.size:
             continue
-        nodes = element_dofs[:, e[ok]].T  # k', nb
-        Xn = (points[:, nodes].transpose(1, 2, 0) - xv[ok][:, None, :]) / h[v[ok]][:, None, None]
-        vals = np.einsum("kba,kac->kbc", _monomials(Xn, degree), coef[v[ok]])
-        idx = nodes.ravel()
-        cnt = np.bincount(idx, minlength=n).astype(float)
+        cnt = np.zeros(n)
+        total = np.zeros((n, coef.shape[2]))
+        for k0 in range(0, ok.size, max(int(chunk), 1)):
+            pk = ok[k0:k0 + chunk]
+            vk = v[pk]
+            nodes = element_dofs[:, pk // nv].T  # k', nb
+            Xn = (points[:, nodes].transpose(1, 2, 0) - points[:, vk].T[:, None, :]) / h[vk][:, None, None]
+            vals = np.einsum("kba,kac->kbc", _monomials(Xn, degree), coef[vk])
+            idx = nodes.ravel()
+            np.add.at(cnt, idx, 1.0)
+            for c in range(vals.shape[2]):  # sequential sums in pair order: the bits of one bincount
+                np.add.at(total[:, c], idx, vals[:, :, c].ravel())
         reached = (cnt > 0) & ~done
-        for c in range(vals.shape[2]):
-            s = np.bincount(idx, weights=vals[:, :, c].ravel(), minlength=n)
-            out[reached, c] = s[reached] / cnt[reached]
+        out[reached] = total[reached] / cnt[reached, None]
         done |= reached
     return out
 
