@@ -7,6 +7,7 @@ The numbers checked come from the analyses validated in tests/validation/test_bl
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from mechverify.checks.fea import (
@@ -20,6 +21,7 @@ from mechverify.errors import InputError
 from mechverify.fea import buckling, mesh, modal, solid
 from mechverify.fea.loads import Fixed, Force
 from mechverify.fea.regions import Plane
+from mechverify.units import Q
 
 
 @pytest.fixture(scope="module")
@@ -109,3 +111,43 @@ def test_mode_shape_figures(bar):
     r = check_natural_frequency(frame_modes(fr, 2), minimum="20 Hz")
     assert "mode_lines" in r.details and r.verdict == "pass"
     assert figure_for(r).startswith("data:image/svg")
+
+
+# ------------------------------------------------ review (round 2 session 3) findings 14, 18: modal words, legend
+class _Modes:
+    """Modal results of a 1-DOF-per-axis toy: two modes at 50 and 80 Hz."""
+
+    rigid_body_modes = 0
+    frequencies = Q(np.array([50.0, 80.0]), "Hz")
+    omega2 = (2 * np.pi * np.array([50.0, 80.0])) ** 2
+
+    def effective_mass_fraction(self):
+        return np.array([[0.613, 0.0, 0.0], [0.0, 0.799, 0.717]])
+
+
+def test_effective_mass_words_and_margin_only_for_a_band():
+    r = check_natural_frequency(_Modes(), minimum="40 Hz", margin=0.15)
+    note = next(n for n in r.notes if n.startswith("effective mass"))
+    assert note == "effective mass of the modes computed: 61.3 % along x, 79.9 % along y, 71.7 % along z of the total"
+    assert "margin" not in r.inputs and r.inputs["f_req"].m_as("Hz") == pytest.approx(40)
+    assert r.capacity.m_as("Hz") == pytest.approx(50) and r.demand.m_as("Hz") == pytest.approx(40)  # no margin
+    band = check_natural_frequency(_Modes(), band=("55 Hz", "60 Hz"), margin=0.15)
+    assert band.inputs["margin"] == 0.15
+
+
+def test_mode_legend_outside_the_axes():
+    pytest.importorskip("matplotlib")
+    from mechverify.checks.result import CheckResult
+    from mechverify.reports.plots.fea import mode_shape_plot
+
+    pts = np.array([[x, y, z] for x in range(5) for y in range(3) for z in range(3)], dtype=float)
+    shape = np.zeros_like(pts)
+    shape[:, 1] = pts[:, 0] / 4
+    r = CheckResult(check="natural_frequency", component="c", demand=Q(1.0, "Hz"), capacity=Q(2.0, "Hz"),
+                    details={"mode_points": Q(pts, "mm"), "mode_shape": shape, "mode_number": 1,
+                             "mode_value": Q(2.0, "Hz")})
+    fig = mode_shape_plot(r)
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    leg = ax.get_legend().get_window_extent()
+    assert leg.y0 >= ax.get_window_extent().y1 - 1  # above the axes, not on the points

@@ -254,3 +254,32 @@ def test_as_written_replaces_an_si_value_only():
     assert as_written("c.fb.n", "must be zero or positive, got -3", table, "c.fb") == "must be zero or positive, got -3.0"
     assert as_written("c.fb.distal_left", "must be positive, got -4 mm", table, "c.fb") == "must be positive, got -4 mm"
     assert as_written("c.fb.other", "must be positive, got -0.1 m", table, "c.fb") == "must be positive, got -0.1 m"
+
+
+# ------------------------------------------------ review (round 2 session 3) finding 25: a material's bad value
+MATERIAL_TEXT = """
+[design]
+name = "no density"
+[materials.mystery]
+base = "Structural Steel"
+density = "0 kg/m^3"
+[components.link]
+type = "link"
+material = "mystery"
+length = "100 mm"
+section = "rectangle"
+width = "10 mm"
+height = "10 mm"
+[load_cases.a.link]
+axial_force = "100 N"
+"""
+
+def test_material_error_at_its_key_once(tmp_path):
+    f = tmp_path / "d.toml"
+    f.write_text(MATERIAL_TEXT)
+    with pytest.raises(DesignFileError) as exc:
+        load(f).verify()
+    text = str(exc.value)
+    assert "materials.mystery.density: must be positive" in text
+    assert "mystery.density: mystery" not in text and "materials.mystery: mystery." not in text
+    assert "unknown material" not in text and "1 error" in text

@@ -11,7 +11,7 @@ from importlib import resources
 import pytest
 
 from mechverify.design import load
-from mechverify.reports.numbers import design_units, quantity_in
+from mechverify.reports.numbers import design_units, quantity, quantity_in
 from mechverify.reports.render import render_html
 from mechverify.reports.symbols import describe, symbol_html
 from mechverify.units import Q
@@ -116,3 +116,19 @@ def test_console_table_carries_design_units(tmp_path, capsys, monkeypatch):
     assert main(["check", str(path)]) == 0
     out = capsys.readouterr().out
     assert "300 N (67.4 lbf)" in out
+
+
+# ------------------------------------------------ review (round 2 session 3) findings 13, 14: FEA results' units
+def test_frequency_in_hz_speed_in_rpm():
+    assert quantity(Q(50, "Hz")) == "50.0 Hz"  # was "477 rpm" (and "(50.0 Hz)" after it)
+    assert quantity(Q(90.7, "Hz")) == "90.7 Hz"
+    assert quantity(Q(2500, "Hz")) == "2.50 kHz"
+    assert quantity(Q(1500, "rpm")) == "1500 rpm"
+    assert quantity(Q(100, "rad/s")) == "955 rpm"  # 100 x 60 / 2π = 954.9
+    assert quantity_in(Q(50, "Hz"), design_units({"f": "40 Hz"})) == "50.0 Hz"  # not "50.0 Hz (50.0 Hz)"
+
+
+def test_micrometre_deflection():
+    assert quantity(Q(0.00074, "mm")) == "0.740 µm"  # was "740×10⁻⁶ mm"
+    assert quantity(Q(0.012, "mm")) == "0.0120 mm"
+    assert quantity(Q(0.0, "mm")) == "0 mm"
