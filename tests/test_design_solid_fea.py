@@ -15,9 +15,8 @@ from pathlib import Path
 import pytest
 
 import mechverify
-from mechverify.design.adapters.solid_fea import convergence_warning
 from mechverify.errors import MechverifyError
-from mechverify.fea.study import two_mesh_check
+from mechverify.fea.study import convergence_warning, two_mesh_check
 from mechverify.units import Q
 from tests.builders import by_check_and_case, gmsh_bar, load, write
 

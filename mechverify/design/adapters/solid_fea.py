@@ -12,17 +12,16 @@ from __future__ import annotations
 import contextlib
 import dataclasses
 from collections.abc import Iterator, Mapping
-from pathlib import Path
 from typing import Any
 
 from mechverify.checks import fea as fc
 from mechverify.checks.fatigue import check_fatigue_field
 from mechverify.checks.result import CheckResult
 from mechverify.design.adapters.modal_parsing import modal_settings
-from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions
+from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions, resolve_files
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, ModelError, UnknownNameError
-from mechverify.fea.reproducible import one_blas_thread, reproducible
+from mechverify.fea.reproducible import reproducible
 from mechverify.units import Q
 
 LOADS = ("forces|pressures|pin_loads|gravity",)
@@ -103,20 +102,12 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     sources = [k for k in ("step", "stl", "box", "mesh") if k in p]
     if len(sources) != 1:
         raise InputError(f"step: give exactly one geometry: step, stl, box or mesh (got {sources or 'none'})")
-    for k in ("step", "stl", "mesh"):
-        if k in p:
-            design = ctx.get("path") if isinstance(ctx, Mapping) else None
-            base = Path(design).resolve().parent if design else Path.cwd()
-            path = Path(p[k]) if Path(p[k]).is_absolute() else base / p[k]
-            if not path.exists():
-                raise InputError(f"{k}: file {str(path)!r} does not exist")
-            p[k] = str(path)
+    resolve_files(p, ctx, tuple(f.name for f in SOLID_FEA.fields if f.file))
     imported = None
     if "mesh" in p:  # another tool's mesh: read now, so that its errors are reported once, at the key
         if p.get("convergence_check"):
             raise InputError("convergence_check: needs a mesh mechverify makes (step, stl or box) to refine; "
                              "an imported mesh is solved as it is")
-        from mechverify.errors import MechverifyError
         from mechverify.fea.meshimport import read_solid_mesh
 
         try:
@@ -137,64 +128,24 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     return SolidStudy(p["_name"], p, p["unit"], _supports(p.get("supports"), p["unit"]), _mesh=imported)
 
 
-#: The two-mesh check's second mesh has elements this many times smaller.
-REFINE = 1.5
-
-
 def _g(ctx: Any) -> Any:
     return ctx.requirements.get("g", Q(9.80665, "m/s**2"))
 
 
 def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     res = c.solve(loads, ctx.load_case, _g(ctx))
-    notes, warns = [], []
-    governing = res
-    if c.p.get("convergence_check"):
-        from mechverify.fea.solid import SolidModel
-        from mechverify.fea.study import two_mesh_check
+    if not c.p.get("convergence_check"):
+        return fc.check_solid_stress(res, component=c.name)
+    from mechverify.fea.solid import SolidModel
+    from mechverify.fea.study import REFINE, two_mesh_stress
 
-        # the second mesh is finer (mesh_size / REFINE: about 3.4x the unknowns), so the change measures the
-        # error of the design's own mesh; its memory is estimated before meshing like the first one's
-        fine_mesh = _make_mesh({**c.p, "mesh_size": c.p["mesh_size"] / REFINE}, c.unit)
-        model = SolidModel(fine_mesh, c.p["material"], supports=c.supports,
-                           loads=_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
-        with c.regions(), one_blas_thread():
-            fine_res = model.solve()
-        fine = fine_res.max_von_mises.value.m_as("MPa")
-        chk = two_mesh_check(res.max_von_mises.value.m_as("MPa"), fine, REFINE, 2.0,
-                             float(c.p.get("convergence_tolerance", 0.05)))
-        if fine > chk.coarse:  # the demand is the larger peak: the coarse mesh's is not conservative
-            governing = fine_res
-        notes.append(f"two-mesh check: peak von Mises {chk.coarse:.4g} MPa at mesh_size, {fine:.4g} MPa at "
-                     f"mesh_size / {REFINE:g} (change {100 * chk.change:.3g} %, Richardson error estimate of the "
-                     f"finer mesh {100 * chk.estimated_error:.3g} %); the demand is the "
-                     + ("finer mesh's peak" if governing is fine_res else "design mesh's peak (the larger)"))
-        near = model.support_near(int(fine_res.max_von_mises.node))
-        warns += [w] if (w := convergence_warning(chk, c.p["mesh_size"], c.p.get("supports"), near)) else []
+    # the second mesh's memory is estimated before meshing like the first one's
+    fine = SolidModel(_make_mesh({**c.p, "mesh_size": c.p["mesh_size"] / REFINE}, c.unit), c.p["material"],
+                      supports=c.supports, loads=_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
+    with c.regions():
+        governing, notes, warns = two_mesh_stress(res, fine, c.p["mesh_size"], c.p.get("supports"),
+                                                  float(c.p.get("convergence_tolerance", 0.05)))
     return fc.check_solid_stress(governing, component=c.name, notes=notes, warnings=warns)
-
-
-def convergence_warning(chk: Any, mesh_size: Any, supports: Any, near: int | None) -> str | None:
-    """The two-mesh check's warning (None within the tolerance): the element size needed, as a ``mesh_size``
-    (the change between h and h/r scales as h^p, so h / refinement_needed brings it under the tolerance), or,
-    when the peak is at or next to support ``near`` (index into the design file's ``supports``), that the peak
-    is the singularity of a rigid support, which refinement does not converge."""
-    if chk.change <= chk.tolerance:
-        return None
-    head = (f"mesh convergence: the peak von Mises stress changed by {100 * chk.change:.3g} % between mesh_size "
-            f"and mesh_size / {chk.ratio:.3g} (tolerance {100 * chk.tolerance:.3g} %)")
-    if near is not None:
-        t = supports[near] if supports and near < len(supports) else {}
-        what = next((f"{k} = {t[k]!r}" for k in ("named", "face", "plane", "box") if isinstance(t, Mapping) and k in t),
-                    "")
-        return (f"{head}; the peak is at support supports[{near}] ({what}): the stress at the edge of a rigid support "
-                "is singular, it grows as the mesh is refined and will not converge, so a smaller mesh_size does not "
-                "help; judge the stress away from the support, or model the support as it is (a bolt's clamp "
-                "area or a restraint of fewer directions)")
-    h = mesh_size.to("mm")
-    return (f"{head}; estimated error of the finer mesh {100 * chk.estimated_error:.3g} %: a mesh_size of about "
-            f"{(h / chk.refinement_needed).m:.3g} mm (now {h.m:.3g} mm) is needed to bring the change under the "
-            "tolerance")
 
 
 def _fatigue(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:

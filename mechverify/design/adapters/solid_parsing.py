@@ -17,6 +17,21 @@ from mechverify.errors import InputError, suggest
 from mechverify.units import Q, as_quantity
 
 
+def resolve_files(p: dict[str, Any], ctx: Any, keys: tuple[str, ...]) -> None:
+    """Each file name of ``keys`` in ``p`` made absolute, relative to the design file (``ctx["path"]``; else the
+    working folder), in place; a file that does not exist is an error at its key."""
+    from pathlib import Path
+
+    design = ctx.get("path") if isinstance(ctx, Mapping) else None
+    base = Path(design).resolve().parent if design else Path.cwd()
+    for k in keys:
+        if k in p:
+            path = Path(p[k]) if Path(p[k]).is_absolute() else base / p[k]
+            if not path.exists():
+                raise InputError(f"{k}: file {str(path)!r} does not exist")
+            p[k] = str(path)
+
+
 def _num(s: Any, unit: str, dim: str, path: str) -> float:
     if isinstance(s, (int, float)) and not isinstance(s, bool):
         return float(Q(float(s), unit).to_base_units().m)
