@@ -8,7 +8,7 @@ Numbers (hand calculations from sigma = N/t and the von Mises criterion, not pri
 - a 20 mm hole in a 200 mm wide plate (d/H = 0.1) under nx = 2000 N/mm: Peterson's eq. (4.1) / Roark 8th ed.
   Table 17.1 (central circular hole, axial tension) K_tn = 3 - 3.13 (0.1) + 3.66 (0.1)^2 - 1.53 (0.1)^3 = 2.7221
   on the net section, K_tg = 2.7221 / 0.9 = 3.0245 on the gross: about 3025 MPa at the hole
-  (tests/validation/test_roark_plate_membrane_bending.py checks it closely on a fine mesh).
+  (tests/validation/test_roark_plate_membrane_hole.py checks it closely on a fine mesh).
 """
 
 import math
