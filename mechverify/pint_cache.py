@@ -54,17 +54,32 @@ def install(ureg: Any) -> None:
             parsed[key] = out
         return out
 
+    import numpy as np
+
+    plain = frozenset({float, int, np.float64, np.ndarray})
+    # (id(src), id(dst)) -> (src, dst, factor): the factor of two units containers found again by identity (a
+    # container's own __hash__/__eq__ are Python calls); holding both keeps their ids from being reused
+    by_id: dict[tuple[int, int], tuple[Any, Any, Any]] = {}
+
     def fast_convert(value: Any, src: Any, dst: Any, inplace: bool = False, **ctx_kwargs: Any) -> Any:
-        if (ctx_kwargs or type(src) is not UnitsContainer or type(dst) is not UnitsContainer
-                or ureg._active_ctx or isinstance(value, Decimal | Fraction)):
-            return convert(value, src, dst, inplace, **ctx_kwargs)
-        key = (src, dst)
-        f = factors.get(key)
-        if f is None:
-            f = _factor(ureg, src, dst)
-            if f is None:  # a dimension error: pint raises it with its message
-                return convert(value, src, dst, inplace)
-            factors[key] = f
+        e = by_id.get((id(src), id(dst)))
+        if (e is not None and e[0] is src and e[1] is dst and type(value) in plain and not ctx_kwargs
+                and not ureg._active_ctx.contexts):
+            f = e[2]
+        else:
+            if (ctx_kwargs or type(src) is not UnitsContainer or type(dst) is not UnitsContainer
+                    or ureg._active_ctx or isinstance(value, Decimal | Fraction)):
+                return convert(value, src, dst, inplace, **ctx_kwargs)
+            key = (src, dst)
+            f = factors.get(key)
+            if f is None:
+                f = _factor(ureg, src, dst)
+                if f is None:  # a dimension error: pint raises it with its message
+                    return convert(value, src, dst, inplace)
+                factors[key] = f
+            if len(by_id) >= 8192:
+                by_id.clear()
+            by_id[id(src), id(dst)] = (src, dst, f)
         if f is _SAME:
             return value
         if f is _SLOW:
@@ -77,6 +92,7 @@ def install(ureg: Any) -> None:
     def fast_define(*args: Any, **kwargs: Any) -> Any:
         parsed.clear()
         factors.clear()
+        by_id.clear()
         targets.clear()
         return define(*args, **kwargs)
 
@@ -151,7 +167,13 @@ def _fast_to(ureg: Any, units_container: type, convert: Any) -> dict[str, Any]:
         if not contexts and not ctx_kwargs:
             dst = target(other)
             if dst is not None:
-                return self.__class__(convert(self._magnitude, self._units, dst), dst)
+                m = convert(self._magnitude, self._units, dst)
+                if type(m) is float and type(self) is cls and not (ureg.force_ndarray or ureg.force_ndarray_like):
+                    # what _fast_quantities' constructor does, without the call
+                    q = object.__new__(cls)
+                    q._magnitude, q._units = m, dst
+                    return q
+                return self.__class__(m, dst)
         return base_to(self, other, *contexts, **ctx_kwargs)
 
     def m_as(self: Any, units: Any) -> Any:

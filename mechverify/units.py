@@ -239,6 +239,7 @@ def _describe(value: Any) -> str:
 #: has already passed :func:`as_quantity` with, so that the next float magnitude in them only needs its bound
 #: checked (issue 19: ~20 000 calls per Monte Carlo sample of the lift; the checks are those of the full path).
 _CHECKED: dict[tuple[Any, str], tuple[float, float]] = {}
+_EXACT = 2**53  # an int magnitude below it converts to float exactly (and never overflows)
 
 
 def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
@@ -248,11 +249,11 @@ def as_quantity(value: Any, dim: str, name: str = "value") -> pint.Quantity:
     numbers; angles need a unit (degrees and radians are both common). Raises :class:`UnitError`
     naming the parameter, the expected dimension and what was given.
     """
-    if type(value) is Quantity:  # the common case: a float quantity in units seen before (finite and in bounds)
+    if type(value) is Quantity:  # the common case: a number quantity in units seen before (finite and in bounds)
         m = value._magnitude
-        if type(m) is float:
+        if type(m) is float or (type(m) is int and -_EXACT < m < _EXACT):
             known = _CHECKED.get((value._units, dim))
-            if known is not None and abs(m * known[0]) <= known[1]:
+            if known is not None and abs(float(m) * known[0]) <= known[1]:
                 return value
     return _as_quantity(value, dim, name)
 
@@ -299,12 +300,14 @@ def to_si(value: Any, dim: str, name: str = "value") -> Any:
     """The SI magnitude (float or ndarray) of ``value`` after :func:`as_quantity` checks it."""
     if type(value) is Quantity:  # as as_quantity's fast path, and the factor it found
         m = value._magnitude
-        if type(m) is float:
+        if type(m) is float or (type(m) is int and -_EXACT < m < _EXACT):
             known = _CHECKED.get((value._units, dim))
             if known is not None:
-                factor = known[0]
+                m, factor = float(m), known[0]
                 if abs(m * factor) <= known[1]:
                     return m * factor if factor != 1.0 else m
+    elif type(value) is float and dim == "dimensionless" and abs(value) <= BOUNDS["dimensionless"][1]:
+        return value  # a bare number (finite and in bounds: what the full path returns)
     q = as_quantity(value, dim, name)
     m = q.magnitude
     if isinstance(m, float | int) and not isinstance(m, bool):

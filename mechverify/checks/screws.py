@@ -18,6 +18,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from mechverify.checks.memo import once
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
 from mechverify.components.power_screw import (
@@ -34,6 +35,10 @@ from mechverify.units import Q, QuantityLike, as_quantity, fmt
 
 SHIGLEY_SCREWS = ref("shigley10", "Sec. 8-2")
 HAMROCK = ref("hamrock3", "Sec. 16.3")
+_FLANK_SOURCE = f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure); {SHIGLEY_SCREWS} (bearing stress)"
+_PV_SOURCE = (f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); polymer-bearing pv rating "
+              "(nut maker's datasheet)")
+_WHIRL_SOURCE = f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}"
 
 
 def _force(F: Any, name: str = "F") -> Any:
@@ -109,8 +114,9 @@ def check_holding_torque(screw: LeadScrew, nut: Nut, F: Any, holding_torque: Qua
     cap = as_quantity(holding_torque, "torque", "holding_torque").to("N*m")
     mu_lo, _ = nut.require_mu()
     need = screw.holding_torque(f, mu_lo).to("N*m")
-    notes = [_mu_note(nut, "min", "friction helps holding: the least friction gives the largest back-driving torque"),
-             "collar/bearing friction not counted (conservative)"]
+    notes = [*once("holding_torque.notes", (nut,), lambda: (
+        _mu_note(nut, "min", "friction helps holding: the least friction gives the largest back-driving torque"),
+        "collar/bearing friction not counted (conservative)"))]
     if need.magnitude == 0:
         notes.append("the thread self-locks at mu_min: no holding torque is needed")
     return CheckResult(
@@ -150,26 +156,34 @@ def check_nut_flank_pressure(screw: LeadScrew, nut: Nut, F: Any, *, required_sf:
                              load_case: str = "") -> CheckResult:
     """Mean flank pressure ``p = F / (pi d2 H1 n)`` against the nut's allowable pressure."""
     f = _force(F)
-    if nut.p_allow is None:
-        raise InputError(f"{nut.name}: no allowable flank pressure (p_allow, or a material with p_max)")
-    n, H1 = _nut_geometry(screw, nut)
+    n, H1, cap, title, notes = once("nut_flank_pressure", (screw, nut), lambda: _flank_constants(screw, nut))
     th = screw.thread
     p = flank_pressure(f, th.d2, H1, n).to("MPa")
-    how = (f"nut length {fmt(nut.length, 'mm')} / P {fmt(th.pitch, 'mm')}" if nut.engaged_threads is None
-           else "as given")
     return CheckResult(
-        check="nut_flank_pressure", component=nut.name, demand=p, capacity=nut.p_allow.to("MPa"),
-        required_sf=required_sf, title=f"Nut flank pressure on {th.designation}",
+        check="nut_flank_pressure", component=nut.name, demand=p, capacity=cap,
+        required_sf=required_sf, title=title,
         formula=r"p = \frac{F}{\pi d_2 H_1 n},\quad n = \frac{m}{P}",
-        source=f"{ref('din103')}; {ref('roloff_matek')} (mean flank pressure); {SHIGLEY_SCREWS} (bearing stress)",
+        source=_FLANK_SOURCE,
         inputs={"F": f, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
         substituted=lambda: (
             rf"p = \frac{{{tex(f, 'N')}}}{{\pi\cdot {tex(th.d2, 'mm')}\cdot {tex(H1, 'mm')}\cdot {tex(n)}}}"
             rf" = {tex(p, 'MPa')}"),
-        notes=(f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
-               "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"),
-        load_case=load_case, details={"engaged_threads": Q(n, "")},
+        notes=notes, load_case=load_case, details={"engaged_threads": Q(n, "")},
     )
+
+
+def _flank_constants(screw: LeadScrew, nut: Nut) -> tuple[float, Any, Any, str, tuple[str, ...]]:
+    """What the flank-pressure check takes from the screw and the nut alone: engaged turns, H1, the allowable
+    pressure [MPa], the title and the notes (the errors of a nut without a limit or of a ball nut, in order)."""
+    if nut.p_allow is None:
+        raise InputError(f"{nut.name}: no allowable flank pressure (p_allow, or a material with p_max)")
+    n, H1 = _nut_geometry(screw, nut)
+    th = screw.thread
+    how = (f"nut length {fmt(nut.length, 'mm')} / P {fmt(th.pitch, 'mm')}" if nut.engaged_threads is None
+           else "as given")
+    return (n, H1, nut.p_allow.to("MPa"), f"Nut flank pressure on {th.designation}",
+            (f"n = {n:.4g} engaged turns ({how}); load shared equally (mean pressure, as nut makers rate it)",
+             "Shigley notes the first turn carries about 0.38 F in metal nuts; polymer nuts share more evenly"))
 
 
 @check("nut_pv", title="Nut pv", sf_kind="pressure",
@@ -188,17 +202,17 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Quanti
         raise InputError("check_nut_pv: give exactly one of rotational_speed or speed")
     n_rot = (as_quantity(rotational_speed, "angular_velocity", "rotational_speed") if rotational_speed is not None
              else screw.rotational_speed(speed)).to("rpm")
-    n, H1 = _nut_geometry(screw, nut)
+    n, H1 = once("nut_geometry", (screw, nut), lambda: _nut_geometry(screw, nut))
     th = screw.thread
     p = flank_pressure(f, th.d2, H1, n).to("MPa")
     v = screw.sliding_speed(n_rot).to("m/s")
     pv = pv_value(p, v).to("MPa*m/s")
     return CheckResult(
-        check="nut_pv", component=nut.name, demand=pv, capacity=nut.pv_allow.to("MPa*m/s"), required_sf=required_sf,
+        check="nut_pv", component=nut.name, demand=pv,
+        capacity=once("nut_pv.capacity", (nut,), lambda: nut.pv_allow.to("MPa*m/s")), required_sf=required_sf,
         title=f"Nut pv on {th.designation} at {fmt(n_rot, 'rpm')}",
         formula=r"pv = \frac{F}{\pi d_2 H_1 n}\cdot\frac{\pi d_2 n_{rot}}{\cos\lambda}",
-        source=(f"{ref('din103')}; {ref('roloff_matek')} (flank pressure); polymer-bearing pv rating "
-                "(nut maker's datasheet)"),
+        source=_PV_SOURCE,
         inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
         substituted=lambda: (rf"pv = {tex(p, 'MPa')}\cdot {tex(v, 'm/s')} = {tex(pv, 'MPa*m/s')}"),
         notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
@@ -225,12 +239,13 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
             raise InputError("check_screw_strength: give the torque, or the nut (its mu_max sets the drive torque)")
         _, mu_hi = nut.require_mu()
         T = screw.raise_torque(f, mu_hi).to("N*m")
-        notes.append(_mu_note(nut, "max", "the highest friction gives the largest drive torque through the screw"))
+        notes.append(once("screw_strength.note", (nut,), lambda: _mu_note(
+            nut, "max", "the highest friction gives the largest drive torque through the screw")))
     else:
         T = as_quantity(torque, "torque", "torque").to("N*m")
         notes.append(f"torque as given: {fmt(T, 'N*m')}")
     s = screw.stresses(f, T)
-    Sy = screw.material_property("yield_strength").to("MPa")
+    Sy = once("screw_strength.Sy", (screw,), lambda: screw.material_property("yield_strength").to("MPa"))
     notes.append(f"axial {fmt(s.axial, 'MPa')}, torsion {fmt(s.torsion, 'MPa')} at d3 = {fmt(screw.thread.d3, 'mm')}")
     return CheckResult(
         check="screw_strength", component=screw.name, demand=s.von_mises, capacity=Sy, required_sf=required_sf,
@@ -263,11 +278,14 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
     The default required factor 2 is the THK rule (permissible load 0.5 P_cr).
     """
     f = _force(F)
-    b = screw.buckling(length, basis)
-    L = screw.length if length is None else as_quantity(length, "length", "length")
+    if length is None:  # the screw's own length: everything but the force depends on the screw alone
+        b, L, cap, title, notes, stress = once(f"screw_buckling.{basis}", (screw,),
+                                               lambda: _buckling_constants(screw, None, basis))
+    else:
+        b, L, cap, title, notes, stress = _buckling_constants(screw, length, basis)
     return CheckResult(
-        check="screw_buckling", component=screw.name, demand=f, capacity=b.critical_load.to("N"),
-        required_sf=required_sf, title=f"Buckling of {screw.thread.designation}, {b.end}",
+        check="screw_buckling", component=screw.name, demand=f, capacity=cap,
+        required_sf=required_sf, title=title,
         formula=(r"P_{cr} = \frac{C\pi^2 E I}{l^2}" if b.regime == "euler" else
                  r"P_{cr} = A\left[S_y - \left(\frac{S_y l}{2\pi k}\right)^2\frac{1}{CE}\right]"),
         source=b.source,
@@ -275,14 +293,22 @@ def check_screw_buckling(screw: LeadScrew, F: Any, *, length: QuantityLike | Non
                 "yield_strength": screw.material_property("yield_strength")},
         substituted=lambda: _buckling_substituted(b, L, screw.thread.d3, screw.material_property("E"),
                                           screw.material_property("yield_strength")),
-        notes=(f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
-               + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
-               f"{b.regime} regime: l/k = {b.slenderness:.4g}, transition (l/k)_1 = {b.transition_slenderness:.4g}",
-               "root section (d3) used for A and I; the length is the unsupported length under compression"),
-        load_case=load_case,
-        details={"regime": b.regime, "C": b.C, "slenderness": b.slenderness,
-                 "critical_stress": b.critical_stress.to("MPa")},
+        notes=notes, load_case=load_case,
+        details={"regime": b.regime, "C": b.C, "slenderness": b.slenderness, "critical_stress": stress},
     )
+
+
+def _buckling_constants(screw: LeadScrew, length: Any, basis: str) -> tuple[Any, ...]:
+    """What the buckling check takes from the screw (and the length) alone: the column result, the length, the
+    critical load [N], the title, the notes and the critical stress [MPa]."""
+    b = screw.buckling(length, basis)
+    L = screw.length if length is None else as_quantity(length, "length", "length")
+    notes = (f"end case {b.end}: C = {b.C:g}, the {basis} value of Shigley Table 4-2"
+             + (" (design value: real fixed ends are never fully fixed)" if basis == "recommended" else ""),
+             f"{b.regime} regime: l/k = {b.slenderness:.4g}, transition (l/k)_1 = {b.transition_slenderness:.4g}",
+             "root section (d3) used for A and I; the length is the unsupported length under compression")
+    return (b, L, b.critical_load.to("N"), f"Buckling of {screw.thread.designation}, {b.end}", notes,
+            b.critical_stress.to("MPa"))
 
 
 def _buckling_substituted(b: Any, L: Any, d3: Any, E: Any, Sy: Any) -> str:
@@ -308,14 +334,15 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
     """
     n = as_quantity(rotational_speed, "angular_velocity", "rotational_speed").to("rpm")
     n = abs(n)
-    nc = screw.critical_speed(length).to("rpm")
-    lam = whirl_factor(screw.end_supports)
-    L = screw.length if length is None else as_quantity(length, "length", "length")
+    if length is None:  # the screw's own length: the critical speed depends on the screw alone
+        nc, lam, L = once("screw_critical_speed", (screw,), lambda: _whirl_constants(screw, None))
+    else:
+        nc, lam, L = _whirl_constants(screw, length)
     return CheckResult(
         check="screw_critical_speed", component=screw.name, demand=n, capacity=nc, required_sf=required_sf,
         title=f"Critical (whirling) speed of {screw.thread.designation}",
         formula=r"n_c = \frac{\lambda_1^2}{2\pi L^2}\sqrt{\frac{E I}{\rho A}},\quad \frac{I}{A} = \frac{d_3^2}{16}",
-        source=f"{ref('blevins', 'Table 8-1')}; {ref('thk', 'permissible rotational speed')}",
+        source=_WHIRL_SOURCE,
         inputs={"rotational_speed": n, "length": L.to("mm"), "d3": screw.thread.d3, "E": screw.material_property("E"),
                 "density": screw.material_property("density")},
         substituted=lambda: (rf"n_c = \frac{{({tex(lam)})^{{2}}}}{{2\cdot \pi\cdot ({tex(L, 'mm')})^{{2}}}}"
@@ -328,6 +355,14 @@ def check_screw_critical_speed(screw: LeadScrew, rotational_speed: QuantityLike,
                "root section (d3); the nut's support is ignored, which is conservative"),
         load_case=load_case, details={"lambda_1": lam, "critical_speed_rad_s": nc.to("rad/s")},
     )
+
+
+def _whirl_constants(screw: LeadScrew, length: Any) -> tuple[Any, float, Any]:
+    """The critical speed [rpm], lambda_1 and the length of the critical-speed check (the screw's alone)."""
+    nc = screw.critical_speed(length).to("rpm")
+    lam = whirl_factor(screw.end_supports)
+    L = screw.length if length is None else as_quantity(length, "length", "length")
+    return nc, lam, L
 
 
 __all__ = ["check_self_locking", "check_holding_torque", "check_nut_flank_pressure", "check_nut_pv",
