@@ -23,7 +23,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from mechverify.errors import InputError, renamed
+import numpy as np
+
+from mechverify.errors import InputError, ModelError, renamed
 from mechverify.fea.regions import MEASURE_RTOL, Region
 from mechverify.frozen import set_fields
 from mechverify.units import QuantityLike, to_si
@@ -291,6 +293,32 @@ class Gravity:
 
 
 STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 (ISO 80000-3)
+
+
+def held_load_names(loads: Sequence[Any], parts: Sequence[np.ndarray], held: np.ndarray) -> list[str]:
+    """Names of the ``loads`` whose nodal force vectors ``parts`` lie wholly on the ``held`` DOFs (solid and
+    plane models); a :class:`ModelError` when every load does (nothing would be loaded: zero stress, a silent
+    PASS)."""
+    free = np.ones(parts[0].size if parts else 0, bool)
+    free[held] = False
+    out = []
+    for i, (ld, fi) in enumerate(zip(loads, parts, strict=True)):
+        total = float(np.abs(fi).sum())
+        if total > 0 and float(np.abs(fi[free]).sum()) <= 1e-12 * total:
+            region = getattr(ld, "region", None)
+            out.append(f"load {i} ({type(ld).__name__.lower()}"
+                       + (f" on {region.describe()})" if region is not None else ")"))
+    if out and len(out) == len(loads):
+        raise ModelError("every load acts only on held nodes (" + "; ".join(out) + "): it goes straight into the "
+                         "supports and the model carries nothing; check that the loaded face is not also a "
+                         "supported face and that no support region catches it")
+    return out
+
+
+def held_load_warnings(names: Sequence[str]) -> tuple[str, ...]:
+    """The result warning for each load of :func:`held_load_names`."""
+    return tuple(f"{name} acts only on held nodes: all of it goes straight into the supports and it loads nothing "
+                 "(a load on a supported face, or a support region that catches the loaded face)" for name in names)
 
 # Former name (issue 16: one meaning per public class name across the package), deprecated.
 __getattr__ = renamed(__name__, {"Support": "Restraint"})

@@ -45,13 +45,15 @@ from mechverify.fea.loads import (
     Traction,
     _join,
     compare_measure,
+    held_load_names,
+    held_load_warnings,
     pin_tractions,
     straddle_warning,
 )
 from mechverify.fea.progress import Steps
 from mechverify.fea.regions import Named, Region
 from mechverify.fea.results import FieldResults
-from mechverify.fea.solid import _as_material, _equilibrium, held_load_names, held_load_warnings, nodal_reactions
+from mechverify.fea.solid import _as_material, _equilibrium, nodal_reactions
 from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
 from mechverify.units import QuantityLike, from_si, to_si
@@ -317,7 +319,7 @@ class PlaneModel:
         return region.measure(2)
 
     def loads_on_held(self, held: np.ndarray | None = None) -> list[str]:
-        """The loads that fall wholly on held DOFs (:func:`mechverify.fea.solid.held_load_names`; a
+        """The loads that fall wholly on held DOFs (:func:`mechverify.fea.loads.held_load_names`; a
         :class:`ModelError` when that is every load)."""
         held = self.held_dofs() if held is None else held
         return held_load_names(self.loads, [f for _, f in self._load_parts()], held)

@@ -28,7 +28,6 @@ References
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -52,6 +51,8 @@ from mechverify.fea.loads import (
     Traction,
     _join,
     compare_measure,
+    held_load_names,
+    held_load_warnings,
     pin_tractions,
     straddle_warning,
 )
@@ -472,32 +473,6 @@ def _tensors(c: np.ndarray) -> np.ndarray:
     out[..., 1, 2] = out[..., 2, 1] = c[..., 4]
     out[..., 0, 2] = out[..., 2, 0] = c[..., 5]
     return out
-
-
-def held_load_names(loads: Sequence[Any], parts: Sequence[np.ndarray], held: np.ndarray) -> list[str]:
-    """Names of the ``loads`` whose nodal force vectors ``parts`` lie wholly on the ``held`` DOFs (solid and
-    plane models); a :class:`ModelError` when every load does (nothing would be loaded: zero stress, a silent
-    PASS)."""
-    free = np.ones(parts[0].size if parts else 0, bool)
-    free[held] = False
-    out = []
-    for i, (ld, fi) in enumerate(zip(loads, parts, strict=True)):
-        total = float(np.abs(fi).sum())
-        if total > 0 and float(np.abs(fi[free]).sum()) <= 1e-12 * total:
-            region = getattr(ld, "region", None)
-            out.append(f"load {i} ({type(ld).__name__.lower()}"
-                       + (f" on {region.describe()})" if region is not None else ")"))
-    if out and len(out) == len(loads):
-        raise ModelError("every load acts only on held nodes (" + "; ".join(out) + "): it goes straight into the "
-                         "supports and the model carries nothing; check that the loaded face is not also a "
-                         "supported face and that no support region catches it")
-    return out
-
-
-def held_load_warnings(names: Sequence[str]) -> tuple[str, ...]:
-    """The result warning for each load of :func:`held_load_names`."""
-    return tuple(f"{name} acts only on held nodes: all of it goes straight into the supports and it loads nothing "
-                 "(a load on a supported face, or a support region that catches the loaded face)" for name in names)
 
 
 def nodal_reactions(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray) -> np.ndarray:
