@@ -380,3 +380,19 @@ def test_plate_negative_min_frequency_reads_as_a_quantity(tmp_path):
     msg = _errors(tmp_path, PLATE.format(mesh="10 mm", extra='min_frequency = "-5 Hz"'))
     assert "components.pl.min_frequency: must be positive" in msg
     assert "Quantity" not in msg and "-5 Hz" in msg
+
+
+def test_a_combination_typo_is_one_error_with_the_closest_names(tmp_path):
+    """Review 2 finding 12: one typo in a combination ({ uplft = -1.5 }) gave one error per check and per *other*
+    load case ('components.col.checks.frame_stress [dead]: load_cases.lift.col.combination.uplft: ...'), without a
+    suggestion. Now one error at the key, naming the closest case and the frame's load cases; a bad load of a plain
+    case is likewise reported once, at its own key."""
+    msg = _errors(tmp_path, COMBO.replace("uplift = -1.5", "uplft = -1.5")
+                  .replace("frame_stress = false\nframe_deflection = false\n", ""))
+    assert msg.count("load_cases.lift.col.combination.uplft: not a load case of col") == 1, msg
+    assert "1 error" in msg and "checks." not in msg
+    assert "did you mean 'uplift'?" in msg and "(its load cases: dead, uplift, live)" in msg
+    msg = _errors(tmp_path, COMBO.replace('["400 N", "0 N", "0 N"]', '["400 N", "0 N"]'))
+    assert "2 errors" in msg and msg.count("load_cases.uplift.col.point_loads[0].force: expected three") == 1, msg
+    assert "load_cases.lift.col.combination.uplift: the load case 'uplift' has an error of its own" in msg
+    assert "checks." not in msg

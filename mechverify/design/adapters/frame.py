@@ -18,7 +18,7 @@ from mechverify.checks import frames as fc
 from mechverify.checks import members as mc
 from mechverify.checks.result import CheckResult
 from mechverify.design.adapters import frame_parsing
-from mechverify.design.adapters.frame_parsing import case_loads, combination, items, make, parse_members, vec, where
+from mechverify.design.adapters.frame_parsing import case_loads, frame_cases, items, make, parse_members, vec, where
 from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
 from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
@@ -49,10 +49,8 @@ class FrameComponent:
     def results(self, ctx: Any) -> fe.FrameResults:
         """The results of ``ctx.load_case``; the first call solves every case and combination of this frame."""
         if ctx.load_case not in self.solved:
-            name, g = self.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2"))
-            mine = {c: comps[name] for c, comps in ctx.design.data.load_cases.items() if name in comps}
-            cases = {c: case_loads(v, c, name, g) for c, v in mine.items() if "combination" not in v}
-            combos = [combination(v, c, name, cases) for c, v in mine.items() if "combination" in v]
+            g = ctx.requirements.get("g", Q(9.80665, "m/s**2"))
+            cases, combos = frame_cases(ctx.design.data.load_cases, self.frame.name, g, ctx.load_case)
             self.solved.update(self.frame.analyse(cases, combos).results)
         return self.solved[ctx.load_case]
 
@@ -119,9 +117,8 @@ def _buckling(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[Che
     name, g = c.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2"))
     try:
         if "combination" in loads:
-            mine = {k: comps[name] for k, comps in ctx.design.data.load_cases.items() if name in comps}
-            cases = {k: case_loads(v, k, name, g) for k, v in mine.items() if "combination" not in v}
-            combo = combination(loads, ctx.load_case, name, cases)
+            cases, combos = frame_cases(ctx.design.data.load_cases, name, g, ctx.load_case)
+            combo = next(x for x in combos if x.name == ctx.load_case)
             res = fe.frame_buckling(c.frame, {k: cases[k] for k in combo.factors}, 1, combination=combo.factors)
         else:
             res = fe.frame_buckling(c.frame, case_loads(loads, ctx.load_case, name, g), 1)

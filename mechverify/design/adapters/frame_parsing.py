@@ -9,7 +9,7 @@ from typing import Any
 from mechverify.components.sections import Section
 from mechverify.design.adapters.common import inline_table
 from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS, build_section
-from mechverify.errors import InputError, MechverifyError
+from mechverify.errors import InputError, MechverifyError, suggest
 from mechverify.fea import frame as fe
 from mechverify.units import as_quantity
 
@@ -123,8 +123,47 @@ def combination(loads: Mapping[str, Any], case: str, comp: str, cases: Mapping[s
         raise InputError(f"{path}.combination: expected a table {{case = factor, ...}}, got {f!r}")
     for k in f:
         if k not in cases:
-            raise InputError(f"{path}.combination.{k}: not a load case of {comp} (without a combination of its own)")
+            close = suggest(str(k), cases)
+            raise InputError(f"{path}.combination.{k}: not a load case of {comp} (without a combination of its own)"
+                             + (f"; did you mean {', '.join(repr(c) for c in close)}?" if close else "")
+                             + f" (its load cases: {', '.join(cases) or 'none'})")
     return make(f"{path}.combination", fe.LoadCombination, case, f)
+
+
+def frame_cases(load_cases: Mapping[str, Any], comp: str, g: Any,
+                wanted: str) -> tuple[dict[str, Any], list[fe.LoadCombination]]:
+    """Every load case (parsed loads) and combination of frame ``comp`` in the design's ``load_cases``. A case or
+    combination whose keys are wrong is left out, unless it is ``wanted`` (then its error is raised): all cases
+    are solved together at the first check, and the error of another case is reported by that case's own checks,
+    once at its key, not again under every check of every other case (review 2 finding 12). A combination of a
+    case left out is left out too."""
+    mine = {c: comps[comp] for c, comps in load_cases.items() if comp in comps}
+    cases: dict[str, Any] = {}
+    failed: dict[str, MechverifyError] = {}
+    for c, v in mine.items():
+        if "combination" not in v:
+            try:
+                cases[c] = case_loads(v, c, comp, g)
+            except MechverifyError as exc:
+                if c == wanted:
+                    raise
+                failed[c] = exc
+    combos = []
+    for c, v in mine.items():
+        if "combination" in v:
+            try:
+                combo = combination(v, c, comp, {**cases, **failed})
+            except MechverifyError:
+                if c == wanted:
+                    raise
+                continue
+            bad = [k for k in combo.factors if k in failed]
+            if bad and c == wanted:
+                raise InputError(f"combination.{bad[0]}: the load case {bad[0]!r} has an error of its own "
+                                 f"(at load_cases.{bad[0]}.{comp})")
+            if not bad:
+                combos.append(combo)
+    return cases, combos
 
 
 def point_masses(p: Mapping[str, Any]) -> tuple[Any, ...]:
