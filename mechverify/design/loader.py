@@ -557,6 +557,7 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
 
     for e in entries.values():
         build(e)
+    build = None  # type: ignore[assignment]  # (the recursive closure's cycle holds the parse context: freed now)
 
 
 def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False,

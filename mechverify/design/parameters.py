@@ -188,6 +188,7 @@ def resolve_parameters(table: Any, add: AddError, trace: Trace) -> dict[str, Any
 
     for name in exprs:
         visit(name, [])
+    visit = None  # type: ignore[assignment]  # (the recursive closure's cycle: freed now, not by the garbage collector)
     trace.invalid = {k for k in table if k not in values}
     return {k: values[k] for k in table if k in values}
 
