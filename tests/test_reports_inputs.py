@@ -132,3 +132,20 @@ def test_micrometre_deflection():
     assert quantity(Q(0.00074, "mm")) == "0.740 µm"  # was "740×10⁻⁶ mm"
     assert quantity(Q(0.012, "mm")) == "0.0120 mm"
     assert quantity(Q(0.0, "mm")) == "0 mm"
+
+
+def test_data_table_says_default_for_keys_the_file_does_not_write(tmp_path):
+    """Review 2 finding 13: the report's Data table gave "design file" as the source of defaults the file never
+    wrote (plate_fea's frequency_margin 0.15, modes 6, convergence_tolerance 0.05); they read "default" now, a key
+    written in the file (or its template) still "design file"."""
+    from mechverify.reports.render import _design_view
+    from tests.builders import load as load_text
+
+    text = ('[design]\nname = "l"\n[templates.bar]\nsection = "rectangle"\nwidth = "10 mm"\nheight = "10 mm"\n'
+            '[components.link]\ntype = "link"\nextends = "bar"\nmaterial = "Structural Steel"\nlength = "100 mm"\n'
+            'end = "pinned-pinned"\n[load_cases.a.link]\naxial_force = "100 N"\n')
+    d = load_text(tmp_path, text)
+    (comp,) = _design_view(d, d.verify(), "all")["components"]
+    src = {p["name"]: p["source"] for p in comp["params"]}
+    assert src["length"] == src["end"] == src["width"] == "design file"  # (width from the template)
+    assert src["pin_shear_planes"] == src["strength_factor"] == "default"

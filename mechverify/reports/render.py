@@ -235,8 +235,10 @@ def _design_view(design: Any, rs: ResultSet, detail: str = "problems") -> dict[s
         if detail != "all" and not any(id(r) in shown for r in by_comp.get(name, [])):
             continue  # a component whose checks all pass: in the summary only
         params = []
+        written = entry.raw if isinstance(getattr(entry, "raw", None), dict) else entry.params
         for k, v in entry.params.items():
-            src = v.source if isinstance(v, Material) and v.source else "design file"
+            # a key the file (or its template) does not write is the type's default, not "design file"
+            src = v.source if isinstance(v, Material) and v.source else "design file" if k in written else "default"
             derived = entries.trace.entries.get(f"components.{name}.{k}") if hasattr(entries, "trace") else None
             if derived:
                 src = f"design file: ← {derived[0]}"
