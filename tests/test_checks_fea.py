@@ -15,6 +15,7 @@ from mechverify.checks.fea import (
     check_natural_frequency,
     check_solid_deflection,
     check_solid_stress,
+    no_buckling_result,
 )
 from mechverify.checks.registry import CHECKS
 from mechverify.errors import InputError
@@ -151,3 +152,20 @@ def test_mode_legend_outside_the_axes():
     ax = fig.axes[0]
     leg = ax.get_legend().get_window_extent()
     assert leg.y0 >= ax.get_window_extent().y1 - 1  # above the axes, not on the points
+
+
+def test_a_case_that_cannot_buckle_says_so_in_the_note_and_the_substituted_line():
+    """Review 2 finding 7: a pull case printed the substituted line "\\lambda_{cr} > \\infty" (false as written) and
+    the note "capacity: the factor every positive buckling factor would exceed" while the capacity is infinite (null
+    in JSON). Both now say "no buckling under this load case"; a finite bound (solid_fea: the reversed load's
+    factor bounds it) is still named as the capacity."""
+    from mechverify.reports.mathtext import formula_svg
+
+    r = no_buckling_result(float("inf"), "no member in compression")
+    assert r.substituted == r"\text{no buckling under this load case}" and r.passed
+    assert r.notes == ("no buckling under this load case: no compression that can buckle the model: "
+                       "no member in compression",)
+    b = no_buckling_result(43.2, "the reversed loads would buckle it at 41.1")
+    assert b.substituted.startswith(r"\lambda_{cr} > 43.2") and "no buckling under this load case" in b.substituted
+    assert any(n.startswith("capacity: 43.2,") for n in b.notes)
+    assert formula_svg(r.substituted) is not None and formula_svg(b.substituted) is not None  # both typeset

@@ -181,16 +181,20 @@ def no_buckling_result(bound: float, reason: str, *, component: str = "", requir
                       load_case: str = "") -> CheckResult:
     """``buckling_load_factor`` of a load case whose loads have no positive buckling factor (no compression that
     can destabilise the model): demand 1, capacity ``bound`` (every positive factor, if any, exceeds it; inf when
-    there is none), and ``reason`` as a note. The envelope over the load cases is governed by the others."""
+    there is none), and ``reason`` as a note. The envelope over the load cases is governed by the others. The
+    note and the substituted line say "no buckling under this load case"; a finite bound is named as the
+    capacity (an infinite one is no number to print: "> ∞" read as a false inequality, review 2 finding 7)."""
     cap = float(bound)
-    shown = f"{cap:.4g}" if np.isfinite(cap) else r"\infty"
+    none = "no buckling under this load case"
+    notes = (f"{none}: no compression that can buckle the model: {reason}",)
+    sub = r"\text{" + none + "}"
+    if np.isfinite(cap):
+        notes += (f"capacity: {cap:.4g}, the factor every positive buckling factor would exceed",)
+        sub = rf"\lambda_{{cr}} > {cap:.4g}\ " + sub.replace("{", "{(", 1).replace("}", ")}", 1)
     return CheckResult(
         check="buckling_load_factor", component=component, demand=Q(1.0, ""), capacity=Q(cap, ""),
         required_sf=required_sf, title="Buckling load factor (FEA)", formula=r"\lambda_{cr} \ge SF",
-        source=BUCKLE_SOURCE, inputs={"lambda_cr": cap},
-        notes=("no compression that can buckle the model in this load case: " + reason,
-               "capacity: the factor every positive buckling factor would exceed"),
-        load_case=load_case, substituted=rf"\lambda_{{cr}} > {shown}")
+        source=BUCKLE_SOURCE, inputs={"lambda_cr": cap}, notes=notes, load_case=load_case, substituted=sub)
 
 
 @check("buckling_load_factor", title="Buckling load factor (FEA)", sf_kind="buckling", source=BUCKLE_SOURCE,
