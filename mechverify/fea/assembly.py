@@ -121,6 +121,21 @@ def barycentric_gradients(p: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, np.
     return gL, measure
 
 
+def _lame_table(p: np.ndarray, t: np.ndarray, lam: float, mu: float, thickness: float) -> np.ndarray:
+    """``λ P + μ Pᵀ + μ tr(P) I`` of the per-element products ``P = V ∇L_k ⊗ ∇L_l``: ``[(k,l), e * dim * dim]``."""
+    dim = p.shape[0]
+    gL, measure = barycentric_gradients(p, t)
+    ne, nv = gL.shape[0], dim + 1
+    P = np.einsum("eki,elj->kleij", gL, gL * (measure * thickness)[:, None, None], optimize=True)
+    # λ M + μ Mᵀ + μ tr(M) I is linear in M, so form it on the small ∇L ⊗ ∇L table before the product.
+    Pc = lam * P + mu * P.transpose(0, 1, 2, 4, 3)
+    tr = np.trace(P, axis1=3, axis2=4)
+    del P
+    for i in range(dim):
+        Pc[:, :, :, i, i] += mu * tr
+    return Pc.reshape(nv * nv, ne * dim * dim)
+
+
 def elasticity_blocks(p: np.ndarray, t: np.ndarray, lam: float, mu: float, thickness: float = 1.0) -> np.ndarray:
     """Element stiffness of isotropic linear elasticity as 3x3 (2x2) blocks ``K[(a,b), e, i*dim+j]``.
 
@@ -130,25 +145,56 @@ def elasticity_blocks(p: np.ndarray, t: np.ndarray, lam: float, mu: float, thick
     :func:`_barycentric_coefficients` with the per-element products ``∇L_k ⊗ ∇L_l``.
     """
     dim = p.shape[0]
-    gL, measure = barycentric_gradients(p, t)
-    ne, nv = gL.shape[0], dim + 1
-    P = np.einsum("eki,elj->kleij", gL, gL * (measure * thickness)[:, None, None], optimize=True)
-    # λ M + μ Mᵀ + μ tr(M) I is linear in M, so form it on the small ∇L ⊗ ∇L table before the product.
-    Pc = lam * P + mu * P.transpose(0, 1, 2, 4, 3)
-    tr = np.trace(P, axis1=3, axis2=4)
-    for i in range(dim):
-        Pc[:, :, :, i, i] += mu * tr
+    K = _barycentric_coefficients(dim) @ _lame_table(p, t, lam, mu, thickness)
+    return K.reshape(-1, t.shape[1], dim * dim)
+
+
+#: Local node pairs (a, b) whose element blocks :func:`assemble_elasticity` forms at once (of 100 for a P2
+#: tetrahedron): all blocks at once were 1.6 kB per DOF, the peak of a 200k-DOF solve (issue 23).
+PAIRS_PER_CHUNK = 10
+
+
+def assemble_elasticity(p: np.ndarray, t: np.ndarray, lam: float, mu: float, pattern: BlockPattern,
+                        thickness: float = 1.0, pairs: int = PAIRS_PER_CHUNK) -> sp.bsr_matrix:
+    """The assembled stiffness of :func:`elasticity_blocks` (BSR, ``dim x dim`` blocks) without holding every
+    element block: the blocks of ``pairs`` local node pairs ``(a, b)`` at a time are summed into K's data in place.
+    Each target block receives the same terms in the same order as ``assemble_blocks(elasticity_blocks(...))``."""
+    dim = p.shape[0]
+    ne = t.shape[1]
+    table = _lame_table(p, t, lam, mu, thickness)
     R = _barycentric_coefficients(dim)
-    K = R @ Pc.reshape(nv * nv, ne * dim * dim)
-    return K.reshape(-1, ne, dim * dim)
+    S = pattern.summation
+    data = np.zeros((S.shape[0], dim * dim))
+    for a0 in range(0, R.shape[0], max(int(pairs), 1)):
+        a1 = min(a0 + max(int(pairs), 1), R.shape[0])
+        blocks = (R[a0:a1] @ table).reshape(-1, dim * dim)  # rows (a b, e), as the summation's columns
+        _add_product(S[:, a0 * ne:a1 * ne], blocks, data)
+    n = pattern.n * dim
+    return sp.bsr_matrix((data.reshape(-1, dim, dim), pattern.indices, pattern.indptr), shape=(n, n))
+
+
+def _add_product(A: sp.csr_matrix, X: np.ndarray, Y: np.ndarray) -> None:
+    """``Y += A @ X`` in place (``A`` CSR or CSC, ``Y`` a C-contiguous 2D float array): SciPy's own kernel for
+    ``A @ X`` (which accumulates into a zeroed result), so each row of ``Y`` receives the same terms in the same
+    (column) order as in one product with the whole matrix."""
+    try:
+        from scipy.sparse import _sparsetools
+        kernel = getattr(_sparsetools, f"{A.format}_matvecs")
+    except (ImportError, AttributeError):  # a SciPy without the private kernel: a temporary of Y's size
+        Y += A @ X
+        return
+    X = np.ascontiguousarray(X, dtype=float)
+    if not (Y.flags.c_contiguous and Y.dtype == np.float64):
+        raise ValueError("_add_product: Y must be a C-contiguous float64 array")
+    kernel(A.shape[0], A.shape[1], X.shape[1], A.indptr, A.indices, A.data, X.ravel(), Y.ravel())
 
 
 @dataclass(frozen=True)
 class BlockPattern:
     """Where each element block lands in a block-sparse (BSR) matrix; computed once per mesh.
 
-    ``summation`` is the 0/1 matrix (target blocks x element blocks) whose product with the stacked
-    element blocks sums them into the BSR data - one sparse product instead of a scatter.
+    ``summation`` is the 0/1 matrix (target blocks x element blocks; CSC, one 1 per column) whose product with the
+    stacked element blocks sums them into the BSR data - one sparse product instead of a scatter.
     """
 
     indptr: np.ndarray
@@ -170,7 +216,11 @@ def block_pattern(element_dofs: np.ndarray, n: int) -> BlockPattern:
     brow = uniq // n
     indptr = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.bincount(brow, minlength=n), out=indptr[1:])
-    S = sp.csr_matrix((np.ones(order.size), order, np.r_[starts, order.size]), shape=(starts.size, order.size))
+    # column c (element block c) has its one 1 in the row of its target block; stored by columns, so the element
+    # blocks of a range of local node pairs are a cheap column slice (assemble_elasticity)
+    target = np.empty(order.size, dtype=np.int32 if starts.size < np.iinfo(np.int32).max else np.int64)
+    target[order] = np.repeat(np.arange(starts.size, dtype=target.dtype), np.diff(np.r_[starts, order.size]))
+    S = sp.csc_matrix((np.ones(order.size), target, np.arange(order.size + 1)), shape=(starts.size, order.size))
     return BlockPattern(indptr, (uniq % n).astype(np.int32), S, n)
 
 

@@ -377,19 +377,20 @@ class SolidModel:
     def _stiffness(self, pattern: asm.BlockPattern, lam: float, mu: float) -> tuple[sp.bsr_matrix, np.ndarray]:
         """The assembled stiffness ``K`` (BSR, 3x3 blocks) and the element volumes ``[e]`` [m³].
 
-        The element blocks ``[(a,b), e, 9]`` (100 * 9 floats per element, 1.4 times K's own data) die with this
+        The element blocks ``[(a,b), e, 9]`` (100 * 9 floats per element, 2.3 times K's own data) die with this
         frame: held by :meth:`solve` they stayed alive through the linear solve and the stress recovery,
-        +1.4 kB/DOF of peak memory (issue 23; ``tests/test_fea_memory.py``).
+        +1.4 kB/DOF of peak memory (issue 23; ``tests/test_fea_memory.py``). Straight elements are summed a tenth
+        of the blocks at a time (:func:`mechverify.fea.assembly.assemble_elasticity`: the assembly was the peak of
+        a 200k-DOF solve, -1 kB/DOF).
         """
         m, b = self.mesh.mesh, self.mesh.basis
         if self.is_curved:
             from mechverify.fea import isoparametric as iso
 
             blocks, measure = iso.stiffness_blocks(self.nodes, b.element_dofs, lam, mu)
-        else:
-            blocks = asm.elasticity_blocks(m.p, m.t, lam, mu)
-            _, measure = asm.barycentric_gradients(m.p, m.t)
-        return asm.assemble_blocks(blocks, pattern, 3), measure
+            return asm.assemble_blocks(blocks, pattern, 3), measure
+        _, measure = asm.barycentric_gradients(m.p, m.t)
+        return asm.assemble_elasticity(m.p, m.t, lam, mu, pattern), measure
 
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, method: str = "auto", progress: bool | None = None,
