@@ -424,6 +424,29 @@ def _fast_binding(sig: inspect.Signature, dims: dict[str, str]) -> Callable | No
     return bind
 
 
+def exceeds(a: pint.Quantity, b: pint.Quantity) -> bool:
+    """``a > b`` as pint compares two quantities (the magnitudes in the same units, else in root units), without
+    pint's comparison machinery for float magnitudes in multiplicative units (the same floats are compared)."""
+    if type(a) is Quantity and type(b) is Quantity and type(a._magnitude) is float and type(b._magnitude) is float:
+        if a._units == b._units:
+            return a._magnitude > b._magnitude
+        ra, rb = _root_factor(a._units), _root_factor(b._units)
+        if ra is not None and rb is not None and ra[1] == rb[1]:
+            return a._magnitude * ra[0] > b._magnitude * rb[0]
+    return bool(a > b)
+
+
+@functools.lru_cache(maxsize=1024)
+def _root_factor(units: Any) -> tuple[float, Any] | None:
+    """(factor, root units) of ``q.to_root_units()`` for a multiplicative unit (None otherwise): pint multiplies
+    the magnitude by this factor (``1.0 * factor`` is the factor itself)."""
+    q = Quantity(1.0, units)
+    if not q._is_multiplicative or Quantity(0.0, units).to_root_units().magnitude != 0.0:
+        return None
+    r = q.to_root_units()
+    return float(r.magnitude), r._units
+
+
 def same_units(a: pint.Quantity, b: pint.Quantity) -> bool:
     """True when two quantities are in the same units (no conversion is needed between them)."""
     return a._units == b._units
@@ -474,4 +497,4 @@ def _is_scalar(m: Any) -> bool:
 
 
 __all__ = ["ureg", "Quantity", "QuantityLike", "Q", "DIMENSIONS", "BOUNDS", "PlausibilityWarning", "as_quantity",
-           "to_si", "from_si", "si_function", "require_positive", "fmt", "same_units"]
+           "to_si", "from_si", "si_function", "require_positive", "fmt", "same_units", "exceeds"]

@@ -184,3 +184,19 @@ def test_the_fast_unit_checks_still_reject_bad_magnitudes():
         dim = {"mm": "length", "rpm": "angular_velocity", "MPa*m/s": "pv", "g*cm**2": "inertia", "deg": "angle"}[unit]
         q = Q(value, unit)
         assert to_si(q, dim) == float(q.to(DIMENSIONS[dim][1]).magnitude)
+
+
+def test_exceeds_compares_as_pint():
+    """units.exceeds(a, b) == (a > b) as pint decides it: same units, other units (root units), offset units and
+    arrays (pint's path), and a dimension error from pint."""
+    import pint
+
+    from mechverify.units import exceeds
+
+    pairs = [(Q(540.0, "rpm"), Q(34000.0, "rpm")), (Q(540.0, "rpm"), Q(56.5, "rad/s")), (Q(1.0, "kN"), Q(1000.0, "N")),
+             (Q(1000.0000000001, "N"), Q(1.0, "kN")), (Q(0.342, "kN"), Q(342.0, "N")), (Q(25.0, "degC"), Q(290.0, "K")),
+             (Q(3.0, "mm"), Q(0.003, "m")), (Q(7, "N"), Q(6.5, "N"))]
+    for a, b in pairs:
+        assert exceeds(a, b) == (a > b) and exceeds(b, a) == (b > a), (a, b)
+    with pytest.raises(pint.DimensionalityError):
+        exceeds(Q(1.0, "N"), Q(1.0, "m"))

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from mechverify.checks.memo import once
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
 from mechverify.components.bearings import (
@@ -23,7 +24,7 @@ from mechverify.components.bearings import (
 )
 from mechverify.components.bearings_rolling import RollingBearing
 from mechverify.references import ref
-from mechverify.units import Q, QuantityLike, fmt, to_si
+from mechverify.units import Q, QuantityLike, exceeds, fmt, to_si
 
 ISO281 = ref("iso281", "Eq. (1), Table 3 (X, Y, e), Table 12 (a1)")
 ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
@@ -57,12 +58,23 @@ def provenance_warning(b: AnyBearing) -> tuple[str, ...]:
 
 
 def _axial_warning(b: AnyBearing, Fa: Any) -> tuple[str, ...]:
-    fa = Q(to_si(Fa, "force", "Fa"), "N")
-    if b.axial_load_limit is not None and fa > b.axial_load_limit:
-        return (f"axial load {fmt(fa.to('kN'))} exceeds {fmt(b.axial_load_limit)} recommended for "
+    fa = to_si(Fa, "force", "Fa")
+    limit, limit_root, provenance = once("bearing.axial_limit", (b,), lambda: _axial_limit(b))
+    if limit is not None and fa * _N_ROOT > limit_root:  # what pint's Q(fa, "N") > limit compares (root units)
+        return (f"axial load {fmt(Q(fa, 'N').to('kN'))} exceeds {fmt(limit)} recommended for "
                 f"deep groove ball bearing {b.designation} (SKF 17000 EN: 0.25 C0 small/light series, else 0.5 C0)",
-                *provenance_warning(b))
-    return provenance_warning(b)
+                *provenance)
+    return provenance
+
+
+def _axial_limit(b: AnyBearing) -> tuple[Any, float | None, tuple[str, ...]]:
+    """The bearing's recommended axial load limit, its magnitude in pint's root units and the provenance
+    warning."""
+    limit = b.axial_load_limit
+    return limit, None if limit is None else limit.to_root_units().magnitude, provenance_warning(b)
+
+
+_N_ROOT = Q(1.0, "N").to_root_units().magnitude  # pint's factor from N to its root units (g·m/s²)
 
 
 def _e_text(e: float) -> str:
@@ -98,7 +110,8 @@ def check_bearing_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed:
         P = duty_cycle.P
     else:
         P = eq.P
-    L = a1 * basic_rating_life(b.C, P, p)
+    L0 = basic_rating_life(b.C, P, p)
+    L = Q(L0.magnitude * a1, L0.units)  # a1·L0 (as pint's product: the same float, without its arithmetic)
     Lh = life_hours(L, speed)
     n = Q(abs(to_si(speed, "angular_velocity", "speed")), "rad/s").to("rpm")
     req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
@@ -134,9 +147,11 @@ def check_bearing_static_safety(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLik
     """Static safety s0 = C0/P0 against the required s0 (SKF guideline for rotating ball bearings: 1,
     1.5 with shock loads, 2 where low noise matters; ISO 76)."""
     P0 = b.static_load(Fr, Fa).to("N")
-    s0 = to_si(b.C0, "force") / to_si(P0, "force") if to_si(P0, "force") > 0 else None
+    p0 = to_si(P0, "force")
+    C0, C0_si = once("bearing_static_safety.C0", (b,), lambda: (b.C0.to("N"), to_si(b.C0, "force")))
+    s0 = C0_si / p0 if p0 > 0 else None
     return CheckResult(
-        check="bearing_static_safety", component=b.designation, demand=P0, capacity=b.C0.to("N"),
+        check="bearing_static_safety", component=b.designation, demand=P0, capacity=C0,
         required_sf=required_s0, title="Bearing static safety (s0)",
         formula=(r"s_0 = C_0 / P_0,\ P_0 = \max(0.6 F_r + 0.5 F_a,\ F_r)" if isinstance(b, BallBearing)
                  else r"s_0 = C_0 / P_0,\ P_0 = \max(X_0 F_r + Y_0 F_a,\ F_r)"), source=ISO76,
@@ -158,8 +173,10 @@ def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = 
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
     n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
     warnings: tuple[str, ...] = ()
-    notes = [f"limiting speed {fmt(b.limiting_speed.to('rpm'))} (open bearing); reference speed "
-             f"{fmt(b.reference_speed.to('rpm'))} (thermal, oil)"]
+    note, capacity, provenance = once("bearing_speed", (b,), lambda: (
+        f"limiting speed {fmt(b.limiting_speed.to('rpm'))} (open bearing); reference speed "
+        f"{fmt(b.reference_speed.to('rpm'))} (thermal, oil)", b.limiting_speed.to("rpm"), provenance_warning(b)))
+    notes = [note]
     if b.variant == "sealed":  # contact seals limit the speed well below the open bearing's: a caveat only near it
         seal = (f"{b.designation} has contact seals: the catalogue limiting speed used here is the open bearing's; "
                 "contact-sealed variants are limited much lower (see the catalogue)")
@@ -168,12 +185,12 @@ def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = 
         else:
             notes.append(f"{seal}; at {fmt(abs(n), 'rpm')}, below {SEAL_SPEED_FRACTION:g} of the open bearing's limit, "
                          "this does not govern (threshold chosen conservatively, not a catalogue value)")
-    if n > b.reference_speed:
+    if exceeds(n, b.reference_speed):
         notes.append("above the reference speed: check the permissible speed for the actual load and lubrication")
     return CheckResult(
-        check="bearing_speed", component=b.designation, demand=abs(n), capacity=b.limiting_speed.to("rpm"),
+        check="bearing_speed", component=b.designation, demand=Q(abs(n.magnitude), n.units), capacity=capacity,
         title="Bearing speed", formula=r"n \le n_{lim}", source=b.source, inputs={"n": n},
-        notes=tuple(notes), warnings=(*warnings, *provenance_warning(b)), load_case=load_case,
+        notes=tuple(notes), warnings=(*warnings, *provenance), load_case=load_case,
         substituted=lambda: (rf"S = \frac{{{tex(b.limiting_speed, 'rpm')}}}{{{tex(abs(n), 'rpm')}}} = "
                      rf"{tex(b.limiting_speed.m_as('rpm') / abs(n.m_as('rpm')))}" if n.magnitude != 0 else ""))
 

@@ -44,6 +44,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 import tomllib
@@ -279,6 +280,13 @@ def reliability_factor(reliability: float) -> float:
         R /= 100.0  # given in percent
     if not (t["reliability"][0] - 1e-12 <= R <= t["reliability"][-1] + 1e-12):
         raise ValidityError(f"reliability {R:g} outside ISO 281 Table 12 (0.90..0.9995)")
+    return _a1(R)
+
+
+@functools.lru_cache(maxsize=64)
+def _a1(R: float) -> float:
+    """:func:`reliability_factor` of a checked reliability (every bearing check asks for the same few values)."""
+    t = _data()["iso281_a1"]
     x = np.log(np.log(1 / np.asarray(t["reliability"])))
     return float(np.interp(math.log(math.log(1 / R)), x[::-1], np.asarray(t["a1"])[::-1]))
 
