@@ -59,6 +59,14 @@ def test_good_design_verifies_with_governing_case(tmp_path):
     assert rs.name == "rig rev B"
 
 
+def test_governing_note_gives_the_other_cases_u_sf_like_the_table(tmp_path):
+    """Review 2 finding 9: the note 'Governing of N load cases (others: lift: u=0.2)' gave u where the table's
+    column and the verdict use u·SF: the other case looked better than it is. lift: 1.2 kN / 20 mm² = 60 MPa of
+    300 MPa, u = 0.2, u·SF = 0.2 x 2.5 = 0.5 (hand calculation)."""
+    r = load(write(tmp_path, GOOD)).verify().get("rod", "stress")
+    assert r.notes[-1] == "Governing of 2 load cases (others: lift: u·SF=0.5)."
+
+
 def test_all_errors_reported_with_key_paths(tmp_path):
     bad = GOOD.replace('length = "350 mm"', 'length = "350 N"').replace('area = "20 mm^2"', "area = 20") \
               .replace('material = "my_steel"', 'material = "structural stel"')

@@ -271,7 +271,8 @@ class Design:
                     if alias:
                         gov = gov.replace(notes=(*gov.notes, deprecation_note(alias, spec.name)))
                     if len(rs) > 1:
-                        others = ", ".join(f"{r.load_case}: u={r.utilisation:.3g}" for r in rs if r is not gov)
+                        others = ", ".join(f"{r.load_case}: u·SF={r.factored_utilisation:.3g}"  # as the verdict
+                                           for r in rs if r is not gov)
                         gov = gov.replace(notes=(*gov.notes, f"Governing of {len(rs)} load cases "
                                                              f"(others: {others})."))
                     results.append(gov)
