@@ -8,7 +8,6 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from mechverify.checks.memo import once
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
 from mechverify.components.bearings import (
@@ -23,6 +22,7 @@ from mechverify.components.bearings import (
     reliability_factor,
 )
 from mechverify.components.bearings_rolling import RollingBearing
+from mechverify.components.memo import once
 from mechverify.references import ref
 from mechverify.units import Q, QuantityLike, exceeds, fmt, to_si
 

@@ -18,9 +18,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from mechverify.checks.memo import once
 from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
+from mechverify.components.memo import once
 from mechverify.components.power_screw import (
     LeadScrew,
     Nut,

@@ -90,7 +90,10 @@ class Stage(Protocol):
 class _Reduction:
     """Shared behaviour: a fixed ratio with forward and back-drive efficiencies."""
 
-    inertia_at_input_si = property(lambda self: 0.0 if self.inertia is None else float(self.inertia.m_as("kg*m**2")))
+    @cached_property
+    def inertia_at_input_si(self) -> float:
+        """The stage's inertia at its input [kg·m²] (0 without one; the stage is immutable: read once)."""
+        return 0.0 if self.inertia is None else float(self.inertia.m_as("kg*m**2"))
 
     def _normalise_inertia(self) -> None:
         """``inertia`` (None or any inertia unit) as a quantity in SI, checked."""

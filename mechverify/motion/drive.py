@@ -24,6 +24,7 @@ Example::
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -31,7 +32,7 @@ from typing import Any
 from mechverify.components.gearheads import Gearhead
 from mechverify.errors import InputError, MechverifyError
 from mechverify.motion.drive_train import DriveTrain, LinearLoad, RotaryLoad, TorqueDemand
-from mechverify.units import Q
+from mechverify.units import Q, Quantity
 
 #: Load keys of a linear load (``mass`` given) and of a rotary load (``inertia`` given).
 LINEAR_KEYS = ("mass", "incline", "friction_coefficient", "friction_force", "external_force")
@@ -39,6 +40,11 @@ ROTARY_KEYS = ("inertia", "gravity_torque", "gravity_phase", "friction_torque", 
 
 #: (load case name, profile, [(friction variant label, demand)]) as :meth:`Drive.demands` returns it.
 CaseDemands = tuple[str, Any, list[tuple[str, TorqueDemand]]]
+
+
+def _positive_float(q: Any) -> bool:
+    """A quantity with a finite positive float magnitude (x + 0 and x·1.0 give x itself)."""
+    return isinstance(q, Quantity) and type(q.magnitude) is float and 0.0 < q.magnitude < math.inf
 
 
 def load_kind(load: Mapping[str, Any]) -> str:
@@ -126,7 +132,9 @@ class Drive:
         if self.kind == "length":
             if "inertia" in case or "external_torque" in case or "gravity_torque" in case:
                 raise InputError("a rotary-load key in a load case of a linear drive")
-            m = (p["mass"] + case.get("payload", Q(0, "kg"))) * k
+            m = p["mass"]
+            if "payload" in case or k != 1.0 or not _positive_float(m):  # else (m + 0 kg)·1 is m: pint's value
+                m = (m + case.get("payload", Q(0, "kg"))) * k
             return LinearLoad(mass=m, incline=p.get("incline", Q(0, "deg")),
                               friction_coefficient=p.get("friction_coefficient", 0.0),
                               coulomb_friction=p.get("friction_force"),

@@ -1,4 +1,4 @@
-"""checks.memo.once: values derived from immutable objects, remembered per object set (issue 19, a study sample).
+"""components.memo.once: values derived from immutable objects, remembered per object set (issue 19, a study sample).
 
 No published number is involved: the tests guard the mechanics (computed once per object set, per name; the
 objects held so that their ids are never reused for another object while remembered; errors not remembered;
@@ -11,8 +11,8 @@ import gc
 
 import pytest
 
-from mechverify.checks import memo
 from mechverify.checks.screws import check_nut_flank_pressure, check_screw_buckling
+from mechverify.components import memo
 from mechverify.components.power_screw import LeadScrew, Nut
 from mechverify.errors import InputError
 from mechverify.units import Q

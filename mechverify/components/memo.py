@@ -1,4 +1,4 @@
-"""Values a check derives from immutable inputs alone, computed once per set of input objects (issue 19).
+"""Values a check or a formula derives from immutable inputs alone, computed once per set of input objects (issue 19).
 
 A study sample re-runs every check with a few inputs changed; most of a check's work depends on the component
 only (a screw's buckling load, a nut's engaged turns, the notes that name them), and a design variant takes over
