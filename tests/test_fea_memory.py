@@ -187,3 +187,49 @@ def test_assembly_without_all_element_blocks():
     assert np.abs(K1.data - K0.data).max() <= 1e-14 * np.abs(K0.data).max()
     assert whole / K0.data.nbytes > 3.0, "the reference (all blocks at once) should need over 3 x K's data"
     assert chunked / K1.data.nbytes < 2.2, f"{chunked / K1.data.nbytes:.2f} x K's data at the peak"
+
+
+@pytest.mark.parametrize("method", ["amg", "direct"])
+def test_stiffness_is_freed_during_the_linear_solve(monkeypatch, method):
+    """``SolidModel.solve`` hands K over to ``linsolve.solve``, which drops it once K's free part exists; the
+    reactions use K's held rows only (``assembly.held_rows``). K (0.7 kB/DOF) was alive through the multigrid setup
+    and CG, the peak of the 203k-DOF lug's solve. The reactions and displacements are those of the full K."""
+    import numpy as np
+
+    from mechverify.fea import factor, linsolve
+
+    refs: list[weakref.ref] = []
+    assemble = assembly.assemble_elasticity
+
+    def watched(*a, **k):
+        out = assemble(*a, **k)
+        refs.append(weakref.ref(out))
+        return out
+
+    alive: dict[str, bool] = {}
+
+    def during(label, fn):
+        def wrapped(*a, **k):
+            alive[label] = any(r() is not None for r in refs)
+            return fn(*a, **k)
+        return wrapped
+
+    monkeypatch.setattr(assembly, "assemble_elasticity", watched)
+    monkeypatch.setattr(linsolve, "pmg_preconditioner", during("multigrid setup", linsolve.pmg_preconditioner))
+    monkeypatch.setattr(factor, "factorize", during("factorisation", factor.factorize))
+    model = _model(False)
+    res = model.solve(method=method, progress=False)
+    assert len(refs) == 1 and alive, "K was not assembled or the solve was not watched"
+    assert not any(alive.values()), f"K still alive during: {[k for k, v in alive.items() if v]}"
+    # the reactions from K's held rows balance the load and equal those of the whole K
+    m = model.mesh
+    K, measure = model._stiffness(assembly.block_pattern(m.basis.element_dofs, m.basis.N),
+                                  *assembly.lame(model.material.E.m_as("Pa"), model.material.nu.m_as("")))
+    u = res.u.ravel()
+    f = model._load_vector(measure)
+    held = model._held()
+    assert np.allclose(res.reaction.m_as("N") if hasattr(res.reaction, "m_as") else res.reaction,
+                       -f.reshape(-1, 3).sum(axis=0), rtol=1e-9, atol=1e-9 * np.abs(f).sum())
+    r_full = solid.nodal_reactions(K, u, f, held)
+    r_rows = solid.nodal_reactions(assembly.held_rows(K, held), u, f, held)
+    assert np.array_equal(r_full, r_rows)

@@ -239,27 +239,45 @@ def free_submatrix(K: sp.spmatrix, free: np.ndarray, chunk: int = 1 << 16) -> sp
     K's CSR copy, the row slice and the result (2-3 times the result's bytes) beside ``K`` at its peak; here only
     the result and work arrays of at most ``chunk`` blocks exist beside ``K`` (issue 23: memory per DOF).
     """
-    free = np.asarray(free, dtype=bool)
+    return _submatrix(K, free, free, chunk)
+
+
+def held_rows(K: sp.spmatrix, held: np.ndarray, chunk: int = 1 << 16) -> sp.csr_matrix:
+    """``K`` with only the rows ``held`` (indices) kept, all columns, the other rows empty: ``(held_rows(K, h) @ u)[h]``
+    is ``(K @ u)[h]`` (the reactions) for the memory of those rows alone, so ``K`` itself can go before the solve."""
+    mask = np.zeros(K.shape[0], bool)
+    mask[np.asarray(held, dtype=np.int64)] = True
+    A = _submatrix(K, mask, np.ones(K.shape[1], bool), chunk)
+    indptr = np.zeros(K.shape[0] + 1, dtype=A.indptr.dtype)
+    indptr[1:][mask] = np.diff(A.indptr)
+    np.cumsum(indptr, out=indptr)
+    return sp.csr_matrix((A.data, A.indices, indptr), shape=K.shape)
+
+
+def _submatrix(K: sp.spmatrix, rows: np.ndarray, columns: np.ndarray, chunk: int) -> sp.csr_matrix:
+    """``K[rows][:, columns]`` (boolean masks) as CSR from a BSR (or any sparse) ``K``, a chunk of blocks at a time."""
+    rows, columns = np.asarray(rows, dtype=bool), np.asarray(columns, dtype=bool)
     if not sp.issparse(K) or K.format != "bsr":
         K = sp.bsr_matrix(K.tocsr(), blocksize=(1, 1))
     R = K.blocksize[0]
-    if K.blocksize != (R, R) or K.shape[0] != K.shape[1] or free.shape != (K.shape[0],):
-        raise ValueError("free_submatrix: a square BSR matrix with square blocks and a mask of its size")
+    if K.blocksize != (R, R) or K.shape[0] != K.shape[1] or not rows.shape == columns.shape == (K.shape[0],):
+        raise ValueError("free_submatrix: a square BSR matrix with square blocks and masks of its size")
     K.sort_indices()
     nbr = K.shape[0] // R
     bptr, bcol, data = K.indptr, K.indices, K.data  # data[block, i, j]
-    fb = free.reshape(nbr, R)
+    rb, cb = rows.reshape(nbr, R), columns.reshape(nbr, R)
     # kept columns of each block, and each block row's kept entries per row (the same for its R rows)
-    per_block = fb.sum(axis=1)[bcol]
+    per_block = cb.sum(axis=1)[bcol]
     row_len = np.add.reduceat(np.r_[per_block, 0], bptr[:-1]) * (np.diff(bptr) > 0)
-    lengths = (row_len[:, None] * fb).ravel()[free]  # each kept row's length
-    index_type = np.int32 if lengths.sum() < np.iinfo(np.int32).max else np.int64
+    lengths = (row_len[:, None] * rb).ravel()[rows]  # each kept row's length
+    index_type = np.int32 if max(lengths.sum(), K.shape[0]) < np.iinfo(np.int32).max else np.int64
     indptr = np.zeros(lengths.size + 1, dtype=index_type)
     np.cumsum(lengths, out=indptr[1:])
     nnz = int(indptr[-1])
     out_data = np.empty(nnz)
     out_ind = np.empty(nnz, dtype=index_type)
-    new = (np.cumsum(free) - 1).astype(index_type)  # new index of each kept row/column
+    new_row = (np.cumsum(rows) - 1).astype(index_type)  # new index of each kept row
+    new_col = (np.cumsum(columns) - 1).astype(index_type)  # and column
     small = np.int32 if K.shape[0] < np.iinfo(np.int32).max // R else np.int64  # work arrays of entry indices
     brow = np.repeat(np.arange(nbr, dtype=small), np.diff(bptr))  # block row of each block
     lanes = np.arange(R, dtype=small)
@@ -267,25 +285,28 @@ def free_submatrix(K: sp.spmatrix, free: np.ndarray, chunk: int = 1 << 16) -> sp
     while start < nbr:  # chunks of whole block rows, at most ~chunk blocks each
         stop = max(int(np.searchsorted(bptr, bptr[start] + chunk, side="right")) - 1, start + 1)
         b0, b1 = bptr[start], bptr[stop]
+        if not np.any(rb[start:stop]):
+            start = stop
+            continue
         cols = (R * bcol[b0:b1, None].astype(small) + lanes).ravel()  # [blocks * R], (block, j) order
-        keep = free[cols]
+        keep = columns[cols]
         # position of each kept (block, j) in its row: running count minus the count before its block row
         pos = np.cumsum(keep, dtype=small)
         before = np.r_[small(0), pos[R - 1::R]][bptr[start:stop] - b0]
         pos -= np.repeat(before, np.diff(bptr[start:stop + 1]) * R)
         pos = pos[keep] - 1
-        rows = np.repeat(brow[b0:b1], R)[keep]
-        cols = new[cols[keep]]
+        brows = np.repeat(brow[b0:b1], R)[keep]
+        cols = new_col[cols[keep]]
         block = data[b0:b1]
         for i in range(R):
-            if not np.any(fb[start:stop, i]):
+            if not np.any(rb[start:stop, i]):
                 continue
-            on = fb[rows, i]  # entries of kept rows R * block_row + i
-            dst = indptr[new[R * rows[on] + i]] + pos[on]
+            on = rb[brows, i]  # entries of kept rows R * block_row + i
+            dst = indptr[new_row[R * brows[on] + i]] + pos[on]
             out_data[dst] = block[:, i, :].reshape(-1)[keep][on]
             out_ind[dst] = cols[on]
         start = stop
-    return sp.csr_matrix((out_data, out_ind, indptr), shape=(lengths.size, lengths.size))
+    return sp.csr_matrix((out_data, out_ind, indptr), shape=(lengths.size, int(columns.sum())))
 
 
 def vector_dofs(element_dofs: np.ndarray, dim: int) -> np.ndarray:

@@ -257,6 +257,7 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
 
     rhs = f[free] - ((K @ u)[free] if prescribed is not None and np.any(u[held]) else 0.0)
     Kff = free_submatrix(K, free_mask)
+    del K  # a caller that handed K over (SolidModel.solve keeps only its held rows) frees it before the solve
     from mechverify.fea.factor import cholmod_available, factorize
     from mechverify.fea.reproducible import one_blas_thread
 
