@@ -257,7 +257,7 @@ class Design:
                         if at not in errors:
                             errors.append(at)
                         continue
-                    for r in out if isinstance(out, list | tuple) else [out]:
+                    for r in out if isinstance(out, (list, tuple)) else (out,):
                         lc = case or r.load_case
                         r = r.replace(component=entry.name, required_sf=sf, load_case=lc,  # (details stay lazy)
                                       notes=(*r.notes, *self.derived_notes(entry.name, lc)))
@@ -267,7 +267,7 @@ class Design:
                         progress()
                 alias = entry.checks.get(spec.name, {}).get("alias")
                 for rs in found.values():
-                    gov = max(rs, key=lambda r: r.factored_utilisation)
+                    gov = rs[0] if len(rs) == 1 else max(rs, key=lambda r: r.factored_utilisation)
                     if alias:
                         gov = gov.replace(notes=(*gov.notes, deprecation_note(alias, spec.name)))
                     if len(rs) > 1:

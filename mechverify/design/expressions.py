@@ -120,7 +120,11 @@ def _dim_text(exc: pint.DimensionalityError) -> str:
 
 
 def _finite(v: Any, source: str) -> None:
-    m = v.magnitude if isinstance(v, Quantity) else v
+    m = v._magnitude if isinstance(v, Quantity) else v
+    if type(m) is float or type(m) is int:  # (the usual scalar: no array round trip)
+        if not math.isfinite(m):
+            raise ExpressionError(f"{source!r}: the result is not finite ({m!r})")
+        return
     if isinstance(m, complex):
         raise ExpressionError(f"{source!r}: the result is not a real number")
     if not np.all(np.isfinite(np.asarray(m, dtype=float))):

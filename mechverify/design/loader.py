@@ -568,7 +568,10 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
     are unchanged take its immutable built objects (:func:`mechverify.design.reuse.reused_object`).
     """
     col = _Collector()
-    files = [path.resolve()] if path else []
+    if base is not None and path and base.path == path and base.files:  # (a variant: resolved once, by its base)
+        files = [base.files[0]]
+    else:
+        files = [path.resolve()] if path else []
     doc = _merge_includes(doc, path, col, allow_outside, files)
     col.unknown_keys(doc, TOP_KEYS, "")
     design = doc.get("design", {})

@@ -507,8 +507,10 @@ class Study:
         if executor == "serial":
             executor = execution.SerialExecutor()
         n_workers = workers or execution.default_workers(memory_per_worker)
-        size = self.batch_size or max(1, min(50, math.ceil(len(ovs) / (4 * n_workers))))
-        batches = [ovs[i:i + size] for i in range(0, len(ovs), size)]
+        sizes = [self.batch_size] * math.ceil(len(ovs) / self.batch_size) if self.batch_size else \
+            batch_sizes(len(ovs), n_workers)
+        starts = np.cumsum([0, *sizes[:-1]]).tolist()
+        batches = [ovs[i:i + k] for i, k in zip(starts, sizes)]
         bar, on_done = _progress(progress, len(ovs))
         try:
             out = execution.run_batches(type(self).batch_fn, self.doc, self.path, batches, executor,
@@ -521,6 +523,20 @@ class Study:
         axes = [{**a.to_dict(), "integer": a.param.integer} for a in self.axes]
         return StudyResult(self.kind, self.method, self.seed if self.kind == "monte_carlo" else None, axes, samples,
                            self.design_name, self.doc, self.path)
+
+
+def batch_sizes(n: int, workers: int, largest: int = 50, smallest: int = 4) -> list[int]:
+    """Batch sizes for ``n`` samples on ``workers``: guided self-scheduling (Polychronopoulos & Kuck 1987), each batch
+    a third of the remaining samples per worker, between ``smallest`` and ``largest``: few tasks while much is
+    left, small ones at the end so that no worker waits long for the last one (equal batches of 50 left a worker
+    idle for up to a batch, ~0.15 s of a 0.6 s lift study of 400 samples on two cores)."""
+    out, left = [], n
+    smallest = max(1, min(smallest, math.ceil(n / (4 * workers))))  # (a few samples: one or two per worker)
+    while left > 0:
+        k = min(left, largest, max(smallest, math.ceil(left / (3 * workers))))
+        out.append(k)
+        left -= k
+    return out
 
 
 def _progress(progress: Any, total: int) -> tuple[Any, Callable[[int], None] | None]:
