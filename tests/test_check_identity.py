@@ -35,3 +35,22 @@ def test_explain_answers_every_former_name_with_the_current_one(checks, capsys):
         assert main(["explain", alias]) == 0, alias
         assert d.name in capsys.readouterr().out, alias
 
+
+
+def test_explain_lists_what_a_check_without_needs_reads(capsys, monkeypatch):
+    """Review 2 finding 6: explain's 'needs from a load case' line listed nothing for plate_fea's buckling, which runs
+    once over every load case that gives in_plane. A CheckSpec declares such keys in ``reads``; explain prints them."""
+    import dataclasses
+
+    from mechverify.checks.fea import check_buckling_load_factor
+    from mechverify.design import REGISTRY
+    from mechverify.design.spec import CheckSpec
+
+    spec = CheckSpec.of(check_buckling_load_factor, lambda c, loads, ctx: None, reads=("in_plane",))
+    assert spec.reads == ("in_plane",)
+    plate = REGISTRY.types["plate_fea"]
+    checks = tuple(spec if c.name == spec.name else c for c in plate.checks)
+    monkeypatch.setitem(REGISTRY._types, "plate_fea", dataclasses.replace(plate, checks=checks))
+    assert main(["explain", "buckling_load_factor"]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if "component type plate_fea" in x)
+    assert line.endswith("key checks.buckling_load_factor; reads from each load case that gives it: in_plane"), line

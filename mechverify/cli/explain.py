@@ -48,5 +48,7 @@ def run(args: argparse.Namespace) -> int:
             out.print(c.explain or "(no explanation)")
             out.print(f"default safety-factor class: {c.sf_kind}")
         needs = f"; needs from a load case: {', '.join(n.replace('|', ' or ') for n in c.needs)}" if c.needs else ""
+        if c.reads:  # a check that runs once over every load case giving these keys
+            needs += f"; reads from each load case that gives it: {' or '.join(c.reads)}"
         out.print(f"In design files: component type {ct.name}, key checks.{c.name}{needs}", markup=False)
     return 0

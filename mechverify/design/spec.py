@@ -59,7 +59,8 @@ class CheckSpec:
     ``needs`` is empty); ``context`` gives requirements and the check's required safety factor.
     ``needs`` lists load names every case must give for the check to run there; ``"a|b"`` accepts
     either. ``sf_kind`` names the project-wide safety-factor class it uses by default (``static``,
-    ``buckling``, ``fatigue``, ...).
+    ``buckling``, ``fatigue``, ...). ``reads`` names the load keys a check without ``needs`` reads itself from
+    every load case that gives them (plate_fea's buckling: ``in_plane``), for ``mechverify explain``.
     """
 
     name: str
@@ -73,10 +74,11 @@ class CheckSpec:
     aliases: tuple[str, ...] = ()
     #: the registry's :class:`~mechverify.checks.registry.CheckDef` (set by :meth:`of`)
     definition: Any = field(default=None, compare=False, repr=False)
+    reads: tuple[str, ...] = ()
 
     @classmethod
     def of(cls, fn: Callable[..., Any], run: Callable[..., Any], needs: tuple[str, ...] = (),
-           default: bool = True, aliases: tuple[str, ...] = ()) -> CheckSpec:
+           default: bool = True, aliases: tuple[str, ...] = (), reads: tuple[str, ...] = ()) -> CheckSpec:
         """The spec of the registered check function ``fn`` (see :mod:`mechverify.checks.registry`).
 
         Name, title, safety-factor class and explanation come from the registry, never restated;
@@ -92,7 +94,7 @@ class CheckSpec:
             raise ValueError(f"{getattr(fn, '__qualname__', fn)!r} is not a registered check "
                              "(decorate it with @check from mechverify.checks.registry)")
         return cls(name=d.name, run=run, title=d.title, needs=tuple(needs), sf_kind=d.sf_kind,
-                   default=default, explain=d.explain, aliases=tuple(aliases), definition=d)
+                   default=default, explain=d.explain, aliases=tuple(aliases), definition=d, reads=tuple(reads))
 
 
 @dataclass(frozen=True)
