@@ -233,3 +233,37 @@ def test_stiffness_is_freed_during_the_linear_solve(monkeypatch, method):
     r_full = solid.nodal_reactions(K, u, f, held)
     r_rows = solid.nodal_reactions(assembly.held_rows(K, held), u, f, held)
     assert np.array_equal(r_full, r_rows)
+
+
+def test_memory_refusal_knows_the_analyses():
+    """``study.require_memory`` (solid_fea's check before meshing) takes the most demanding of the study's analyses:
+    a block that fits the static solve (3.5 kB per unknown) is refused for buckling (a factorisation, whose factor
+    grows as n^(1/3) per unknown) with the analysis named, and the size it offers fits (hand check against the
+    module's own rules: ``modal.memory_estimate``; not a published value)."""
+    from mechverify.errors import ModelError
+    from mechverify.fea import modal, study
+
+    memory = 16e9
+    volume, h = 0.1 * 0.1 * 0.1, 0.75e-3  # ~95 million unknowns at 40 V/h^3
+    n = study.estimate_dofs(volume, h)
+    avail = memory * study.MEMORY_SHARE
+    assert n * study.BYTES_PER_DOF > avail  # the static solve alone is too big: refused, named "static"
+    with pytest.raises(ModelError, match=r"\(static analysis\)"):
+        study.require_memory(volume, h, "components.block", memory=memory)
+    h = 2.8e-3  # 1.8 million unknowns: static 6.4 GB and modal (LOBPCG) 9.0 GB fit 12.8 GB, buckling's 52 GB does not
+    n = study.require_memory(volume, h, "components.block", memory=memory)
+    assert n * study.BYTES_PER_DOF <= avail
+    with pytest.raises(ModelError, match=r"\(buckling analysis\).*largest mesh that fits has about ([\d,]+) unknowns"
+                       ) as err:
+        study.require_memory(volume, h, "components.block", memory=memory, analyses=("static", "buckling"))
+    n_max = int(err.value.args[0].split("largest mesh that fits has about ")[1].split(" ")[0].replace(",", ""))
+    need, worst = study.analysis_bytes(n_max, ("static", "buckling"))
+    assert worst == "buckling" and need <= avail < study.analysis_bytes(n_max + 1, ("static", "buckling"))[0]
+    direct = "cholmod" if modal.cholmod_available() else "superlu"
+    assert need == modal.memory_estimate(n_max, 3, 10, direct)
+    # modal falls back to LOBPCG (no factor): it needs more than the static solve but fits here
+    need_modal, worst = study.analysis_bytes(n, ("static", "modal"))
+    assert worst == "modal" and need_modal == modal.memory_estimate(n, 3, 10, "lobpcg") > n * study.BYTES_PER_DOF
+    assert study.require_memory(volume, h, "components.block", memory=memory, analyses=("modal",)) == n
+    with pytest.raises(Exception, match="analyses"):
+        study.analysis_bytes(10, ("thermal",))

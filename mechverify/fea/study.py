@@ -48,8 +48,12 @@ from mechverify.fea.linsolve import (
 )
 from mechverify.fea.reproducible import one_blas_thread, reproducible
 
-#: Memory of the static solver per unknown [bytes] (FEA benchmark: 4.3 kB per DOF at 200k-830k DOF).
-BYTES_PER_DOF = 4300.0
+#: Memory of the static solver per unknown [bytes]: peak RSS of ``SolidModel.solve`` with multigrid CG in a fresh
+#: process, interpreter included, 2.8-2.9 kB per DOF at 181k-203k DOF and 4.4 at 47.6k (benchmarks/fea_memory.py,
+#: issue 23; 4.3 kB before). A factorisation is taken only up to 300k unknowns and a factor of 3 kB per unknown
+#: (:mod:`mechverify.fea.linsolve`), so a model large enough to be refused is solved by CG; the margin covers a
+#: mesh with more surface (a thin plate) and a new process's libraries.
+BYTES_PER_DOF = 3500.0
 #: P2 unknowns per V/h³ of a gmsh tetrahedral mesh (measured: 39 on a 100x60x20 mm block with a hole at h = 5 mm).
 DOFS_PER_VOLUME = 40.0
 #: Share of the available memory a solve may take.
@@ -80,13 +84,15 @@ class SharedSolve:
         from mechverify.fea.modal import stiffness_matrix
 
         t0 = time.perf_counter()
-        K = stiffness_matrix(model).tocsr()
+        from mechverify.fea.assembly import free_submatrix
+
+        K = stiffness_matrix(model)  # kept as BSR for the reactions: 8.4 bytes per non-zero against CSR's 12
         held = np.unique(model.held_dofs())
         check_supported(model.nodes, held)
         mask = np.ones(K.shape[0], bool)
         mask[held] = False
         free = np.flatnonzero(mask)
-        Kff = K[free][:, free].tocsr()
+        Kff = free_submatrix(K, mask)  # no CSR copy of K on the way (issue 23)
         dim = model.nodes.shape[0]
         cost = None
         if method == "auto":
@@ -175,18 +181,45 @@ def estimate_dofs(volume: float, mesh_size: float) -> int:
     return int(DOFS_PER_VOLUME * volume / mesh_size**3)
 
 
-def require_memory(volume: float, mesh_size: float, what: str, memory: float | None = None) -> int:
+def analysis_bytes(unknowns: int, analyses: Sequence[str] = ("static",), n_modes: int = 10) -> tuple[float, str]:
+    """The peak memory [bytes] of the most demanding of ``analyses`` on ``unknowns`` and its name: ``"static"``
+    (:data:`BYTES_PER_DOF` per unknown), ``"modal"`` (the eigensolver ``method="auto"`` falls back to when a factor does
+    not fit, LOBPCG: :func:`mechverify.fea.modal.memory_estimate`, measured 4.6 kB per DOF at 203k) and
+    ``"buckling"`` (a factorisation: CHOLMOD when installed, else SuperLU; its factor grows as n^(1/3) per unknown,
+    13 kB per DOF at 203k)."""
+    from mechverify.fea.factor import cholmod_available
+    from mechverify.fea.modal import memory_estimate
+
+    needs = {"static": unknowns * BYTES_PER_DOF}
+    for a in analyses:
+        if a == "modal":
+            needs[a] = memory_estimate(unknowns, 3, n_modes, "lobpcg")
+        elif a == "buckling":
+            needs[a] = memory_estimate(unknowns, 3, n_modes, "cholmod" if cholmod_available() else "superlu")
+        elif a != "static":
+            raise InputError(f"analyses: 'static', 'modal' or 'buckling', got {a!r}")
+    worst = max(needs, key=needs.__getitem__)
+    return needs[worst], worst
+
+
+def require_memory(volume: float, mesh_size: float, what: str, memory: float | None = None,
+                   analyses: Sequence[str] = ("static",), n_modes: int = 10) -> int:
     """The estimated unknowns; a :class:`ModelError` with the estimate and the smallest element size that fits
-    when the solve would need more than :data:`MEMORY_SHARE` of the available memory."""
+    when the most demanding of ``analyses`` (:func:`analysis_bytes`: ``"static"``, ``"modal"``, ``"buckling"``
+    with ``n_modes``) would need more than :data:`MEMORY_SHARE` of the available memory."""
     n = estimate_dofs(volume, mesh_size)
     avail = (available_memory() if memory is None else memory) * MEMORY_SHARE
-    need = n * BYTES_PER_DOF
+    need, worst = analysis_bytes(n, analyses, n_modes)
     if need > avail:
-        n_max = avail / BYTES_PER_DOF
-        h_min = (DOFS_PER_VOLUME * volume / n_max) ** (1 / 3)
+        lo, hi = 0, max(n, 1)  # the most unknowns that fit (the need grows with n)
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            lo, hi = (mid, hi) if analysis_bytes(mid, analyses, n_modes)[0] <= avail else (lo, mid)
+        n_max = lo
+        h_min = (DOFS_PER_VOLUME * volume / max(n_max, 1)) ** (1 / 3)
         raise ModelError(f"{what}: a mesh of {mesh_size * 1e3:.4g} mm elements would have about {n:,} unknowns and "
-                         f"need about {need / 1e9:.3g} GB, more than the {avail / 1e9:.3g} GB available; the "
-                         f"largest mesh that fits has about {int(n_max):,} unknowns "
+                         f"need about {need / 1e9:.3g} GB ({worst} analysis), more than the {avail / 1e9:.3g} GB "
+                         f"available; the largest mesh that fits has about {int(n_max):,} unknowns "
                          f"(mesh_size >= {h_min * 1e3:.3g} mm)")
     return n
 
