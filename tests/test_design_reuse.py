@@ -474,3 +474,58 @@ def test_the_variant_copy_of_the_toml_data_equals_deepcopy():
     assert out["t"] is out["u"] and out["t"] is not shared and out["a"][4] is not doc["a"][4]
     out["n"]["m"][0].append(3)
     assert doc["n"]["m"][0] == [1]
+
+
+_EXAMPLES = sorted((Path(__file__).resolve().parents[1] / "examples").glob("*/design.toml"))
+
+
+def _single_value_overrides(d, limit: int = 12) -> list[dict]:
+    """One override per scalar value of the design file (components, profiles, parameters, load cases), the value
+    changed (a quantity scaled by 1.1, a number by 1.1, a bool flipped): each variant changes one input."""
+    from mechverify.units import Q
+
+    out = []
+
+    def walk(v, path):
+        if isinstance(v, dict):
+            for k, x in v.items():
+                walk(x, f"{path}.{k}" if path else k)
+        elif isinstance(v, bool):
+            out.append({path: not v})
+        elif isinstance(v, int | float):
+            out.append({path: v * 1.1 if isinstance(v, float) else v + 1})
+        elif isinstance(v, str):
+            try:
+                q = Q(v)
+            except Exception:  # (a name, an expression, free text: left as written)
+                return
+            if hasattr(q, "units") and not isinstance(q.magnitude, str):
+                out.append({path: f"{float(q.magnitude) * 1.1!r} {q.units}"})
+
+    for section in ("parameters", "components", "profiles", "load_cases"):
+        walk(d.data.raw.get(section, {}), section)
+    return out[:limit]
+
+
+@pytest.mark.parametrize("example", _EXAMPLES, ids=lambda p: p.parent.name)
+def test_reusable_equals_the_full_fingerprint_comparison(example):
+    """reuse.reusable (part by part, early exit) decides exactly as comparing the full fingerprints (reuse.fingerprints)
+    does, for a variant per scalar value of each example file (those that build and verify)."""
+    from mechverify.design.reuse import fingerprints, reusable
+    from mechverify.errors import MechverifyError
+
+    if "solid" in example.parent.name:
+        pytest.skip("FE models: slow; the rule is the same")
+    d = load(example)
+    theirs = fingerprints(d.data)
+    checked = 0
+    for ov in _single_value_overrides(d):
+        try:
+            v = d.with_overrides(ov)
+        except MechverifyError:
+            continue
+        mine = fingerprints(v.data)
+        expected = {k for k in v.data.components if k in theirs and mine[k] == theirs[k]}
+        assert reusable(v.data, theirs) == expected, ov
+        checked += 1
+    assert checked >= 3

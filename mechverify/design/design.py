@@ -285,11 +285,20 @@ class Design:
         label = f"{self.name} rev {self.revision}" if self.revision else self.name
         return ResultSet(results, label)
 
-    def _fingerprints(self) -> dict[str, Any]:
-        if "_fingerprints_cache" not in self.__dict__:
-            from mechverify.design.reuse import design_wide, fingerprints
+    def _wide(self) -> Any:
+        """:func:`mechverify.design.reuse.design_wide` of this design (computed once)."""
+        if "_wide_cache" not in self.__dict__:
+            from mechverify.design.reuse import design_wide
 
-            self.__dict__["_fingerprints_cache"] = (design_wide(self.data), fingerprints(self.data))
+            self.__dict__["_wide_cache"] = design_wide(self.data)
+        return self.__dict__["_wide_cache"]
+
+    def _fingerprints(self) -> dict[str, Any]:
+        """(design-wide, component fingerprints) of this design, computed once, when it is a base of variants."""
+        if "_fingerprints_cache" not in self.__dict__:
+            from mechverify.design.reuse import fingerprints
+
+            self.__dict__["_fingerprints_cache"] = (self._wide(), fingerprints(self.data))
         return self.__dict__["_fingerprints_cache"]
 
     def _loadfree_before(self) -> dict[tuple[str, str], tuple[Any, CheckSpec, float, Any]]:
@@ -299,7 +308,7 @@ class Design:
         the same output, when the design-wide values (requirements) are unchanged too; empty otherwise."""
         base = self.__dict__.get("_reuse_base")
         before = getattr(base, "__dict__", {}).get("_loadfree_results")
-        if not before or self._fingerprints()[0] != base._fingerprints()[0]:
+        if not before or self._wide() != base._wide():
             return {}
         return before
 
@@ -310,11 +319,12 @@ class Design:
         before = getattr(base, "__dict__", {}).get("_results_by_component")
         if not before:
             return {}
-        wide, mine = self._fingerprints()
-        base_wide, theirs = base._fingerprints()
-        if wide != base_wide:
+        if self._wide() != base._wide():
             return {}
-        return {k: v for k, v in before.items() if k in mine and k in theirs and mine[k] == theirs[k]}
+        from mechverify.design.reuse import reusable
+
+        same = reusable(self.data, base._fingerprints()[1])  # (this design's own fingerprints: only when it is a base)
+        return {k: v for k, v in before.items() if k in same}
 
 
 def _beyond_validity(spec: CheckSpec, component: str, case: str, exc: ValidityError) -> CheckResult:

@@ -157,31 +157,50 @@ def _parameters(data: Any) -> Mapping[str, Any]:
     return p if isinstance(p, Mapping) else {}
 
 
+def _cases_part(name: str, data: Any, raw_cases: Any) -> tuple[tuple[Any, ...], list[Any]]:
+    """A component's loads in every load case that names it, as written and as resolved (part 4 of its own
+    fingerprint), and the tables its dependencies are read from (its own table first)."""
+    cases = []
+    tables = [data.components[name].raw]
+    for case, comps in data.load_cases.items():
+        if name in comps:
+            table = raw_cases.get(case, {}) if isinstance(raw_cases, Mapping) else {}
+            written = table.get(name) if isinstance(table, Mapping) else None
+            cases.append((case, _canon(written), _canon(comps[name])))
+            tables.append(written)
+    return tuple(cases), tables
+
+
+def _refs_part(tables: list[Any], data: Any, params: Mapping[str, Any]) -> tuple[Any, Any, set[str]]:
+    """Parts 5 and 6 of a component's own fingerprint (the profiles it names, the parameters its strings name, by
+    value) and the components it names, directly or through those profiles (itself included)."""
+    found: set[str] = set()
+    profiles = _profiles(tables, data, found)
+    for t in tables:
+        _names(t, data.components, found)
+    for t in tables:  # a parameter read by an expression inside a table-kind field (a path's "r0 - ..."): its
+        _names(t, params, found, words=True)  # value, not only the text (conservative: any word that is one)
+    used = tuple((n, _canon(params[n])) for n in sorted(n for n in found if n in params))
+    return profiles, used, {n for n in found if n in data.components}
+
+
+def _raw_cases(data: Any) -> Any:
+    return data.raw.get("load_cases", {}) if isinstance(data.raw, Mapping) else {}
+
+
 def fingerprints(data: Any) -> dict[str, Any]:
-    """Component name -> the fingerprint of everything its checks read (see the module docstring)."""
-    raw_cases = data.raw.get("load_cases", {}) if isinstance(data.raw, Mapping) else {}
+    """Component name -> the fingerprint of everything its checks read (see the module docstring): ``(own, closure)``,
+    ``own`` = (type, table, check settings, validated fields, loads per case, profiles, named parameters), ``closure``
+    = the own fingerprints of the components it names, transitively, by name."""
+    raw_cases = _raw_cases(data)
     own: dict[str, Any] = {}
     refs: dict[str, set[str]] = {}
     params = _parameters(data)
     for name, entry in data.components.items():
-        cases = []
-        tables = [entry.raw]
-        for case, comps in data.load_cases.items():
-            if name in comps:
-                table = raw_cases.get(case, {}) if isinstance(raw_cases, Mapping) else {}
-                written = table.get(name) if isinstance(table, Mapping) else None
-                cases.append((case, _canon(written), _canon(comps[name])))
-                tables.append(written)
-        found: set[str] = set()  # the components it names, directly or through the profiles it names
-        own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), tuple(cases),
-                     _profiles(tables, data, found))
-        for t in tables:
-            _names(t, data.components, found)
-        for t in tables:  # a parameter read by an expression inside a table-kind field (a path's "r0 - ..."): its
-            _names(t, params, found, words=True)  # value, not only the text (conservative: any word that is one)
-        used = sorted(n for n in found if n in params)
-        own[name] += (tuple((n, _canon(params[n])) for n in used),)
-        found = {n for n in found if n in data.components}
+        cases, tables = _cases_part(name, data, raw_cases)
+        profiles, used, found = _refs_part(tables, data, params)
+        own[name] = (entry.type.name, _canon(entry.raw), _canon(entry.checks), _canon(entry.params), cases, profiles,
+                     used)
         found.discard(name)
         refs[name] = found
     out: dict[str, Any] = {}
@@ -197,6 +216,56 @@ def fingerprints(data: Any) -> dict[str, Any]:
             closure.append((n, own[n]))
             todo.extend(sorted(refs[n] - seen))
         out[name] = (own[name], tuple(sorted(closure, key=lambda x: x[0])))
+    return out
+
+
+def reusable(data: Any, theirs: Mapping[str, Any]) -> set[str]:
+    """The components of ``data`` whose :func:`fingerprints` entry equals ``theirs[name]`` (a base design's), found
+    without computing every fingerprint in full (a study sample changes most components: their loads or fields
+    differ, and comparing those first decides them). The same equality, part by part: the type, the loads per case
+    and the validated fields first (what a variant usually changes), then the table and check settings, then the
+    profiles and parameters it names; for a component whose own parts all match, the components it names
+    (transitively) must match too, and be the same set of names."""
+    raw_cases = _raw_cases(data)
+    params = _parameters(data)
+    same: dict[str, bool] = {}
+    refs: dict[str, set[str]] = {}
+
+    def own_equal(name: str) -> bool:
+        hit = same.get(name)
+        if hit is not None:
+            return hit
+        entry, t = data.components.get(name), theirs.get(name)
+        ok = entry is not None and t is not None
+        if ok:
+            was = t[0]
+            cases, tables = _cases_part(name, data, raw_cases)
+            ok = (was[0] == entry.type.name and was[4] == cases and was[3] == _canon(entry.params)
+                  and was[1] == _canon(entry.raw) and was[2] == _canon(entry.checks))
+            if ok:
+                profiles, used, found = _refs_part(tables, data, params)
+                ok = was[5] == profiles and was[6] == used
+                found.discard(name)
+                refs[name] = found
+        same[name] = ok
+        return ok
+
+    out = set()
+    for name in data.components:
+        if name not in theirs or not own_equal(name):
+            continue
+        seen, todo, closure, ok = {name}, sorted(refs[name]), [], True
+        while todo and ok:
+            n = todo.pop()
+            if n in seen:
+                continue
+            seen.add(n)
+            closure.append(n)
+            ok = own_equal(n)
+            if ok:
+                todo.extend(sorted(refs[n] - seen))
+        if ok and sorted(closure) == [n for n, _ in theirs[name][1]]:
+            out.add(name)
     return out
 
 
