@@ -94,32 +94,48 @@ def install(ureg: Any) -> None:
         factors.clear()
         by_id.clear()
         targets.clear()
+        texts.clear()
         return define(*args, **kwargs)
 
     ureg.parse_units_as_container = parse_units_as_container
     ureg.convert = fast_convert
     ureg.define = fast_define
-    _fast_quantities(ureg, UnitsContainer)
-    targets = _fast_to(ureg, UnitsContainer, fast_convert)
+    texts = _fast_quantities(ureg, UnitsContainer)
+    targets = _fast_to(ureg, UnitsContainer, fast_convert, by_id)
     _cached_unit_text(ureg)
     ureg._mechverify_fast = True
 
 
-def _fast_quantities(ureg: Any, units_container: type) -> None:
+def _fast_quantities(ureg: Any, units_container: type) -> dict[str, Any]:
     """``Quantity(value, units)`` of this registry without pint's general argument analysis when ``value`` is a
-    float, an int or an ndarray and ``units`` a units container or a unit of this registry (what ``.to()``,
-    arithmetic and ``Q(v, unit)`` pass): the same two attributes pint sets (its ``_to_magnitude`` returns such
-    values unchanged while the registry does not force arrays). Anything else goes to pint's ``__new__``."""
+    float, an int or an ndarray and ``units`` a units container, a unit of this registry or a unit string (what
+    ``.to()``, arithmetic and ``Q(v, unit)`` pass; a string's container is pint's ``parse_units(text)._units``,
+    remembered): the same two attributes pint sets (its ``_to_magnitude`` returns such values unchanged while the
+    registry does not force arrays). Anything else goes to pint's ``__new__``. Returns the dict of unit strings
+    (cleared when a unit is defined, and when the registry's preprocessors change)."""
     import numpy as np
 
     cls = ureg.Quantity
     unit_cls = ureg.Unit
     base_new = cls.__new__
     plain = (float, int, np.float64, np.ndarray)
+    texts: dict[str, Any] = {}
+    count = [len(ureg.preprocessors)]
 
     def __new__(klass: Any, value: Any, units: Any = None) -> Any:
-        if type(units) is unit_cls:  # pint takes a unit's container (Q(v, "mm") passes a parsed unit)
+        t = type(units)
+        if t is unit_cls:  # pint takes a unit's container (Q(v, "mm") passes a parsed unit)
             units = units._units
+        elif t is str and type(value) in plain:  # pint: parse_units(units)._units
+            if len(ureg.preprocessors) != count[0]:
+                texts.clear()
+                count[0] = len(ureg.preprocessors)
+            u = texts.get(units)
+            if u is None:
+                u = ureg.parse_units(units)._units
+                if len(texts) < 4096:
+                    texts[units] = u
+            units = u
         if type(units) is units_container and type(value) in plain and not (ureg.force_ndarray
                                                                             or ureg.force_ndarray_like):
             inst = object.__new__(klass)
@@ -129,9 +145,10 @@ def _fast_quantities(ureg: Any, units_container: type) -> None:
         return base_new(klass, value, units)
 
     cls.__new__ = __new__
+    return texts
 
 
-def _fast_to(ureg: Any, units_container: type, convert: Any) -> dict[str, Any]:
+def _fast_to(ureg: Any, units_container: type, convert: Any, by_id: dict[tuple[int, int], Any]) -> dict[str, Any]:
     """``q.to(unit)`` and ``q.m_as(unit)`` of this registry's quantities with the target unit's container looked up
     in a dict (pint runs its preprocessors and ``to_units_container`` on every call) and converted by ``convert``
     (:func:`install`'s, the one pint's ``to`` reaches too): the same magnitude and units as pint's ``to``. Contexts,
@@ -164,6 +181,18 @@ def _fast_to(ureg: Any, units_container: type, convert: Any) -> dict[str, Any]:
         return None
 
     def to(self: Any, other: Any = None, *contexts: Any, **ctx_kwargs: Any) -> Any:
+        if type(other) is str and type(self) is cls and not contexts and not ctx_kwargs:
+            # the commonest call, q.to("mm") on a float quantity, with target() and convert() inlined
+            dst = targets.get(other)
+            m = self._magnitude
+            if dst is not None and type(m) is float and len(ureg.preprocessors) == count[0]:
+                src = self._units
+                e = by_id.get((id(src), id(dst)))
+                if (e is not None and e[0] is src and e[1] is dst and e[2] is not _SLOW
+                        and not ureg._active_ctx.contexts and not (ureg.force_ndarray or ureg.force_ndarray_like)):
+                    q = object.__new__(cls)
+                    q._magnitude, q._units = (m if e[2] is _SAME else m * e[2]), dst
+                    return q
         if not contexts and not ctx_kwargs:
             dst = target(other)
             if dst is not None:

@@ -141,3 +141,17 @@ def test_to_steps_aside_for_contexts_and_follows_new_preprocessors() -> None:
         assert Q(2.0, "m").m_as("mechverify_milli_test") == 2000.0
     finally:
         ureg.preprocessors.pop()
+
+
+def test_quantities_from_unit_strings_are_pints(plain: pint.UnitRegistry) -> None:
+    """``Quantity(v, "N*m")`` takes the container pint's parse_units gives, remembered per string; a preprocessor
+    added later applies to strings parsed after it."""
+    for value in (2.5, 3, np.float64(0.25), np.array([1.0, 2.0])):
+        for unit in ("N*m", "dimensionless", "", "m/s**2", "%"):
+            q, ref = ureg.Quantity(value, unit), plain.Quantity(value, unit)
+            assert q.magnitude is value and q._units == ref._units and type(q) is ureg.Quantity
+    ureg.preprocessors.append(lambda s: s.replace("mechverify_newton_test", "N"))
+    try:
+        assert ureg.Quantity(2.0, "mechverify_newton_test").units == ureg.Unit("N")
+    finally:
+        ureg.preprocessors.pop()
