@@ -106,6 +106,32 @@ def _typed(ct: ComponentType) -> dict[str, Any]:
     return body
 
 
+def _load_keys(types: Any) -> dict[str, Any]:
+    """Every load-case key of the component types (``ComponentType.loads``), for completion and documentation: a load
+    case names its components, not their types, so the keys are the union over the types (a key two types read
+    differently takes either's form); which keys a component takes is checked by the loader. ``in_plane`` (plate_fea)
+    lists its own keys."""
+    from mechverify.design.adapters.modal_parsing import IN_PLANE_KEYS
+
+    forms: dict[str, list[dict[str, Any]]] = {}
+    for ct in types:
+        for f in ct.loads:
+            s = field_schema(f)
+            if f.name == "in_plane":
+                pair = {"anyOf": [field_schema(Field("n", "force_per_length")),
+                                  {"type": "array", "minItems": 2, "maxItems": 2,
+                                   "items": field_schema(Field("n", "force_per_length"))}]}
+                s["properties"] = {k: {**(field_schema(Field(k, "force_per_length")) if k == "nxy" else pair),
+                                       "description": f"{k} [force per length, tension positive]"}
+                                   for k in IN_PLANE_KEYS}
+                s["additionalProperties"] = False
+            if s not in forms.setdefault(f.name, []):
+                forms[f.name].append(s)
+    return {k: v[0] if len(v) == 1 else {"anyOf": v, "description": " | ".join(dict.fromkeys(x.get("description", "")
+                                                                                           for x in v))}
+            for k, v in sorted(forms.items())}
+
+
 def design_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of a design file."""
     from mechverify.design import adapters  # noqa: F401
@@ -113,7 +139,8 @@ def design_schema() -> dict[str, Any]:
     comps = REGISTRY.in_section("components")
     profiles = REGISTRY.in_section("profiles")
     material_props = {k: field_schema(Field(k, v)) for k, v in PROPERTY_DIMENSIONS.items()}
-    loads_any = {"type": "object", "description": "loads of one component in this case (keys depend on its type)"}
+    loads_any = {"type": "object", "description": "loads of one component in this case (keys depend on its type)",
+                 "properties": _load_keys(comps.values())}
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "mechverify design file",

@@ -26,9 +26,10 @@ MODAL_FIELDS = (
 
 
 IN_PLANE_FIELD = Field(
-    "in_plane", "table", "in-plane (membrane) edge loads for buckling_load_factor: {nx, ny, nxy} force per length on "
-    "the outline edges, tension positive (\"-10 N/mm\" compresses); nx = [at the lowest y, at the highest y] varies "
-    "linearly, ny = [at the lowest x, at the highest x] likewise", item="table")
+    "in_plane", "table", "in-plane (membrane) edge loads: {nx, ny, nxy} force per length on the outline edges, "
+    "tension positive (\"-10 N/mm\" compresses); nx = [at the lowest y, at the highest y] varies linearly, ny = [at "
+    "the lowest x, at the highest x] likewise; their membrane stress N/t adds to the bending stress in "
+    "plate_stress_fea and they load buckling_load_factor", item="table")
 IN_PLANE_KEYS = ("nx", "ny", "nxy")
 
 
