@@ -67,3 +67,27 @@ def test_result_set_overall_and_sort():
     assert ResultSet().verdict is Verdict.WARN  # no check ran: nothing verified (review item 8)
     assert rs.to_json() == ResultSet.from_dict(json.loads(rs.to_json())).to_json()
     assert "<table>" in rs._repr_html_() and "fail" in repr(rs)
+
+
+def test_the_constructor_takes_the_fields_in_their_order():
+    """CheckResult's own __init__ (issue 19: one dict update instead of an object.__setattr__ per field) takes the
+    dataclass fields in order, positionally or by name, with the dataclass defaults; inputs are copied."""
+    import dataclasses
+    import inspect
+
+    from mechverify.checks.result import CheckResult
+    from mechverify.units import Q
+
+    names = [f.name for f in dataclasses.fields(CheckResult)]
+    assert list(inspect.signature(CheckResult).parameters) == names
+    inputs = {"F": Q(1.0, "N")}
+    args = ("c", "x", Q(1.0, "N"), Q(2.0, "kN"), 1.5, "T", "f", "s", inputs, ("n",), ("w",), "case",
+            {"d": 1}, "a = 1")
+    a, b = CheckResult(*args), CheckResult(**dict(zip(names, args, strict=True)))
+    assert a == b and a.to_dict() == b.to_dict() and a.substituted == "a = 1" and a.verdict == "warn"
+    inputs["G"] = 2
+    assert "G" not in a.inputs
+    d = CheckResult("c", "x", Q(1.0, "N"), Q(2.0, "N"))
+    assert (d.required_sf, d.title, d.inputs, d.notes, d.warnings, d.details, d.substituted) == (
+        1.0, "", {}, (), (), {}, "")
+    assert dataclasses.replace(d, demand=Q(4.0, "N")).utilisation == 2.0

@@ -188,6 +188,20 @@ class CheckResult:
     # LaTeX: the formula with its inputs substituted (with units) = the result, see tex(); or a function returning it
     substituted: str = _Substituted()  # type: ignore[assignment]
 
+    def __init__(self, check: str, component: str, demand: pint.Quantity, capacity: pint.Quantity,
+                 required_sf: float = 1.0, title: str = "", formula: str = "", source: str = "",
+                 inputs: Mapping[str, Any] | None = None, notes: tuple[str, ...] = (), warnings: tuple[str, ...] = (),
+                 load_case: str = "", details: Mapping[str, Any] | Callable[[], Mapping[str, Any]] | None = None,
+                 substituted: str | Callable[[], str] = "") -> None:
+        """The dataclass's fields in order (what the generated ``__init__`` of a frozen dataclass stores one
+        ``object.__setattr__`` at a time, stored at once: a study sample makes ~20 results)."""
+        self.__dict__.update(check=check, component=component, demand=demand, capacity=capacity,
+                             required_sf=required_sf, title=title, formula=formula, source=source,
+                             inputs={} if inputs is None else inputs, notes=notes, warnings=warnings,
+                             load_case=load_case, details={} if details is None else details)
+        _store_substituted(self, substituted)
+        self.__post_init__()
+
     def __post_init__(self) -> None:
         for name in ("demand", "capacity"):
             v = getattr(self, name)
