@@ -69,7 +69,8 @@ def print_results(rs: Any, units: dict[Any, str] | None = None) -> None:
         from mechverify.cli._table import render
 
         title, headers, justify, rows = results_rows(rs, units, width(sys.stdout))
-        lines = render(title, headers, justify, [[_TAGS.sub("", c) for c in r] for r in rows], width(sys.stdout))
+        lines = render(title, headers, justify, [[_TAGS.sub("", c) for c in r] for r in rows], width(sys.stdout),
+                       fixed_widths(headers, rows))
         if lines is not None:
             sys.stdout.write("\n".join(lines) + "\n")
             return
@@ -127,8 +128,28 @@ def results_rows(rs: Any, units: dict[Any, str] | None = None,
     rows = [[*row[:2], name, *row[3:]] for row, name in zip(rows, checks)]
     drop = {""} | ({"SF req", "governing case"} if columns < NARROWER else set())
     keep = [i for i, h in enumerate(headers) if h not in drop]
-    return (title, [headers[i] for i in keep], [justify[i] for i in keep],
-            [[row[i] for i in keep] for row in rows])
+    headers, justify = [headers[i] for i in keep], [justify[i] for i in keep]
+    rows = [[row[i] for i in keep] for row in rows]
+    natural = [max(_cell_width(c) for c in col) for col in zip(headers, *rows)]
+    if sum(natural) + 3 * len(natural) + 1 > columns:  # (padding 2 and a border per column)
+        # the names are the keys users type (checks.<name>, --until <component>.<check>): rather than let the
+        # console crop them, the component and the check share one column on two lines, "lift_screw." over
+        # "nut_pv" (review 2 finding 8); demand and capacity wrap first
+        headers = [headers[0], "component.check", *headers[3:]]
+        justify = [justify[0], "left", *justify[3:]]
+        rows = [[row[0], f"{row[1]}.\n{row[2]}", *row[3:]] for row in rows]
+    return title, headers, justify, rows
+
+
+def fixed_widths(headers: list[str], rows: list[list[str]]) -> list[int | None]:
+    """Per column of :func:`results_rows`, the fixed content width (rich's ``Column(width=)``) or None: the
+    merged name column keeps its width, so a narrow console narrows demand and capacity first."""
+    return [max(_cell_width(c) for c in col) if col[0] == "component.check" else None for col in zip(headers, *rows)]
+
+
+def _cell_width(markup: str) -> int:
+    """The width of a cell's longest line, without mechverify's colour tags."""
+    return max(len(line) for line in _TAGS.sub("", markup).split("\n"))
 
 
 def _all_rows(rs: Any, units: dict[Any, str] | None = None) -> tuple[str, list[str], list[str], list[list[str]]]:
@@ -155,8 +176,8 @@ def results_table(rs: Any, units: dict[Any, str] | None = None, columns: int | N
 
     title, headers, justify, rows = results_rows(rs, units, columns)
     t = Table(title=title, title_justify="left", show_lines=False)
-    for col, just in zip(headers, justify):
-        t.add_column(col, justify=just)
+    for col, just, fixed in zip(headers, justify, fixed_widths(headers, rows)):
+        t.add_column(col, justify=just, width=fixed)
     for row in rows:
         t.add_row(*row)
     return t

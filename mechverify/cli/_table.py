@@ -62,15 +62,17 @@ def _ratio_reduce(total: int, ratios: list[int], maximums: list[int], values: li
     return out
 
 
-def _collapse(widths: list[int], max_width: int) -> list[int]:
-    """rich.table.Table._collapse_widths with every column wrapable: narrow the widest columns first."""
+def _collapse(widths: list[int], max_width: int, wrapable: list[bool]) -> list[int]:
+    """rich.table.Table._collapse_widths: narrow the widest wrapable columns first (a fixed width is not)."""
     total = sum(widths)
     excess = total - max_width
+    if not any(wrapable):
+        return widths
     while total and excess > 0:
-        widest = max(widths)
-        second = max((w for w in widths if w != widest), default=0)
-        ratios = [1 if w == widest else 0 for w in widths]
-        if not widest - second:
+        widest = max(w for w, a in zip(widths, wrapable) if a)
+        second = max((w if a and w != widest else 0) for w, a in zip(widths, wrapable))
+        ratios = [1 if (w == widest and a) else 0 for w, a in zip(widths, wrapable)]
+        if not any(ratios) or not widest - second:
             break
         widths = _ratio_reduce(excess, ratios, [min(excess, widest - second)] * len(widths), widths)
         total = sum(widths)
@@ -87,13 +89,22 @@ def _measure(texts: Sequence[str], width: int) -> int:
         if width - 2 < 1:  # Padding.__rich_measure__
             maxima.append(width)
             continue
-        inner = min(len(t), width - 2)  # Text: (longest word, longest line), normalised, capped
+        inner = min(max(len(line) for line in t.split("\n")), width - 2)  # Text: (longest word, longest line)
         maxima.append(0 + 2 if inner < 1 else inner + 2)
     return min(max(maxima) if maxima else width, width)
 
 
 def _wrap(text: str, width: int) -> list[str] | None:
-    """rich's word wrap of one line (``divide_line`` without folding), or None when a word does not fit."""
+    """rich's word wrap of a cell (``divide_line`` without folding, each of its lines), or None when a word does
+    not fit."""
+    if "\n" in text:
+        out: list[str] = []
+        for line in text.split("\n"):
+            part = _wrap(line, width)
+            if part is None:
+                return None
+            out += part or [""]
+        return out
     breaks, offset = [], 0
     for m in _WORD.finditer(text):
         start, word = m.start(), m.group(0)
@@ -110,20 +121,23 @@ def _wrap(text: str, width: int) -> list[str] | None:
 
 
 def render(title: str, headers: Sequence[str], justify: Sequence[str], rows: Sequence[Sequence[str]],
-           width: int) -> list[str] | None:
-    """The lines rich prints for this table on a console ``width`` columns wide, or None (see the module)."""
-    cells = [list(headers), *(list(r) for r in rows)]
-    if not all(plain(c) for row in cells for c in row) or not plain(title) or width < 1:
+           width: int, fixed: Sequence[int | None] | None = None) -> list[str] | None:
+    """The lines rich prints for this table on a console ``width`` columns wide, or None (see the module);
+    ``fixed``: per column a fixed content width (rich's ``Column(width=)``: not narrowed before the others) or
+    None."""
+    cells = [list(headers), *(list(r) for r in rows)]  # a cell may hold lines ("\n"), the title not
+    if not all(plain(c.replace("\n", "")) for row in cells for c in row) or not plain(title) or width < 1:
         return None
     columns = list(zip(*cells))
     extra = len(headers) + 1  # the vertical borders
     max_width = width - extra
-    widths = [_measure(col, max_width) or 1 for col in columns]
+    fix = list(fixed) if fixed is not None else [None] * len(columns)
+    widths = [min(f + 2, max_width) if f is not None else _measure(col, max_width) or 1 for col, f in zip(columns, fix)]
     if sum(widths) > max_width:
-        widths = _collapse(widths, max_width)
+        widths = _collapse(widths, max_width, [f is None for f in fix])
         if sum(widths) > max_width:
             widths = _ratio_reduce(sum(widths) - max_width, [1] * len(widths), widths, widths)
-        widths = [_measure(col, w) for col, w in zip(columns, widths)]
+        widths = [min(f + 2, w) if f is not None else _measure(col, w) for col, w, f in zip(columns, widths, fix)]
     if min(widths) < 3:
         return None
     table_width = sum(widths) + extra
