@@ -38,3 +38,27 @@ def test_pool_with_guided_batches_equals_serial() -> None:
     vary = {"components.lift.mass": "normal:15 kg:1 kg", "parameters.lifted_load": "uniform:300 N:400 N"}
     serial = Study(LIFT, vary=vary, samples=30, seed=2).run("serial").to_json()
     assert Study(LIFT, vary=vary, samples=30, seed=2).run(workers=2).to_json() == serial
+
+
+def _had_base(doc, path, overrides):
+    """A batch that notes whether its worker found the base design already built (inherited from the parent)."""
+    import json
+
+    from mechverify.studies import execution
+
+    had = json.dumps([doc, path], sort_keys=True, default=str) in execution._BASE
+    return [{**r, "message": f"inherited={had}"} for r in execution.run_batch(doc, path, overrides)]
+
+
+def test_forked_workers_inherit_the_base_design(monkeypatch) -> None:
+    """The local pool forks after the parent built and verified the base design: no worker builds it again."""
+    import multiprocessing
+
+    if multiprocessing.get_start_method(allow_none=False) != "fork":
+        pytest.skip("workers inherit the parent's memory only when forked")
+    from mechverify.studies import execution
+
+    monkeypatch.setattr(execution, "_BASE", {})  # (nothing built by earlier tests in this process)
+    monkeypatch.setattr(Study, "batch_fn", staticmethod(_had_base))
+    res = Study(LIFT, vary={"parameters.lifted_load": "uniform:300 N:400 N"}, samples=8, seed=1).run(workers=2)
+    assert {s["message"] for s in res.samples} == {"inherited=True"}

@@ -506,6 +506,8 @@ class Study:
         ovs = [self.overrides(x) for x in inputs]
         if executor == "serial":
             executor = execution.SerialExecutor()
+        elif executor is None:
+            execution.build_base_before_fork(self.doc, self.path)
         n_workers = workers or execution.default_workers(memory_per_worker)
         sizes = [self.batch_size] * math.ceil(len(ovs) / self.batch_size) if self.batch_size else \
             batch_sizes(len(ovs), n_workers)
