@@ -274,12 +274,11 @@ height = "10 mm"
 axial_force = "100 N"
 """
 
+
 def test_material_error_at_its_key_once(tmp_path):
-    f = tmp_path / "d.toml"
-    f.write_text(MATERIAL_TEXT)
-    with pytest.raises(DesignFileError) as exc:
-        load(f).verify()
-    text = str(exc.value)
+    from tests.builders import refusal
+
+    text = refusal(tmp_path, MATERIAL_TEXT)
     assert "materials.mystery.density: must be positive" in text
     assert "mystery.density: mystery" not in text and "materials.mystery: mystery." not in text
     assert "unknown material" not in text and "1 error" in text
