@@ -71,12 +71,22 @@ def _base_design(doc: Mapping[str, Any], path: str | None) -> Any:
     return design
 
 
+#: Component types whose build or verify runs native threads (gmsh meshing, BLAS, SuperLU/CHOLMOD): a process forked
+#: after one of them ran in the parent may hang (task 19f), so their base designs are built in each worker instead.
+NATIVE_THREAD_TYPES = frozenset({"solid_fea", "plate_fea", "frame"})
+
+
 def build_base_before_fork(doc: Mapping[str, Any], path: str | None) -> None:
     """Build and verify the base design in this process before a local process pool forks it, so that every worker
     inherits it (one build instead of one per worker: ~50 ms of CPU each for the lift). Nothing with another start
-    method (the workers would not inherit it); a design that fails is left to the samples to report."""
+    method (the workers would not inherit it) or for a design with FE components (:data:`NATIVE_THREAD_TYPES`); a
+    design that fails is left to the samples to report."""
     import multiprocessing
 
+    comps = doc.get("components")
+    types = {t.get("type") for t in comps.values() if isinstance(t, Mapping)} if isinstance(comps, Mapping) else set()
+    if types & NATIVE_THREAD_TYPES or doc.get("templates"):  # (a template may give the type)
+        return
     if multiprocessing.get_start_method(allow_none=False) != "fork":
         return
     try:
