@@ -241,6 +241,15 @@ def _cached_unit_text(ureg: Any) -> None:
     formatter.format_unit = format_unit
 
 
+def factor_of(ureg: Any, src: Any, dst: Any) -> Any:
+    """What the installed conversion multiplies a float by from units container ``src`` to ``dst``: a float,
+    ``"same"`` (returned unchanged), or None (pint converts: offset units, or a dimension error)."""
+    f = _factor(ureg, src, dst)
+    if f is _SAME:
+        return "same"
+    return None if f is None or f is _SLOW else f
+
+
 def _factor(ureg: Any, src: Any, dst: Any) -> Any:
     """What :func:`install`'s ``convert`` does for ``src -> dst``: ``_SAME``, ``_SLOW``, the factor, or None
     (pint reports an error)."""

@@ -323,6 +323,29 @@ def from_si(value: Any, dim: str) -> pint.Quantity:
     return Quantity(value, _unit(DIMENSIONS[dim][1]))
 
 
+def si_to(value: Any, dim: str, unit: str) -> pint.Quantity:
+    """``from_si(value, dim).to(unit)``: an SI magnitude as a quantity in ``unit``, the same magnitude bit for bit
+    (pint's conversion factor applied to a float once, without the intermediate quantity)."""
+    if type(value) is float:
+        conv = _SI_TO.get((dim, unit))
+        if conv is None:
+            conv = _SI_TO[dim, unit] = _si_to(dim, unit)
+        if conv[0] is not None and not ureg._active_ctx.contexts and not (ureg.force_ndarray
+                                                                          or ureg.force_ndarray_like):
+            q = object.__new__(Quantity)
+            q._magnitude, q._units = (value if conv[0] == "same" else value * conv[0]), conv[1]
+            return q
+    return from_si(value, dim).to(unit)
+
+
+def _si_to(dim: str, unit: str) -> tuple[Any, Any]:
+    """(factor or "same" or None, target units container) of :func:`si_to` for ``dim`` -> ``unit``: what the
+    registry's conversion (mechverify.pint_cache) multiplies an SI float by; None for offset units."""
+    src, dst = _unit(DIMENSIONS[dim][1])._units, from_si(1.0, dim).to(unit)._units
+    f = _pint_cache.factor_of(ureg, src, dst)
+    return (None if f is None else f), dst
+
+
 def require_positive(value: float, name: str, *, allow_zero: bool = False, dim: str | None = None) -> float:
     """Raise :class:`InputError` unless the SI value is > 0 (or >= 0 with ``allow_zero``).
 
@@ -452,6 +475,9 @@ def same_units(a: pint.Quantity, b: pint.Quantity) -> bool:
     return a._units == b._units
 
 
+#: (dimension name, unit text) -> (factor, units container) of :func:`si_to`
+_SI_TO: dict[tuple[str, str], tuple[Any, Any]] = {}
+
 #: (units container, sort function) -> the text of ``f"{q.units:~P}"`` (:func:`fmt`)
 _UNIT_TEXT: dict[tuple[Any, Any], str] = {}
 
@@ -497,4 +523,4 @@ def _is_scalar(m: Any) -> bool:
 
 
 __all__ = ["ureg", "Quantity", "QuantityLike", "Q", "DIMENSIONS", "BOUNDS", "PlausibilityWarning", "as_quantity",
-           "to_si", "from_si", "si_function", "require_positive", "fmt", "same_units", "exceeds"]
+           "to_si", "from_si", "si_to", "si_function", "require_positive", "fmt", "same_units", "exceeds"]

@@ -200,3 +200,16 @@ def test_exceeds_compares_as_pint():
         assert exceeds(a, b) == (a > b) and exceeds(b, a) == (b > a), (a, b)
     with pytest.raises(pint.DimensionalityError):
         exceeds(Q(1.0, "N"), Q(1.0, "m"))
+
+
+def test_si_to_equals_from_si_then_to():
+    """units.si_to(v, dim, unit) is from_si(v, dim).to(unit) bit for bit (floats, arrays, offset units)."""
+    from mechverify.units import si_to
+
+    for v in (1.0, 0.1, 350.0, -2.5e-7, 1e300, 12.345678901234567):
+        for dim, unit in (("pressure", "MPa"), ("angular_velocity", "rpm"), ("time", "hour"), ("length", "m"),
+                          ("torque", "mN*m"), ("temperature", "degC"), ("inertia", "g*cm**2")):
+            a, b = si_to(v, dim, unit), from_si(v, dim).to(unit)
+            assert a.magnitude == b.magnitude and type(a.magnitude) is type(b.magnitude) and a.units == b.units
+    arr = np.array([1.0, 2.0])
+    assert np.array_equal(si_to(arr, "pressure", "MPa").magnitude, from_si(arr, "pressure").to("MPa").magnitude)

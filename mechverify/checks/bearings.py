@@ -24,7 +24,7 @@ from mechverify.components.bearings import (
 from mechverify.components.bearings_rolling import RollingBearing
 from mechverify.components.memo import once
 from mechverify.references import ref
-from mechverify.units import Q, QuantityLike, exceeds, fmt, to_si
+from mechverify.units import Q, QuantityLike, exceeds, fmt, si_to, to_si
 
 ISO281 = ref("iso281", "Eq. (1), Table 3 (X, Y, e), Table 12 (a1)")
 ISO76 = ref("iso76", "Sec. 6.2.2 (P0 = 0.6 Fr + 0.5 Fa >= Fr); s0 = C0/P0")
@@ -113,8 +113,8 @@ def check_bearing_life(b: AnyBearing, Fr: QuantityLike, Fa: QuantityLike, speed:
     L0 = basic_rating_life(b.C, P, p)
     L = Q(L0.magnitude * a1, L0.units)  # a1·L0 (as pint's product: the same float, without its arithmetic)
     Lh = life_hours(L, speed)
-    n = Q(abs(to_si(speed, "angular_velocity", "speed")), "rad/s").to("rpm")
-    req = Q(to_si(required_life, "time", "required_life"), "s").to("hour")
+    n = si_to(abs(to_si(speed, "angular_velocity", "speed")), "angular_velocity", "rpm")
+    req = si_to(to_si(required_life, "time", "required_life"), "time", "hour")
     inputs: dict[str, Any] = {"Fr": Q(to_si(Fr, "force", "Fr"), "N"), "Fa": Q(to_si(Fa, "force", "Fa"), "N"),
                               "n": n, "C": b.C, "C0": b.C0, "p": p, "reliability": reliability}
     if getattr(b, "f0", None) is not None:
@@ -171,7 +171,7 @@ SEAL_SPEED_FRACTION = 0.25  # contact-seal speed caveat above this fraction of t
        explain=('Speed against the catalogue limiting speed (the reference speed is noted).'))
 def check_bearing_speed(b: AnyBearing, speed: QuantityLike, *, load_case: str = "") -> CheckResult:
     """Speed against the limiting (mechanical) speed of the catalogue; the reference (thermal) speed is noted."""
-    n = Q(to_si(speed, "angular_velocity", "speed"), "rad/s").to("rpm")
+    n = si_to(to_si(speed, "angular_velocity", "speed"), "angular_velocity", "rpm")
     warnings: tuple[str, ...] = ()
     note, capacity, provenance = once("bearing_speed", (b,), lambda: (
         f"limiting speed {fmt(b.limiting_speed.to('rpm'))} (open bearing); reference speed "

@@ -40,7 +40,7 @@ from mechverify.components.motors import ALPHA_CU, thermal_data, winding_tempera
 from mechverify.errors import InputError
 from mechverify.motion.drive_train import TorqueDemand, rms
 from mechverify.references import ref
-from mechverify.units import Q, QuantityLike, fmt, from_si, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, si_to, to_si
 
 _SRC_MAXON = ref("maxon", "'maxon DC motor: Key information' and 'maxon gear: Key information'")
 _SRC_ORIENTAL = ref("oriental_motor")
@@ -186,7 +186,7 @@ def check_motor_max_speed(demand: TorqueDemand, motor: Any = None, *, component:
     i = int(np.argmax(w))
     return CheckResult(
         check="motor_max_speed", component=component or m.name,
-        demand=from_si(float(w[i]), "angular_velocity").to("rpm"),
+        demand=si_to(float(w[i]), "angular_velocity", "rpm"),
         capacity=cap.to("rpm"), title="Motor speed within its limit", formula=r"\max|\omega| \le \omega_{max}",
         source=_SRC_MAXON, notes=("capacity: " + ("limit speed" if m.kind == "dc" and m.max_speed is not None
                                                   else "no-load speed / last curve point"),),

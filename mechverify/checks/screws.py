@@ -205,20 +205,29 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Quanti
     n, H1 = once("nut_geometry", (screw, nut), lambda: _nut_geometry(screw, nut))
     th = screw.thread
     p = flank_pressure(f, th.d2, H1, n).to("MPa")
-    v = screw.sliding_speed(n_rot).to("m/s")
+    m = n_rot.magnitude  # what depends on the speed alone, per speed (0.0 and -0.0: one key, two texts)
+    v, title, speed_note = (once(("nut_pv.speed", m), (screw,), lambda: _pv_speed(screw, n_rot))
+                            if type(m) is float and m != 0.0 else _pv_speed(screw, n_rot))
     pv = pv_value(p, v).to("MPa*m/s")
     return CheckResult(
         check="nut_pv", component=nut.name, demand=pv,
         capacity=once("nut_pv.capacity", (nut,), lambda: nut.pv_allow.to("MPa*m/s")), required_sf=required_sf,
-        title=f"Nut pv on {th.designation} at {fmt(n_rot, 'rpm')}",
+        title=title,
         formula=r"pv = \frac{F}{\pi d_2 H_1 n}\cdot\frac{\pi d_2 n_{rot}}{\cos\lambda}",
         source=_PV_SOURCE,
         inputs={"F": f, "rotational_speed": n_rot, "d2": th.d2, "H1": H1, "engaged_threads": Q(n, "")},
         substituted=lambda: (rf"pv = {tex(p, 'MPa')}\cdot {tex(v, 'm/s')} = {tex(pv, 'MPa*m/s')}"),
         notes=(f"p = {fmt(p, 'MPa')} with n = {n:.4g} engaged turns; sliding speed at d2 v = {fmt(v, 'm/s')}",
-               f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}"),
+               speed_note),
         load_case=load_case, details={"pressure": p, "sliding_speed": v},
     )
+
+
+def _pv_speed(screw: LeadScrew, n_rot: Any) -> tuple[Any, str, str]:
+    """What the pv check takes from the screw speed [rpm] alone: the sliding speed at d2 [m/s], the title and the
+    note of the nut's speed."""
+    return (screw.sliding_speed(n_rot).to("m/s"), f"Nut pv on {screw.thread.designation} at {fmt(n_rot, 'rpm')}",
+            f"nut speed {fmt(screw.linear_speed(n_rot), 'mm/s')}")
 
 
 @check("screw_strength", title="Screw body stress", sf_kind="static",
@@ -246,7 +255,8 @@ def check_screw_strength(screw: LeadScrew, F: Any, *, nut: Nut | None = None, to
         notes.append(f"torque as given: {fmt(T, 'N*m')}")
     s = screw.stresses(f, T)
     Sy = once("screw_strength.Sy", (screw,), lambda: screw.material_property("yield_strength").to("MPa"))
-    notes.append(f"axial {fmt(s.axial, 'MPa')}, torsion {fmt(s.torsion, 'MPa')} at d3 = {fmt(screw.thread.d3, 'mm')}")
+    d3 = once("screw_strength.d3", (screw,), lambda: fmt(screw.thread.d3, "mm"))
+    notes.append(f"axial {fmt(s.axial, 'MPa')}, torsion {fmt(s.torsion, 'MPa')} at d3 = {d3}")
     return CheckResult(
         check="screw_strength", component=screw.name, demand=s.von_mises, capacity=Sy, required_sf=required_sf,
         title=f"Screw body stress, {screw.thread.designation}",

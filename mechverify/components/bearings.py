@@ -60,7 +60,7 @@ from mechverify.errors import InputError, UnitError, UnknownNameError, ValidityE
 from mechverify.frozen import set_fields
 from mechverify.materials import database as _materials
 from mechverify.materials.material import Material
-from mechverify.units import Q, QuantityLike, fmt, from_si, si_function, to_si
+from mechverify.units import Q, QuantityLike, fmt, from_si, si_function, si_to, to_si
 
 _DATA = Path(__file__).parent / "data" / "bearings_ball.toml"
 
@@ -265,7 +265,7 @@ def life_hours(revolutions: Any, speed: QuantityLike) -> pint.Quantity:
     if n <= 0:
         raise InputError(f"speed must be positive, got {fmt(from_si(n, 'angular_velocity').to('rpm'))}")
     L = revolutions.m_as("revolution") if isinstance(revolutions, pint.Quantity) else float(revolutions)
-    return Q(L * 2 * math.pi / n, "s").to("hour")
+    return si_to(L * 2 * math.pi / n, "time", "hour")
 
 
 def reliability_factor(reliability: float) -> float:

@@ -10,7 +10,7 @@ computed from anything else (a load, a speed) must not go through it. The table 
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from typing import Any, TypeVar
 
 T = TypeVar("T")
@@ -20,9 +20,10 @@ _MEMO: dict[tuple[Any, ...], tuple[tuple[Any, ...], Any]] = {}
 LIMIT = 2048
 
 
-def once(name: str, objs: tuple[Any, ...], make: Callable[[], T]) -> T:
+def once(name: Hashable, objs: tuple[Any, ...], make: Callable[[], T]) -> T:
     """``make()`` for the immutable ``objs``, computed on the first call and remembered (an error is not: the
-    next call raises it again). ``name`` tells apart the values of one set of objects."""
+    next call raises it again). ``name`` (a string, or a tuple of a string and the plain values, such as a speed,
+    the value also depends on) tells apart the values of one set of objects."""
     key = (name, *map(id, objs))
     hit = _MEMO.get(key)
     if hit is not None and all(a is b for a, b in zip(hit[0], objs, strict=True)):

@@ -43,7 +43,17 @@ from mechverify.components.threads import Thread, thread
 from mechverify.errors import InputError, ValidityError
 from mechverify.frozen import set_fields
 from mechverify.materials.material import Material
-from mechverify.units import BOUNDS, QuantityLike, as_quantity, fmt, from_si, require_positive, si_function, to_si
+from mechverify.units import (
+    BOUNDS,
+    QuantityLike,
+    as_quantity,
+    fmt,
+    from_si,
+    require_positive,
+    si_function,
+    si_to,
+    to_si,
+)
 
 _DATA = Path(__file__).parent / "data" / "power_screw_factors.toml"
 
@@ -319,8 +329,8 @@ def screw_stresses(F: QuantityLike, torque: QuantityLike, d3: QuantityLike) -> S
     require_positive(d, "d3", dim="length")
     s = 4 * abs(f) / (math.pi * d**2)
     tau = 16 * abs(t) / (math.pi * d**3)
-    return ScrewStresses(axial=from_si(s, "pressure").to("MPa"), torsion=from_si(tau, "pressure").to("MPa"),
-                         von_mises=from_si(math.sqrt(s**2 + 3 * tau**2), "pressure").to("MPa"))
+    return ScrewStresses(axial=si_to(s, "pressure", "MPa"), torsion=si_to(tau, "pressure", "MPa"),
+                         von_mises=si_to(math.sqrt(s**2 + 3 * tau**2), "pressure", "MPa"))
 
 
 @si_function(returns="pressure", sigma_x="pressure", sigma_y="pressure", tau_yz="pressure")
