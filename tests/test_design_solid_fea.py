@@ -328,3 +328,15 @@ def test_loads_on_held_nodes_are_one_error_at_the_load_key(tmp_path):
         load(tmp_path, text).verify()
     msg = str(e.value)
     assert msg.count("load_cases.tip.bar.forces: every load acts only on held nodes") == 1 and "checks." not in msg
+
+
+def test_a_bad_load_region_is_one_error_even_with_buckling(tmp_path):
+    """Review 3 finding 6: a load on a region the mesh lacks was reported at load_cases.tip.bar.forces[0] (right)
+    and once more per case at checks.buckling_load_factor [case]: the buckling analysis built its model without
+    the region check of the static solve. Now one error per case, at the key."""
+    text = solid(extra="checks.buckling_load_factor = true", region='named = "xmx"')
+    with pytest.raises(MechverifyError) as e:
+        load(tmp_path, text).verify()
+    msg = str(e.value)
+    assert msg.count("load_cases.tip.bar.forces[0].named: unknown mesh region 'xmx'; did you mean 'xmax'?") == 1, msg
+    assert "1 error" in msg and "checks." not in msg

@@ -62,16 +62,20 @@ class SolidStudy:
 
         return SolidModel(self.mesh(), self.p["material"], supports=self.supports, loads=loads)
 
+    def case_model(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
+        """The model under one load case; a region name the mesh lacks is an error at its key (a STEP/STL file's
+        names are known after meshing), the same for every analysis of the case (review 3 finding 6)."""
+        named_regions(self.p.get("supports"), self.mesh().named, "supports")
+        for key in ("forces", "pin_loads", "pressures"):
+            named_regions(loads.get(key), self.mesh().named, f"load_cases.{case}.{self.name}.{key}")
+        return self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
+
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
         if case not in self.solved:
             from mechverify.fea.study import SharedSolve
 
-            named_regions(self.p.get("supports"), self.mesh().named, "supports")  # a STEP/STL file's names
-            for key in ("forces", "pin_loads", "pressures"):
-                named_regions(loads.get(key), self.mesh().named, f"load_cases.{case}.{self.name}.{key}")
-
-            model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
+            model = self.case_model(loads, case, g)
             with self.regions(loads):
                 if self._shared is None:
                     self._shared = SharedSolve.of(model)
@@ -186,7 +190,7 @@ def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     compressive cases (it made the whole design an error, review finding 8)."""
     from mechverify.fea.buckling import NoBucklingFactorError, buckling
 
-    model = c.model(_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
+    model = c.case_model(loads, ctx.load_case, _g(ctx))
     with c.regions(loads):
         try:
             return fc.check_buckling_load_factor(buckling(model, 1), component=c.name)
