@@ -529,3 +529,45 @@ def test_reusable_equals_the_full_fingerprint_comparison(example):
         assert reusable(v.data, theirs) == expected, ov
         checked += 1
     assert checked >= 3
+
+
+def test_touched_tables_by_hand():
+    """The tables an override's key path changes (reuse.touched_tables): hand-listed."""
+    from mechverify.design.reuse import touched_tables
+
+    assert touched_tables(["components.lift.mass", "parameters.g", "profiles.raise.acceleration",
+                           "load_cases.raise.lift_screw.axial_force", "components.d.transmission[0].diameter"]) == {
+        "components.lift", "profiles.raise", "load_cases.raise.lift_screw", "components.d"}
+    for anything in ("templates.t.mass", "load_cases.raise", "requirements.g", "materials.m.E", "components",
+                     "parameters", "design.name"):
+        assert touched_tables([anything]) is None, anything
+    assert touched_tables([]) == frozenset()
+
+
+@pytest.mark.parametrize("example", [p for p in _EXAMPLES if p.parent.name in ("lead_screw_lift", "lever_arm",
+                                                                                "five_bar")],
+                         ids=lambda p: p.parent.name)
+def test_variants_and_variants_of_variants_equal_fresh_builds(example):
+    """Tables no override touched take the base's reduction of their text (reuse.unchanged_table_key) and their
+    built objects' keys (reused_object): every one-value variant, and a variant of each variant, equals the same
+    design built from scratch (validated values, JSON of the results)."""
+    from mechverify.errors import MechverifyError
+
+    d = load(example)
+    d.verify()
+    ovs = _single_value_overrides(d, limit=10)
+    checked = 0
+    for i, ov in enumerate(ovs):
+        try:
+            v = d.with_overrides(ov)
+            vv = v.with_overrides(ovs[(i + 1) % len(ovs)])
+        except MechverifyError:
+            continue
+        for variant in (v, vv):
+            fresh = _rebuild(copy.deepcopy(variant.data.raw), variant.data.path, list(variant.data.files),
+                             variant.overrides)
+            for name, e in variant.data.components.items():
+                assert repr(e.params) == repr(fresh.data.components[name].params), (ov, name)
+            assert variant.verify().to_json() == fresh.verify().to_json(), ov
+        checked += 1
+    assert checked >= 3

@@ -71,7 +71,8 @@ class Design:
                 errors.append((key, str(exc)))
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
-        variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides}, self.data)
+        variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides}, self.data,
+                           changed=tuple(overrides))
         variant._reuse_base = self  # unchanged components take this design's results (mechverify/design/reuse.py)
         return variant
 
@@ -428,15 +429,16 @@ def _toml_value(v: Any) -> Any:
 
 
 def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], overrides: Mapping[str, Any],
-             base: DesignData | None = None) -> Design:
+             base: DesignData | None = None, changed: tuple[str, ...] | None = None) -> Design:
     """A design from its (merged) TOML data: the includes are already in ``doc``, so nothing is read. With ``base``
-    (the design it is a variant of), its unchanged immutable components are taken over (design/reuse.py)."""
+    (the design it is a variant of), its unchanged immutable components are taken over (design/reuse.py);
+    ``changed``: the key paths where ``doc`` differs from ``base``'s data."""
     from mechverify.design import adapters  # noqa: F401  (registers the built-in component types)
 
     design = doc.get("design")
     if isinstance(design, dict) and "include" in design:
         doc = {**doc, "design": {k: v for k, v in design.items() if k != "include"}}
-    data = parse(doc, path, base=base)
+    data = parse(doc, path, base=base, changed=changed)
     data.files = files
     return Design(data, overrides)
 

@@ -20,6 +20,7 @@ from typing import Any
 from mechverify.design.expressions import ExpressionError, format_value
 from mechverify.design.expressions import parse as parse_expression
 from mechverify.design.parameters import (
+    Deferred,
     Trace,
     resolve_fields,
     resolve_load_cases,
@@ -31,6 +32,7 @@ from mechverify.design.reuse import (
     remember_validated,
     reuse_context,
     reused_object,
+    unchanged_table_key,
     validated_before,
     validation_key,
 )
@@ -282,10 +284,16 @@ def validate_reusing(fields: tuple[Field, ...], table: Mapping[str, Any], path: 
     (``Design.with_overrides``), the values the base design validated for the same table when everything the
     validation reads is unchanged (:func:`mechverify.design.reuse.validated_before`): the derived values it traced
     are recorded again. Every parse keeps its validated tables for its own variants."""
-    key = validation_key(table, ctx)
+    key = unchanged_table_key(path, ctx)  # (a table no override touched: the base's reduction of its text)
+    untouched = key is not None
+    if key is None:
+        key = validation_key(table, ctx)
     hit = validated_before(path, fields, key, ctx)
     if hit is not None:
         params, traced = hit
+        if untouched and not any(isinstance(v, Deferred) for v in params.values()):
+            # the same text and the same values as in the base (reuse.reused_object compares the rest of the build key)
+            ctx.setdefault("_taken_tables", set()).add(path)
         for args in traced:
             ctx["trace"].add(*args)
         return params
@@ -561,11 +569,13 @@ def _build(entries: dict[str, Entry], section: str, col: _Collector, ctx: dict[s
 
 
 def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = False,
-          base: DesignData | None = None) -> DesignData:
+          base: DesignData | None = None, changed: Collection[str] | None = None) -> DesignData:
     """Validate a parsed TOML document; raise :class:`DesignFileError` listing every problem.
 
     ``base``: the data of a design this one is a variant of (``Design.with_overrides``); entries whose build inputs
-    are unchanged take its immutable built objects (:func:`mechverify.design.reuse.reused_object`).
+    are unchanged take its immutable built objects (:func:`mechverify.design.reuse.reused_object`). ``changed``: the
+    key paths whose values differ from ``base``'s data (the variant's overrides; every other value is the base's),
+    or None when unknown.
     """
     col = _Collector()
     if base is not None and path and base.path == path and base.files:  # (a variant: resolved once, by its base)
@@ -616,7 +626,7 @@ def parse(doc: dict[str, Any], path: Path | None = None, allow_outside: bool = F
                            "profiles": doc.get("profiles", {}) if isinstance(doc.get("profiles"), dict) else {},
                            "path": path}  # the design file (adapters resolve relative file names against it)
     if base is not None:
-        ctx.update(reuse_context(base, doc, requirements, materials, path))
+        ctx.update(reuse_context(base, doc, requirements, materials, path, params, changed))
     profiles = _typed_section(doc, "profiles", col, ctx, templates)
     ctx["profiles"] = profiles
     _build(profiles, "profiles", col, ctx)

@@ -364,12 +364,18 @@ def _named(entry: Any, names: Mapping[str, Any]) -> set[str]:
     return out
 
 
-def reuse_context(base: Any, doc: Any, requirements: Any, materials: Any, path: Any) -> dict[str, Any]:
-    """The parse context entries :func:`reused_object` reads: the base design's data and the design-wide key."""
+def reuse_context(base: Any, doc: Any, requirements: Any, materials: Any, path: Any, parameters: Any = None,
+                  changed: Any = None) -> dict[str, Any]:
+    """The parse context entries :func:`reused_object` and :func:`validated_before` read: the base design's data, the
+    design-wide key, and (``changed``: the override key paths that made this variant from the base) the tables whose
+    text the base shares (:func:`unchanged_table_key`)."""
     keys = base.__dict__.setdefault("_build_keys", {})
     if "" not in keys:
         keys[""] = _wide_key(base.raw, base.requirements, base.materials, base.path)
-    return {"reuse_base": base, "reuse_wide": _wide_key(doc, requirements, materials, path)}
+    same_names = parameters is not None and set(parameters) == set(_parameters(base))
+    return {"reuse_base": base, "reuse_wide": _wide_key(doc, requirements, materials, path),
+            "reuse_touched": None if changed is None else touched_tables(changed),
+            "reuse_same_parameter_names": same_names}
 
 
 def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
@@ -392,7 +398,13 @@ def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
     k = (section, entry.name)
     if k not in keys:
         keys[k] = build_key(old, _parameters(base))
-    return old.obj if build_key(entry, ctx.get("parameters") or {}) == keys[k] else None
+    was = keys[k]
+    params = ctx.get("parameters") or {}
+    if f"{section}.{entry.name}" in ctx.get("_taken_tables", ()):  # its text and validated values are the base's
+        now = (*was[:3], tuple((n, _canon(params[n])) for n, _ in was[3]))  # (see validate_reusing)
+    else:
+        now = build_key(entry, params)
+    return old.obj if now == was else None
 
 
 # ------------------------------------------------------------------------------------------ validated tables
@@ -412,6 +424,43 @@ def validation_key(table: Any, ctx: Mapping[str, Any]) -> Any:
     names = (frozenset(ctx.get("component_names") or ()), tuple(ctx.get("profiles") or ()),
              tuple(ctx.get("components") or ()))
     return (_canon(table), tuple((n, _canon(params[n])) for n in sorted(words)), names)
+
+
+def touched_tables(keys: Any) -> frozenset[str] | None:
+    """The tables whose text a variant's override key paths change: ``components.NAME``, ``profiles.NAME``,
+    ``load_cases.CASE.COMPONENT``; ``parameters.*`` change none (their values are compared where they are read).
+    None when an override may change any table: templates, the design-wide tables, a whole section or load case."""
+    out = set()
+    for key in keys:
+        parts = _KEY_PARTS.findall(key)
+        head = parts[0] if parts else ""
+        if head == "parameters" and len(parts) >= 2:
+            continue
+        depth = {"components": 2, "profiles": 2, "load_cases": 3}.get(head)
+        if depth is None or len(parts) < depth:
+            return None
+        out.add(".".join(parts[:depth]))
+    return frozenset(out)
+
+
+_KEY_PARTS = re.compile(r"[^.\[\]]+")
+
+
+def unchanged_table_key(path: str, ctx: Mapping[str, Any]) -> Any:
+    """:func:`validation_key` of the table at ``path`` when its text is the base design's (no override touched it:
+    :func:`touched_tables`, and the parameters have the same names): the base's key with the values of its parameters
+    and the names as they are now, without reducing the table again; None otherwise."""
+    touched = ctx.get("reuse_touched")
+    base = ctx.get("reuse_base")
+    if base is None or touched is None or path in touched or not ctx.get("reuse_same_parameter_names"):
+        return None
+    hit = base.__dict__.get("_validated", {}).get(path)
+    if hit is None:
+        return None
+    params = ctx.get("parameters") or {}
+    names = (frozenset(ctx.get("component_names") or ()), tuple(ctx.get("profiles") or ()),
+             tuple(ctx.get("components") or ()))
+    return (hit[1][0], tuple((n, _canon(params[n])) for n, _ in hit[1][1]), names)
 
 
 def remember_validated(path: str, fields: Any, key: Any, ctx: dict[str, Any], values: Mapping[str, Any],
