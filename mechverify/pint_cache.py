@@ -185,7 +185,7 @@ def _fast_to(ureg: Any, units_container: type, convert: Any, by_id: dict[tuple[i
             # the commonest call, q.to("mm") on a float quantity, with target() and convert() inlined
             dst = targets.get(other)
             m = self._magnitude
-            if dst is not None and type(m) is float and len(ureg.preprocessors) == count[0]:
+            if dst is not None and (type(m) is float or type(m) is int) and len(ureg.preprocessors) == count[0]:
                 src = self._units
                 e = by_id.get((id(src), id(dst)))
                 if (e is not None and e[0] is src and e[1] is dst and e[2] is not _SLOW

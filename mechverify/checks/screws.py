@@ -205,9 +205,10 @@ def check_nut_pv(screw: LeadScrew, nut: Nut, F: Any, *, rotational_speed: Quanti
     n, H1 = once("nut_geometry", (screw, nut), lambda: _nut_geometry(screw, nut))
     th = screw.thread
     p = flank_pressure(f, th.d2, H1, n).to("MPa")
-    m = n_rot.magnitude  # what depends on the speed alone, per speed (0.0 and -0.0: one key, two texts)
+    m = n_rot.magnitude  # what depends on the speed alone, per speed (an int and its float give the same values;
+    # 0.0 and -0.0 are one key but two texts)
     v, title, speed_note = (once(("nut_pv.speed", m), (screw,), lambda: _pv_speed(screw, n_rot))
-                            if type(m) is float and m != 0.0 else _pv_speed(screw, n_rot))
+                            if (type(m) is float or type(m) is int) and m != 0 else _pv_speed(screw, n_rot))
     pv = pv_value(p, v).to("MPa*m/s")
     return CheckResult(
         check="nut_pv", component=nut.name, demand=pv,
