@@ -112,6 +112,7 @@ def _load_keys(types: Any) -> dict[str, Any]:
     differently takes either's form); which keys a component takes is checked by the loader. ``in_plane`` (plate_fea)
     lists its own keys."""
     from mechverify.design.adapters.modal_parsing import IN_PLANE_KEYS
+    from mechverify.design.adapters.plate_in_plane import HOLE_LOAD_KEYS
 
     forms: dict[str, list[dict[str, Any]]] = {}
     for ct in types:
@@ -124,6 +125,14 @@ def _load_keys(types: Any) -> dict[str, Any]:
                 s["properties"] = {k: {**(field_schema(Field(k, "force_per_length")) if k == "nxy" else pair),
                                        "description": f"{k} [force per length, tension positive]"}
                                    for k in IN_PLANE_KEYS}
+                hole = {k: field_schema(Field(k, "force", f"{k[-1]} component of the force on each hole [N]"))
+                        for k in HOLE_LOAD_KEYS[1:]}
+                hole["holes"] = {"anyOf": [{"type": "string"}, {"type": "array", "items": {"type": "string"}}],
+                                 "description": "\"all\" or hole or group names"}
+                s["properties"]["hole_loads"] = {
+                    "type": "array", "description": "in-plane forces on hole rims (a pin bearing on each)",
+                    "items": {"type": "object", "properties": hole, "required": ["holes"],
+                              "additionalProperties": False}}
                 s["additionalProperties"] = False
             if s not in forms.setdefault(f.name, []):
                 forms[f.name].append(s)

@@ -67,6 +67,17 @@ def plate_mesh(plate: Any, size: float | None = None, hole_size: float | None = 
     return mesh2d.polygon(region, h, hole_size)
 
 
+def mesh_sizes(plate: Any, mesh_size: QuantityLike | None = None, hole_mesh_size: QuantityLike | None = None
+               ) -> tuple[float, float]:
+    """The element sizes [m] :func:`solve_plate` uses: ``mesh_size`` (default: the shorter side of the plate's
+    bounding box / 16) and ``hole_mesh_size`` at holes and cut-outs (default: mesh_size / 3)."""
+    from mechverify.units import to_si
+
+    x0, y0, x1, y1 = plate.region.bounds
+    h = min(x1 - x0, y1 - y0) / 16 if mesh_size is None else to_si(mesh_size, "length", "mesh_size")
+    return h, h / 3 if hole_mesh_size is None else to_si(hole_mesh_size, "length", "hole_mesh_size")
+
+
 class _PlateSystem:
     """Mesh, Morley basis and the DOF bookkeeping of one plate model."""
 
@@ -270,12 +281,13 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
 
 def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
                 hole_mesh_size: QuantityLike | None = None, in_plane: Any = None, *,
-                membrane: str = "auto") -> FieldResults:
+                membrane: str = "auto", in_plane_supports: tuple[Any, ...] = ()) -> FieldResults:
     """Solve a :class:`mechverify.components.plates.PlateModel` for deflection and surface stresses.
 
     ``mesh_size`` (default: shorter side / 16) and ``hole_mesh_size`` (default: mesh_size / 3) are
     lengths. ``in_plane`` (a :class:`mechverify.fea.plate_buckling.InPlaneLoad`, optional) adds the membrane
-    stress of in-plane edge loads (:func:`mechverify.fea.plate_stress.membrane_stress`, ``membrane`` its method) to
+    stress of in-plane loads (:func:`mechverify.fea.plate_stress.membrane_stress`, ``membrane`` its method, on the
+    :class:`~mechverify.fea.plate_stress.InPlaneSupport` items ``in_plane_supports``) to
     the bending stress: each face carries ``sigma = N/t ± 6 M/t²``. Returns :class:`FieldResults`
     (``kind="plate"``): vertex deflections along z; in ``sigma`` at each vertex the stress tensor of the face with
     the larger von Mises stress (the top face on a tie, so without membrane loads the top face, the bottom being its
@@ -326,11 +338,12 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
     if in_plane is None:
         mem = np.zeros_like(bending)
         mem_notes: tuple[str, ...] = ()
+        mem_warns: tuple[str, ...] = ()
     else:
         from mechverify.fea.plate_stress import membrane_stress
 
-        ms = membrane_stress(model.plate, mesh, in_plane, membrane)
-        mem, mem_notes = ms.stress, ms.notes
+        ms = membrane_stress(model.plate, mesh, in_plane, membrane, tuple(in_plane_supports))
+        mem, mem_notes, mem_warns = ms.stress, ms.notes, ms.warnings
     faces = _faces(mem, bending)
     t_rec = time.perf_counter() - t2
     n = mesh.nvertices
@@ -346,7 +359,7 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
         notes = ["Kirchhoff thin-plate bending (Morley triangles) plus the membrane stress of the in-plane loads: "
                  "sigma = N/t +- 6 M/t^2 on the top and bottom faces; sigma = the face with the larger von Mises "
                  "stress at each vertex.", *mem_notes]
-    warns = []
+    warns = [f"in-plane model: {w}" for w in mem_warns]
     if span / sys_.t < 10:
         warns.append(thick_plate_warning(span, sys_.t, model.plate.material.nu.m_as("")))
     info = SolveInfo("direct", int(free.size), 0, res_norm, t_solve)

@@ -68,24 +68,52 @@ def _resultant(v: Any, name: str) -> tuple[float, float]:
     return (x, x)
 
 
+@dataclass(frozen=True, init=False)
+class HoleForce:
+    """An in-plane force ``(fx, fy)`` [N] on the rim of the plate hole named ``hole`` (a pin or bolt bearing on it:
+    the cosine pressure distribution of :class:`mechverify.fea.loads.PinLoad`)."""
+
+    hole: str | int
+    force: tuple[float, float]
+
+    def __init__(self, hole: str | int, force: Sequence[QuantityLike]):
+        if isinstance(force, str) or len(force) != 2:
+            raise InputError(f"HoleForce.force: expected two components (fx, fy), got {force!r}")
+        f = tuple(to_si(v, "force", f"force[{i}]") for i, v in enumerate(force))
+        if not any(f):
+            raise InputError("HoleForce.force: the force must not be zero")
+        object.__setattr__(self, "hole", hole)
+        object.__setattr__(self, "force", f)
+
+
 @dataclass(frozen=True)
 class InPlaneLoad:
     """Membrane stress resultants on the plate's outline edges (force per length, tension positive):
     ``nx`` (one value, or a pair: at the lowest and the highest y of the plate, linear between), ``ny`` (one value
     or a pair at the lowest and highest x), ``nxy`` (uniform). The outline edges carry the tractions ``N n`` of
-    this field; holes and cut-outs are free."""
+    this field; holes and cut-outs are free, except that ``hole_loads`` (:class:`HoleForce`) press on hole rims."""
 
     nx: QuantityLike | Sequence[QuantityLike] | float = 0.0
     ny: QuantityLike | Sequence[QuantityLike] | float = 0.0
     nxy: QuantityLike | float = 0.0
+    hole_loads: tuple[HoleForce, ...] = ()
 
     def values(self) -> tuple[tuple[float, float], tuple[float, float], float]:
         """``((nx_low, nx_high), (ny_low, ny_high), nxy)`` [N/m]."""
         nx, ny = _resultant(self.nx, "nx"), _resultant(self.ny, "ny")
         nxy = 0.0 if self.nxy == 0 else to_si(self.nxy, "force_per_length", "nxy")
-        if not any((*nx, *ny, nxy)):
-            raise InputError("in-plane load: nx, ny and nxy are all zero, so nothing can buckle the plate")
+        if not any((*nx, *ny, nxy)) and not self.hole_loads:
+            raise InputError("in-plane load: nx, ny and nxy are all zero and no hole loads, so nothing loads the "
+                             "plate in its plane")
+        if not all(isinstance(h, HoleForce) for h in self.hole_loads):
+            raise InputError(f"in-plane load: hole_loads must be HoleForce items, got {self.hole_loads!r}")
         return nx, ny, nxy
+
+    @property
+    def has_edge_loads(self) -> bool:
+        """Whether nx, ny or nxy is not zero."""
+        nx, ny, nxy = self.values()
+        return any((*nx, *ny, nxy))
 
     def field(self, bounds: tuple[float, float, float, float]) -> Any:
         """``N(x, y) -> (Nxx, Nyy, Nxy)`` arrays [N/m] of this load on a plate with ``bounds`` (x0, y0, x1, y1)."""
@@ -205,13 +233,47 @@ def _plane_stress_field(sys_: Any, N: Any, quad: tuple[np.ndarray, np.ndarray]) 
                                        f"{len(facets)} outline edges"]
 
 
-def membrane_field(sys_: Any, load: InPlaneLoad, quad: tuple[np.ndarray, np.ndarray], method: str = "auto"
-                   ) -> tuple[np.ndarray, str, list[str]]:
+def _supported_field(sys_: Any, load: InPlaneLoad, quad: tuple[np.ndarray, np.ndarray], supports: tuple[Any, ...],
+                     mesh: Any) -> tuple[np.ndarray, list[str]]:
+    """Stress resultants ``[3, e, q]`` at the points of ``quad`` of the membrane problem with in-plane supports or hole
+    loads (:func:`mechverify.fea.plate_stress.membrane_stress`, solved on ``mesh``, the plate's unsorted mesh whose
+    triangles are those of the system's mesh in the same order): its recovered P2 nodal stresses interpolated at the
+    points (barycentric coordinates in each straight triangle)."""
+    from mechverify.fea.plate_stress import membrane_stress
+
+    ms = membrane_stress(sys_.plate, mesh, load, "solve", supports)
+    res = ms.field
+    qb = Basis(sys_.mesh, ElementTriP2(), quadrature=quad)
+    x = np.asarray(qb.global_coordinates())  # 2, e, q
+    el = np.asarray(res.elements)  # e, 6
+    P = res.points[el[:, :3], :2]  # e, 3, 2
+    T = np.stack([P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]], axis=2)  # e, 2, 2
+    rhs = x.transpose(1, 2, 0) - P[:, None, 0, :]  # e, q, 2
+    lam = np.linalg.solve(np.broadcast_to(T[:, None], rhs.shape[:2] + (2, 2)), rhs[..., None])[..., 0]
+    l1, l2 = lam[..., 0], lam[..., 1]
+    l0 = 1 - l1 - l2
+    N = np.stack([l0 * (2 * l0 - 1), l1 * (2 * l1 - 1), l2 * (2 * l2 - 1), 4 * l0 * l1, 4 * l1 * l2, 4 * l0 * l2])
+    s = res.sigma
+    comps = np.stack([s[:, 0, 0], s[:, 1, 1], s[:, 0, 1]]) * sys_.t  # 3, nodes
+    field = np.einsum("aeq,cae->ceq", N, comps[:, el.T])
+    return field, [*ms.notes, *ms.warnings]
+
+
+def membrane_field(sys_: Any, load: InPlaneLoad, quad: tuple[np.ndarray, np.ndarray], method: str = "auto",
+                   supports: tuple[Any, ...] = (), mesh: Any = None) -> tuple[np.ndarray, str, list[str]]:
     """Stress resultants ``[3, e, q]`` [N/m] (Nxx, Nyy, Nxy) at the points of ``quad`` on the plate system's mesh, the
     method used ("given": the load's own field, exact for an outline without holes or cut-outs; "solve": the
-    plane-stress solution of the edge loads) and notes."""
+    plane-stress solution of the edge loads) and notes. With in-plane ``supports``
+    (:class:`mechverify.fea.plate_stress.InPlaneSupport`) or hole loads, the field is that of
+    :func:`mechverify.fea.plate_stress.membrane_stress` on ``mesh`` (the plate's own mesh), interpolated."""
     if method not in MEMBRANE_METHODS:
         raise InputError(f"membrane: one of {', '.join(MEMBRANE_METHODS)}, got {method!r}")
+    if supports or load.hole_loads:
+        if method == "given":
+            raise InputError("membrane: 'given' takes the edge loads' own field; in-plane supports and hole loads "
+                             "need 'solve'")
+        field, notes = _supported_field(sys_, load, quad, tuple(supports), mesh)
+        return field, "solve", notes
     plate = sys_.plate
     N = load.field(plate.region.bounds)
     if method == "auto":
@@ -247,13 +309,16 @@ def _no_compression() -> ModelError:
 
 
 def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: QuantityLike | None = None,
-                   hole_mesh_size: QuantityLike | None = None, *, membrane: str = "auto") -> PlateBuckling:
+                   hole_mesh_size: QuantityLike | None = None, *, membrane: str = "auto",
+                   in_plane_supports: tuple[Any, ...] = ()) -> PlateBuckling:
     """The lowest ``n_modes`` positive buckling load factors and mode shapes of the
     :class:`mechverify.components.plates.PlateModel` ``model`` (its supports hold the deflection; its lateral loads
     are ignored) under the in-plane ``load`` (:class:`InPlaneLoad`).
 
     ``mesh_size`` and ``hole_mesh_size`` as for :func:`mechverify.fea.plate.solve_plate`; ``membrane``: "auto" (the
-    given field on a plate without holes or cut-outs, else solved), "given" or "solve" (see :func:`membrane_field`).
+    given field on a plate without holes or cut-outs, else solved), "given" or "solve" (see :func:`membrane_field`);
+    ``in_plane_supports``: :class:`mechverify.fea.plate_stress.InPlaneSupport` items holding the plate in its plane
+    (with them, or with ``load.hole_loads``, the membrane field is solved with them).
     A load that compresses nothing (no positive factor) is a :class:`ModelError`; supports that leave a rigid motion
     free are a :class:`ModelError` naming it; asking for as many modes as free unknowns is an :class:`InputError`.
     """
@@ -280,7 +345,8 @@ def plate_buckling(model: Any, load: InPlaneLoad, n_modes: int = 1, mesh_size: Q
         raise InputError(f"n_modes: {n_modes} modes asked, but the plate mesh has only {free.size} free unknowns; "
                          "refine the mesh or ask fewer")
     gb = Basis(sys_.mesh, ElementTriMorley(), intorder=4)
-    field, method, notes = membrane_field(sys_, load, (gb.quadrature[0], gb.quadrature[1]), membrane)
+    field, method, notes = membrane_field(sys_, load, (gb.quadrature[0], gb.quadrature[1]), membrane,
+                                          tuple(in_plane_supports), mesh)
     nxx, nyy, nxy = field
     n_min = (nxx + nyy) / 2 - np.sqrt(((nxx - nyy) / 2) ** 2 + nxy**2)  # the smaller principal stress resultant
     if not np.any(n_min < -1e-9 * max(float(np.max(np.abs(field))), 1e-300)):

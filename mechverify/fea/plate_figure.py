@@ -28,7 +28,7 @@ def plate_figure(plate: pl.Plate, supports: tuple[Any, ...], res: FieldResults, 
     wide = (x1 - x0) >= (y1 - y0)
     fig = Figure(figsize=(9.0, 3.6) if wide else (9.0, 5.0))
     axes = fig.subplots(1, 2)
-    fields = ((res.von_mises.m_as("MPa"), "von Mises stress at the surfaces [MPa]", "turbo", True),
+    fields = ((res.von_mises.m_as("MPa"), "von Mises stress at the surfaces [MPa] (worse face)", "turbo", True),
               (res.u[:, 2] * 1e3, "deflection w [mm]", "viridis", False))
     for ax, (vals, label, cmap, is_stress) in zip(axes, fields, strict=True):
         cs = ax.tripcolor(tri, vals, shading="gouraud", cmap=cmap, rasterized=True)
@@ -49,6 +49,25 @@ def plate_figure(plate: pl.Plate, supports: tuple[Any, ...], res: FieldResults, 
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
     return fig
+
+
+def design_figure(name: str, model: Any, supports: tuple[Any, ...], res: FieldResults, case: str
+                  ) -> tuple[str, Any]:
+    """The ``plate_fea`` report figure of one load case (:func:`plate_figure`) with its caption: the largest von Mises
+    stress at the faces (membrane + bending) and deflection, where they are, the supports and the loads drawn."""
+    from mechverify.units import fmt
+
+    vm, k = res.max_von_mises, int(res.max_von_mises.node)
+    x, y = res.points[k, :2] * 1e3
+    loads = tuple(getattr(model, "loads", ()) or ())
+    faces = "membrane + bending" if np.any(res.extra.get("membrane_xx_Pa", 0.0)) or np.any(
+        res.extra.get("membrane_yy_Pa", 0.0)) or np.any(res.extra.get("membrane_xy_Pa", 0.0)) else "bending"
+    caption = (f"{name}, load case '{case}': von Mises stress at the plate surfaces ({faces}, the worse face; largest "
+               f"{fmt(vm.value, 'MPa')} at ({x:.4g}, {y:.4g}) mm, ★) and deflection (largest "
+               f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
+    if loads_caption(loads):
+        caption += f"; {loads_caption(loads)}"
+    return caption, plate_figure(model.plate, supports, res, f"{name}, load case '{case}'", loads)
 
 
 def _draw_load(ax: Any, ld: Any) -> None:

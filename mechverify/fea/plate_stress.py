@@ -72,13 +72,49 @@ def surface_stresses(membrane: np.ndarray, bending_top: np.ndarray) -> tuple[np.
 
 
 @dataclass(frozen=True)
+class InPlaneSupport:
+    """An in-plane support of the membrane problem: the displacement along x and/or y held on outline ``edges``
+    (indices, names as :class:`mechverify.components.plates.EdgeSupport` reads them, or ``"all"``) or on the rims of
+    ``holes`` (names or indices, or ``"all"``: a pin or bolt that holds the plate in its plane)."""
+
+    edges: Any = ()
+    holes: Any = ()
+    x: bool = True
+    y: bool = True
+
+    def __post_init__(self) -> None:
+        if not (self.x or self.y):
+            raise InputError("InPlaneSupport: hold x, y or both")
+        if (self.edges in ((), [], None)) == (self.holes in ((), [], None)):
+            raise InputError("InPlaneSupport: give edges or holes (one of them)")
+
+    def regions(self, plate: Any) -> list[tuple[str, Any]]:
+        """``(description, region)`` of each held edge or hole rim of ``plate`` (:mod:`mechverify.fea.regions`)."""
+        from mechverify.components import plates as pl
+        from mechverify.fea.regions import Cylinder, Polyline
+
+        tol = Q(1e-6 * float(np.sqrt(plate.region.area)), "m")
+        if self.edges not in ((), [], None):
+            edges = plate.edges()
+            return [(f"outline edge {i}", Polyline(Q(np.array(edges[i], float), "m"), tol=tol))
+                    for i in pl.EdgeSupport(self.edges).edge_indices(plate)]
+        return [(f"hole {h.name!r}", Cylinder(tuple(Q(c, "m") for c in h.center), Q(h.radius, "m"), rel_tol=0.02))
+                for h in pl.HoleSupport(self.holes, "simply_supported").resolve(plate)]
+
+
+@dataclass(frozen=True)
 class MembraneStress:
     """The membrane stress ``N / t`` [Pa] at the plate's vertices (``stress[n, 3]``: sigma_x, sigma_y, tau_xy), the
-    method used ("given" or "solve") and notes."""
+    method used ("given" or "solve"), notes and warnings, and for "solve" the plane-stress ``model``
+    (:class:`mechverify.fea.plane.PlaneModel`) and its result ``field`` (:class:`mechverify.fea.results.FieldResults`,
+    P2 nodes, vertices first in the plate's vertex order)."""
 
     stress: np.ndarray
     method: str
     notes: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
+    field: Any = None
+    model: Any = None
 
 
 def _outline_traction(outline: np.ndarray, N: Any, t: float) -> Any:
@@ -137,61 +173,91 @@ def round_hole_mesh(plate: Any, mesh: Any) -> Any:
     return m
 
 
-def membrane_stress(plate: Any, mesh: Any, load: InPlaneLoad, method: str = "auto") -> MembraneStress:
+def membrane_stress(plate: Any, mesh: Any, load: InPlaneLoad, method: str = "auto",
+                    supports: tuple[InPlaneSupport, ...] = ()) -> MembraneStress:
     """The membrane stress ``N / t`` [Pa] at the vertices of ``mesh`` (a scikit-fem ``MeshTri`` of ``plate``, the
-    :class:`mechverify.components.plates.Plate`) under the in-plane ``load`` on the outline edges
-    (:class:`mechverify.fea.plate_buckling.InPlaneLoad`). ``method``: one of :data:`MEMBRANE_METHODS`.
+    :class:`mechverify.components.plates.Plate`) under the in-plane ``load``
+    (:class:`mechverify.fea.plate_buckling.InPlaneLoad`: edge loads on the outline, forces on hole rims) on the
+    in-plane ``supports`` (:class:`InPlaneSupport`). ``method``: one of :data:`MEMBRANE_METHODS`; "auto" solves
+    when the plate has holes or cut-outs, supports or hole loads.
 
-    "solve": a :class:`mechverify.fea.plane.PlaneModel` (plane stress, P2) of the same mesh, loaded by the
-    tractions ``N n`` on the outline edges; holes and cut-outs are free. The loads balance by themselves, so the
-    model holds only a rigid in-plane motion (x and y at one outline vertex, one component at the farthest);
-    loads that do not balance (a cut-out that breaks a loaded edge) are an :class:`InputError`."""
+    "solve": a :class:`mechverify.fea.plane.PlaneModel` (plane stress, P2, round holes on their circles:
+    :func:`round_hole_mesh`) of the same mesh, loaded by the tractions ``N n`` on the outline edges and the hole
+    forces (:class:`mechverify.fea.loads.PinLoad`); holes and cut-outs are otherwise free. Without supports the
+    loads must balance by themselves and the model holds only a rigid in-plane motion (x and y at one outline vertex,
+    one component at the farthest); loads that do not balance are an :class:`InputError` asking for supports.
+    Supports that leave a rigid motion free are a :class:`ModelError` naming it."""
+    from mechverify.fea.plate_buckling import HoleForce
+
     if method not in MEMBRANE_METHODS:
         raise InputError(f"membrane: one of {', '.join(MEMBRANE_METHODS)}, got {method!r}")
     t = plate.thickness
     N = load.field(plate.region.bounds)
+    special = bool(supports or load.hole_loads)
     if method == "auto":
-        method = "solve" if (plate.holes or plate.cutouts) else "given"
+        method = "solve" if (plate.holes or plate.cutouts or special) else "given"
     if method == "given":
+        if special:
+            raise InputError("membrane: 'given' takes the edge loads' own field; in-plane supports and hole loads "
+                             "need 'solve'")
         nxx, nyy, nxy = (np.broadcast_to(np.asarray(c, float), mesh.p[0].shape) for c in N(mesh.p[0], mesh.p[1]))
         return MembraneStress(np.column_stack([nxx, nyy, nxy]) / t, "given",
                               ("membrane stress: the in-plane load's own field N/t (no holes or cut-outs)",))
-    from mechverify.fea.loads import Restraint, Traction
+    from mechverify.fea.loads import PinLoad, Restraint, Traction
     from mechverify.fea.plane import PlaneModel
-    from mechverify.fea.regions import Box, Polyline
+    from mechverify.fea.regions import Box, Cylinder, Polyline
 
     outline = np.asarray(plate.outline, float)
     size = float(np.sqrt(plate.region.area))
     tol = 1e-6 * size
-    ring = Polyline(Q(np.vstack([outline, outline[:1]]), "m"), tol=Q(tol, "m"))
-    p = mesh.p
-    a = int(np.argmin(np.linalg.norm(p - outline[0][:, None], axis=0)))
-    far = np.linalg.norm(outline - p[:, a], axis=1)
-    b = int(np.argmin(np.linalg.norm(p - outline[int(np.argmax(far))][:, None], axis=0)))
-    d = p[:, b] - p[:, a]
+    loads: list[Any] = []
+    if load.has_edge_loads:
+        ring = Polyline(Q(np.vstack([outline, outline[:1]]), "m"), tol=Q(tol, "m"))
+        loads.append(Traction(ring, _outline_traction(outline, N, t)))
+    for hf in load.hole_loads:
+        assert isinstance(hf, HoleForce)
+        h = plate.hole(hf.hole)
+        loads.append(PinLoad(Cylinder(tuple(Q(c, "m") for c in h.center), Q(h.radius, "m"), rel_tol=0.02),
+                             tuple(Q(f, "N") for f in hf.force)))
+    rmesh = round_hole_mesh(plate, mesh)
+    p = rmesh.p
+    if supports:
+        held = tuple(Restraint(r, x=s.x, y=s.y) for s in supports for _, r in s.regions(plate))
+    else:
+        a = int(np.argmin(np.linalg.norm(p - outline[0][:, None], axis=0)))
+        far = np.linalg.norm(outline - p[:, a], axis=1)
+        b = int(np.argmin(np.linalg.norm(p - outline[int(np.argmax(far))][:, None], axis=0)))
+        d = p[:, b] - p[:, a]
 
-    def point(k: int) -> Box:
-        return Box(tuple(Q(c, "m") for c in p[:, k] - tol), tuple(Q(c, "m") for c in p[:, k] + tol))
+        def point(k: int) -> Box:
+            return Box(tuple(Q(c, "m") for c in p[:, k] - tol), tuple(Q(c, "m") for c in p[:, k] + tol))
 
-    hold_x = abs(d[1]) >= abs(d[0])  # at b, hold the component across the line a-b
-    supports = (Restraint(point(a), x=True, y=True), Restraint(point(b), x=hold_x, y=not hold_x))
-    traction = Traction(ring, _outline_traction(outline, N, t))
-    model = PlaneModel(round_hole_mesh(plate, mesh), Q(t, "m"), plate.material, supports, (traction,))
-    f = model.load_vector().reshape(-1, 2)
-    X = model.nodes.T - model.nodes.mean(axis=1)
-    scale = float(np.abs(f).sum()) or 1.0
-    imbalance = max(float(np.max(np.abs(f.sum(axis=0)))),
-                    abs(float((X[:, 0] * f[:, 1] - X[:, 1] * f[:, 0]).sum())) / size)
-    if imbalance > 1e-6 * scale:
-        raise InputError("in-plane load: the outline's edge loads are not in equilibrium (a cut-out or notch on the "
-                         "outline breaks the loaded edges?): the plate would need in-plane supports, which are not "
-                         "modelled")
+        hold_x = abs(d[1]) >= abs(d[0])  # at b, hold the component across the line a-b
+        held = (Restraint(point(a), x=True, y=True), Restraint(point(b), x=hold_x, y=not hold_x))
+    model = PlaneModel(rmesh, Q(t, "m"), plate.material, held, tuple(loads))
+    if not supports:
+        f = model.load_vector().reshape(-1, 2)
+        X = model.nodes.T - model.nodes.mean(axis=1)
+        scale = float(np.abs(f).sum()) or 1.0
+        imbalance = max(float(np.max(np.abs(f.sum(axis=0)))),
+                        abs(float((X[:, 0] * f[:, 1] - X[:, 1] * f[:, 0]).sum())) / size)
+        if imbalance > 1e-6 * scale:
+            raise InputError("in-plane load: the loads are not in equilibrium by themselves (hole loads, or a "
+                             "cut-out or notch that breaks a loaded outline edge): hold the plate in its plane with "
+                             "in-plane supports (edges or hole rims)")
     res = model.solve()
     s = res.sigma[: mesh.nvertices]
-    nloaded = int(res.regions[0].count) if res.regions else 0
+    what = []
+    if load.has_edge_loads:
+        what.append(f"edge loads N n on {res.regions[0].count} outline edges")
+    what += [f"({hf.force[0]:.6g}, {hf.force[1]:.6g}) N on hole {plate.hole(hf.hole).name!r}"
+             for hf in load.hole_loads]
+    held_words = ("supports: " + "; ".join(f"{d} holds {'x' if s_.x else ''}{'y' if s_.y else ''}"
+                                          for s_ in supports for d, _ in s_.regions(plate))) if supports else \
+        "no in-plane supports (the loads balance)"
     return MembraneStress(np.column_stack([s[:, 0, 0], s[:, 1, 1], s[:, 0, 1]]), "solve",
                           (f"membrane stress: plane stress (P2 triangles on the plate mesh, {res.recovery} recovery), "
-                           f"edge loads N n on {nloaded} outline edges, holes and cut-outs free",))
+                           f"{'; '.join(what)}; {held_words}",), tuple(res.warnings), res, model)
 
 
 @dataclass(frozen=True)
@@ -230,5 +296,5 @@ def governing_stress(res: FieldResults, node: int | None = None) -> GoverningStr
                            bend.copy(), total.copy(), float(max(vt[k], vb[k])), plane_principal(total))
 
 
-__all__ = ["MEMBRANE_METHODS", "MembraneStress", "GoverningStress", "plane_von_mises", "plane_principal",
-           "surface_stresses", "membrane_stress", "governing_stress"]
+__all__ = ["MEMBRANE_METHODS", "InPlaneSupport", "MembraneStress", "GoverningStress", "plane_von_mises",
+           "plane_principal", "surface_stresses", "round_hole_mesh", "membrane_stress", "governing_stress"]

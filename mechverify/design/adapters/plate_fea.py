@@ -1,23 +1,13 @@
-"""``plate_fea``: a flat plate of any outline solved by the FEA plate-bending model.
+"""``plate_fea``: a flat plate of any outline solved by plate FEA (parsing only; the keys are in
+docs/design-files.md).
 
-The plate lies in its own x-y plane (loads along z): a rectangle (``width`` x ``height``, lower-left
-corner at the origin) or an ``outline`` polygon, with groups of circular ``holes`` (one diameter, a
-list of centres) and ``cutouts`` (rectangles with an optional corner radius, or polygons). Points
-are strings ``"x, y"``: two numbers in the component's ``unit`` (default mm) or two lengths with
-units (``"12 mm, 0.1 m"``). Supports hold outline edges, points or the rims of bolt holes, fixed
-(clamped: deflection and slope held) or pinned (simply supported: deflection held). Load cases give
-point forces and moments, patch loads, a uniform pressure and self-weight.
-
-The plate is solved once per load case with :func:`mechverify.fea.plate.solve_plate` (Kirchhoff,
-Morley triangles) and the result is kept for both checks (:mod:`mechverify.checks.plates`) and the
-report figure (:mod:`mechverify.fea.plate_figure`):
-
-* ``plate_stress_fea`` — the largest von Mises stress at the plate surfaces (bending) against the yield
-  strength, with the governing location in the notes;
-* ``plate_deflection_fea`` — the largest deflection against a limit (a length, ``"L/250"`` or a fraction
-  of the span: the ``span`` field, else the shorter side of the plate's bounding box);
-* ``natural_frequency`` (with ``min_frequency`` or ``excitation_band``) and ``buckling_load_factor`` (load cases
-  with ``in_plane`` edge loads: :func:`mechverify.fea.plate_buckling.plate_buckling` on the same mesh).
+A rectangle or an ``outline`` polygon with hole groups and cut-outs (:mod:`plate_parsing`), supports on edges, points
+or bolt-hole rims, and per load case lateral loads (point, patch, pressure, self-weight) and ``in_plane`` membrane
+loads on the outline and on hole rims, held by ``in_plane_supports`` (:mod:`plate_in_plane`). Each load case is solved
+once by :func:`mechverify.fea.plate.solve_plate` (Kirchhoff bending, Morley triangles, plus the membrane stress of
+:mod:`mechverify.fea.plate_stress`) for ``plate_stress_fea`` and ``plate_deflection_fea``
+(:mod:`mechverify.checks.plates`) and the figure (:mod:`mechverify.fea.plate_figure`); ``natural_frequency`` and
+``buckling_load_factor`` use :mod:`mechverify.fea.plate_modal` and :mod:`mechverify.fea.plate_buckling`.
 """
 
 from __future__ import annotations
@@ -26,18 +16,15 @@ import dataclasses
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-import shapely
-from shapely.geometry import Polygon as ShapelyPolygon
-
 from mechverify.checks import fea as feac
-from mechverify.checks import members as mc
 from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
 from mechverify.design.adapters import modal_parsing as mp
+from mechverify.design.adapters import plate_in_plane as ip
 from mechverify.design.adapters.bolts import plate_bolt_outputs
-from mechverify.design.adapters.plate_parsing import _cutouts, _holes, _loads, _points, _si, _supports
+from mechverify.design.adapters.plate_geometry import parse_limit, parse_plate
+from mechverify.design.adapters.plate_parsing import _loads, _supports
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError
 from mechverify.units import Q, fmt
@@ -60,6 +47,8 @@ class PlateFEA:
     unit: str = "mm"
     modal: mp.ModalSettings | None = None
     convergence: float | None = None  # the two-mesh check's tolerance when convergence_check is on
+    in_plane_supports: tuple[Any, ...] = ()  # fea.plate_stress.InPlaneSupport
+    hole_groups: dict[str, list[str]] = dataclasses.field(default_factory=dict)
     solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
 
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
@@ -67,17 +56,28 @@ class PlateFEA:
         first use, then cached)."""
         if case not in self.solved:
             model = self.model(loads, case, g)
-            from mechverify.fea.plate import solve_plate
-
-            self.solved[case] = (model, solve_plate(model, self.mesh_size, self.hole_mesh_size,
-                                                    self.in_plane(loads, case)))
+            self.solved[case] = (model, self.solve_model(model, loads, case))
         return self.solved[case]
 
+    def solve_model(self, model: pl.PlateModel, loads: Mapping[str, Any], case: str, refine: float = 1.0) -> Any:
+        """:func:`mechverify.fea.plate.solve_plate` of ``model`` with the case's in-plane loads, the element sizes
+        divided by ``refine``."""
+        from mechverify.fea.plate import mesh_sizes, solve_plate
+
+        h, hh = mesh_sizes(self.plate, self.mesh_size, self.hole_mesh_size)
+        try:
+            return solve_plate(model, Q(h / refine, "m"), Q(hh / refine, "m"), self.in_plane(loads, case),
+                               in_plane_supports=self.in_plane_supports)
+        except MechverifyError as exc:
+            if "in_plane" not in loads or "in-plane" not in str(exc):
+                raise
+            raise type(exc)(f"load_cases.{case}.{self.name}.in_plane: {exc}") from None
+
     def in_plane(self, loads: Mapping[str, Any], case: str) -> Any:
-        """The case's in-plane edge loads (:class:`mechverify.fea.plate_buckling.InPlaneLoad`) or None."""
+        """The case's in-plane loads (:class:`mechverify.fea.plate_buckling.InPlaneLoad`) or None."""
         if "in_plane" not in loads:
             return None
-        return mp.in_plane_load(loads["in_plane"], f"load_cases.{case}.{self.name}.in_plane")
+        return ip.in_plane_load(loads["in_plane"], f"load_cases.{case}.{self.name}.in_plane", self.hole_groups)
 
     def model(self, loads: Mapping[str, Any], case: str, g: Any) -> pl.PlateModel:
         plate_loads = _loads(loads, f"load_cases.{case}.{self.name}", self.unit, g)
@@ -88,42 +88,8 @@ class PlateFEA:
 
 
 def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
-    name = p["_name"]
-    unit = p["unit"]
-    try:
-        Q(1.0, unit).to("m")
-    except Exception:
-        raise InputError(f"unit: expected a length unit such as \"mm\", got {unit!r}") from None
-    rect = "width" in p or "height" in p
-    if rect and "outline" in p:
-        raise InputError("outline: give either width and height (a rectangle) or outline, not both")
-    if rect:
-        for k in ("width", "height"):
-            if k not in p:
-                raise InputError(f"{k}: missing; a rectangular plate needs width and height")
-            if not p[k].magnitude > 0:
-                raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
-        w, h = p["width"], p["height"]
-        outline = [(Q(0.0, "m"), Q(0.0, "m")), (w, Q(0.0, "m")), (w, h), (Q(0.0, "m"), h)]
-    elif "outline" in p:
-        outline = _points(p["outline"], unit, "outline")
-        ring = shapely.LinearRing([_si(q) for q in outline])
-        if not ring.is_simple:
-            raise InputError("outline: the outline crosses itself")
-    else:
-        raise InputError("width: missing; give width and height (a rectangle) or outline (a polygon)")
-    if not p["thickness"].magnitude > 0:
-        raise InputError(f"thickness: must be positive, got {fmt(p['thickness'], 'mm')}")
-    shell = ShapelyPolygon([_si(q) for q in outline])
-    if shell.area <= 0:
-        raise InputError("outline: the outline encloses no area")
-    holes, groups = _holes(p, unit, shell)
-    cutouts = _cutouts(p, unit, shell)
-    try:
-        plate = pl.Plate(Q(np.array([[a.m_as("m"), b.m_as("m")] for a, b in outline]), "m"), p["thickness"],
-                         p["material"], holes, cutouts, name=name)
-    except MechverifyError as exc:
-        raise InputError(str(exc).replace(f"{name}.", "", 1)) from None
+    name, unit = p["_name"], p["unit"]
+    plate, groups = parse_plate(p, name, unit)
     supports = _supports(p, plate, groups, unit)
     try:
         pl.PlateModel(plate, supports)
@@ -131,19 +97,7 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
         raise InputError(f"supports: {exc}") from None
     if p["material"].nu is None:
         raise InputError(f"material: {p['material'].name!r} has no Poisson's ratio, which plate bending needs")
-    if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
-        raise InputError("deflection_limit: give deflection_limit or deflection_limit_fraction, not both")
-    limit: Any = p.get("deflection_limit")
-    if limit is None:
-        limit = p.get("deflection_limit_fraction", ctx["requirements"].get("deflection_limit", 0.002))
-    x0, y0, x1, y1 = shell.bounds
-    span = p.get("span") or Q(min(x1 - x0, y1 - y0), "m").to("mm")
-    try:
-        mc.deflection_limit(limit, span)
-    except (MechverifyError, ZeroDivisionError) as exc:
-        key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
-        raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the span: "
-                         + str(exc).split(": ", 1)[-1]) from None
+    limit, span = parse_limit(p, plate, ctx["requirements"].get("deflection_limit", 0.002))
     for k in ("mesh_size", "hole_mesh_size", "span"):
         if k in p and not p[k].magnitude > 0:
             raise InputError(f"{k}: must be positive, got {fmt(p[k], 'mm')}")
@@ -151,16 +105,13 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
     if not 0 < tol < 1:
         raise InputError(f"convergence_tolerance: a fraction between 0 and 1 (0.05 = 5 %), got {tol:g}")
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
-                    unit, mp.modal_settings(p), tol if p.get("convergence_check") else None)
+                    unit, mp.modal_settings(p), tol if p.get("convergence_check") else None,
+                    ip.in_plane_supports(p, plate, groups), groups)
 
 
 # ------------------------------------------------------------------------------------------------------ checks
 def _g(ctx: Any) -> Any:
     return ctx.requirements.get("g", Q(9.80665, "m/s**2"))
-
-
-def _mm(xy: Any) -> str:
-    return f"({xy[0] * 1e3:.4g}, {xy[1] * 1e3:.4g}) mm"
 
 
 #: The two-mesh check's second mesh has elements this many times smaller (as solid_fea's).
@@ -171,13 +122,11 @@ def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
     notes, warns = _mesh_notes(c, res), []
     if c.convergence is not None:  # convergence_check: the peak again on a mesh REFINE times finer
-        from mechverify.fea.plate import solve_plate
+        from mechverify.fea.plate import mesh_sizes
 
-        x0, y0, x1, y1 = c.plate.region.bounds
-        h = min(x1 - x0, y1 - y0) / 16 if c.mesh_size is None else c.mesh_size.m_as("m")
-        hh = h / 3 if c.hole_mesh_size is None else c.hole_mesh_size.m_as("m")
-        fine = solve_plate(model, Q(h / REFINE, "m"), Q(hh / REFINE, "m"), c.in_plane(loads, ctx.load_case))
-        res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, (h, hh))
+        fine = c.solve_model(model, loads, ctx.load_case, REFINE)
+        h_hh = mesh_sizes(c.plate, c.mesh_size, c.hole_mesh_size)
+        res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, h_hh)
         notes += more
     return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns)
 
@@ -210,9 +159,10 @@ def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
     for case, comps in ctx.design.data.load_cases.items():
         if "in_plane" in (comps.get(c.name) or {}):
             path = f"load_cases.{case}.{c.name}.in_plane"
-            load = mp.in_plane_load(comps[c.name]["in_plane"], path)
+            load = c.in_plane(comps[c.name], case)
             try:
-                res = plate_buckling(pl.PlateModel(c.plate, c.supports), load, 3, c.mesh_size, c.hole_mesh_size)
+                res = plate_buckling(pl.PlateModel(c.plate, c.supports), load, 3, c.mesh_size, c.hole_mesh_size,
+                                     in_plane_supports=c.in_plane_supports)
             except NoCompressionError as exc:  # a pull: the envelope is governed by the compressive cases
                 out.append(feac.no_buckling_result(float("inf"), str(exc), component=c.name, load_case=case))
                 continue
@@ -233,17 +183,10 @@ def _figures(c: PlateFEA, results: list[CheckResult]) -> list[tuple[str, Any]]:
     gov = next((r for r in results if r.check == "plate_stress_fea"), None) or next(iter(results), None)
     if gov is None or gov.load_case not in c.solved:
         return []
-    from mechverify.fea.plate_figure import loads_caption, plate_figure
+    from mechverify.fea.plate_figure import design_figure
 
     model, res = c.solved[gov.load_case]
-    vm, k = res.max_von_mises, int(res.max_von_mises.node)
-    loads = tuple(getattr(model, "loads", ()) or ())
-    caption = (f"{c.name}, load case '{gov.load_case}': von Mises stress at the plate surfaces (largest "
-               f"{fmt(vm.value, 'MPa')} at {_mm(res.points[k, :2])}, ★) and deflection (largest "
-               f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
-    if loads_caption(loads):
-        caption += f"; {loads_caption(loads)}"
-    return [(caption, plate_figure(c.plate, c.supports, res, f"{c.name}, load case '{gov.load_case}'", loads))]
+    return [design_figure(c.name, model, c.supports, res, gov.load_case)]
 
 
 PLATE_FEA = REGISTRY.register(ComponentType(
@@ -278,6 +221,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                            "peak stress changes more than convergence_tolerance (with the mesh sizes "
                                            "needed, or naming a singular peak); the larger peak is the demand"),
         Field("convergence_tolerance", "float", "tolerance of the two-mesh check", default=0.05),
+        ip.IN_PLANE_SUPPORTS_FIELD,
     ),
     build=lambda p, ctx: _build(p, ctx),
     loads=(
