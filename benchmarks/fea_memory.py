@@ -19,7 +19,8 @@ Writes ``benchmarks/results/fea_memory.json`` (rows written as they come). Usage
         [--mesh-dir DIR] [--out path.json]
 
 ``--mesh-dir`` keeps the saved meshes (``<part>-<target>.npz``) and reuses them on the next run, so two versions
-of the code are compared on the same meshes.
+of the code are compared on the same meshes; ``--code-dir`` runs the children with another checkout's mechverify
+(a git worktree of an older commit).
 """
 
 from __future__ import annotations
@@ -45,7 +46,6 @@ from ccx_common import (  # noqa: E402
     mesh_for,
     model_of,
     peak_rss,
-    run_child,
     save_mesh,
     write_rows,
 )
@@ -164,13 +164,15 @@ def child(path: str, part: str, method: str, mode: str) -> None:
     model = model_of(PARTS[part], m)
     ph.wrap(assembly, "block_pattern", "P2 pattern")
     ph.wrap(solid.SolidModel, "_stiffness", "stiffness")
-    ph.wrap(solid, "solve", "free DOFs, Kff", after="recovery, reports")
+    # linsolve.solve is not wrapped (a wrapper's frame would hold K, which SolidModel.solve hands over to it to be
+    # freed once Kff exists): its first call, the supports check, starts the phase
+    ph.wrap(linsolve, "check_supported", "free DOFs, Kff", after="free DOFs, Kff")
     ph.wrap(linsolve, "choose_solver", "solver choice")
     ph.wrap(linsolve, "pmg_preconditioner", "multigrid setup", after="CG")
     ph.wrap(linsolve, "pcg", "CG", after="after CG")
     ph.wrap(factor, "factorize", "factorisation", after="after CG")
-    ph.wrap(recovery, "recover", "recovery, reports")
-    ph.wrap(recovery, "recover_curved", "recovery, reports")
+    ph.wrap(recovery, "recover", "recovery, reports", after="recovery, reports")
+    ph.wrap(recovery, "recover_curved", "recovery, reports", after="recovery, reports")
     if trace:  # the big objects, counted where they are made
         pattern_of, stiffness, pmg, pcg = (assembly.block_pattern, solid.SolidModel._stiffness,
                                            linsolve.pmg_preconditioner, linsolve.pcg)
@@ -218,17 +220,33 @@ def child(path: str, part: str, method: str, mode: str) -> None:
     print(json.dumps(out))
 
 
-def run_case(part: str, target: int, method: str, budget: bool, mesh_dir: str | None) -> dict:
+def run_child(*args: str, code_dir: str | None = None) -> dict:
+    """``python fea_memory.py --child args...`` (with ``code_dir``'s mechverify first on the path: another version
+    of the code on the same mesh) and the JSON of its last output line."""
+    import subprocess
+
+    env = dict(os.environ)
+    if code_dir:
+        env["PYTHONPATH"] = os.pathsep.join([str(code_dir), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
+    r = subprocess.run([sys.executable, __file__, "--child", *map(str, args)], capture_output=True, text=True,
+                       env=env)
+    if r.returncode:
+        raise RuntimeError(f"fea_memory.py child failed:\n{r.stderr[-3000:]}")
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def run_case(part: str, target: int, method: str, budget: bool, mesh_dir: str | None,
+             code_dir: str | None = None) -> dict:
     import tempfile
 
     folder = mesh_dir or tempfile.mkdtemp(prefix="mv-mem-")
     path = os.path.join(folder, f"{part}-{target}.npz")
     if not os.path.exists(path):
         save_mesh(mesh_for(PARTS[part], target), path)
-    row = {"part": part, "target": target, "method": method, "load_average": load_average()}
-    row["rss"] = run_child(__file__, path, part, method, "rss")
+    row = {"part": part, "target": target, "method": method, "load_average": load_average(), "code": code_dir or "."}
+    row["rss"] = run_child(path, part, method, "rss", code_dir=code_dir)
     if budget:
-        row["budget"] = run_child(__file__, path, part, method, "budget")
+        row["budget"] = run_child(path, part, method, "budget", code_dir=code_dir)
     row["dofs"] = row["rss"]["dofs"]
     row["kB_per_dof"] = row["rss"]["peak"] / row["dofs"] / 1e3
     row["kB_per_dof_above_mesh"] = (row["rss"]["peak"] - row["rss"]["rss_after_mesh"]) / row["dofs"] / 1e3
@@ -264,6 +282,8 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap.add_argument("--method", default="auto", choices=["auto", "amg", "direct"])
     ap.add_argument("--budget", action="store_true", help="also the tracemalloc budget (a second child per size)")
     ap.add_argument("--mesh-dir", help="keep and reuse the saved meshes here")
+    ap.add_argument("--code-dir", help="run the solves with the mechverify of this checkout (an older version, a "
+                    "git worktree) on the same meshes")
     ap.add_argument("--out", default=str(HERE / "results" / "fea_memory.json"))
     args = ap.parse_args(argv)
     if args.mesh_dir:
@@ -271,7 +291,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     rows = []
     for part in args.parts:
         for t in args.dofs:
-            rows.append(run_case(part, t, args.method, args.budget, args.mesh_dir))
+            rows.append(run_case(part, t, args.method, args.budget, args.mesh_dir, args.code_dir))
             write_rows(rows, args.out)
             show(rows[-1])
     return rows

@@ -206,21 +206,31 @@ class BlockPattern:
 def block_pattern(element_dofs: np.ndarray, n: int) -> BlockPattern:
     """The BSR pattern of ``element_dofs[nb, e]`` (scalar DOFs) coupling every pair of local nodes."""
     nb, ne = element_dofs.shape
-    rows = np.repeat(element_dofs, nb, axis=0).astype(np.int64)  # (a,b) -> ed[a]
-    cols = np.tile(element_dofs, (nb, 1)).astype(np.int64)  # (a,b) -> ed[b]
-    key = (rows * n + cols).ravel()
+    # key (a,b) -> ed[a] * n + ed[b], built in place (the pattern's work arrays were 9 x 8 bytes per element block,
+    # the peak of the solve before the assembly; issue 23)
+    key = np.repeat(element_dofs, nb, axis=0).astype(np.int64, copy=False)
+    key *= n
+    key += np.tile(element_dofs, (nb, 1))
+    key = key.ravel()
     order = np.argsort(key, kind="stable")
-    sk = key[order]
-    starts = np.flatnonzero(np.r_[True, sk[1:] != sk[:-1]])
-    uniq = sk[starts]
+    key = key[order]  # sorted
+    first = np.empty(key.size, dtype=bool)
+    first[:1] = True
+    np.not_equal(key[1:], key[:-1], out=first[1:])
+    starts = np.flatnonzero(first)
+    del first
+    uniq = key[starts]
+    del key
     brow = uniq // n
     indptr = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.bincount(brow, minlength=n), out=indptr[1:])
     # column c (element block c) has its one 1 in the row of its target block; stored by columns, so the element
     # blocks of a range of local node pairs are a cheap column slice (assemble_elasticity)
-    target = np.empty(order.size, dtype=np.int32 if starts.size < np.iinfo(np.int32).max else np.int64)
+    target = np.empty(order.size, dtype=np.int32 if order.size < np.iinfo(np.int32).max else np.int64)
     target[order] = np.repeat(np.arange(starts.size, dtype=target.dtype), np.diff(np.r_[starts, order.size]))
-    S = sp.csc_matrix((np.ones(order.size), target, np.arange(order.size + 1)), shape=(starts.size, order.size))
+    del order
+    S = sp.csc_matrix((np.ones(target.size), target, np.arange(target.size + 1, dtype=target.dtype)),
+                      shape=(starts.size, target.size))
     return BlockPattern(indptr, (uniq % n).astype(np.int32), S, n)
 
 
