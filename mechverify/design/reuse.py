@@ -390,9 +390,16 @@ def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
     keys = base.__dict__["_build_keys"]
     if ctx["reuse_wide"] != keys[""]:
         return None
+    taken = f"{section}.{entry.name}" in ctx.get("_taken_tables", ())  # its text is the base's (validate_reusing)
     for kind, was in (("components", base.components), ("profiles", base.profiles)):
         now = ctx.get(kind) or {}
-        for n in _named(entry, was):
+        if taken:  # (the names in the base's text, found once)
+            named = keys.get(("named", kind, section, entry.name))
+            if named is None:
+                named = keys[("named", kind, section, entry.name)] = _named(old, was)
+        else:
+            named = _named(entry, was)
+        for n in named:
             if getattr(now.get(n), "obj", None) is None or now[n].obj is not was[n].obj:
                 return None  # (a component not built yet, as when a profile names one: built again)
     k = (section, entry.name)
@@ -400,7 +407,7 @@ def reused_object(entry: Any, section: str, ctx: Mapping[str, Any]) -> Any:
         keys[k] = build_key(old, _parameters(base))
     was = keys[k]
     params = ctx.get("parameters") or {}
-    if f"{section}.{entry.name}" in ctx.get("_taken_tables", ()):  # its text and validated values are the base's
+    if taken:  # its text and validated values are the base's
         now = (*was[:3], tuple((n, _canon(params[n])) for n, _ in was[3]))  # (see validate_reusing)
     else:
         now = build_key(entry, params)
