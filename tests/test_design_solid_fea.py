@@ -340,3 +340,20 @@ def test_a_bad_load_region_is_one_error_even_with_buckling(tmp_path):
     msg = str(e.value)
     assert msg.count("load_cases.tip.bar.forces[0].named: unknown mesh region 'xmx'; did you mean 'xmax'?") == 1, msg
     assert "1 error" in msg and "checks." not in msg
+
+
+def test_a_plane_off_the_part_and_a_limit_without_span_are_errors_at_their_keys(tmp_path):
+    """Review 3 finding 12: a load on the plane x = 19.99 mm of a 20 mm block ('contains no boundary facet') and
+    deflection_limit = "L/250" without span were reported under every check and case (checks.solid_stress [tip],
+    checks.solid_deflection [tip]); now once each at the key, the plane with how far the mesh is from it."""
+    with pytest.raises(MechverifyError) as e:
+        load(tmp_path, solid(extra='deflection_limit = "1 mm"', region='plane = "x = 19.99"')).verify()
+    msg = str(e.value)
+    assert "1 error" in msg and "checks." not in msg, msg
+    assert ("load_cases.tip.bar.forces[0].plane: plane through (19.99, 0.0, 0.0) mm, normal (1.0, 0.0, 0.0) contains "
+            "no boundary facet of the mesh; the mesh's nearest points lie 0.01 mm from it") in msg
+    with pytest.raises(MechverifyError) as e:
+        load(tmp_path, solid(extra='deflection_limit = "L/250"'))
+    assert "components.bar.span: deflection_limit 'L/250' is a fraction of the span: give span" in str(e.value)
+    with pytest.raises(MechverifyError, match=r"components\.bar\.deflection_limit: "):
+        load(tmp_path, solid(extra='deflection_limit = "2 kg"'))

@@ -17,6 +17,7 @@ from typing import Any
 from mechverify.checks import fea as fc
 from mechverify.checks.fatigue import check_fatigue_field
 from mechverify.checks.result import CheckResult
+from mechverify.design.adapters import solid_parsing as sp
 from mechverify.design.adapters.modal_parsing import modal_settings
 from mechverify.design.adapters.solid_parsing import _loads, _make_mesh, _supports, named_regions, resolve_files
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
@@ -65,10 +66,9 @@ class SolidStudy:
     def case_model(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
         """The model under one load case; a region name the mesh lacks is an error at its key (a STEP/STL file's
         names are known after meshing), the same for every analysis of the case (review 3 finding 6)."""
-        named_regions(self.p.get("supports"), self.mesh().named, "supports")
-        for key in ("forces", "pin_loads", "pressures"):
-            named_regions(loads.get(key), self.mesh().named, f"load_cases.{case}.{self.name}.{key}")
-        return self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
+        model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
+        sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
+        return model
 
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
@@ -123,6 +123,7 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     elif not p["mesh_size"].magnitude > 0:
         raise InputError("mesh_size: must be positive")
     p["_modal"] = modal_settings(p)  # modes, band and margin checked at their keys
+    sp.deflection_limit_keys(p)
     if "box" in p:  # a block's region names are known before meshing: a misspelt one is reported here, once
         holes = p.get("holes") or []
         names = [f"{c}{e}" for c in "xyz" for e in ("min", "max")] + [f"hole{i}" for i in range(len(holes))]

@@ -102,6 +102,58 @@ def named_regions(tables: Any, names: Any, path: str) -> None:
                              + (f"did you mean {hint[0]!r}? " if hint else "") + f"valid regions: {', '.join(names)}")
 
 
+def geometric_regions(model: Any, tables: Any, unit: str, path: str) -> None:
+    """Every region written as ``plane`` or ``box`` in ``tables`` holds boundary facets of ``model``'s mesh, else an
+    InputError at its key (``load_cases.tip.beam.forces[0].plane``), with how far the mesh's nearest points lie from
+    a plane: once, not per check (review 3 finding 12)."""
+    import numpy as np
+
+    from mechverify.fea.regions import Plane
+
+    for i, t in enumerate(tables or []):
+        key = next((k for k in ("plane", "box") if isinstance(t, Mapping) and k in t), None)
+        if key is None:
+            continue
+        region = _region(t, unit, f"{path}[{i}]")
+        try:
+            model.facets(region)
+        except InputError as exc:
+            hint = ""
+            if isinstance(region, Plane):
+                d = np.abs((model.nodes.T - np.asarray(region.point)) @ np.asarray(region.normal)).min()
+                hint = f"; the mesh's nearest points lie {Q(float(d), 'm').to('mm'):.4g~P} from it" if d > 0 else ""
+            raise InputError(f"{path}[{i}].{key}: {exc}{hint}") from None
+
+
+def case_regions(model: Any, supports: Any, loads: Mapping[str, Any], unit: str, path: str) -> None:
+    """The regions of the supports and of one load case's loads (``path``: ``load_cases.<case>.<component>``)
+    checked against ``model``'s mesh: names (:func:`named_regions`; a STEP/STL file's are known after meshing),
+    then planes and boxes (:func:`geometric_regions`), each an error at its key, the same for every analysis."""
+    named = model.mesh.named
+    named_regions(supports, named, "supports")
+    for key in ("forces", "pin_loads", "pressures"):
+        named_regions(loads.get(key), named, f"{path}.{key}")
+    geometric_regions(model, supports, unit, "supports")
+    for key in ("forces", "pin_loads", "pressures"):
+        geometric_regions(model, loads.get(key), unit, f"{path}.{key}")
+
+
+def deflection_limit_keys(p: Mapping[str, Any]) -> None:
+    """``deflection_limit`` (a length or ``"L/250"``) with ``span`` checked once at their keys, not per check."""
+    from mechverify.checks.members import deflection_limit
+    from mechverify.errors import MechverifyError
+
+    if p.get("deflection_limit") is None:
+        return
+    try:
+        deflection_limit(p["deflection_limit"], p.get("span"))
+    except MechverifyError as exc:
+        if p.get("span") is None and "give span" in str(exc):
+            raise InputError(f"span: deflection_limit {p['deflection_limit']!r} is a fraction of the span: give "
+                             "span (a length)") from None
+        raise InputError(f"deflection_limit: {str(exc).split(': ', 1)[-1]}") from None
+
+
 def _supports(items: Any, unit: str) -> tuple[Any, ...]:
     from mechverify.fea.loads import Fixed, Restraint
 
