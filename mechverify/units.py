@@ -475,6 +475,26 @@ def same_units(a: pint.Quantity, b: pint.Quantity) -> bool:
     return a._units == b._units
 
 
+def _positional_numpy(m: float, digits: int) -> str:
+    return np.format_float_positional(m, precision=digits, unique=False, fractional=False, trim="-")
+
+
+def _positional_dragon4(m: float, digits: int) -> str:
+    """numpy's format_float_positional without its argument checks (fmt's arguments are always valid)."""
+    return _dragon4(m, precision=digits, unique=False, fractional=False, trim="-", sign=False, pad_left=-1,
+                    pad_right=-1, min_digits=-1)
+
+
+try:  # numpy's formatter behind format_float_positional (a private name: checked, else the public function)
+    from numpy._core.multiarray import dragon4_positional as _dragon4
+
+    _positional = (_positional_dragon4 if all(_positional_dragon4(x, d) == _positional_numpy(x, d)
+                                              for x in (0.1, 12.5, 2526.0, 1e-3, 9999.95, 1 / 3) for d in (3, 4, 6))
+                   else _positional_numpy)
+except (ImportError, TypeError, ValueError):  # another numpy
+    _positional = _positional_numpy
+
+
 #: (dimension name, unit text) -> (factor, units container) of :func:`si_to`
 _SI_TO: dict[tuple[str, str], tuple[Any, Any]] = {}
 
@@ -490,7 +510,7 @@ def fmt(q: pint.Quantity, unit: str | None = None, digits: int = 4) -> str:
     if type(m) is float or _is_scalar(m):
         m = float(m)
         if m != 0 and 1e-3 <= abs(m) < 1e7:  # no exponent where people would not write one: 10000 h, 0.2526
-            text = np.format_float_positional(m, precision=digits, unique=False, fractional=False, trim="-")
+            text = _positional(m, digits)
         else:
             text = f"{m:.{digits}g}"
     else:

@@ -213,3 +213,17 @@ def test_si_to_equals_from_si_then_to():
             assert a.magnitude == b.magnitude and type(a.magnitude) is type(b.magnitude) and a.units == b.units
     arr = np.array([1.0, 2.0])
     assert np.array_equal(si_to(arr, "pressure", "MPa").magnitude, from_si(arr, "pressure").to("MPa").magnitude)
+
+
+def test_fmt_positional_text_is_numpys():
+    """fmt's positional numbers come from numpy's formatter without its argument checks: the same text."""
+    import random
+
+    from mechverify import units
+
+    rng = random.Random(4)
+    values = [10 ** rng.uniform(-3, 7) * rng.choice((1, -1)) for _ in range(3000)] + [0.1, 2526.0, 9999.95, 1e-3]
+    for v in values:
+        for d in (2, 4, 6):
+            assert units._positional(v, d) == np.format_float_positional(v, precision=d, unique=False,
+                                                                         fractional=False, trim="-")

@@ -24,10 +24,16 @@ def once(name: Hashable, objs: tuple[Any, ...], make: Callable[[], T]) -> T:
     """``make()`` for the immutable ``objs``, computed on the first call and remembered (an error is not: the
     next call raises it again). ``name`` (a string, or a tuple of a string and the plain values, such as a speed,
     the value also depends on) tells apart the values of one set of objects."""
-    key = (name, *map(id, objs))
-    hit = _MEMO.get(key)
-    if hit is not None and all(a is b for a, b in zip(hit[0], objs, strict=True)):
-        return hit[1]
+    if len(objs) == 1:  # the common case, without the generic comparison
+        key: tuple[Any, ...] = (name, id(objs[0]))
+        hit = _MEMO.get(key)
+        if hit is not None and hit[0][0] is objs[0]:
+            return hit[1]
+    else:
+        key = (name, *map(id, objs))
+        hit = _MEMO.get(key)
+        if hit is not None and all(a is b for a, b in zip(hit[0], objs, strict=True)):
+            return hit[1]
     value = make()
     if len(_MEMO) >= LIMIT:
         _MEMO.clear()

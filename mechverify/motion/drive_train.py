@@ -34,7 +34,7 @@ import pint
 from mechverify.errors import InputError, UnitError
 from mechverify.frozen import set_fields
 from mechverify.motion.profiles import Profile, ProfileSamples, SampledProfile
-from mechverify.units import Q, fmt, from_si, to_si
+from mechverify.units import Q, fmt, from_si, si_to, to_si
 
 G0 = 9.80665  # standard gravity [m/s²]
 
@@ -214,9 +214,10 @@ class TorqueDemand:
         drive name the same governing points)."""
         text = self._descriptions.get(i)
         if text is None:
-            text = self._descriptions[i] = (
-                f"t = {self.t[i]:.4g} s, {self.labels[i]}: {fmt(Q(abs(self.motor_speed[i]), 'rad/s'), 'rpm')}, "
-                f"{fmt(Q(self.motor_torque[i], 'N*m'), 'mN*m')}")
+            text = self._descriptions[i] = (  # (floats: si_to converts them as pint converts the array items)
+                f"t = {self.t[i]:.4g} s, {self.labels[i]}: "
+                f"{fmt(si_to(abs(float(self.motor_speed[i])), 'angular_velocity', 'rpm'))}, "
+                f"{fmt(si_to(float(self.motor_torque[i]), 'torque', 'mN*m'))}")
         return text
 
     @cached_property
