@@ -92,3 +92,29 @@ def test_nominal_membrane_von_mises_hand_values():
     # a linear nx from 0 to -400 N/mm across y: the peak at the high side, 200 MPa
     assert nominal_membrane_von_mises(InPlaneLoad(nx=("0 N/mm", "-400 N/mm")), bounds, 2e-3) == pytest.approx(
         200e6, rel=1e-12)
+
+
+def test_substituted_line_and_figure_name_both_parts(tmp_path):
+    """The substituted line writes each component as membrane + bending and evaluates back to the result
+    (tests/test_reports_substituted.py's parser); the figure caption names both parts at the governing point."""
+    from test_reports_substituted import evaluate
+
+    holes = 'holes = [{ name = "h", diameter = "20 mm", centers = ["150, 100"] }]'
+    f = tmp_path / "m.toml"
+    f.write_text(DESIGN.format(in_plane='in_plane = { nx = "200 N/mm", nxy = "20 N/mm" }', pressure='pressure = "3 kPa"',
+                               holes=holes))
+    d = mechverify.load(f)
+    r = next(r for r in d.verify() if r.check == "plate_stress_fea")
+    assert r.substituted.count(r"\mathrm{MPa} + (") == 5  # sigma_x, sigma_y twice each, tau_xy once: membrane + (bending)
+    expr, printed = evaluate(r.substituted)
+    assert expr.m_as("MPa") == pytest.approx(printed.m_as("MPa"), rel=5e-4)
+    assert printed.m_as("MPa") == pytest.approx(r.demand.m_as("MPa"), rel=5e-4)
+    from mechverify.fea.plate_figure import design_figure
+
+    comp = d["panel"]
+    model, res = comp.solved["pull"]
+    caption, fig = design_figure("panel", model, comp.supports, res, "pull")
+    assert "membrane + bending, the worse face" in caption and "sigma_x = " in caption
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)

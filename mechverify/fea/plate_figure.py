@@ -60,9 +60,15 @@ def design_figure(name: str, model: Any, supports: tuple[Any, ...], res: FieldRe
     vm, k = res.max_von_mises, int(res.max_von_mises.node)
     x, y = res.points[k, :2] * 1e3
     loads = tuple(getattr(model, "loads", ()) or ())
-    faces = "membrane + bending" if np.any(res.extra.get("membrane_xx_Pa", 0.0)) or np.any(
-        res.extra.get("membrane_yy_Pa", 0.0)) or np.any(res.extra.get("membrane_xy_Pa", 0.0)) else "bending"
-    caption = (f"{name}, load case '{case}': von Mises stress at the plate surfaces ({faces}, the worse face; largest "
+    parts = "bending"
+    if "bending_xx_Pa" in res.extra and any(np.any(res.extra[f"membrane_{c}_Pa"]) for c in ("xx", "yy", "xy")):
+        from mechverify.fea.plate_stress import governing_stress
+
+        g = governing_stress(res, k)
+        parts = (f"membrane + bending, the worse face; there on the {g.face} face sigma_x = {g.membrane[0] / 1e6:.4g} "
+                 f"+ {g.bending[0] / 1e6:.4g} MPa, sigma_y = {g.membrane[1] / 1e6:.4g} + {g.bending[1] / 1e6:.4g} MPa, "
+                 f"tau_xy = {g.membrane[2] / 1e6:.4g} + {g.bending[2] / 1e6:.4g} MPa (membrane + bending)")
+    caption = (f"{name}, load case '{case}': von Mises stress at the plate surfaces ({parts}; largest "
                f"{fmt(vm.value, 'MPa')} at ({x:.4g}, {y:.4g}) mm, ★) and deflection (largest "
                f"{fmt(res.max_displacement.value, 'mm')}); supports in magenta (solid: fixed, dashed: pinned)")
     if loads_caption(loads):
