@@ -155,9 +155,15 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd", groups: np.ndarray | No
     """Order the symmetric ``A`` (``ordering``: "amd" or "metis") and count the non-zeros and flops of its Cholesky
     factor without computing it (CHOLMOD's ``cholmod_amd``/``cholmod_metis`` and ``cholmod_analyze_ordering``,
     ref. 1); ``None`` when CHOLMOD's library is not available. Only the pattern is read (a CSR matrix is read as
-    its transpose, the same for a symmetric one). METIS orders the graph of the supervariables ``groups`` (starts of
-    runs of columns with one pattern, e.g. a node's DOFs; found by :func:`supervariables` when not given; AMD finds
-    them itself), expanded to the DOFs."""
+    its transpose, the same for a symmetric one).
+
+    Both orderings and the analysis work on the graph of the supervariables ``groups`` (starts of runs of columns
+    with one pattern, e.g. a node's DOFs; found by :func:`supervariables` when not given): at 66k DOF (22k nodes)
+    AMD took 0.014 s there against 0.068 s on the DOFs, the analysis 0.008 s against 0.046 s. A supervariable j of
+    s_j columns whose factor column holds c_j supervariables gives the DOF columns S_j, S_j - 1, ..., S_j - s_j + 1
+    with S_j = s c_j (s the mean size: exact when all have one size, as a solid's nodes with three free DOFs; else
+    an estimate). The ordering returned is the elimination tree's postorder of it (the same fill): without it
+    METIS's nested dissection factored 25-45 % slower in CHOLMOD's natural order (its supernodes broken up)."""
     if ordering not in ORDERINGS:
         raise InputError(f"ordering: one of {', '.join(ORDERINGS)}, got {ordering!r}")
     lib = _libcholmod()
@@ -168,13 +174,12 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd", groups: np.ndarray | No
     if sp.issparse(A) and A.format == "csr":
         A = sp.csc_matrix((A.data, A.indices, A.indptr), shape=A.shape)  # Aᵀ = A: no conversion
     A = sp.csc_matrix(A)
-    starts = np.arange(n + 1) if ordering == "amd" else supervariables(A) if groups is None else np.asarray(groups)
+    starts = supervariables(A) if groups is None else np.asarray(groups)
     sizes = np.diff(starts)
     nc = sizes.size
     C = A[starts[:-1]][:, starts[:-1]].tocsc() if nc < n else A
-    (Sc, keep_c), (S, keep) = _cholmod_sparse(C), _cholmod_sparse(A)
-    perm_c = np.empty(nc, np.int32)
-    perm, parent, post, count, first, level = (np.empty(n, np.int32) for _ in range(6))
+    Sc, keep = _cholmod_sparse(C)
+    perm_c, parent, post, count, first, level = (np.empty(nc, np.int32) for _ in range(6))
     ptr = ctypes.c_void_p
     common = ctypes.create_string_buffer(1 << 16)  # cholmod_common (2.7 kB in SuiteSparse 5)
     if lib.cholmod_start(common) != 1:
@@ -185,20 +190,24 @@ def symbolic_cost(A: sp.spmatrix, ordering: str = "amd", groups: np.ndarray | No
         else:
             ok = lib.cholmod_metis(ctypes.byref(Sc), None, ctypes.c_size_t(0), 0, perm_c.ctypes.data_as(ptr),
                                    common)
-        if ok == 1:  # each supervariable's columns in order, supervariables in perm_c's order
-            size_p = sizes[perm_c]
-            perm[:] = np.repeat(starts[perm_c], size_p) + np.arange(n) - np.repeat(np.cumsum(size_p) - size_p, size_p)
         ok = ok == 1 and lib.cholmod_analyze_ordering(
-            ctypes.byref(S), 1, perm.ctypes.data_as(ptr), None, ctypes.c_size_t(0),  # 1 = CHOLMOD_GIVEN
+            ctypes.byref(Sc), 1, perm_c.ctypes.data_as(ptr), None, ctypes.c_size_t(0),  # 1 = CHOLMOD_GIVEN
             parent.ctypes.data_as(ptr), post.ctypes.data_as(ptr), count.ctypes.data_as(ptr),
             first.ctypes.data_as(ptr), level.ctypes.data_as(ptr), common) == 1
     finally:
         lib.cholmod_finish(common)
-    del keep_c, keep
+    del keep
     c = count.astype(np.float64)
-    if not ok or c.min() < 1 or c.max() > n or np.unique(perm).size != n:
+    if not ok or c.min() < 1 or c.max() > nc or np.unique(perm_c).size != nc:
         return None
-    return SymbolicCost(ordering, perm.astype(np.int64), int(c.sum()), float(c @ c), time.perf_counter() - t0)
+    order = perm_c[post]  # supervariables in the postorder of the elimination tree
+    size_p = sizes[order]  # each supervariable's columns in order
+    perm = np.repeat(starts[order], size_p) + np.arange(n) - np.repeat(np.cumsum(size_p) - size_p, size_p)
+    s = size_p.astype(np.float64)
+    S = c[post] * (n / nc)  # the first DOF column's count of each supervariable
+    nnz = float(np.sum(s * S - s * (s - 1) / 2))
+    flops = float(np.sum(s * S * S - S * s * (s - 1) + (s - 1) * s * (2 * s - 1) / 6))  # sum of (S - k)^2, k < s
+    return SymbolicCost(ordering, perm.astype(np.int64), int(round(nnz)), flops, time.perf_counter() - t0)
 
 
 @dataclass(eq=False)
@@ -228,6 +237,18 @@ class Factorization:
         return spl.LinearOperator((self.n, self.n), matvec=self.solve, matmat=self.solve, dtype=float)
 
 
+def permuted_matrix(A: sp.csc_matrix, p: np.ndarray) -> sp.csc_matrix:
+    """``A[p][:, p]`` of a symmetric CSC ``A``: its columns gathered, their row indices renamed (left unsorted within
+    a column, which CHOLMOD accepts: the same factor bit for bit). 0.03-0.04 s against SciPy's 0.14-0.15 s at 66k
+    DOF."""
+    inverse = np.empty_like(p)
+    inverse[p] = np.arange(p.size)
+    B = A[:, p]
+    B.indices = inverse[B.indices].astype(B.indices.dtype, copy=False)
+    B.has_sorted_indices = False
+    return B
+
+
 def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness matrix",
               symbolic: SymbolicCost | None = None) -> Factorization:
     """Factor the symmetric positive definite ``A`` once (``method``: "auto" = CHOLMOD when installed, else SuperLU).
@@ -253,7 +274,7 @@ def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness m
         try:
             with one_blas_thread():  # LLᵀ: a matrix that is not positive definite fails
                 F = cholesky(A, mode="supernodal") if p is None else \
-                    cholesky(A[p][:, p].tocsc(), mode="supernodal", ordering_method="natural")
+                    cholesky(permuted_matrix(A, p), mode="supernodal", ordering_method="natural")
         except CholmodError as exc:
             raise ModelError(f"{what} is not positive definite ({exc}): the model has a mechanism, or the "
                              "shift lies above an eigenvalue") from None

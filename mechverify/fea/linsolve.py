@@ -50,13 +50,20 @@ CG_EXPECTED_ITERATIONS = 30
 #: stays under :data:`DIRECT_BYTES_PER_DOF` per unknown (the static solver's budget is 5 kB per DOF in all).
 DIRECT_SWITCH_MAX = 300_000
 DIRECT_BYTES_PER_DOF = 3000.0
-#: Up to this many unknowns the factorisation is analysed before CG starts (METIS on the node graph and CHOLMOD's
-#: column counts: about 8 CG iterations, 0.25 s CPU at 66k DOF, and ~16 bytes per non-zero of A for a moment); above,
+#: Up to this many unknowns the factorisation is analysed before CG starts (AMD on the node graph and CHOLMOD's
+#: column counts there: 0.02 s CPU at 66k DOF, under one CG iteration; METIS too when it may pay); above,
 #: only when CG's measured rate predicts more than 1.5 :data:`CG_EXPECTED_ITERATIONS` (45; 30 were measured at 179k
 #: DOF, 203 at 66k). The plate with a hole's factorisation beat a 30-iteration CG up to ~70k DOF and lost from
 #: ~100k (predicted 0.46 s against 0.58 s at 37k, 5.0 s against 3.0 s at 179k), so a larger system is factored only
 #: for a slow CG.
 ANALYSE_FIRST_MAX = 100_000
+#: METIS's nested dissection (postordered) factored about 20 % faster than AMD's ordering on the benchmark's plate at
+#: 67k DOF and its lug at 47k, about 5 % at 37k (predicted 0.95 / 1.21 s, 1.39 / 1.95 s, 0.46 / 0.53 s), and ordering
+#: the node graph costs METIS_SECONDS_PER_NNZ per non-zero of A (0.095 s at 37k, 0.19 s at 67k, 0.15 s for the lug;
+#: AMD 0.02-0.035 s). METIS is tried after AMD only when a factorisation may be chosen and METIS_GAIN of AMD's
+#: predicted factor time would pay for the ordering (it would not at 37k).
+METIS_GAIN = 0.17
+METIS_SECONDS_PER_NNZ = 4.2e-8
 
 
 @dataclass(frozen=True)
@@ -91,8 +98,9 @@ def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1,
                   groups: np.ndarray | None = None) -> tuple[SolverChoice, Any]:
     """Direct or iterative for the SPD system ``A`` with ``cases`` right-hand sides, from a cost model: CHOLMOD's
     symbolic analysis predicts the factorisation's seconds and memory and the seconds per solve
-    (:func:`mechverify.fea.factor.symbolic_cost` with METIS on the node graph ``groups``, AMD when METIS is absent;
-    METIS's factor took 0.6-0.9 of AMD's flops on the benchmark's plates and lug, its analysis 2x AMD's),
+    (:func:`mechverify.fea.factor.symbolic_cost` with AMD on the node graph ``groups``, then METIS when
+    :data:`METIS_GAIN` of the factor time would pay for its ordering; METIS's factor took 0.6-0.9 of AMD's flops on
+    the benchmark's plates and lug, its ordering 5-10x AMD's),
     CG is predicted at :data:`CG_EXPECTED_ITERATIONS` per case on one multigrid setup. Returns the
     :class:`SolverChoice` ("direct" or "amg"; its seconds are the totals over the cases) and the
     :class:`~mechverify.fea.factor.SymbolicCost` to factor with (None when CHOLMOD is absent, the system is above
@@ -108,8 +116,14 @@ def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1,
 
     cost, spent = None, 0.0
     if analyse and n <= DIRECT_SWITCH_MAX:
-        cost = symbolic_cost(A, "metis", groups) or symbolic_cost(A, "amd")
+        cost = symbolic_cost(A, "amd", groups)
         spent = 0.0 if cost is None else cost.seconds
+        if cost is not None and direct(cost) <= 2 * t_cg and \
+                METIS_GAIN * cost.factor_seconds > METIS_SECONDS_PER_NNZ * A.nnz:
+            nested = symbolic_cost(A, "metis", groups)
+            if nested is not None:
+                spent += nested.seconds
+                cost = nested if nested.factor_seconds < cost.factor_seconds else cost
     if cost is None:
         return SolverChoice("amg", None, None, t_cg, None, spent, False), None
     fits = cost.factor_bytes <= DIRECT_BYTES_PER_DOF * n
@@ -226,6 +240,7 @@ class SolveInfo:
     iterations: int
     residual: float
     seconds: float
+    worst_quality: float | None = None  # the mesh's worst element (radius ratio, fea.meshquality), when known
 
 
 def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, prescribed: np.ndarray | None = None,
