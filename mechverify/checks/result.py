@@ -195,16 +195,17 @@ class CheckResult:
                  substituted: str | Callable[[], str] = "") -> None:
         """The dataclass's fields in order (what the generated ``__init__`` of a frozen dataclass stores one
         ``object.__setattr__`` at a time, stored at once: a study sample makes ~20 results)."""
-        self.__dict__.update(check=check, component=component, demand=demand, capacity=capacity,
-                             required_sf=required_sf, title=title, formula=formula, source=source,
-                             inputs={} if inputs is None else inputs, notes=notes, warnings=warnings,
-                             load_case=load_case, details={} if details is None else details)
+        set_fields(self, check=check, component=component, demand=demand, capacity=capacity,
+                   required_sf=required_sf, title=title, formula=formula, source=source,
+                   inputs={} if inputs is None else inputs, notes=notes, warnings=warnings,
+                   load_case=load_case, details={} if details is None else details)
         _store_substituted(self, substituted)
         self.__post_init__()
 
     def __post_init__(self) -> None:
+        fields = self.__dict__
         for name in ("demand", "capacity"):
-            v = getattr(self, name)
+            v = fields[name]
             if type(v) is not Quantity and not isinstance(v, Quantity):
                 set_fields(self, **{name: Q(v)})
         d, c = self._magnitudes()
@@ -215,11 +216,11 @@ class CheckResult:
                              f"(got {fmt(self.demand)}, {fmt(self.capacity)})")
         if not self.required_sf > 0:
             raise InputError(f"{self.component}/{self.check}: required safety factor must be > 0")
-        details = _details(self.details)
-        set_fields(self, notes=tuple(self.notes), warnings=tuple(self.warnings), inputs=dict(self.inputs),
-                   details=details)
+        details = _details(fields["details"])
+        set_fields(self, notes=tuple(fields["notes"]), warnings=tuple(fields["warnings"]),
+                   inputs=dict(fields["inputs"]), details=details)
         # utilisation (a cached_property) from the magnitudes just read: the same value, one conversion less
-        self.__dict__["utilisation"] = _utilisation(d, c)
+        fields["utilisation"] = _utilisation(d, c)
         if EAGER:
             self.substituted  # noqa: B018  # computed now (tests compare with the lazy values)
             if isinstance(details, LazyDetails):
@@ -264,7 +265,7 @@ class CheckResult:
 
     def _magnitudes(self) -> tuple[float, float]:
         """The demand in the capacity's unit and the capacity, as floats (no conversion when the units agree)."""
-        dem, cap = self.demand, self.capacity
+        dem, cap = self.__dict__["demand"], self.__dict__["capacity"]
         if same_units(dem, cap):  # the same unit: the magnitude as it is (what m_as returns then)
             return float(dem.magnitude), float(cap.magnitude)
         if dem.dimensionality != cap.dimensionality:

@@ -50,7 +50,9 @@ def effort_to_input(effort_out: Any, direction: Any, ratio: float, efficiency: f
     (holding). See the module docstring for the three cases [1].
     """
     F = np.asarray(effort_out, float)
-    d = np.broadcast_to(np.asarray(direction, float), F.shape)
+    d = np.asarray(direction, float)
+    if d.shape != F.shape:
+        d = np.broadcast_to(d, F.shape)
     motoring = (d != 0) & (F * d >= 0)
     backdriven = (d != 0) & (F * d < 0)
     out = np.where(motoring, F / (ratio * efficiency), 0.0)

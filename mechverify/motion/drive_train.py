@@ -332,7 +332,7 @@ class DriveTrain:
             v = np.concatenate([v, [0.0, 0.0]])
             a = np.concatenate([a, [0.0, 0.0]])
             labels += ["standstill", "standstill"]
-        vs, as_ = max(float(np.max(np.abs(v))), 1e-300), max(float(np.max(np.abs(a))), 1e-300)
+        vs, as_ = max(float(np.abs(v).max()), 1e-300), max(float(np.abs(a).max()), 1e-300)
         d = _direction(v, a, vs, as_)
         effort = self.load.effort_si(x, v, a, d)
         joint = getattr(profile, "joint_effort", None)  # a mechanism's joint motion brings the joint's own effort
