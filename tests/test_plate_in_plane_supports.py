@@ -116,3 +116,25 @@ def test_bad_in_plane_input_is_named(tmp_path, in_plane, supports, message):
     with pytest.raises(MechverifyError) as exc:
         _design(tmp_path, in_plane, supports).verify()
     assert message in str(exc.value)
+
+
+def test_edge_loads_superpose_unit_solutions_once_per_plate():
+    """Edge loads alone are the sum of five unit plane-stress solutions kept per plate, mesh and supports: the same
+    field as one direct solve (to rounding), and a second load on the same plate builds nothing new (a study)."""
+    import numpy as np
+
+    from mechverify.fea import factorcache
+    from mechverify.fea.plate_stress import _solve
+
+    plate, _ = _lug()
+    mesh = plate_mesh(plate, 5e-3, 1e-3)
+    sup = (InPlaneSupport(edges=(3,)),)
+    loads = (InPlaneLoad(nx=("-50 N/mm", "80 N/mm"), ny="30 N/mm", nxy="-20 N/mm"), InPlaneLoad(nx="100 N/mm"))
+    first = membrane_stress(plate, mesh, loads[0], "solve", sup)
+    builds = factorcache.CACHE.builds
+    second = membrane_stress(plate, mesh, loads[1], "solve", sup)
+    assert factorcache.CACHE.builds == builds  # the unit solutions were reused
+    for ms, ld in ((first, loads[0]), (second, loads[1])):
+        direct = _solve(plate, mesh, ld, sup)
+        assert np.max(np.abs(ms.stress - direct.stress)) <= 1e-12 * np.max(np.abs(direct.stress))
+        assert "superposed unit solutions" in ms.notes[0]

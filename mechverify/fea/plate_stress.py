@@ -186,9 +186,9 @@ def membrane_stress(plate: Any, mesh: Any, load: InPlaneLoad, method: str = "aut
     forces (:class:`mechverify.fea.loads.PinLoad`); holes and cut-outs are otherwise free. Without supports the
     loads must balance by themselves and the model holds only a rigid in-plane motion (x and y at one outline vertex,
     one component at the farthest); loads that do not balance are an :class:`InputError` asking for supports.
-    Supports that leave a rigid motion free are a :class:`ModelError` naming it."""
-    from mechverify.fea.plate_buckling import HoleForce
-
+    Supports that leave a rigid motion free are a :class:`ModelError` naming it. Edge loads alone are solved as the
+    sum of five unit solutions kept per plate, mesh and supports (:func:`_superposed`: a study over the loads).
+    """
     if method not in MEMBRANE_METHODS:
         raise InputError(f"membrane: one of {', '.join(MEMBRANE_METHODS)}, got {method!r}")
     t = plate.thickness
@@ -203,10 +203,63 @@ def membrane_stress(plate: Any, mesh: Any, load: InPlaneLoad, method: str = "aut
         nxx, nyy, nxy = (np.broadcast_to(np.asarray(c, float), mesh.p[0].shape) for c in N(mesh.p[0], mesh.p[1]))
         return MembraneStress(np.column_stack([nxx, nyy, nxy]) / t, "given",
                               ("membrane stress: the in-plane load's own field N/t (no holes or cut-outs)",))
+    if not load.hole_loads:
+        cached = _superposed(plate, mesh, load, tuple(supports))
+        if cached is not None:
+            return cached
+    return _solve(plate, mesh, load, tuple(supports))
+
+
+#: The unit edge loads whose plane-stress solutions superpose to any InPlaneLoad without hole loads: nx at the low
+#: and the high side, ny likewise, nxy (the field is linear in these five numbers).
+_UNIT_LOADS = ((("1 N/m", "0 N/m"), 0.0, 0.0), (("0 N/m", "1 N/m"), 0.0, 0.0), (0.0, ("1 N/m", "0 N/m"), 0.0),
+               (0.0, ("0 N/m", "1 N/m"), 0.0), (0.0, 0.0, "1 N/m"))
+
+
+def _superposed(plate: Any, mesh: Any, load: InPlaneLoad, supports: tuple[InPlaneSupport, ...]
+                ) -> MembraneStress | None:
+    """The membrane stress of edge loads as the sum of the five unit solutions (:data:`_UNIT_LOADS`), kept in
+    :data:`mechverify.fea.factorcache.CACHE` per plate, mesh and supports: a study that varies the in-plane loads
+    solves the plane-stress model five times, not once per sample (and always the same way, so a result's last digits
+    do not depend on what the process solved before). None when a unit load cannot be solved alone."""
+    from dataclasses import replace
+
+    from mechverify.fea import factorcache
+    from mechverify.fea.plate_buckling import InPlaneLoad
+
+    key = factorcache.key_of("plate membrane", plate, np.asarray(mesh.p).tobytes(), np.asarray(mesh.t).tobytes(),
+                             supports)
+    if key is None:
+        return None
+    item, _ = factorcache.CACHE.entry(key)
+    try:
+        units = factorcache.CACHE.part(item, "units", lambda: [_solve(plate, mesh, InPlaneLoad(*u), supports)
+                                                                 for u in _UNIT_LOADS])
+    except InputError:
+        factorcache.CACHE.forget(key)
+        return None
+    (a0, a1), (b0, b1), nxy = load.values()
+    c = (a0, a1, b0, b1, nxy)
+    f0 = units[0].field
+
+    def total(get: Any) -> np.ndarray:
+        return sum(ci * get(u) for ci, u in zip(c, units, strict=True) if ci)  # type: ignore[return-value]
+
+    field = replace(f0, u=total(lambda u: u.field.u), sigma=total(lambda u: u.field.sigma),
+                    reaction=total(lambda u: u.field.reaction), applied=total(lambda u: u.field.applied),
+                    ip_sigma=None, element_error=None, error_estimate=None, regions=(), warnings=())
+    note = units[0].notes[0].replace("edge loads N n", "edge loads N n (superposed unit solutions)")
+    return MembraneStress(total(lambda u: u.stress), "solve", (note,), units[0].warnings, field, None)
+
+
+def _solve(plate: Any, mesh: Any, load: InPlaneLoad, supports: tuple[InPlaneSupport, ...]) -> MembraneStress:
+    """:func:`membrane_stress` by one plane-stress solve of ``load``."""
     from mechverify.fea.loads import PinLoad, Restraint, Traction
     from mechverify.fea.plane import PlaneModel
     from mechverify.fea.regions import Box, Cylinder, Polyline
 
+    t = plate.thickness
+    N = load.field(plate.region.bounds)
     outline = np.asarray(plate.outline, float)
     size = float(np.sqrt(plate.region.area))
     tol = 1e-6 * size
@@ -215,7 +268,6 @@ def membrane_stress(plate: Any, mesh: Any, load: InPlaneLoad, method: str = "aut
         ring = Polyline(Q(np.vstack([outline, outline[:1]]), "m"), tol=Q(tol, "m"))
         loads.append(Traction(ring, _outline_traction(outline, N, t)))
     for hf in load.hole_loads:
-        assert isinstance(hf, HoleForce)
         h = plate.hole(hf.hole)
         loads.append(PinLoad(Cylinder(tuple(Q(c, "m") for c in h.center), Q(h.radius, "m"), rel_tol=0.02),
                              tuple(Q(f, "N") for f in hf.force)))
