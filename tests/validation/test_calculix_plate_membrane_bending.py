@@ -92,7 +92,7 @@ def test_pin_loaded_lug_membrane_field_against_calculix():
     """3. The membrane model with an in-plane support and a pin load (task 23e): a 100 x 60 x 5 mm lug held on its left
     edge, 10 kN on the rim of a 20 mm hole (cosine bearing pressure), solved by mechverify's plane-stress model and by
     ccx (CPS6) on the same mesh, nodes and nodal loads: the displacements agree within 0.5 % of the largest (0.25 %
-    measured: the hole's curved elements are integrated with other rules - ccx's CPS6 has 3 points); the
+    measured: ccx expands CPS6 into a 3D wedge layer of the real thickness, a (t/L)² effect, docs/verification.md); the
     vertex stresses within 2 % of the peak (measured 1.7 %, at the pin's bearing point, where the curved elements'
     recoveries differ: ccx extrapolates from its integration points), the peak itself ccx 228.1 MPa, mechverify 225.3
     (averaged) and 225.0 (SPR, the check's); reactions balance the pin force."""
