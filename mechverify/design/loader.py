@@ -29,6 +29,7 @@ from mechverify.design.parameters import (
     value_or_deferred,
 )
 from mechverify.design.reuse import (
+    field_reuse,
     remember_validated,
     reuse_context,
     reused_object,
@@ -262,11 +263,19 @@ def _expression_value(f: Field, v: str, path: str, col: _Collector, ctx: dict[st
 
 
 def _validate_fields(fields: tuple[Field, ...], table: Mapping[str, Any], path: str, col: _Collector,
-                     ctx: dict[str, Any], extra_keys: tuple[str, ...] = ()) -> dict[str, Any]:
+                     ctx: dict[str, Any], extra_keys: tuple[str, ...] = (), reuse: Any = None) -> dict[str, Any]:
+    """The validated values of ``table``'s fields. ``reuse``: :func:`mechverify.design.reuse.field_reuse` (a variant:
+    fields whose inputs are the base's take its values, their derived values traced again, in field order)."""
     col.unknown_keys(table, [f.name for f in fields] + list(extra_keys), path)
     out: dict[str, Any] = {}
     for f in fields:
         if f.name in table:
+            taken = reuse(f.name, table[f.name]) if reuse is not None else None
+            if taken is not None:
+                out[f.name] = taken[0]
+                for args in taken[1]:
+                    ctx["trace"].add(*args)
+                continue
             val = validate_value(f, table[f.name], f"{path}.{f.name}", col, ctx)
             if val is not None:
                 out[f.name] = val
@@ -299,7 +308,7 @@ def validate_reusing(fields: tuple[Field, ...], table: Mapping[str, Any], path: 
         return params
     trace, n_err = ctx["trace"], len(col.errors)
     before = set(trace.entries)
-    out = _validate_fields(fields, table, path, col, ctx)
+    out = _validate_fields(fields, table, path, col, ctx, reuse=field_reuse(path, fields, key, ctx))
     if len(col.errors) == n_err:
         traced = tuple((p, *trace.entries[p], trace.edges.get(p, ())) for p in trace.entries if p not in before)
         remember_validated(path, fields, key, ctx, out, traced)

@@ -489,6 +489,59 @@ def validated_before(path: str, fields: Any, key: Any, ctx: dict[str, Any]) -> t
     return _detach(hit[2]), hit[3]
 
 
+def field_reuse(path: str, fields: Any, key: Any, ctx: dict[str, Any]) -> Any:
+    """For a table the base design validated with other inputs (:func:`validated_before` found no match): a function
+    ``(field name, value) -> (validated value, traced) | None`` giving the base's validated value of one field whose
+    text is the base's and whose named parameters have the base's values (the rest of the validation inputs - the
+    fields, the names, the design-wide values - being the same), so only the fields that changed are read again;
+    None when the base has nothing to offer."""
+    base = ctx.get("reuse_base")
+    if base is None or not ctx.get("reuse_same_parameter_names") or \
+            ctx.get("reuse_wide") != base.__dict__.get("_build_keys", {}).get(""):
+        return None
+    hit = base.__dict__.get("_validated", {}).get(path)
+    if hit is None or hit[0] is not fields or hit[1][2] != key[2] or hit[1][0][0] != "D" or key[0][0] != "D":
+        return None
+    per_field = base.__dict__.setdefault("_field_reuse", {})
+    if per_field.get(path, (None,))[0] is not hit:  # field -> (its text reduced, the parameters it names, its traces)
+        params_then = _parameters(base)
+        info = {}
+        for name, text in hit[1][0][1]:
+            at = f"{path}.{name}"
+            words: set[str] = set()
+            _names(_plain(text), params_then, words, words=True)
+            info[name] = (text, frozenset(words),
+                          tuple(t for t in hit[3] if t[0] == at or t[0].startswith((at + ".", at + "["))))
+        per_field[path] = (hit, info)
+    info = per_field[path][1]
+    changed = ctx.get("_changed_parameters")
+    if changed is None:
+        params, before = ctx.get("parameters") or {}, _parameters(base)
+        changed = ctx["_changed_parameters"] = frozenset(n for n in params if _canon(params[n]) != _canon(before[n]))
+    now = dict(key[0][1])
+    values = hit[2]
+
+    def same(name: str, value: Any) -> tuple[Any, tuple[Any, ...]] | None:
+        was = info.get(name)
+        if was is None or name not in values or was[0] != now.get(name) or was[1] & changed:
+            return None
+        return _detach(values[name]), was[2]
+
+    return same
+
+
+def _plain(c: Any) -> Any:
+    """The value a :func:`_canon` reduction stands for, as far as :func:`_names` reads it (strings, tables, arrays)."""
+    tag = c[0]
+    if tag == "str":
+        return c[1]
+    if tag == "D":
+        return {k: _plain(x) for k, x in c[1]}
+    if tag == "L":
+        return [_plain(x) for x in c[1]]
+    return None
+
+
 def _detach(v: Any) -> Any:
     """``v`` with its dicts and lists copied (the leaves, immutable values, shared)."""
     t = type(v)
