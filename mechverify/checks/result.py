@@ -137,6 +137,8 @@ def _store_substituted(obj: Any, value: Any) -> None:
         else _Pending(value)
 
 
+_UNSET = object()
+
 #: Fields :meth:`CheckResult.replace` may change without running the validation of ``__post_init__`` again
 #: (it validates the demand, capacity and safety factor only).
 _FAST_FIELDS = frozenset({"check", "component", "title", "formula", "source", "load_case", "notes", "warnings",
@@ -242,9 +244,10 @@ class CheckResult:
                 changes["inputs"] = dict(changes["inputs"])
             if "details" in changes:
                 changes["details"] = _details(changes["details"])
-            new.__dict__.update({k: v for k, v in changes.items() if k != "substituted"})
-            if "substituted" in changes:
-                _store_substituted(new, changes["substituted"])
+            substituted = changes.pop("substituted", _UNSET)
+            new.__dict__.update(changes)
+            if substituted is not _UNSET:
+                _store_substituted(new, substituted)
             if EAGER:
                 new.__post_init__()
             return new
