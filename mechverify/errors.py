@@ -83,10 +83,12 @@ def install_hint(extra: str, package: str = "") -> str:
     """How to add the optional extra ``extra`` (what README.md's "Optional extras" documents): mechverify is not
     published on PyPI, so pip finds no ``mechverify[extra]`` there; from a clone the extra is installed
     with ``scripts/install.sh`` (the venv ``make`` creates with uv has no pip), or with pip in a venv made by pip.
-    ``package``: the third-party package the extra brings, named as the alternative when given.
+    ``package``: the third-party package the extra brings, named as the alternative when given; ``extra`` empty:
+    the base installation (a base dependency that is missing or broken).
     ``install_hint("mesh", "gmsh")``: "in the mechverify clone: scripts/install.sh -e '.[mesh]' (or pip install
     -e '.[mesh]' in a venv made with pip; or just pip install gmsh)".
     """
     alone = f"; or just pip install {package}" if package else ""
-    return (f"in the mechverify clone: scripts/install.sh -e '.[{extra}]' "
-            f"(or pip install -e '.[{extra}]' in a venv made with pip{alone})")
+    target = f"'.[{extra}]'" if extra else "."
+    return (f"in the mechverify clone: scripts/install.sh -e {target} "
+            f"(or pip install -e {target} in a venv made with pip{alone})")

@@ -134,6 +134,9 @@ def test_install_messages_work_from_a_clone():
     for text in (GMSH_HINT, SECTIONS_HINT, install_hint("cluster")):
         assert re.search(r"scripts/install\.sh -e '\.\[(mesh|sections|cluster)\]'", text), text
         assert "pip install 'mechverify[" not in text
+    from mechverify.fea.meshimport import MESHIO_HINT  # a base dependency: the base installation again
+
+    assert "scripts/install.sh -e . " in MESHIO_HINT and "pip install 'meshio>=5.3,<5.4'" in MESHIO_HINT
     readme = (ROOT / "README.md").read_text()
     assert "scripts/install.sh -e '.[" in readme and "not published on PyPI" in readme
     for path in (ROOT / "mechverify").rglob("*.py"):

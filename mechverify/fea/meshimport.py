@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError, ModelError, install_hint
 from mechverify.units import Q
 
 if TYPE_CHECKING:
@@ -51,7 +51,8 @@ _SURFACE = {"triangle": 3, "triangle6": 3}
 _LINE = {"line": 2, "line3": 2}
 _REFUSED = {"hexahedron", "hexahedron20", "hexahedron27", "wedge", "wedge15", "wedge18", "pyramid", "pyramid13",
             "pyramid14", "quad", "quad8", "quad9", "tetra4", "tetra20"}
-MESHIO_HINT = "reading other tools' meshes needs meshio: pip install 'meshio>=5.3,<5.4'"
+MESHIO_HINT = ("reading other tools' meshes needs meshio, a base dependency: reinstall "
+               + install_hint("", "'meshio>=5.3,<5.4'"))
 
 
 def import_meshio() -> Any:
