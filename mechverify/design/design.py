@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import copy
+import functools
 import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
@@ -155,9 +156,10 @@ class Design:
         if hit is not None and hit[0] is entry:
             return list(hit[1])
         out = []
+        alternatives = _alternatives(spec.needs)
         for case, comps in self.data.load_cases.items():
             loads = comps.get(entry.name)
-            if loads is not None and all(any(a in loads for a in n.split("|")) for n in spec.needs):
+            if loads is not None and all(any(a in loads for a in alt) for alt in alternatives):
                 out.append((case, loads))
         memo[key] = (entry, out)
         return list(out)
@@ -337,6 +339,12 @@ def _beyond_validity(spec: CheckSpec, component: str, case: str, exc: ValidityEr
                               "so the check fails; change the design or verify it another way.",))
 
 
+@functools.lru_cache(maxsize=256)
+def _alternatives(needs: tuple[str, ...]) -> tuple[tuple[str, ...], ...]:
+    """A check's ``needs`` (``"axial_force|force"``: either) split once."""
+    return tuple(tuple(n.split("|")) for n in needs)
+
+
 class _PathError(Exception):
     pass
 
@@ -345,6 +353,12 @@ _KEY = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
 
 
 def _split_path(key: str) -> list[str | int]:
+    return list(_split_path_cached(key))
+
+
+@functools.lru_cache(maxsize=1024)
+def _split_path_cached(key: str) -> tuple[str | int, ...]:
+    """The parts of a key path (a study's samples set the same few paths: split once each)."""
     parts: list[str | int] = []
     pos = 0
     for m in _KEY.finditer(key):
@@ -354,7 +368,7 @@ def _split_path(key: str) -> list[str | int]:
         pos = m.end()
     if not parts or pos != len(key):
         raise _PathError("not a key path such as 'components.lift.mass'")
-    return parts
+    return tuple(parts)
 
 
 def _set_path(doc: dict[str, Any], key: str, value: Any) -> None:
