@@ -203,7 +203,7 @@ def test_memory_per_worker_says_what_it_chose(capsys, monkeypatch):
     from mechverify.studies import execution
 
     monkeypatch.setattr(execution, "available_memory", lambda: 16e9)
-    monkeypatch.setattr(execution, "process_pool", lambda workers=None: execution.SerialExecutor())
+    monkeypatch.setattr(execution, "process_pool", lambda workers=None, task=None: execution.SerialExecutor())
     rc = main(["study", str(LIFT), *MC, "--samples", "2", "--memory-per-worker", "100 GB", "--no-progress"])
     err = capsys.readouterr().err
     assert rc == 0 and "note: 1 local worker(s) for 100 GB per sample (16 GB of memory available)" in err
@@ -217,7 +217,7 @@ def test_an_explicit_local_run_beats_dask_scheduler_address(local, capsys, monke
     from mechverify.studies import execution
 
     monkeypatch.setenv("DASK_SCHEDULER_ADDRESS", "tcp://127.0.0.1:9")
-    monkeypatch.setattr(execution, "process_pool", lambda workers=None: execution.SerialExecutor())
+    monkeypatch.setattr(execution, "process_pool", lambda workers=None, task=None: execution.SerialExecutor())
     rc = main(["study", str(LIFT), *MC, "--samples", "2", "--no-progress", *local])
     captured = capsys.readouterr()
     assert rc == 0, captured.err

@@ -227,6 +227,7 @@ def require_memory(volume: float, mesh_size: float, what: str, memory: float | N
 def step_volume(path: str | Path) -> float:
     """Total volume [m³] of the solids in a STEP file, read by gmsh/OpenCASCADE without meshing; a
     :class:`ModelError` naming the file and gmsh's reason when gmsh cannot read it."""
+    from mechverify.fea.gmshstate import restore_step_unit
     from mechverify.fea.mesh import import_gmsh, initialize_gmsh
 
     path = Path(path)
@@ -247,6 +248,7 @@ def step_volume(path: str | Path) -> float:
             raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
         return float(sum(gmsh.model.occ.getMass(3, t) for t in vols))
     finally:
+        restore_step_unit(gmsh)  # OpenCASCADE keeps the unit past finalize (fea.gmshstate)
         gmsh.finalize()
 
 

@@ -14,7 +14,10 @@ import concurrent.futures as cf
 import copy
 import json
 import math
+import multiprocessing
+import multiprocessing.context
 import os
+import sys
 import threading
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -179,10 +182,75 @@ def memory_note(memory_per_worker: Any, workers: int) -> str:
     return text
 
 
-def process_pool(workers: int | None = None) -> cf.ProcessPoolExecutor:
-    """A local process pool (the platform's default start method: a script without an ``if __name__ ==
-    "__main__"`` guard keeps working), one BLAS thread per worker."""
-    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), initializer=one_blas_thread)
+def process_pool(workers: int | None = None, *, task: Callable[..., Any] | None = None) -> cf.ProcessPoolExecutor:
+    """A local process pool, one BLAS thread per worker. Its workers are forked (the platform's default on
+    Linux: fast, and they inherit the designs built so far) while that is safe; once gmsh is loaded in this
+    process (a solid_fea study, any mesh) they are started fresh instead (:func:`fork_is_safe`), without
+    re-running the caller's script (:class:`MainlessSpawnContext`: a script without an ``if __name__ ==
+    "__main__"`` guard keeps working). ``task``: the function the pool will run; one defined in the caller's
+    script (``__main__``) keeps that script importable in the workers."""
+    ctx: Any = None
+    if not fork_is_safe() and multiprocessing.get_start_method() == "fork":
+        ctx = MainlessSpawnContext(keep_main=getattr(task, "__module__", None) == "__main__")
+    return cf.ProcessPoolExecutor(max_workers=workers or default_workers(), mp_context=ctx,
+                                  initializer=one_blas_thread)
+
+
+def fork_is_safe() -> bool:
+    """Whether a process forked from this one can run a study's samples: not once gmsh is loaded. gmsh's
+    OpenCASCADE kernel keeps a process-wide pool of worker threads (created by its first parallel call, e.g.
+    the triangulation of the hole walls for a mesh-size field); a forked child inherits the pool but not its
+    threads, and its first mesh waits for them forever (issue 19: a process-pool study after a serial
+    solid_fea study in the same process hung at 0 % CPU; see :mod:`mechverify.fea.gmshstate`)."""
+    return "gmsh" not in sys.modules
+
+
+_SPAWN_LOCK = threading.Lock()
+
+
+class MainlessSpawnContext(multiprocessing.context.BaseContext):
+    """The "spawn" start method without re-running the caller's main script in each new process.
+
+    Python's spawn (and forkserver) imports the parent's ``__main__`` file in every child, so a script that
+    runs a study at its top level, without an ``if __name__ == "__main__"`` guard (docs/studies.md's own Monte
+    Carlo block), would run the study again in every worker, which fails. A study's tasks are functions of
+    this package, so the children need no ``__main__``: its path is left out of the data the child prepares
+    itself from. ``keep_main``: leave it in (a task defined in the script). POSIX only (the default pool uses
+    it where the default is fork)."""
+
+    _name = "spawn"
+
+    def __init__(self, keep_main: bool = False):
+        self.Process = multiprocessing.context.SpawnProcess if keep_main else _MainlessProcess  # type: ignore[misc]
+
+
+class _MainlessProcess(multiprocessing.context.SpawnProcess):
+    """A spawned process that does not import the parent's ``__main__`` (module level: it is pickled)."""
+
+    _start_method = "spawn"
+
+    @staticmethod
+    def _Popen(process_obj: Any) -> Any:
+        return _mainless_popen(process_obj)
+
+
+def _mainless_popen(process_obj: Any) -> Any:
+    from multiprocessing import popen_spawn_posix, spawn
+
+    with _SPAWN_LOCK:
+        original = spawn.get_preparation_data
+
+        def prepared(name: str) -> dict[str, Any]:
+            data = original(name)
+            data.pop("init_main_from_path", None)
+            data.pop("init_main_from_name", None)
+            return data
+
+        spawn.get_preparation_data = prepared  # (read by Popen._launch; put back at once)
+        try:
+            return popen_spawn_posix.Popen(process_obj)
+        finally:
+            spawn.get_preparation_data = original
 
 
 class SerialExecutor(cf.Executor):
@@ -280,7 +348,7 @@ def run_batches(batch_fn: Callable[..., list[dict[str, Any]]], doc: Mapping[str,
     """Run every batch; results in batch order. A batch whose future fails (worker died, pool broken) is
     resubmitted ``retries`` times, then each of its samples is recorded as failed with the reason."""
     own = executor is None
-    ex = process_pool(workers) if own else executor
+    ex = process_pool(workers, task=batch_fn) if own else executor
     results: list[list[dict[str, Any]] | None] = [None] * len(batches)
     attempts = [0] * len(batches)
     try:
@@ -304,7 +372,7 @@ def run_batches(batch_fn: Callable[..., list[dict[str, Any]]], doc: Mapping[str,
             if retry:
                 if own and getattr(ex, "_broken", False):  # a dead process breaks the whole local pool
                     ex.shutdown(wait=False, cancel_futures=True)
-                    ex = process_pool(workers)
+                    ex = process_pool(workers, task=batch_fn)
                     for f, i in list(pending.items()):  # futures of the broken pool will fail: resubmit them too
                         pending.pop(f)
                         retry.append(i)
