@@ -170,21 +170,16 @@ def test_solid_study_process_pool_equals_serial(tmp_path):
 
     This one passed before the fix too (a regression guard): ``studies.execution.run_batch`` already pins one BLAS
     thread in the serial run as in the workers; the thread count showed in ``mechverify check`` (test above), the
-    random AMG hierarchy in solids large enough for CG (test_amg_...). The pool is started by "spawn": a pool forked from a process that has meshed with gmsh hung (noticed here, see
-    /tmp/notes/determinism.md; the default pool forks)."""
-    import concurrent.futures as cf
-    import multiprocessing
-
+    random AMG hierarchy in solids large enough for CG (test_amg_...). The pool is the default one: gmsh is loaded
+    here, so its workers are spawned, not forked (a pool forked from a process that had meshed with gmsh hung:
+    tests/test_studies_fork_safety.py)."""
     from mechverify.studies import Study
-    from mechverify.studies import execution as ex
 
     design = tmp_path / "bracket.toml"
     design.write_text(BRACKET.format(h="6 mm", extra=""))
     vary = {"components.bracket.deflection_limit": "0.8 mm:1 mm:2", "components.bracket.mesh_size": "6 mm:7 mm:2"}
     with threadpool_limits(2):
         serial = Study(design, vary=vary, batch_size=2).run("serial").to_json()
-    with cf.ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("spawn"),
-                                initializer=ex.one_blas_thread) as pool:
-        pooled = Study(design, vary=vary, batch_size=2).run(pool).to_json()
+    pooled = Study(design, vary=vary, batch_size=2).run(workers=2).to_json()
     assert "solid_stress" in serial and "solid_deflection" in serial
     assert pooled == serial
