@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -87,8 +88,9 @@ class JerkSegment:
         x = self.x0 + self.v0 * tau + 0.5 * self.a0 * tau**2 + self.j * tau**3 / 6.0
         return x, v, a, np.full_like(tau, self.j)
 
-    @property
+    @cached_property
     def end(self) -> tuple[float, float, float]:
+        """x, v, a at the end (computed once: the segment is immutable)."""
         x, v, a, _ = self.state(np.array([self.duration]))
         return float(x[0]), float(v[0]), float(a[0])
 
