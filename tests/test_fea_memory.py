@@ -57,7 +57,7 @@ def test_element_blocks_are_freed_before_the_solve(monkeypatch, curved):
     model = _model(curved)
     assert model.is_curved is curved
     res = model.solve(method="direct", progress=False)
-    assert len(refs) == 1, "the stiffness blocks were not built through the watched function"
+    assert refs, "the stiffness blocks were not built through the watched function"
     assert set(alive) == {"linear solve", "recovery"}
     assert not any(alive.values()), f"element blocks still alive during: {[k for k, v in alive.items() if v]}"
     assert res.u[:, 2].min() < 0  # the load bends the bar down: the solve ran on the assembled K
@@ -267,3 +267,36 @@ def test_memory_refusal_knows_the_analyses():
     assert study.require_memory(volume, h, "components.block", memory=memory, analyses=("modal",)) == n
     with pytest.raises(Exception, match="analyses"):
         study.analysis_bytes(10, ("thermal",))
+
+
+def test_curved_assembly_by_element_chunks(monkeypatch):
+    """Curved elements' blocks are formed a chunk of elements at a time (``assembly.assemble_element_chunks``;
+    all at once the assembly peaked at 5.8 kB per DOF on a 473k-DOF cylinder, now 0.8, tracemalloc): the same K as
+    one ``assemble_blocks`` of all blocks up to the order of the additions, whatever the chunk size."""
+    import numpy as np
+
+    model = _model(True)
+    m, b = model.mesh.mesh, model.mesh.basis
+    pattern = assembly.block_pattern(b.element_dofs, b.N)
+    lam, mu = assembly.lame(200e9, 0.3)
+    blocks, measure = isoparametric.stiffness_blocks(model.nodes, b.element_dofs, lam, mu)
+    K0 = assembly.assemble_blocks(blocks, pattern, 3)
+    calls = []
+
+    def count(*a, **k):
+        calls.append(a[1].shape[1])
+        return stiffness(*a, **k)
+
+    stiffness = isoparametric.stiffness_blocks
+    monkeypatch.setattr(isoparametric, "stiffness_blocks", count)
+    for chunk in (1, 7, 10_000):
+        calls.clear()
+        K1 = assembly.assemble_element_chunks(
+            lambda e0, e1: isoparametric.stiffness_blocks(model.nodes, b.element_dofs[:, e0:e1], lam, mu)[0],
+            pattern, 3, m.nelements, elements=chunk)
+        assert calls == [min(chunk, m.nelements - e0) for e0 in range(0, m.nelements, chunk)]
+        assert np.array_equal(K0.indices, K1.indices)
+        assert np.abs(K1.data - K0.data).max() <= 1e-14 * np.abs(K0.data).max()
+    K2, measure2 = model._stiffness(pattern, lam, mu)
+    assert np.abs(K2.data - K0.data).max() <= 1e-14 * np.abs(K0.data).max()
+    assert np.allclose(measure2, measure, rtol=1e-14)
