@@ -142,10 +142,12 @@ def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str =
         raise ValidityError(f"{c.name}: the carriage jams — no drive force moves it (2 mu e/L = {s.jam_number:.3g} "
                             f">= 1 with mu = {c.mu:g}, e = {fmt(c.drive_offset)}, L = {fmt(c.length)}, and the "
                             f"drive's moment governs, F e - R a > 0; keep L > 2 mu e)")
-    Rq = Q(to_si(R, "force", "R"), "N")
+    r = to_si(R, "force", "R")
+    Rq = Q(r, "N")  # (Rq.m_as("N") is r itself)
+    F = s.F.m_as("N")
     k = 2 * c.mu / to_si(c.length, "length")
     a, e = to_si(c.load_offset, "length"), to_si(c.drive_offset, "length")
-    upper = s.F.m_as("N") * e >= Rq.m_as("N") * a and e != 0  # the branch F e >= R a (module text)
+    upper = F * e >= r * a and e != 0  # the branch F e >= R a (module text)
     x, y = (-k * a, -k * e) if upper else (k * a, k * e)
 
     def term(v: float) -> str:
@@ -158,7 +160,7 @@ def check_carriage_binding(c: SlidingGuide, R: QuantityLike, *, load_case: str =
         formula=r"F = R + \frac{2\mu\,|F e - R a|}{L}", source=BINDING,
         inputs={"R": Rq, "mu": c.mu, "L": c.length, "a": c.load_offset, "e": c.drive_offset},
         notes=(f"edge force at each end of the contact N = |M|/L = {fmt(s.edge_force)}; friction from the moment "
-               f"{fmt(s.friction)}", _jam_note(s.jam_number, s.F.m_as("N") * e, Rq.m_as("N") * a),
+               f"{fmt(s.friction)}", _jam_note(s.jam_number, F * e, r * a),
                "rigid carriage, contacts at the bushing ends; the moment is shared by parallel rods, the friction "
                "sum is not"),
         load_case=load_case, details={"F": s.F, "edge_force": s.edge_force, "jam_number": s.jam_number},
