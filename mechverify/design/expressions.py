@@ -23,7 +23,7 @@ import functools
 import math
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -58,6 +58,8 @@ class Expression:
     source: str
     names: frozenset[str]
     _code: tuple[tuple[str, Any], ...]  # postfix program: ("const", v) ("name", n) ("op", sym) ("call", (f, n))
+    #: ``_code`` with its constant parts done once (:func:`_fold`); what :meth:`evaluate` runs
+    _run: tuple[tuple[str, Any], ...] = field(default=(), compare=False, repr=False)
 
     @property
     def is_constant(self) -> bool:
@@ -68,7 +70,7 @@ class Expression:
         env = env or {}
         stack: list[Any] = []
         try:
-            for op, arg in self._code:
+            for op, arg in self._run or self._code:
                 if op == "const":
                     stack.append(arg)
                 elif op == "name":
@@ -378,7 +380,48 @@ def _parse(text: str) -> Expression:
                 todo += [(a, False) for a in reversed(node.args)]
         else:
             raise _not_allowed(node, source)
-    return Expression(source, frozenset(names), tuple(code))
+    return Expression(source, frozenset(names), tuple(code), _fold(tuple(code), source) if names else ())
+
+
+def _fold(code: tuple[tuple[str, Any], ...], source: str) -> tuple[tuple[str, Any], ...]:
+    """``code`` with every operation whose operands are all constants done now, once: ``2 * (120 N * 400 mm + 30 N *
+    800 mm) / lifted_load`` keeps one constant and one division, where a study's every sample repeated five pint
+    operations. The same operations on the same values in the same order: the same results, bit for bit. An
+    operation that fails (a division by zero, a unit mismatch) is left in place, to fail where it always did."""
+    out: list[tuple[str, Any]] = []
+    const: list[bool] = []  # per stack slot: a constant (then the last instruction in ``out`` pushes it)
+    for op, arg in code:
+        if op == "const":
+            out.append((op, arg))
+            const.append(True)
+            continue
+        if op == "name":
+            out.append((op, arg))
+            const.append(False)
+            continue
+        n = 1 if op == "neg" else 2 if op == "op" else arg[1]
+        args = const[len(const) - n:] if n else []
+        del const[len(const) - n:]
+        if n and all(args):
+            values = [v for _, v in out[len(out) - n:]]
+            try:
+                if op == "neg":
+                    r = -values[0]
+                elif op == "op":
+                    r = _binary(arg, values[0], values[1], source)
+                else:
+                    r = _call(arg[0], values, source)
+                _finite(r, source)
+            except Exception:  # (left to evaluate, which reports it as before)
+                r = None
+            if r is not None:
+                del out[len(out) - n:]
+                out.append(("const", r))
+                const.append(True)
+                continue
+        out.append((op, arg))
+        const.append(False)
+    return tuple(out)
 
 
 def is_expression(text: Any) -> bool:
