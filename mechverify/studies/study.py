@@ -83,6 +83,8 @@ class StudyResult:
     design_name: str = ""
     doc: dict[str, Any] = field(default_factory=dict, repr=False)
     path: str | None = None
+    #: what the study found before it ran: varied inputs that reach no check (:mod:`mechverify.studies.inert`)
+    warnings: list[str] = field(default_factory=list)
 
     # ------------------------------------------------------------------ access
     @property
@@ -191,6 +193,8 @@ class StudyResult:
             d["sensitivity"] = {k: [[n, r] for n, r in v] for k, v in self.sensitivity().items()}
             w = self.worst()
             d["worst"] = None if w is None else w["index"]
+        if self.warnings:
+            d["warnings"] = list(self.warnings)
         return d
 
     def to_json(self, indent: int | None = 1) -> str:
@@ -494,14 +498,24 @@ class Study:
 
     # ------------------------------------------------------------------ running
     def run(self, executor: Any = None, *, workers: int | None = None, memory_per_worker: Any = None,
-            progress: bool | Any = False, retries: int = 1) -> StudyResult:
+            progress: bool | Any = False, retries: int = 1, check_inputs: bool = True) -> StudyResult:
         """Evaluate every sample. ``executor``: any :class:`concurrent.futures.Executor` (default: a local
         process pool with one worker per core, or fewer when ``memory_per_worker``, e.g. ``"2 GB"`` for an
         FEA model, times the workers would exceed the available memory; ``"serial"``: in this process).
         ``progress``: True for a rich progress bar on the console, or a callable taking the number of
-        samples just finished."""
+        samples just finished. ``check_inputs``: first look for varied inputs that reach no check
+        (:func:`mechverify.studies.inert.inert_inputs`: the dependency graph, then one probe evaluation per
+        input) and warn (:class:`~mechverify.studies.inert.InertInputWarning`) naming each; the result keeps
+        the messages (``warnings``)."""
         if workers is not None and not (isinstance(workers, int) and workers >= 1):
             raise InputError(f"workers: expected a positive integer, got {workers!r}")
+        notes: list[str] = []
+        if check_inputs:
+            from mechverify.studies.inert import InertInputWarning, inert_inputs
+
+            notes = inert_inputs(self)
+            for text in notes:
+                warnings.warn(text, InertInputWarning, stacklevel=2)
         inputs = self.inputs()
         ovs = [self.overrides(x) for x in inputs]
         if executor == "serial":
@@ -524,7 +538,7 @@ class Study:
         samples = [_finish(r, i, x) for i, (r, x) in enumerate(zip(records, inputs))]
         axes = [{**a.to_dict(), "integer": a.param.integer} for a in self.axes]
         return StudyResult(self.kind, self.method, self.seed if self.kind == "monte_carlo" else None, axes, samples,
-                           self.design_name, self.doc, self.path)
+                           self.design_name, self.doc, self.path, warnings=notes)
 
 
 def batch_sizes(n: int, workers: int, largest: int = 50, smallest: int = 4) -> list[int]:
