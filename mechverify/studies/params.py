@@ -141,11 +141,33 @@ def _near(key: str, table: Mapping[str, Any]) -> list[str]:
     return list(suggest(key, [k for k in table if isinstance(k, str)], 1))
 
 
+def unwritten_stage_mu(doc: Mapping[str, Any], path: str) -> str | None:
+    """The lead screw's name when ``path`` is ``components.<drive>.transmission[i].mu`` of a screw stage that does not
+    write ``mu`` (its friction is then the nut's range, both ends checked); else None."""
+    try:
+        steps = split_path(path)
+    except InputError:
+        return None
+    if len(steps) != 5 or steps[0] != "components" or steps[2] != "transmission" or steps[4] != "mu":
+        return None
+    comp = (doc.get("components") or {}).get(steps[1])
+    stages = comp.get("transmission") if isinstance(comp, dict) else None
+    i = steps[3]
+    if not (isinstance(stages, list) and isinstance(i, int) and 0 <= i < len(stages)):
+        return None
+    stage = stages[i]
+    if not isinstance(stage, dict) or stage.get("type") != "screw" or "mu" in stage:
+        return None
+    screw = stage.get("screw")
+    return screw if isinstance(screw, str) else None
+
+
 def set_path(doc: dict[str, Any], path: str, value: Any) -> None:
-    """Set ``path`` in ``doc`` in place (the key must exist, come from the component's template, or be a key of
-    the component's type with a default)."""
+    """Set ``path`` in ``doc`` in place (the key must exist, come from the component's template, be a key of
+    the component's type with a default, or be a screw stage's ``mu`` left to the nut's friction range)."""
     steps = split_path(path)
-    get_path(doc, path, defaults=True)  # raises for an unknown path
+    if unwritten_stage_mu(doc, path) is None:
+        get_path(doc, path, defaults=True)  # raises for an unknown path
     node: Any = doc
     for s in steps[:-1]:
         node = node[s]
@@ -174,11 +196,21 @@ class Parameter:
     #: the file's expression when the value is written as one (``"144 N*m / lifted_load"``); its ``unit`` is
     #: then mechverify's unit for the result's dimension, which the file never wrote: bare numbers are refused
     expression: str = ""
+    #: (lo, hi, where) of a value the file leaves to a range checked at both ends (a screw stage's ``mu``: the nut's
+    #: friction range); ``base`` is then ``hi``, and a study's values are checked against the range
+    default_range: tuple[float, float, str] | None = None
 
     @classmethod
     def of(cls, doc: Mapping[str, Any], path: str, resolved: Any = None) -> Parameter:
         """The parameter at ``path``. A value written as an expression (``"lifted_load / g"``) takes its
-        resolved value from ``resolved(path)`` (a quantity or None); varying it replaces the expression."""
+        resolved value from ``resolved(path)`` (a quantity or None); varying it replaces the expression. A screw
+        stage's ``mu`` the file does not write takes the nut's friction range from ``resolved(path)``."""
+        screw = unwritten_stage_mu(doc, path)
+        if screw is not None and resolved is not None:
+            rng = resolved(path)
+            if isinstance(rng, tuple) and len(rng) == 2:
+                lo, hi = (float(x) for x in rng)
+                return cls(path, hi, "", default_range=(lo, hi, f"the nut friction range of lead screw {screw!r}"))
         raw = get_path(doc, path, defaults=True)
         if isinstance(raw, str) and resolved is not None:
             try:
@@ -275,7 +307,11 @@ def resolver(design: Any) -> Any:
                 return getattr(data, steps[0])[steps[1]].params.get(steps[2])
             if steps[0] == "load_cases" and len(steps) == 4:
                 return data.load_cases[steps[1]][steps[2]].get(steps[3])
-        except (KeyError, AttributeError, TypeError):
+            screw = unwritten_stage_mu(data.raw, path)
+            if screw is not None:  # the nut's friction range (mu_min, mu_max)
+                obj = data.components[screw].obj
+                return None if obj is None else obj.nut.require_mu()
+        except (KeyError, AttributeError, TypeError, MechverifyError):
             return None
         return None
     return get
@@ -361,6 +397,39 @@ def parse_axis(doc: Mapping[str, Any], name: str, spec: Any, resolved: Any = Non
                          f"got {spec!r}")
     parts = [s.strip() for s in spec.split(":")]
     head = parts[0].lower()
+    if head == "uniform" and len(parts) == 1 and p.default_range is not None:  # over the range the file leaves
+        lo, hi, _ = p.default_range
+        if not lo < hi:
+            raise InputError(f"{name}: 'uniform': {p.default_range[2]} is the single value {lo:g}; nothing to vary")
+        return Axis(p, "uniform", (lo, hi), spec)
+    axis = _parse_axis(p, name, spec, parts, head)
+    if p.default_range is not None:
+        _check_range(axis)
+    return axis
+
+
+class OutsideRangeWarning(UserWarning):
+    """A study's values of an input go outside the published range the design's default takes it from."""
+
+
+def _check_range(axis: Axis) -> None:
+    """Warn when the axis's values leave the default range (a screw stage's mu outside the nut's friction range)."""
+    import warnings
+
+    lo, hi, where = axis.param.default_range or (0.0, 0.0, "")
+    if axis.kind == "sweep":
+        a, b, what = min(axis.args[:2]), max(axis.args[:2]), "the sweep"
+    elif axis.kind == "normal":
+        a, b, what = axis.args[0] - 3 * axis.args[1], axis.args[0] + 3 * axis.args[1], "mean ± 3 SD"
+    else:
+        a, b, what = axis.args[0], axis.args[-1], "the distribution"
+    if a < lo or b > hi:
+        warnings.warn(f"{axis.name}: {what} spans {a:.4g}..{b:.4g}, outside {where}, {lo:g}..{hi:g} (the values "
+                      "mechverify checks when the file writes no mu); is the wider range published for this pairing?",
+                      OutsideRangeWarning, stacklevel=4)
+
+
+def _parse_axis(p: Parameter, name: str, spec: str, parts: list[str], head: str) -> Axis:
     if head in _ARITY:
         if len(parts) != _ARITY[head] + 1:
             form = {"normal": "normal:MEAN:SD", "uniform": "uniform:LO:HI", "triangular": "triangular:LO:MODE:HI"}
