@@ -84,3 +84,45 @@ def gmsh_bar(tmp_path: Path, order: int = 2, fmt: str = "4.1", suffix: str = ".m
     finally:
         gmsh.finalize()
     return path, direct
+
+
+def two_rods(name: str, revision: str, thin_area: str = "5 mm^2") -> str:
+    """Two ``test_rod`` components (the type tests/conftest.py's ``rod_type`` fixture registers), 350 mm of
+    structural steel: ``rod`` of 20 mm² and ``thin_rod`` of ``thin_area``, both under 2 kN in load case hold."""
+    return f"""
+[design]
+name = "{name}"
+revision = "{revision}"
+
+[components.rod]
+type = "test_rod"
+length = "350 mm"
+area = "20 mm^2"
+material = "Structural Steel"
+
+[components.thin_rod]
+type = "test_rod"
+length = "350 mm"
+area = "{thin_area}"
+material = "Structural Steel"
+
+[load_cases.hold.rod]
+force = "2 kN"
+
+[load_cases.hold.thin_rod]
+force = "2 kN"
+"""
+
+
+def run_module(path: Path, name: str) -> Any:
+    """The Python file ``path`` (an example's run.py) executed as the module ``name`` (registered in sys.modules
+    first: dataclasses look their module up while a class is created)."""
+    import importlib.util
+    import sys
+
+    spec = importlib.util.spec_from_file_location(name, path)
+    assert spec is not None and spec.loader is not None, path
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod
+    spec.loader.exec_module(mod)
+    return mod

@@ -14,30 +14,9 @@ import pytest
 
 from mechverify.design import load
 from mechverify.reports import render_html, write_report
+from tests.builders import two_rods
 
-DESIGN = """
-[design]
-name = "Test rig"
-revision = "C"
-
-[components.rod]
-type = "test_rod"
-length = "350 mm"
-area = "20 mm^2"
-material = "Structural Steel"
-
-[components.thin_rod]
-type = "test_rod"
-length = "350 mm"
-area = "5 mm^2"
-material = "Structural Steel"
-
-[load_cases.hold.rod]
-force = "2 kN"
-
-[load_cases.hold.thin_rod]
-force = "2 kN"
-"""
+DESIGN = two_rods("Test rig", "C")
 
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync",

@@ -17,30 +17,9 @@ from markdown_it import MarkdownIt
 
 from mechverify.cli import main
 from mechverify.reports.markdown import table
+from tests.builders import two_rods
 
-DESIGN = """
-[design]
-name = "rig"
-revision = "A"
-
-[components.rod]
-type = "test_rod"
-length = "350 mm"
-area = "20 mm^2"
-material = "Structural Steel"
-
-[components.thin_rod]
-type = "test_rod"
-length = "350 mm"
-area = "{thin}"
-material = "Structural Steel"
-
-[load_cases.hold.rod]
-force = "2 kN"
-
-[load_cases.hold.thin_rod]
-force = "2 kN"
-"""
+DESIGN = two_rods("rig", "A", "{thin}")  # (a template: DESIGN.format(thin=...))
 
 
 @pytest.fixture(autouse=True)

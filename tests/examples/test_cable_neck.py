@@ -7,9 +7,7 @@ drum 20 mm, eta 0.85, maxon RE 35 273762, GP 32 166155 26/7 eta 0.80; Tabla 11: 
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import pytest
@@ -17,6 +15,7 @@ import pytest
 import mechverify.design
 from mechverify.cli import main
 from mechverify.units import Q
+from tests.builders import run_module
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "cable_neck"
 DESIGN = EXAMPLE / "design.toml"
@@ -27,11 +26,7 @@ Nt = Na + 2  # squared-and-ground ends: two inactive coils (Shigley 10th ed. Tab
 
 
 def _run_module():
-    spec = importlib.util.spec_from_file_location("cable_neck_run", EXAMPLE / "run.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod  # dataclasses look their module up while the class is created
-    spec.loader.exec_module(mod)
-    return mod
+    return run_module(EXAMPLE / "run.py", "cable_neck_run")
 
 
 @pytest.fixture(scope="module")

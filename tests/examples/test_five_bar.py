@@ -14,7 +14,6 @@ Every expected value is computed here from the method it names, never copied fro
 
 from __future__ import annotations
 
-import importlib.util
 import math
 from pathlib import Path
 
@@ -23,6 +22,7 @@ import pytest
 
 from mechverify.cli import main
 from mechverify.design import load
+from tests.builders import run_module as run_file
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "five_bar"
 L = 0.200  # leg A1-B1-P, two 100 mm links in line [m]
@@ -31,10 +31,7 @@ B, H, T = 0.020, 0.012, 0.0015  # assumed hollow rectangle: width (in plane), he
 
 
 def run_module():
-    spec = importlib.util.spec_from_file_location("five_bar_run", EXAMPLE / "run.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return run_file(EXAMPLE / "run.py", "five_bar_run")
 
 
 def grillage_hand(F: float, E: float, G: float) -> tuple[float, float]:

@@ -9,15 +9,14 @@ C 3.45 kN, C0 1.37 kN, f0 12), the Tabla 8 stepper (82 g·cm², two curve points
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
 from pathlib import Path
 
 import pytest
 
 import mechverify.design
 from mechverify.cli import main
+from tests.builders import run_module
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lead_screw_lift"
 DESIGN = EXAMPLE / "design.toml"
@@ -29,11 +28,7 @@ N_RPM = 0.018 / LEAD * 60  # 540 rpm
 
 
 def _run_module():
-    spec = importlib.util.spec_from_file_location("lead_screw_lift_run_test", EXAMPLE / "run.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod  # dataclasses look their module up while the class is created
-    spec.loader.exec_module(mod)
-    return mod
+    return run_module(EXAMPLE / "run.py", "lead_screw_lift_run_test")
 
 
 @pytest.fixture(scope="module")

@@ -16,9 +16,7 @@ Every expected value is computed here from the method it names, never copied fro
 
 from __future__ import annotations
 
-import importlib.util
 import math
-import sys
 import tomllib
 from pathlib import Path
 
@@ -27,6 +25,7 @@ import pytest
 from mechverify.cli import main
 from mechverify.design import load
 from mechverify.units import Q
+from tests.builders import run_module
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "lever_arm"
 
@@ -57,11 +56,7 @@ TAU_WRIST = G * (d * W / G + m_BC * d / 2 + m_OF * q / 2 + m_FG * q + m_AG * q /
 
 @pytest.fixture(scope="module")
 def run():
-    spec = importlib.util.spec_from_file_location("lever_arm_run", EXAMPLE / "run.py")
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = mod  # run.py defines dataclasses
-    spec.loader.exec_module(mod)
-    return mod
+    return run_module(EXAMPLE / "run.py", "lever_arm_run")
 
 
 @pytest.fixture(scope="module")

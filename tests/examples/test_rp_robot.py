@@ -17,7 +17,6 @@ mechverify's output:
 
 from __future__ import annotations
 
-import importlib.util
 import math
 from pathlib import Path
 
@@ -26,16 +25,14 @@ import pytest
 from scipy.integrate import cumulative_trapezoid, quad
 
 from mechverify.cli import main
+from tests.builders import run_module
 
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "rp_robot"
 
 
 @pytest.fixture(scope="module")
 def run():
-    spec = importlib.util.spec_from_file_location("rp_robot_run", EXAMPLE / "run.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return run_module(EXAMPLE / "run.py", "rp_robot_run")
 
 
 @pytest.fixture(scope="module")
