@@ -92,7 +92,8 @@ def _build_bearing(p: dict[str, Any], ctx: dict[str, Any]) -> BearingInstallatio
 
 
 def _forces(loads: dict[str, Any]) -> tuple[pint.Quantity, pint.Quantity]:
-    Fr, Fa = loads.get("radial_force", Q(0, "N")), loads.get("axial_force", Q(0, "N"))
+    Fr = loads["radial_force"] if "radial_force" in loads else Q(0, "N")  # (the default made only when needed)
+    Fa = loads["axial_force"] if "axial_force" in loads else Q(0, "N")
     for name, f in (("radial_force", Fr), ("axial_force", Fa)):
         if f.magnitude < 0:
             raise InputError(f"{name} must be >= 0 (a magnitude), got {fmt(f)}")
