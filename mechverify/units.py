@@ -274,6 +274,8 @@ def _as_quantity(value: Any, dim: str, name: str) -> pint.Quantity:
             raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got the bare number {original!r}; give a unit{hint}")
         else:
             raise UnitError(f"{name}: expected {_ARTICLE[dim]}, got {type(original).__name__} {original!r}")
+    if dim in _RATE_DIMS:
+        value = _rate_for(value, dim)
     matches, unitless, factor = _unit_info(value._units, dim)
     if not matches:
         hint = ""
@@ -293,6 +295,55 @@ def _as_quantity(value: Any, dim: str, name: str) -> pint.Quantity:
     _check_bounds(value, dim, name, isinstance(original, str), factor)
     if factor is not None and not (dim == "angle" and unitless) and len(_CHECKED) < 4096:
         _CHECKED[value._units, dim] = (factor, BOUNDS[dim][1])
+    return value
+
+
+_RATE_DIMS = ("frequency", "angular_velocity")
+_RATE_KIND: dict[Any, str | None] = {}
+
+
+def rate_kind(units: Any) -> str | None:
+    """``"angle"`` for an angle per time (rpm, rad/s, deg/s, cycle/s: pint keeps the radian in their root units),
+    ``"cycles"`` for hertz (Hz, kHz: cycles per second), None for anything else (a bare ``1/s`` stays pint's)."""
+    key = units._units if hasattr(units, "_units") else units
+    if key not in _RATE_KIND:
+        u = ureg.Unit(units) if not isinstance(units, pint.Unit) else units
+        root = ureg.get_root_units(u)[1]
+        if u.dimensionality != ureg.get_dimensionality("1/[time]"):
+            kind = None
+        elif "radian" in root._units:
+            kind = "angle"
+        elif any("hertz" in k for k in u._units):
+            kind = "cycles"
+        else:
+            kind = None
+        _RATE_KIND[key] = kind
+    return _RATE_KIND[key]
+
+
+def rate_to(q: pint.Quantity, unit: Any) -> pint.Quantity:
+    """``q.to(unit)`` for rates, with a revolution (cycle) being 2 pi rad: ``rate_to(Q(1200, "rpm"), "Hz")`` is
+    20 Hz and ``rate_to(Q(9, "Hz"), "rpm")`` 540 rpm. pint reads Hz as 1/s and the radian as dimensionless, so its
+    own conversion is 2 pi off between an angle per time and hertz (review 3 finding 17)."""
+    src, dst = rate_kind(q.units), rate_kind(ureg.Unit(unit) if isinstance(unit, str) else unit)
+    if src == "angle" and dst == "cycles":
+        return Quantity(q.m_as("rad/s") / (2 * math.pi), "Hz").to(unit)
+    if src == "cycles" and dst == "angle":
+        return Quantity(q.m_as("Hz") * (2 * math.pi), "rad/s").to(unit)
+    return q.to(unit)
+
+
+def _rate_for(value: pint.Quantity, dim: str) -> pint.Quantity:
+    """A frequency given as an angle per time (``"1200 rpm"``: 20 Hz) in Hz, an angular velocity given in hertz
+    (``"9 Hz"``: 9 rev/s) in rpm; anything else unchanged (see :func:`rate_to`)."""
+    try:
+        kind = rate_kind(value.units)
+    except Exception:  # not a unit pint can root (an offset unit): the dimension check names it
+        return value
+    if dim == "frequency" and kind == "angle":
+        return rate_to(value, "Hz")
+    if dim == "angular_velocity" and kind == "cycles":
+        return rate_to(value, "rpm")
     return value
 
 
@@ -543,4 +594,5 @@ def _is_scalar(m: Any) -> bool:
 
 
 __all__ = ["ureg", "Quantity", "QuantityLike", "Q", "DIMENSIONS", "BOUNDS", "PlausibilityWarning", "as_quantity",
-           "to_si", "from_si", "si_to", "si_function", "require_positive", "fmt", "same_units", "exceeds"]
+           "to_si", "from_si", "si_to", "rate_to", "rate_kind", "si_function", "require_positive", "fmt", "same_units",
+           "exceeds"]

@@ -18,7 +18,7 @@ from typing import Any
 
 import pint
 
-from mechverify.units import Q, Quantity
+from mechverify.units import Q, Quantity, rate_to, ureg
 
 # kind: (dimensionality as a unit string, base unit for display, prefixable?, significant digits)
 # Order matters only for readability; kinds are matched by dimensionality.
@@ -44,6 +44,7 @@ _KINDS: list[tuple[str, str, str, bool, int]] = [
 ]
 
 _FREQUENCY = next(k for k in _KINDS if k[0] == "frequency")
+_PER_TIME = ureg.get_dimensionality("1/[time]")
 _PREFIX = {-12: "p", -9: "n", -6: "µ", -3: "m", 0: "", 3: "k", 6: "M", 9: "G", 12: "T"}
 _SUPERSCRIPT = str.maketrans("0123456789-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻")
 
@@ -123,7 +124,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     if q.ndim if hasattr(q, "ndim") else False:
         return ", ".join(quantity(x, unit, digits) for x in q)
     if unit:
-        return f"{number(float(q.m_as(unit)), digits or 3)} {unit_symbol(unit)}"
+        v = rate_to(q, unit).m_as(unit) if q.dimensionality == _PER_TIME else q.m_as(unit)  # rpm <-> Hz: 60
+        return f"{number(float(v), digits or 3)} {unit_symbol(unit)}"
     if q.dimensionless:
         if _ANGLE_UNITS & set(q.units._units):  # an angle: degrees, never its value in radians
             return f"{number(float(q.m_as('deg')), digits or 3)}°"
