@@ -1,6 +1,6 @@
 """The design-file schema describes the load-case keys (review 2 finding 15: `in_plane` was missing, as were all load
 keys: a load case names components, not types, so the schema lists the union of every type's load keys), with
-in_plane's own keys nx, ny (one value or a pair) and nxy."""
+in_plane's own keys nx, ny (one value or a pair), nxy and hole_loads."""
 
 import functools
 
@@ -21,7 +21,8 @@ def _loads_schema():
 def test_in_plane_and_the_plate_load_keys_are_in_the_schema():
     props = _loads_schema()["properties"]
     assert {"in_plane", "pressure", "point_loads", "patch_loads", "self_weight"} <= set(props)
-    assert set(props["in_plane"]["properties"]) == {"nx", "ny", "nxy"}
+    assert set(props["in_plane"]["properties"]) == {"nx", "ny", "nxy", "hole_loads"}
+    assert set(props["in_plane"]["properties"]["hole_loads"]["items"]["properties"]) == {"holes", "force_x", "force_y"}
     assert "membrane" in props["in_plane"]["description"]
 
 

@@ -51,6 +51,7 @@ from skfem import Basis, BilinearForm, ElementTriMorley, ElementTriP2, ElementVe
 from skfem.helpers import grad
 
 from mechverify.errors import InputError, ModelError
+from mechverify.frozen import set_fields
 from mechverify.units import QuantityLike, to_si
 
 #: Largest number of free unknowns solved by the dense symmetric eigensolver.
@@ -82,8 +83,7 @@ class HoleForce:
         f = tuple(to_si(v, "force", f"force[{i}]") for i, v in enumerate(force))
         if not any(f):
             raise InputError("HoleForce.force: the force must not be zero")
-        object.__setattr__(self, "hole", hole)
-        object.__setattr__(self, "force", f)
+        set_fields(self, hole=hole, force=f)
 
 
 @dataclass(frozen=True)
