@@ -183,3 +183,21 @@ def test_solid_study_process_pool_equals_serial(tmp_path):
     pooled = Study(design, vary=vary, batch_size=2).run(workers=2).to_json()
     assert "solid_stress" in serial and "solid_deflection" in serial
     assert pooled == serial
+
+
+def test_frame_modes_same_bits_with_one_or_two_blas_threads():
+    """The frame's eigenvalue analyses (fea/frame/modal.py: ARPACK's shift-invert on OpenBLAS) gave the conveyor's
+    drum-shaft critical speed as 9653.451577149817 rad/s with one BLAS thread and 9653.45157715028 with two
+    (`mechverify check examples/conveyor_drum --json` under OPENBLAS_NUM_THREADS=1 and =2); frame_modes and
+    frame_buckling are @reproducible now. Measured alongside, not varying (no wrapping): plate solve, plate modes
+    (their ARPACK start vector is fixed), plate buckling, plane solve (straight and curved elements; direct)."""
+    from mechverify.design.design import load
+
+    def speeds() -> list[float]:
+        return [r.utilisation for r in load(ROOT / "examples" / "conveyor_drum" / "design.toml").verify()]
+
+    with threadpool_limits(1):
+        one = speeds()
+    with threadpool_limits(2):
+        two = speeds()
+    assert one == two

@@ -60,6 +60,7 @@ import scipy.sparse.linalg as spl
 from mechverify.errors import InputError, ModelError
 from mechverify.fea.frame import model as _model
 from mechverify.fea.frame.model import DOF_NAMES, Load, Where
+from mechverify.fea.reproducible import reproducible
 from mechverify.units import Q, QuantityLike, to_si
 
 if TYPE_CHECKING:
@@ -369,6 +370,7 @@ def _count_below(A: np.ndarray) -> int:
 
 
 # ---------------------------------------------------------------------------------------------- analyses
+@reproducible  # ARPACK's shift-invert on OpenBLAS: last digits differed with 1 and 2 BLAS threads
 def frame_modes(frame: Frame, n_modes: int = 6, *, masses: Sequence[PointMass] = (),
                 elements_per_member: int = ELEMENTS_PER_MEMBER, shift: QuantityLike | float | None = None
                 ) -> FrameModes:
@@ -455,6 +457,7 @@ def frame_modes(frame: Frame, n_modes: int = 6, *, masses: Sequence[PointMass] =
                       dict(mesh.named), tuple(mesh.notes) + tuple(notes))
 
 
+@reproducible  # ARPACK's shift-invert on OpenBLAS: last digits differed with 1 and 2 BLAS threads
 def frame_buckling(frame: Frame, loads: Iterable[Load] | Mapping[str, Iterable[Load]], n_modes: int = 1, *,
                    elements_per_member: int = ELEMENTS_PER_MEMBER,
                    combination: Mapping[str, float] | None = None) -> FrameBuckling:
