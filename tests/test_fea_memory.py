@@ -300,3 +300,22 @@ def test_curved_assembly_by_element_chunks(monkeypatch):
     K2, measure2 = model._stiffness(pattern, lam, mu)
     assert np.abs(K2.data - K0.data).max() <= 1e-14 * np.abs(K0.data).max()
     assert np.allclose(measure2, measure, rtol=1e-14)
+
+
+def test_shared_solve_keeps_only_the_held_rows():
+    """``study.SharedSolve`` keeps K's held rows (the reactions), not the whole K, beside Kff and the factorisation;
+    the load cases solved on it give the reactions and displacements of a plain solve."""
+    import numpy as np
+
+    from mechverify.fea import study
+
+    model = _model(False)
+    shared = study.SharedSolve.of(model, "direct")
+    held = model._held()
+    assert shared.K.shape == (model.mesh.n_dofs,) * 2
+    assert np.array_equal(np.unique(shared.K.tocoo().row), held)  # rows at the held DOFs only
+    a = model.solve(method="direct", progress=False)
+    b = model.solve(factorization=shared, progress=False)
+    assert np.allclose(b.u, a.u, rtol=0, atol=1e-12 * np.abs(a.u).max())
+    ra, rb = (np.asarray(getattr(r.reaction, "magnitude", r.reaction)) for r in (a, b))
+    assert np.allclose(rb, ra, rtol=1e-9, atol=1e-9 * np.abs(ra).max())
