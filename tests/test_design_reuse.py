@@ -601,3 +601,30 @@ def test_only_the_changed_fields_of_a_table_are_read_again(monkeypatch):
         assert list(variant.data.trace.entries) == list(fresh.data.trace.entries)
         assert repr(variant.data.trace.entries) == repr(fresh.data.trace.entries)
         assert variant.verify().to_json() == fresh.verify().to_json()
+
+
+def test_a_variant_of_values_takes_the_check_plan(monkeypatch):
+    """A variant that changes values only (no check setting, type, template or new key) takes its base's check plan
+    (enabled checks, each check's load cases, mapped onto its own entries and loads); any other override plans again,
+    and a plan that became invalid is still refused."""
+    from mechverify.design.design import Design, DesignFileError, _value_change
+
+    base = load(LIFT)
+    base.verify()
+    planned = []
+    real = Design._check_plan
+    monkeypatch.setattr(Design, "_check_plan", lambda self: planned.append(1) or real(self))
+    v = base.with_overrides({"components.lift.mass": "16 kg", "parameters.lifted_load": "330 N"})
+    assert planned == []
+    assert v._cases_for(v.data.components["lift_screw"], v.data.components["lift_screw"].type.checks[0]) == \
+        _rebuild(copy.deepcopy(v.data.raw), v.data.path, [], v.overrides)._cases_for(
+            v.data.components["lift_screw"], v.data.components["lift_screw"].type.checks[0])
+    planned.clear()
+    base.with_overrides({"components.lift_screw.checks.holding_torque": False})
+    base.with_overrides({"load_cases.raise.lift_screw.compressive": True})  # (a new key)
+    assert len(planned) == 2
+    assert not _value_change(base.data.raw, "components.lift.type", "drive")
+    assert not _value_change(base.data.raw, "load_cases.raise.lift_screw", {"axial_force": "1 N"})
+    assert _value_change(base.data.raw, "components.lift.transmission[0].screw", "lift_screw")
+    with pytest.raises(DesignFileError, match="needs"):  # the bearing's load case replaced by one without loads
+        base.with_overrides({"load_cases.raise.screw_bearing": {}})

@@ -47,11 +47,12 @@ class Design:
     as its validated TOML data, base path and files, and is rebuilt on unpickling (worker processes).
     """
 
-    def __init__(self, data: DesignData, overrides: Mapping[str, Any] | None = None):
+    def __init__(self, data: DesignData, overrides: Mapping[str, Any] | None = None, plan_from: Design | None = None):
         self.data = data
         #: key path -> value of every override applied since the file was read (see :meth:`with_overrides`)
         self.overrides: dict[str, Any] = dict(overrides or {})
-        self._check_plan()
+        if plan_from is None or not self._take_plan(plan_from):
+            self._check_plan()
 
     # ----------------------------------------------------------------- variants
     def with_overrides(self, overrides: Mapping[str, Any]) -> Design:
@@ -72,8 +73,9 @@ class Design:
                 errors.append((key, str(exc)))
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
+        same_plan = all(_value_change(self.data.raw, k, v) for k, v in overrides.items())
         variant = _rebuild(doc, self.data.path, list(self.data.files), {**self.overrides, **overrides}, self.data,
-                           changed=tuple(overrides))
+                           changed=tuple(overrides), plan_from=self if same_plan else None)
         variant._reuse_base = self  # unchanged components take this design's results (mechverify/design/reuse.py)
         return variant
 
@@ -163,6 +165,28 @@ class Design:
                 out.append((case, loads))
         memo[key] = (entry, out)
         return list(out)
+
+    def _take_plan(self, base: Design) -> bool:
+        """Take the check plan (enabled checks, each check's load cases) of ``base``, a design this one differs from in
+        values only (:func:`_value_change`: no check settings, types, templates or keys changed), mapped onto this
+        design's entries and loads; False (nothing taken) when the components or the safety factors differ."""
+        if list(base.data.components) != list(self.data.components) or \
+                base.data.safety_factors != self.data.safety_factors:
+            return False
+        enabled, cases = {}, {}
+        for name, entry in self.data.components.items():
+            hit = base.__dict__.get("_enabled", {}).get(name)
+            if hit is None or hit[0].type is not entry.type:
+                return False
+            enabled[name] = (entry, hit[1])
+        loads = self.data.load_cases
+        for (name, needs), (_, found) in base.__dict__.get("_cases", {}).items():
+            try:
+                cases[(name, needs)] = (self.data.components[name], [(case, loads[case][name]) for case, _ in found])
+            except KeyError:
+                return False
+        self.__dict__["_enabled"], self.__dict__["_cases"] = enabled, cases
+        return True
 
     def _check_plan(self) -> None:
         errors = []
@@ -442,8 +466,33 @@ def _toml_value(v: Any) -> Any:
     return v
 
 
+def _value_change(raw: Mapping[str, Any], key: str, value: Any) -> bool:
+    """True when setting ``key`` to ``value`` replaces one existing value (a number, string or boolean) of a parameter,
+    component, profile or load case by another such value, not a check setting, a type or a template: the design's
+    check plan stays what it was (:meth:`Design._take_plan`)."""
+    if isinstance(value, Mapping | list | tuple):
+        return False
+    try:
+        parts = _split_path(key)
+    except _PathError:
+        return False
+    if parts[0] not in ("parameters", "components", "profiles", "load_cases") or \
+            any(p in ("checks", "type", "extends") for p in parts):
+        return False
+    node: Any = raw
+    for p in parts:
+        if isinstance(node, dict) and isinstance(p, str) and p in node:
+            node = node[p]
+        elif isinstance(node, list) and isinstance(p, int) and -len(node) <= p < len(node):
+            node = node[p]
+        else:
+            return False
+    return not isinstance(node, dict | list)
+
+
 def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], overrides: Mapping[str, Any],
-             base: DesignData | None = None, changed: tuple[str, ...] | None = None) -> Design:
+             base: DesignData | None = None, changed: tuple[str, ...] | None = None,
+             plan_from: Design | None = None) -> Design:
     """A design from its (merged) TOML data: the includes are already in ``doc``, so nothing is read. With ``base``
     (the design it is a variant of), its unchanged immutable components are taken over (design/reuse.py);
     ``changed``: the key paths where ``doc`` differs from ``base``'s data."""
@@ -454,7 +503,7 @@ def _rebuild(doc: dict[str, Any], path: Path | None, files: list[Path], override
         doc = {**doc, "design": {k: v for k, v in design.items() if k != "include"}}
     data = parse(doc, path, base=base, changed=changed)
     data.files = files
-    return Design(data, overrides)
+    return Design(data, overrides, plan_from)
 
 
 def load(path: str | Path, allow_outside: bool = False) -> Design:

@@ -90,7 +90,7 @@ def build_base_before_fork(doc: Mapping[str, Any], path: str | None) -> None:
     types = {t.get("type") for t in comps.values() if isinstance(t, Mapping)} if isinstance(comps, Mapping) else set()
     if types & NATIVE_THREAD_TYPES or doc.get("templates"):  # (a template may give the type)
         return
-    if multiprocessing.get_start_method(allow_none=False) != "fork":
+    if multiprocessing.get_start_method(allow_none=False) != "fork" or not fork_is_safe():  # (process_pool spawns)
         return
     try:
         _base_design(doc, path)
