@@ -207,7 +207,8 @@ SOLID_FEA = REGISTRY.register(ComponentType(
     fields=(
         Field("step", "str", "STEP file (path relative to the design file; gmsh needed); faces are face<k>",
               file=True),
-        Field("stl", "str", "watertight STL file (gmsh needed); its surface is the region 'surface'", file=True),
+        Field("stl", "str", "watertight STL file (gmsh needed), remeshed at mesh_size: faces face1, face2, ... (split at 40 deg), "
+                            "all of them 'surface'", file=True),
         Field("box", "str", "a block \"x, y, z\" from the origin (faces xmin ... zmax)"),
         Field("mesh", "str", "a tetrahedral mesh made by another tool (.msh, .inp, .bdf, .vtu, .vtk; coordinates in "
                              "unit): its named groups are the regions, no mesh_size", file=True),
