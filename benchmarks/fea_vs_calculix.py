@@ -12,7 +12,10 @@ in its own process so that peak memory (max RSS) is comparable:
 Prints a table and writes ``benchmarks/results/fea_vs_calculix.json``. Usage::
 
     python benchmarks/fea_vs_calculix.py [--dofs 50000 200000] [--baseline] [--method auto|amg|direct]
-        [--ccx-threads 1 2] [--out path.json]
+        [--ccx-threads 1 2] [--repeat 3] [--out path.json]
+
+``--repeat k`` runs each side k times and keeps the least CPU time (the box is shared: CPU time is the steadier
+figure). Each row records the mesh (gmsh's CPU time, slivers repaired, worst tetrahedron quality).
 
 Meshes, models and the CalculiX runs come from ``ccx_common.py`` (shared with the other FEA benchmarks).
 """
@@ -33,7 +36,17 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from ccx_common import LUG, ccx_static, load_average, load_mesh, peak_rss, run_child, save_mesh, write_rows  # noqa: E402
+from ccx_common import (  # noqa: E402
+    LUG,
+    ccx_static,
+    load_average,
+    load_mesh,
+    peak_rss,
+    run_child,
+    save_mesh,
+    sized_mesh,
+    write_rows,
+)
 from ccx_common import mesh_for as part_mesh_for  # noqa: E402
 from ccx_common import model_of as part_model_of  # noqa: E402
 
@@ -101,25 +114,36 @@ def baseline_child(path: str) -> None:
     print(json.dumps({"wall": wall, "peak": peak_rss()}))
 
 
-def run_case(target: int, baseline: bool = False, method: str = "auto", threads: tuple[int, ...] = (1, 2)) -> dict:
-    m = mesh_for(target)
+def least_cpu(runs: list[dict]) -> dict:
+    """The run with the least CPU time, with every run's CPU and wall seconds beside it."""
+    best = dict(min(runs, key=lambda r: r["cpu"]))
+    best["all_cpu"], best["all_wall"] = [r["cpu"] for r in runs], [r["wall"] for r in runs]
+    return best
+
+
+def run_case(target: int, baseline: bool = False, method: str = "auto", threads: tuple[int, ...] = (1, 2),
+             repeat: int = 1) -> dict:
+    m, mesh_info = sized_mesh(LUG, target)
     model = model_of(m)
     with tempfile.TemporaryDirectory(prefix="mv-bench-") as tmp:
         path = os.path.join(tmp, "mesh.npz")
         save_mesh(m, path)
-        mine = run_child(__file__, path, method)
+        mine = least_cpu([run_child(__file__, path, method) for _ in range(repeat)])
         u = np.load(path + ".u.npy")
         base = None
         if baseline:
             out = subprocess.run([sys.executable, __file__, "--baseline-child", path], capture_output=True,
                                  text=True, check=True)
             base = json.loads(out.stdout.strip().splitlines()[-1])
-    ccx = ccx_static(model, list(threads), u)
-    best = ccx["ccx_threads"]
-    return {"dofs": m.n_dofs, "elements": m.mesh.nelements, "mechverify": mine, "calculix": ccx["calculix"],
-            "ratio": mine["wall"] / ccx["best"]["wall"],
+    runs = [ccx_static(model, list(threads), u) for _ in range(repeat)]
+    ccx = runs[0]
+    for t in threads:  # each thread count's least-CPU run
+        ccx["calculix"][t] = least_cpu([r["calculix"][t] for r in runs])
+    best = min(threads, key=lambda t: ccx["calculix"][t]["wall"])
+    return {"dofs": m.n_dofs, "elements": m.mesh.nelements, "mesh": mesh_info, "mechverify": mine,
+            "calculix": ccx["calculix"], "ratio": mine["wall"] / ccx["calculix"][best]["wall"],
             "cpu_ratio": mine["cpu"] / min(r["cpu"] for r in ccx["calculix"].values()),
-            "memory_ratio": mine["peak"] / ccx["best"]["peak"],
+            "memory_ratio": mine["peak"] / ccx["calculix"][best]["peak"], "repeat": repeat,
             "ccx_threads": best, "max_displacement_difference": ccx["max_displacement_difference"],
             "plain_scikit_fem": base, "load_average": load_average()}
 
@@ -132,6 +156,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap.add_argument("--method", default="auto", choices=["auto", "amg", "direct"])
     ap.add_argument("--ccx-threads", type=int, nargs="+", default=[1, 2])
     ap.add_argument("--out", default=str(HERE / "results" / "fea_vs_calculix.json"))
+    ap.add_argument("--repeat", type=int, default=1, help="runs of each side; the least CPU time counts")
     ap.add_argument("--baseline-child")
     args = ap.parse_args(argv)
     if args.baseline_child:
@@ -139,7 +164,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         return []
     rows = []
     for i, t in enumerate(args.dofs):
-        rows.append(run_case(t, args.baseline and i == 0, args.method, tuple(args.ccx_threads)))
+        rows.append(run_case(t, args.baseline and i == 0, args.method, tuple(args.ccx_threads), args.repeat))
         write_rows(rows, args.out)
     print(f"{'DOF':>8} {'mechverify s':>13} {'ccx s (thr)':>12} {'ratio':>6} {'CPU':>5} {'mv MB':>7} {'ccx MB':>7}  "
           "iters  load")
