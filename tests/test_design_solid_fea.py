@@ -357,3 +357,18 @@ def test_a_plane_off_the_part_and_a_limit_without_span_are_errors_at_their_keys(
     assert "components.bar.span: deflection_limit 'L/250' is a fraction of the span: give span" in str(e.value)
     with pytest.raises(MechverifyError, match=r"components\.bar\.deflection_limit: "):
         load(tmp_path, solid(extra='deflection_limit = "2 kg"'))
+
+
+def test_block_size_from_parameters_and_a_negative_hole_diameter(tmp_path):
+    """Review 3 findings 20 and 19: box = "300, 10, t" with [parameters] t was refused ('expected a length, got t':
+    the thickness of a solid part could not be sized or swept); a hole of diameter -3 mm was 'does not fit inside
+    the block'. Tip deflection of the 300 x 10 x t cantilever under 50 N, t = 10 mm: P L³ / (3 E I) = 50 · 0.3³ /
+    (3 · 200e9 · 0.01⁴/12) = 2.70 mm (hand calculation, Euler-Bernoulli, Shigley 10th ed. Table A-9 case 1)."""
+    text = solid('box = "300, 10, t"\nmesh_size = "5 mm"', 'deflection_limit = "10 mm"\nchecks.solid_stress = false',
+                 '"0, 0, -50"', head='[parameters]\nt = "10 mm"')
+    (r,) = [r for r in load(tmp_path, text).verify() if r.check == "solid_deflection"]
+    assert r.demand.m_as("mm") == pytest.approx(50 * 0.3**3 / (3 * 200e9 * 0.01**4 / 12) * 1e3, rel=0.03)
+    with pytest.raises(MechverifyError) as e:
+        _design(tmp_path, box="100, 40, 10", extra='holes = [{ center = "50, 20", diameter = "-3 mm" }]').verify()
+    assert "components.bar.holes[0].diameter: must be positive, got '-3 mm'" in str(e.value)
+    assert "checks." not in str(e.value)

@@ -58,6 +58,16 @@ class SolidStudy:
                 raise exc from None
         return self._mesh
 
+    def noted(self, result: Any) -> Any:
+        """``result`` (a CheckResult or a list of them) with what the import did to the geometry in its notes
+        (``SolidMesh.notes``: a STEP file's touching solids bonded)."""
+        notes = getattr(self._mesh, "notes", ()) if not isinstance(self._mesh, Exception) else ()
+        if not notes:
+            return result
+        if isinstance(result, list):
+            return [r.replace(notes=(*r.notes, *notes)) for r in result]
+        return result.replace(notes=(*result.notes, *notes))
+
     def model(self, loads: tuple[Any, ...] = ()) -> Any:
         from mechverify.fea.solid import SolidModel
 
@@ -107,6 +117,10 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     if len(sources) != 1:
         raise InputError(f"step: give exactly one geometry: step, stl, box or mesh (got {sources or 'none'})")
     resolve_files(p, ctx, tuple(f.name for f in SOLID_FEA.fields if f.file))
+    if isinstance(p.get("box"), str) and isinstance(ctx, Mapping) and ctx.get("parameters"):
+        from mechverify.design.parameters import substitute  # "300, 10, t": parameters in the block's size
+
+        p["box"] = substitute(p["box"], f"components.{p['_name']}.box", ctx)
     imported = None
     if "mesh" in p:  # another tool's mesh: read now, so that its errors are reported once, at the key
         if p.get("convergence_check"):
@@ -140,7 +154,7 @@ def _g(ctx: Any) -> Any:
 def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     res = c.solve(loads, ctx.load_case, _g(ctx))
     if not c.p.get("convergence_check"):
-        return fc.check_solid_stress(res, component=c.name)
+        return c.noted(fc.check_solid_stress(res, component=c.name))
     from mechverify.fea.solid import SolidModel
     from mechverify.fea.study import REFINE, two_mesh_stress
 
@@ -150,7 +164,7 @@ def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     with c.regions():
         governing, notes, warns = two_mesh_stress(res, fine, c.p["mesh_size"], c.p.get("supports"),
                                                   float(c.p.get("convergence_tolerance", 0.05)))
-    return fc.check_solid_stress(governing, component=c.name, notes=notes, warnings=warns)
+    return c.noted(fc.check_solid_stress(governing, component=c.name, notes=notes, warnings=warns))
 
 
 def _fatigue(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
@@ -160,16 +174,16 @@ def _fatigue(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
         raise InputError(f"fatigue_stress_ratio: R = sigma_min / sigma_max in [-1, 1), got {r}")
     s = res.signed_von_mises().m_as("Pa")  # the load case is the peak of the cycle; R gives its valley
     life = c.p.get("fatigue_life")
-    return check_fatigue_field(c.name, Q(abs(s) * (1 - r) / 2, "Pa"), Q(s * (1 + r) / 2, "Pa"), res.material,
-                               coordinates=Q(res.points, "m"), life=float(life) if life is not None else None)
+    return c.noted(check_fatigue_field(c.name, Q(abs(s) * (1 - r) / 2, "Pa"), Q(s * (1 + r) / 2, "Pa"), res.material,
+                                       coordinates=Q(res.points, "m"), life=float(life) if life is not None else None))
 
 
 def _deflection(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
     lim = c.p.get("deflection_limit")
     if lim is None:
         return []
-    return fc.check_solid_deflection(c.solve(loads, ctx.load_case, _g(ctx)), lim, span=c.p.get("span"),
-                                     component=c.name)
+    return c.noted(fc.check_solid_deflection(c.solve(loads, ctx.load_case, _g(ctx)), lim, span=c.p.get("span"),
+                                             component=c.name))
 
 
 def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
@@ -182,7 +196,7 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
         model = c.model()
         res = settings.solve(modal, model, hint=(
             "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"))
-    return settings.check(res, c.name)
+    return c.noted(settings.check(res, c.name))
 
 
 def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
@@ -194,7 +208,7 @@ def _buckling(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     model = c.case_model(loads, ctx.load_case, _g(ctx))
     with c.regions(loads):
         try:
-            return fc.check_buckling_load_factor(buckling(model, 1), component=c.name)
+            return c.noted(fc.check_buckling_load_factor(buckling(model, 1), component=c.name))
         except NoBucklingFactorError as exc:
             return fc.no_buckling_result(exc.bound, str(exc), component=c.name)
 
@@ -207,8 +221,8 @@ SOLID_FEA = REGISTRY.register(ComponentType(
     fields=(
         Field("step", "str", "STEP file (path relative to the design file; gmsh needed); faces are face<k>",
               file=True),
-        Field("stl", "str", "watertight STL file (gmsh needed), remeshed at mesh_size: faces face1, face2, ... (split at 40 deg), "
-                            "all of them 'surface'", file=True),
+        Field("stl", "str", "watertight STL file (gmsh needed), remeshed at mesh_size: faces face1, face2, ... "
+                            "(split at 40 deg), all of them 'surface'", file=True),
         Field("box", "str", "a block \"x, y, z\" from the origin (faces xmin ... zmax)"),
         Field("mesh", "str", "a tetrahedral mesh made by another tool (.msh, .inp, .bdf, .vtu, .vtk; coordinates in "
                              "unit): its named groups are the regions, no mesh_size", file=True),

@@ -249,6 +249,8 @@ def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
         c = [_num(s, unit, "length", f"holes[{i}].center") for s in str(t["center"]).split(",")]
         if len(c) != 2:
             raise InputError(f"holes[{i}].center: expected \"x, y\", got {t['center']!r}")
+        if not as_quantity(t["diameter"], "length", f"holes[{i}].diameter").magnitude > 0:
+            raise InputError(f"holes[{i}].diameter: must be positive, got {t['diameter']!r}")
         holes.append(((Q(c[0], "m"), Q(c[1], "m")), t["diameter"]))
     if not holes:
         divs = tuple(max(1, round(s / h)) for s in size)
