@@ -22,6 +22,7 @@ import numpy as np
 from skfem import Basis, ElementTetP2, MeshTet
 
 from mechverify.errors import InputError, ModelError, install_hint
+from mechverify.fea.gmshstate import restore_step_unit
 from mechverify.units import Q, QuantityLike, to_si
 
 GMSH_HINT = "this needs the gmsh mesher, an optional extra (GPL-licensed): " + install_hint("mesh", "gmsh")
@@ -539,6 +540,7 @@ def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curve
             second_order(gmsh)
         return from_gmsh_model(gmsh)
     finally:
+        restore_step_unit(gmsh)  # the unit is OpenCASCADE's, kept past finalize: later sessions read/wrote metres
         gmsh.finalize()
 
 
