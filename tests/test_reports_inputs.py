@@ -149,3 +149,19 @@ def test_data_table_says_default_for_keys_the_file_does_not_write(tmp_path):
     src = {p["name"]: p["source"] for p in comp["params"]}
     assert src["length"] == src["end"] == src["width"] == "design file"  # (width from the template)
     assert src["pin_shear_planes"] == src["strength_factor"] == "default"
+
+
+def test_explore_names_the_figure_that_is_not_the_governing_checks(tmp_path):
+    """Review 3 finding 23: explore's summary said 'Governing: l / Link body stress' and showed the buckling
+    figure under 'Figure: l / Link buckling', read as the governing check's figure; a tension link's body stress
+    governs (u·SF > 0) and draws no figure. The caption now says so."""
+    pytest.importorskip("matplotlib")
+    from mechverify.reports.explore import summary_html
+    from tests.builders import load as load_text
+
+    text = ('[design]\nname = "explore"\n[components.l]\ntype = "link"\nlength = "200 mm"\nsection = "circle"\n'
+            'diameter = "10 mm"\nmaterial = "Structural Steel"\n[load_cases.a.l]\naxial_force = "200 N"\n')
+    out = summary_html(load_text(tmp_path, text).verify())
+    assert "<p>Governing: l / Link body stress" in out and "<img" in out
+    assert ("<p class='small'>l / Link body stress (von Mises) draws no figure; the figure of the next check that "
+            "has one: l / Link buckling</p>") in out

@@ -95,8 +95,9 @@ def summary_html(rs: Any) -> str:
                 fig = figure_for(r)
             except Exception:  # (a figure is a nicety: never lose the table for it)
                 fig = None
-            if fig:
-                caption = "" if r is rows[0] else f"<p class='small'>Figure: {name(r)}</p>"
+            if fig:  # another check's figure says whose it is (review 3 finding 23)
+                caption = "" if r is rows[0] else (f"<p class='small'>{name(rows[0])} draws no figure; the figure "
+                                                   f"of the next check that has one: {name(r)}</p>")
                 out += f"{caption}<img style='max-width:40rem' src='{fig}'>"
                 break
     return out
