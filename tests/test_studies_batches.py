@@ -54,9 +54,10 @@ def test_forked_workers_inherit_the_base_design(monkeypatch) -> None:
     """The local pool forks after the parent built and verified the base design: no worker builds it again."""
     import multiprocessing
 
-    if multiprocessing.get_start_method(allow_none=False) != "fork":
-        pytest.skip("workers inherit the parent's memory only when forked")
     from mechverify.studies import execution
+
+    if multiprocessing.get_start_method(allow_none=False) != "fork" or not execution.fork_is_safe():
+        pytest.skip("workers inherit the parent's memory only when forked (not once gmsh is loaded: spawned)")
 
     monkeypatch.setattr(execution, "_BASE", {})  # (nothing built by earlier tests in this process)
     monkeypatch.setattr(Study, "batch_fn", staticmethod(_had_base))
