@@ -254,3 +254,22 @@ def test_file_keys_come_from_the_component_types(tmp_path, monkeypatch):
     assert "drawing" in file_keys()
     doc = {"components": {"d": {"type": "drawing_test", "drawing": "parts/d.dxf"}}}
     assert rebase_files(doc, tmp_path, tmp_path / "out")["components"]["d"]["drawing"] == "../parts/d.dxf"
+
+
+def test_report_scatter_has_a_verdict_legend(monkeypatch):
+    """Review 3 finding 8: the Monte Carlo report's scatter was coloured green/orange/red by verdict with no
+    legend; now one entry per verdict with its sample count."""
+    from mechverify.reports import study as rstudy
+    from mechverify.studies import StudyResult
+
+    figs = []
+    monkeypatch.setattr(rstudy, "svg_data_uri", lambda fig: figs.append(fig) or "data:")
+    verdicts = ["pass"] * 5 + ["warn"] * 2 + ["fail"] * 3
+    samples = [{"index": i, "inputs": {"x": float(i)}, "status": "ok", "message": "", "verdict": v, "governing": "a.b",
+                "max_fu": 0.5 + 0.1 * i, "checks": {"a.b": {"u": 0.5, "required_sf": 1.0, "fu": 0.5 + 0.1 * i,
+                                                             "verdict": v}}}
+               for i, v in enumerate(verdicts)]
+    res = StudyResult("monte_carlo", "lhs", 0, [{"name": "x", "unit": "", "spec": "", "base": 0.0}], samples, "d")
+    rstudy.scatter(res, "x")
+    labels = [t.get_text() for t in figs[0].axes[0].get_legend().get_texts()]
+    assert labels == ["pass (5)", "warn (2)", "fail (3)"]

@@ -83,11 +83,17 @@ def scatter(result: StudyResult, name: str, check: str | None = None) -> str:
     x = [s["inputs"][name] for s in ok]
     y = result.fu(check)
     if check is None:
-        c = [colours.get(s["verdict"], "#777") for s in ok]
+        verdicts = [s["verdict"] for s in ok]
     else:
-        c = [colours.get(s["checks"].get(check, {}).get("verdict", ""), "#777") for s in ok]
-    ax.scatter(x, y, s=8, c=c)
+        verdicts = [s["checks"].get(check, {}).get("verdict", "") for s in ok]
+    for v in [*colours, *sorted({v for v in verdicts if v not in colours})]:  # one legend entry per verdict
+        idx = [i for i, w in enumerate(verdicts) if w == v]
+        if idx:
+            ax.scatter([x[i] for i in idx], [y[i] for i in idx], s=8, c=colours.get(v, "#777"),
+                       label=f"{v or 'no verdict'} ({len(idx)})")
     ax.axhline(1.0, color="k", lw=1)
+    if ok:
+        ax.legend(fontsize=7, title="verdict (samples)", title_fontsize=7)
     ax.set_xlabel(_label(result, name))
     ax.set_ylabel("governing u·SF" if check is None else _ylabel(check), fontsize=8)
     return svg_data_uri(fig)
