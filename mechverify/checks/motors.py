@@ -102,8 +102,8 @@ def check_motor_peak_torque(demand: TorqueDemand, motor: Any = None, *, margin: 
         margin = STEPPER_MARGIN if m.kind == "stepper" else 1.0
     avail = m.available_torque_si(demand.motor_speed, U)
     T = np.abs(demand.motor_torque)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        u = np.where(avail > 0, T / np.where(avail > 0, avail, 1.0), np.where(T > 0, np.inf, 0.0))
+    # T/avail where the motor has torque, else inf (T > 0) or 0: divided only where avail > 0 (no warnings)
+    u = np.divide(T, avail, out=np.where(T > 0, np.inf, 0.0), where=avail > 0)
     i = int(np.argmax(u))
     warnings, notes = [], []
     limit = {"dc": "speed-torque line at " + (f"{U:g} V supply" if U is not None else "nominal voltage"),
