@@ -167,13 +167,24 @@ def nearest_feature(model: pl.PlateModel, xy: np.ndarray) -> str:
     return what if d <= tol else "inside the plate, away from holes and edges"
 
 
-def singular_features(model: pl.PlateModel) -> list[tuple[str, np.ndarray, float]]:
+def singular_features(model: pl.PlateModel, in_plane_supports: Sequence[Any] = ()
+                      ) -> list[tuple[str, np.ndarray, float]]:
     """Where the Kirchhoff model's stress is singular (it grows or wanders without converging as the mesh is
     refined): point loads and point supports (a concentrated force on a plate gives an infinite moment, Timoshenko
     & Woinowsky-Krieger sec. 19) and the edge of a washer disc, which the model holds rigidly over the mesh edges
     inside the washer circle: that jagged edge of a rigid support has re-entrant corners, singular in plate bending
-    (Williams 1952). Each is ``(description, centre [m], radius [m])``, radius 0 for a point."""
+    (Williams 1952); and the ends of outline edges held in the plate's plane (``in_plane_supports``,
+    :class:`mechverify.fea.plate_stress.InPlaneSupport`): a rigidly held edge meeting a free one is a singular corner
+    of plane elasticity (Williams 1952; measured: 63, 74, 87 MPa at 10, 5, 2.5 mm for 50 MPa nominal). Each is
+    ``(description, centre [m], radius [m])``, radius 0 for a point."""
     out: list[tuple[str, np.ndarray, float]] = []
+    for s in in_plane_supports:
+        if getattr(s, "edges", ()) not in ((), [], None):
+            edges = model.plate.edges()
+            for i in pl.EdgeSupport(s.edges).edge_indices(model.plate):
+                for end in edges[i]:
+                    out.append((f"end {_mm(end)} of outline edge {i}, held in the plate's plane",
+                                np.asarray(end, dtype=float), 0.0))
     for ld in model.loads:
         if isinstance(ld, pl.PlatePointLoad):
             out.append((f"point load at {_mm(ld.point)}", np.asarray(ld.point, dtype=float), 0.0))
@@ -203,22 +214,24 @@ def _distance(xy: np.ndarray, centre: np.ndarray, radius: float) -> np.ndarray:
     return np.maximum(np.linalg.norm(xy - centre, axis=-1) - radius, 0.0)
 
 
-def singular_at(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, float] | None:
+def singular_at(model: pl.PlateModel, res: FieldResults, node: int, in_plane_supports: Sequence[Any] = ()
+                ) -> tuple[str, float] | None:
     """The singular feature (:func:`singular_features`) within 2.5 local element sizes of ``node``, with that
     size [m]; None when the node lies away from all of them."""
     h = local_size(res, node)
     xy = res.points[node, :2]
-    near = [(float(_distance(xy, c, r)), what) for what, c, r in singular_features(model)]
+    near = [(float(_distance(xy, c, r)), what) for what, c, r in singular_features(model, in_plane_supports)]
     near = [x for x in near if x[0] <= 2.5 * h]
     return (min(near)[1], h) if near else None
 
 
-def peak_away(model: pl.PlateModel, res: FieldResults, distance: float) -> tuple[float, int] | None:
+def peak_away(model: pl.PlateModel, res: FieldResults, distance: float, in_plane_supports: Sequence[Any] = ()
+              ) -> tuple[float, int] | None:
     """The largest von Mises stress [Pa] and its node among the nodes farther than ``distance`` [m] from every
     singular feature (:func:`singular_features`); None when there is no such node."""
     xy = res.points[:, :2]
     ok = np.ones(len(xy), dtype=bool)
-    for _, c, r in singular_features(model):
+    for _, c, r in singular_features(model, in_plane_supports):
         ok &= _distance(xy, c, r) > distance
     if not ok.any():
         return None
@@ -233,17 +246,27 @@ def away_distance(model: pl.PlateModel, h: float) -> float:
     return max(model.plate.thickness, 2.0 * h)
 
 
-def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tuple[str, ...]:
-    hit = singular_at(model, res, node)
+def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int, in_plane_supports: Sequence[Any] = ()
+                      ) -> tuple[str, ...]:
+    hit = singular_at(model, res, node, in_plane_supports)
     if hit is None:
         return ()
     what, h = hit
+    if what.endswith("held in the plate's plane"):
+        d = away_distance(model, h)
+        away = peak_away(model, res, d, in_plane_supports)
+        there = "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from every singular point: "
+                                         f"{away[0] / 1e6:.4g} MPa at {_mm(res.points[away[1], :2])})")
+        return (f"the largest stress is at the {what}: a rigidly held edge meeting a free one is a stress singularity "
+                "of the membrane (plane-stress) model, so this peak grows as the mesh is refined and refining will not "
+                f"settle it; judge the stress about one plate thickness away{there}, or hold the plate where it is "
+                "really held (bolt or pin holes: in_plane_supports holes)",)
     if not what.startswith("edge of the washer"):
         return (f"the largest stress is at a {what}: plate theory makes the stress under a concentrated force or "
                 "support infinite, so this value depends on the mesh; spread the load over its real footprint "
                 "(patch_loads) or support on a hole rim or edge",)
     d = away_distance(model, h)
-    away = peak_away(model, res, d)
+    away = peak_away(model, res, d, in_plane_supports)
     there = "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from every washer edge: "
                                      f"{away[0] / 1e6:.4g} MPa at {_mm(res.points[away[1], :2])})")
     return (f"the largest stress is at the {what}: the model holds the plate rigidly over the washer disc, and the "
@@ -254,7 +277,8 @@ def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int) -> tup
 
 
 def plate_convergence(model: pl.PlateModel, coarse: FieldResults, fine: FieldResults, ratio: float,
-                      tolerance: float, sizes: tuple[float, float]) -> tuple[FieldResults, list[str], list[str]]:
+                      tolerance: float, sizes: tuple[float, float], in_plane_supports: Sequence[Any] = ()
+                      ) -> tuple[FieldResults, list[str], list[str]]:
     """Two-mesh check of the peak von Mises stress (:func:`mechverify.fea.study.two_mesh_check`, order 2: the
     Morley peak stresses converge as h^2, measured on Roark's Table 11.4 squares): ``coarse`` on the design's mesh
     (element sizes ``sizes`` = (mesh_size, hole_mesh_size) [m]), ``fine`` on one ``ratio`` times finer. Returns
@@ -268,12 +292,12 @@ def plate_convergence(model: pl.PlateModel, coarse: FieldResults, fine: FieldRes
     notes = [f"two-mesh check: peak von Mises {a:.4g} MPa on the design's mesh, {b:.4g} MPa with elements "
              f"{ratio:g}x smaller (change {100 * chk.change:.3g} %, Richardson error estimate of the finer mesh "
              f"{100 * chk.estimated_error:.3g} %); the larger is the demand"]
-    hits = [singular_at(model, r, int(r.max_von_mises.node)) for r in (coarse, fine)]
+    hits = [singular_at(model, r, int(r.max_von_mises.node), in_plane_supports) for r in (coarse, fine)]
     hit = next((x for x in hits if x is not None), None)
     warnings: list[str] = []
     if hit is not None:
         d = away_distance(model, max(x[1] for x in hits if x is not None))
-        pa, pb = (peak_away(model, r, d) for r in (coarse, fine))
+        pa, pb = (peak_away(model, r, d, in_plane_supports) for r in (coarse, fine))
         if pa is not None and pb is not None:
             away = two_mesh_check(pa[0], pb[0], ratio, 2.0, tolerance)
             notes.append(f"the peak is at the {hit[0]} (singular); {d * 1e3:.3g} mm or more from every singular "
@@ -319,12 +343,13 @@ def _load_notes(model: pl.PlateModel, res: FieldResults) -> list[str]:
                 "strength; Timoshenko & Woinowsky-Krieger eq. 101, Shigley 10th ed. Eq. 5-13."))
 def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component: str = "",
                            required_sf: float = 1.0, load_case: str = "", notes: Sequence[str] = (),
-                           warnings: Sequence[str] = ()) -> CheckResult:
+                           warnings: Sequence[str] = (), in_plane_supports: Sequence[Any] = ()) -> CheckResult:
     """The largest surface von Mises stress of a solved plate model (:func:`mechverify.fea.plate.solve_plate`:
     membrane + bending, sigma = N/t ± 6 M/t² on each face) against the yield strength; the governing location,
     face, moments and the membrane and bending parts there are in the notes and details
     (:func:`mechverify.fea.plate_stress.governing_stress`). ``notes`` and ``warnings`` are added (e.g. the mesh
-    used, a two-mesh check: :func:`plate_convergence`)."""
+    used, a two-mesh check: :func:`plate_convergence`); ``in_plane_supports`` (those of the solve) name the singular
+    ends of held edges (:func:`singular_features`)."""
     from mechverify.fea.plate_stress import governing_stress
 
     plate = model.plate
@@ -364,7 +389,8 @@ def check_plate_stress_fea(model: pl.PlateModel, res: FieldResults, *, component
                 "Sy": sy, "E": plate.material.require("E").to("GPa"), "nu": plate.material.require("nu")},
         substituted=_vm_substituted(g.membrane, g.bending, mx.value),
         notes=tuple(all_notes),
-        warnings=(*model.warnings(), *_singular_warning(model, res, node), *res.warnings, *warnings),
+        warnings=(*model.warnings(), *_singular_warning(model, res, node, in_plane_supports), *res.warnings,
+                  *warnings),
         load_case=load_case,
         details={"location": Q(xy, "m").to("mm"), "node": node, "face": g.face,
                  "membrane_stress": Q(g.membrane, "Pa").to("MPa"), "bending_stress": Q(g.bending, "Pa").to("MPa"),
