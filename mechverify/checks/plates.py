@@ -32,7 +32,9 @@ if TYPE_CHECKING:  # annotations only: importing the checks does not import the 
 FEA_SOURCE = (f"Kirchhoff plate bending, Morley triangles ({ref('morley1971')}; "
               f"{ref('timoshenko_woinowsky', 'ch. 4')}); verified against {ref('roark8', 'Tables 11.2 and 11.4')}")
 VM_SOURCE = (f"surface stresses sigma = N / t +- 6 M / t^2, membrane + bending "
-             f"({ref('timoshenko_woinowsky', 'Eq. (101)')}); von Mises criterion, {ref('shigley10', 'Eq. (5-13)')}")
+             f"({ref('timoshenko_woinowsky', 'Eq. (101)')}); von Mises criterion, {ref('shigley10', 'Eq. (5-13)')}; "
+             f"membrane stress by plane-stress FEA on the plate mesh, verified against {ref('roark8', 'Table 17.1')} "
+             "(hole in tension)")
 
 
 # ------------------------------------------------------------------------------------------------ Roark
