@@ -168,7 +168,9 @@ def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
                 continue
             except MechverifyError as exc:
                 raise type(exc)(f"{path}: {exc}") from None
-            out.append(feac.check_buckling_load_factor(res, component=c.name, load_case=case))
+            r = feac.check_buckling_load_factor(res, component=c.name, load_case=case)
+            bound = [n for n in res.notes if n.startswith("LOWER BOUND")]  # fea.plate_buckling._lower_bound
+            out.append(dataclasses.replace(r, notes=(*bound, *r.notes)) if bound else r)
     return out
 
 
