@@ -49,3 +49,28 @@ def test_the_lifts_load_offset_keeps_one_constant():
     assert [op for op, _ in e._run] == ["const", "name", "op"]
     assert e._run[0][1].to("N*mm").magnitude == pytest.approx(144_000.0, rel=1e-15)
     assert e == _unfolded(e)  # (equality and hash ignore the folded program)
+
+
+@pytest.mark.parametrize("text", ["14.351286127411761 kg", "0.14968018499747365 m/s^2", "540 rpm", "5", "1e3 mm",
+                                  ".5 N*m", "24 mN*m", "3 kg·m^2", "2 g", "7 N/mm^2", "1.5e-3 m**2", "5 foo"])
+def test_a_single_literal_skips_pythons_parser_with_the_same_program(text, monkeypatch):
+    """A number with its unit (a study's drawn value: a new string every sample) becomes the one-constant program
+    the parser's walk makes, without ast.parse; the same Expression (or the same error) as the full path."""
+    from mechverify.design import expressions as ex
+
+    fast = ex._parse_or_error.__wrapped__(text)
+
+    class _NoShortcut:
+        def match(self, s):
+            return None
+
+        def __getattr__(self, name):
+            return getattr(real, name)
+
+    real = ex._LITERAL
+    monkeypatch.setattr(ex, "_LITERAL", _NoShortcut())
+    slow = ex._parse_or_error.__wrapped__(text)
+    if isinstance(fast, Exception):
+        assert str(fast) == str(slow)
+    else:
+        assert fast == slow and repr(fast._code) == repr(slow._code) and fast._run == slow._run == ()

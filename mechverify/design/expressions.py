@@ -299,6 +299,9 @@ def _parse(text: str) -> Expression:
         raise ExpressionError("empty expression")
     if "\n" in source or "\r" in source or "\\" in source or "#" in source or ";" in source:
         raise ExpressionError(f"{source!r}: line breaks, backslashes, ';' and '#' are not allowed")
+    whole = _LITERAL.match(source)  # one number with its unit (a study's drawn value): the program the walk below
+    if whole is not None and whole.end() == len(source):  # would make, without Python's parser
+        return Expression(source, frozenset(), (("const", _literal_value(whole.group(1), whole.group(2), source)),))
     literals: list[Any] = []
 
     def sub(m: re.Match[str]) -> str:
