@@ -8,7 +8,10 @@ sample (a grillage) that changes only its load, with and without the reused fact
 process pool (one worker per core) and the same study on a Dask ``LocalCluster`` with as many
 single-threaded worker processes. Dask overhead per sample = (t_dask - t_pool) / n. Also the cost
 of a unit conversion by string (``q.to("kN")``) against a parsed unit, the share the issue names.
-Target (issue 19): >= 200 samples/s per core. On a shared machine the wall-clock rates depend on the
+The draws of a Monte Carlo study (the optimised Latin hypercube, in the calling process before any worker
+starts: mechverify/studies/lhs.py against SciPy's own, the same array), the garbage collector's CPU and the Python
+calls per Monte Carlo sample (a count the load does not change). Target (issue 19): >= 200 samples/s per core.
+On a shared machine the wall-clock rates depend on the
 load; the CPU seconds per sample (this process's for the serial runs, the reaped worker processes'
 for the pool and the cluster) do not, and are printed too.
 """
@@ -161,6 +164,55 @@ def _frame_rows(samples: int = 7) -> dict:
             "frame_solve_cpu_ms": cached * 1e3, "frame_solve_uncached_cpu_ms": uncached * 1e3}
 
 
+def _gc_and_calls(f, n: int) -> tuple[float, float]:
+    """CPU seconds the garbage collector spends per call of ``f`` (``gc.callbacks``), and the Python function calls
+    per call (cProfile: a count the machine's load does not change)."""
+    import cProfile
+    import gc
+    import pstats
+
+    spent, start = [0.0], [0.0]
+
+    def cb(phase: str, info: dict) -> None:
+        if phase == "start":
+            start[0] = time.process_time()
+        else:
+            spent[0] += time.process_time() - start[0]
+
+    gc.callbacks.append(cb)
+    try:
+        for _ in range(n):
+            f()
+    finally:
+        gc.callbacks.remove(cb)
+    prof = cProfile.Profile()
+    prof.enable()
+    for _ in range(n):
+        f()
+    prof.disable()
+    return spent[0] / n, pstats.Stats(prof).total_calls / n
+
+
+def _lhs_rows(n: int) -> dict:
+    """CPU seconds of a Monte Carlo study's draws (the optimised Latin hypercube, done in the calling process before
+    any worker starts) for ``n`` and 1000 samples: mechverify.studies.lhs against SciPy's own random-cd (the same
+    array, bit for bit)."""
+    from scipy.stats import qmc
+
+    from mechverify.studies.lhs import optimised_lhs
+
+    out = {}
+    for k in sorted({n, 1000}):
+        t0 = time.process_time()
+        ours = optimised_lhs(len(VARY), k, 1)
+        t1 = time.process_time()
+        theirs = qmc.LatinHypercube(len(VARY), seed=1, optimization="random-cd").random(k)
+        t2 = time.process_time()
+        assert ours.tobytes() == theirs.tobytes()
+        out[f"lhs_{k}_cpu_s"], out[f"lhs_{k}_scipy_cpu_s"] = t1 - t0, t2 - t1
+    return out
+
+
 def main(argv: list[str]) -> dict:
     from mechverify.design import load
     from mechverify.studies import Study
@@ -183,6 +235,16 @@ def main(argv: list[str]) -> dict:
     mc = lambda: d.with_overrides(next(mc_iter)).verify()  # noqa: E731
     mc_cpu = min(_cpu_per_call(mc, 40) for _ in range(5))
     override_cpu = min(_cpu_per_call(lambda: d.with_overrides(mc_ovs[0]), 40) for _ in range(5))
+    # what a study's sample costs: every draw a new value string (the 40 draws above repeat, so their strings are
+    # parsed once); best of three passes over 200 distinct draws each
+    fresh_cpu = float("inf")
+    for k in range(3):
+        f = Study(LIFT, vary=VARY, samples=200, seed=100 + k)
+        fresh_ovs = iter([f.overrides(x) for x in f.inputs()])
+        fresh_cpu = min(fresh_cpu, _cpu_per_call(lambda it=fresh_ovs: d.with_overrides(next(it)).verify(), 200))
+    gc_s, calls = _gc_and_calls(mc, 40)
+    load_start = _load()
+    lhs = _lhs_rows(n)
     plate = _plate_rows()
     frame = _frame_rows()
     q, unit = Q(1234.0, "N"), ureg.Unit("kN")
@@ -191,16 +253,20 @@ def main(argv: list[str]) -> dict:
 
     study = Study(LIFT, vary=VARY, samples=n, seed=1)
     Study(LIFT, vary=VARY, samples=2 * cores, seed=1).run(workers=cores)  # warm the OS caches
-    c0, t0 = _children_cpu(), time.perf_counter()
+    c0, t0, m0 = _children_cpu(), time.perf_counter(), time.process_time()
     pool = study.run(workers=cores)
     t_pool, cpu_pool = time.perf_counter() - t0, _children_cpu() - c0
+    main_pool = time.process_time() - m0  # this process: draws, batches, collecting, statistics
     row = {"samples": n, "cores": cores, "warm_verify_ms": warm * 1e3, "sample_ms": sample * 1e3,
            "serial_samples_per_s": 1 / sample,
            "sample_cpu_ms": sample_cpu * 1e3, "samples_per_cpu_s": 1 / sample_cpu,
            "mc_sample_cpu_ms": mc_cpu * 1e3, "mc_samples_per_cpu_s": 1 / mc_cpu,
-           "mc_override_cpu_ms": override_cpu * 1e3, **plate, **frame,
-           "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_s": t_pool,
+           "mc_override_cpu_ms": override_cpu * 1e3, "mc_gc_cpu_ms": gc_s * 1e3, "mc_python_calls": calls,
+           "mc_fresh_sample_cpu_ms": fresh_cpu * 1e3, "mc_fresh_samples_per_cpu_s": 1 / fresh_cpu,
+           **lhs, **plate, **frame,
+           "pool_cpu_ms_per_sample": cpu_pool / n * 1e3, "pool_main_process_cpu_s": main_pool, "pool_s": t_pool,
            "pool_samples_per_s_per_core": n / t_pool / cores, "load_average": _load(),
+           "load_average_start": load_start,
            "to_string_unit_us": to_str * 1e6, "to_parsed_unit_us": to_unit * 1e6, "target_per_core": 200}
     try:
         from distributed import LocalCluster
@@ -231,7 +297,13 @@ def main(argv: list[str]) -> dict:
           f"= {1 / sample:.0f} samples/s on one core (target 200)")
     print(f"  CPU per sample: {sample_cpu * 1e3:.1f} ms in this process = {1 / sample_cpu:.0f} samples per CPU-second")
     print(f"  Monte Carlo sample (3 inputs drawn): {mc_cpu * 1e3:.1f} ms CPU = {1 / mc_cpu:.0f} samples per "
-          f"CPU-second (with_overrides alone {override_cpu * 1e3:.1f} ms)")
+          f"CPU-second (with_overrides alone {override_cpu * 1e3:.1f} ms; garbage collector {gc_s * 1e3:.2f} ms; "
+          f"{calls:.0f} Python calls)")
+    print(f"  the same with a new draw every sample (as in a study: new value strings): {fresh_cpu * 1e3:.1f} ms CPU "
+          f"= {1 / fresh_cpu:.0f} samples per CPU-second")
+    print(f"draws (optimised LHS, this process): {n} samples {lhs[f'lhs_{n}_cpu_s']:.3f} s CPU (SciPy's own "
+          f"{lhs[f'lhs_{n}_scipy_cpu_s']:.3f} s), 1000 samples {lhs['lhs_1000_cpu_s']:.3f} s "
+          f"({lhs['lhs_1000_scipy_cpu_s']:.3f} s)")
     print(f"plate FEA study over a pressure ({plate['plate_dofs']} DOF): {plate['plate_sample_cpu_ms']:.1f} ms CPU per "
           f"sample with the factorisation reused, {plate['plate_sample_uncached_cpu_ms']:.1f} ms without "
           f"({plate['plate_builds']} build for {plate['plate_samples']} samples)")
@@ -239,7 +311,8 @@ def main(argv: list[str]) -> dict:
           f"with the stiffness and factorisation reused, {frame['frame_solve_uncached_cpu_ms']:.1f} ms without "
           f"({frame['frame_builds']} build for {frame['frame_samples']} solves)")
     print(f"process pool, {cores} workers, {n} samples: {t_pool:.2f} s = {row['pool_samples_per_s_per_core']:.1f} "
-          f"samples/s per core (wall; load average {_load():.1f}); worker CPU {cpu_pool / n * 1e3:.1f} ms per sample")
+          f"samples/s per core (wall; load average {_load():.1f}); worker CPU {cpu_pool / n * 1e3:.1f} ms per sample, "
+          f"main process {main_pool:.2f} s CPU")
     if "dask_s" in row:
         print(f"Dask LocalCluster, {cores} workers: {row['dask_s']:.2f} s = {row['dask_samples_per_s_per_core']:.1f} "
               f"samples/s per core; overhead {row['dask_overhead_ms_per_sample']:+.2f} ms per sample against the "
