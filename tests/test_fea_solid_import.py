@@ -68,3 +68,86 @@ def test_stl_faces_are_named_and_loadable(tmp_path):
     assert planes == {(0, 0.0), (0, 40.0), (1, 0.0), (1, 20.0), (2, 0.0), (2, 10.0)}
     model = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("face1")),))
     assert model.facets(Named("surface")).nodes.size > 0
+
+
+def _two_boxes_step(tmp_path: Path, gap_mm: float = 0.0) -> Path:
+    """Two 150 x 10 x 10 mm boxes end to end along x (a CAD assembly exported as one STEP file, not fused), written
+    by gmsh/OpenCASCADE; ``gap_mm`` apart."""
+    gmsh = pytest.importorskip("gmsh")
+    from mechverify.fea.mesh import initialize_gmsh
+
+    path = tmp_path / "two.step"
+    initialize_gmsh(gmsh)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("two")
+        gmsh.model.occ.addBox(0, 0, 0, 150, 10, 10)
+        gmsh.model.occ.addBox(150 + gap_mm, 0, 0, 150, 10, 10)
+        gmsh.model.occ.synchronize()
+        gmsh.write(str(path))
+    finally:
+        gmsh.finalize()
+    return path
+
+
+def test_touching_step_solids_are_bonded(tmp_path):
+    """Review 3 finding 11: a STEP file with two touching boxes (300 x 10 x 10 mm together), clamped at x = 0, 100 N
+    down at x = 300 mm. Before: meshed apart, the outer box floated ("equilibrium not met"). Bonded, it is the one
+    cantilever of test_cad_stl_cantilever_matches_beam_theory: tip P L^3/(3 E I) = 5.40 mm (hand), within 3 %."""
+    m = mesh.from_step(_two_boxes_step(tmp_path), "5 mm")
+    assert m.notes and "bonded" in m.notes[0] and "2 solids" in m.notes[0]
+    # the face ids stay the file's (face8 is the second box's end at x = 300 mm, as gmsh numbers the STEP file)
+    assert np.allclose(m.mesh.p[0, np.unique(m.named["face8"])], 0.3) and np.allclose(m.mesh.p[0, np.unique(m.named["face1"])], 0)
+    model = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Named("face1")),),
+                             loads=(Force(Named("face8"), ("0 N", "0 N", "-100 N")),))
+    assert int(model.bodies.max()) == 0  # one body: the common face is shared
+    res = model.solve()
+    assert res.max_displacement.value.m_as("m") == pytest.approx(100 * 0.3**3 / (3 * E_STEEL * 0.01**4 / 12), rel=0.03)
+
+
+def test_a_body_without_support_is_named(tmp_path):
+    """Two boxes 1 mm apart stay two bodies: the one at x = 151..301 mm, which no support reaches, is named with its
+    faces and extent (at the key `supports` in a design file), for statics and for modal analysis."""
+    from mechverify.errors import ModelError
+    from mechverify.fea.modal import modal
+
+    m = mesh.from_step(_two_boxes_step(tmp_path, gap_mm=1.0), "5 mm")
+    model = solid.SolidModel(m, "Structural Steel", supports=(Fixed(Plane(x="0 mm")),),
+                             loads=(Force(Plane(x="301 mm"), ("0 N", "0 N", "-100 N")),))
+    assert int(model.bodies.max()) == 1
+    pattern = (r"not fully supported: the mesh is 2 separate bodies .*body 2 \(faces face7, .*face12, from "
+               r"\(151, 0, 0\) to \(301, 10, 10\) mm\) touches no support")
+    with pytest.raises(ModelError, match=pattern):
+        model.solve()
+    with pytest.raises(ModelError, match=pattern):
+        modal(model, 3)
+    # held at one point only, the second body may still turn: the free motion is named for it
+    from mechverify.fea.loads import Restraint
+
+    part = solid.SolidModel(m, "Structural Steel", supports=(
+        Fixed(Plane(x="0 mm")), Restraint(Plane(x="301 mm"), x=True)))
+    with pytest.raises(ModelError, match=r"body 2 .*: the supports leave free .*translation along y"):
+        part.held_dofs()
+
+
+def test_design_file_names_the_floating_body(tmp_path):
+    """The same two boxes 1 mm apart from a design file: one error at `supports`, naming body 2."""
+    import mechverify
+    from mechverify.errors import MechverifyError
+
+    _two_boxes_step(tmp_path, gap_mm=1.0)
+    (tmp_path / "d.toml").write_text('''[design]
+name = "two"
+[components.beam]
+type = "solid_fea"
+step = "two.step"
+material = "Structural Steel"
+mesh_size = "5 mm"
+supports = [{ face = 1 }]
+[load_cases.tip.beam]
+forces = [{ face = 8, force = "0, 0, -100" }]
+''')
+    with pytest.raises(MechverifyError, match=r"supports: the model is not fully supported: the mesh is 2 separate "
+                                              r"bodies .*body 2 \(faces face7, .*touches no support"):
+        mechverify.load(tmp_path / "d.toml").verify()
+

@@ -13,7 +13,7 @@ knows is kept in ``SolidMesh.measures`` for the region reports.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
 from typing import Any
@@ -83,38 +83,11 @@ class SolidMesh:
     measures: Mapping[str, float] = field(default_factory=dict)  # name -> CAD area [m²] / length [m]
     curved: np.ndarray | None = None  # [3, n] P2 nodes on the CAD geometry (gmsh second order), else None
     volumes: tuple[str, ...] = ()  # names of the volume groups of an imported mesh file (not regions)
-    slivers_removed: int = 0  # slivers the gmsh reader repaired (:func:`from_gmsh_model`)
+    notes: tuple[str, ...] = ()  # what the import did to the geometry (touching solids bonded), for the reports
 
     @cached_property
     def basis(self) -> Basis:
         return Basis(self.mesh, ElementTetP2(), intorder=1)
-
-    @cached_property
-    def quality(self) -> np.ndarray:
-        """Radius ratio of each tetrahedron (:func:`mechverify.fea.meshquality.tet_quality`; 1 regular, 0 flat)."""
-        from mechverify.fea.meshquality import tet_quality
-
-        return tet_quality(self.mesh.p, self.mesh.t)
-
-    @property
-    def worst_quality(self) -> float:
-        """The smallest radius ratio of the mesh's tetrahedra."""
-        return float(self.quality.min())
-
-    def sliver_warning(self) -> str | None:
-        """A warning naming the slivers (radius ratio below :data:`~mechverify.fea.meshquality.SLIVER_QUALITY`) and
-        where the worst is, or None when there are none."""
-        from mechverify.fea.meshquality import SLIVER_QUALITY
-
-        bad = np.flatnonzero(self.quality < SLIVER_QUALITY)
-        if bad.size == 0:
-            return None
-        worst = int(bad[np.argmin(self.quality[bad])])
-        at = tuple(round(float(c) * 1e3, 3) for c in self.mesh.p[:, self.mesh.t[:, worst]].mean(axis=1))
-        what = "sliver tetrahedra" if bad.size > 1 else "sliver tetrahedron"
-        return (f"the mesh has {bad.size} {what} (radius ratio below {SLIVER_QUALITY}; the worst "
-                f"{self.quality[worst]:.2g} at {at} mm): the stress in them is unreliable and they slow the iterative "
-                "solver; remesh (gmsh meshes made by mechverify are repaired when they are read)")
 
     @property
     def points(self) -> np.ndarray:
@@ -221,15 +194,8 @@ def box(size: Any, divisions: tuple[int, int, int], origin: Any = ("0 m", "0 m",
     return SolidMesh(m, named)
 
 
-def from_gmsh_model(gmsh: Any, repair: bool = True) -> SolidMesh:
-    """Read the tetrahedra and named physical surfaces of the current gmsh model (coordinates in metres).
-
-    ``repair`` (default): slivers (radius ratio below :data:`~mechverify.fea.meshquality.SLIVER_QUALITY`) are
-    removed by local retriangulation (:func:`~mechverify.fea.meshquality.remove_slivers`; the boundary, the named
-    regions and the volume stay as gmsh made them; a few interior vertices may be added). gmsh's thin parts have
-    them where the two faces get nearly the same triangulation, and its optimisers leave them (issue 23: one sliver
-    held CG at 203 iterations instead of 42 on the benchmark's 6 mm plate). Every gmsh path of this module (the
-    builders, STEP and STL import) reads its mesh here."""
+def from_gmsh_model(gmsh: Any) -> SolidMesh:
+    """Read the tetrahedra and named physical surfaces of the current gmsh model (coordinates in metres)."""
     tags, coords, _ = gmsh.model.mesh.getNodes()
     coords = coords.reshape(-1, 3).T
     index = np.full(int(tags.max()) + 1, -1, dtype=np.int64)
@@ -249,29 +215,12 @@ def from_gmsh_model(gmsh: Any, repair: bool = True) -> SolidMesh:
     p = coords[:, used]
     t = remap[t]
     named, measures = physical_groups(gmsh, lambda k: remap[index[k]], (2, 1, 0))
-    removed = 0
-    if repair:
-        from mechverify.fea.meshquality import remove_slivers
-
-        fixed = remove_slivers(p, t, protect=named_edges(named))
-        p, t, removed = fixed.p, fixed.t, fixed.removed
     m = MeshTet(*contiguous(p, orient(p, t)))
     curved = None
-    if mids is not None:  # edges made by the repair are interior: straight, their mid-side node halfway
+    if mids is not None:
         curved = curved_nodes(m, coords, used, index[ntags.astype(np.int64)].reshape(-1, 4), mids,
-                              gmsh_edge_pairs(gmsh, 11), straight=removed > 0)
-    return SolidMesh(m, named, measures, curved, slivers_removed=removed)
-
-
-def named_edges(named: Mapping[str, np.ndarray]) -> set[tuple[int, int]]:
-    """The vertex pairs (low, high) of the edges of named surfaces (facet triples) and curves (pairs)."""
-    out: set[tuple[int, int]] = set()
-    for v in named.values():
-        if v.shape[1] in (2, 3):
-            pairs = v[:, [0, 1]] if v.shape[1] == 2 else np.vstack([v[:, [0, 1]], v[:, [1, 2]], v[:, [0, 2]]])
-            pairs = np.sort(pairs, axis=1)
-            out.update(zip(pairs[:, 0].tolist(), pairs[:, 1].tolist()))
-    return out
+                              gmsh_edge_pairs(gmsh, 11))
+    return SolidMesh(m, named, measures, curved)
 
 
 def gmsh_edge_pairs(gmsh: Any, etype: int) -> np.ndarray:
@@ -291,29 +240,22 @@ def gmsh_edge_pairs(gmsh: Any, etype: int) -> np.ndarray:
 
 
 def curved_nodes(m: MeshTet | Any, coords: np.ndarray, used: np.ndarray, corners: np.ndarray,
-                 mids: np.ndarray, pairs: np.ndarray, straight: bool = False) -> np.ndarray:
+                 mids: np.ndarray, pairs: np.ndarray) -> np.ndarray:
     """P2 node coordinates ``[d, n]`` of ``m`` (vertices, then scikit-fem's edges - for triangles its
     facets) with each edge's node where gmsh's second-order mesh put it. ``corners[e, nv]`` and
     ``mids[e, m]`` are gmsh's element nodes (indices into ``coords``), ``pairs`` their corner pairs
-    (:func:`gmsh_edge_pairs`); ``used`` the gmsh node of each of ``m``'s vertices. ``straight``: an edge gmsh does
-    not have (made by a sliver repair, or ending at a vertex it added beyond ``used``) gets its midpoint; else such
-    an edge is a :class:`ModelError`."""
+    (:func:`gmsh_edge_pairs`)."""
     a, b = corners[:, pairs[:, 0]], corners[:, pairs[:, 1]]
     n = coords.shape[1]
     key, first = np.unique((np.minimum(a, b) * n + np.maximum(a, b)).ravel(), return_index=True)
     edges = m.edges if isinstance(m, MeshTet) else m.facets
-    known = np.all(edges < used.size, axis=0)
-    e = np.sort(used[np.where(known, edges, 0)], axis=0)
+    e = np.sort(used[edges], axis=0)
     want = e[0] * n + e[1]
     pos = np.minimum(np.searchsorted(key, want), key.size - 1)
-    found = known & (key[pos] == want)
-    if not np.all(found) and not straight:
+    if not np.array_equal(key[pos], want):
         raise ModelError("gmsh's second-order mesh has edges without a mid-side node")
     d = m.p.shape[0]
-    mid = coords[:d, mids.ravel()[first][pos]]
-    if not np.all(found):
-        mid[:, ~found] = (m.p[:, edges[0, ~found]] + m.p[:, edges[1, ~found]]) / 2
-    return np.hstack([m.p, mid])
+    return np.hstack([m.p, coords[:d, mids.ravel()[first][pos]]])
 
 
 #: Vertices of the linear element of each dimension (point, line, triangle).
@@ -511,11 +453,47 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: QuantityLike = "5 mm
         gmsh.finalize()
 
 
+def bond_solids(gmsh: Any, vols: list[int]) -> tuple[list[int], dict[int, list[int]]]:
+    """Fragment the solids ``vols`` of the current OpenCASCADE model (touching solids then share their common faces)
+    and keep the face ids the file had: returns the volumes and, per original face id, the gmsh surfaces that are
+    (parts of) it now. A surface is matched to the original faces of the same type whose bounding box holds its
+    own, the tightest first (a face two solids shared gets both ids); one no original face holds (an intersection
+    of overlapping solids) gets a new id after the largest."""
+    occ = gmsh.model.occ
+    scale = max(abs(c) for c in occ.getBoundingBox(3, vols[0])) or 1.0
+    before = {tag: (gmsh.model.getType(2, tag), np.asarray(occ.getBoundingBox(2, tag)))
+              for _, tag in gmsh.model.getEntities(2)}
+    occ.fragment([(3, vols[0])], [(3, v) for v in vols[1:]])
+    occ.synchronize()
+    tol = 1e-7 * scale
+    faces: dict[int, list[int]] = {}
+    extra = max(before, default=0)
+    for _, tag in gmsh.model.getEntities(2):
+        kind, bb = gmsh.model.getType(2, tag), np.asarray(occ.getBoundingBox(2, tag))
+        fits = [(float(np.sum(b[3:] - b[:3])), k) for k, (t, b) in before.items()
+                if t == kind and np.all(b[:3] <= bb[:3] + tol) and np.all(bb[3:] <= b[3:] + tol)]
+        if not fits:
+            extra += 1
+            faces[extra] = [tag]
+            continue
+        tight = min(f for f, _ in fits)
+        for f, k in fits:
+            if f <= tight + tol:
+                faces.setdefault(k, []).append(tag)
+    return [t for _, t in gmsh.model.getEntities(3)], faces
+
+
 def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curved: bool = True) -> SolidMesh:
     """Tetrahedral mesh of the solid(s) in a STEP file (gmsh/OpenCASCADE); ``unit`` is the unit the
     file's lengths are in when it declares none (CAD exports are usually mm). Each CAD face becomes a
     named region ``face<k>`` (gmsh's face tag). ``curved`` (default) puts the mid-side nodes on the CAD
-    faces where any face is not a plane (isoparametric elements)."""
+    faces where any face is not a plane (isoparametric elements).
+
+    Several solids (a CAD assembly exported as one file) are **bonded** where they touch: OpenCASCADE's fragment
+    (``occ.fragment``) makes their common faces one, so the mesh is conforming there and the parts act as glued
+    (review 3 finding 11: meshed apart, an unsupported part floated; "equilibrium not met" or rigid-body modes
+    reported as natural frequencies). ``SolidMesh.notes`` says so; a solid that touches none of the others stays a
+    separate body, which :class:`~mechverify.fea.solid.SolidModel` refuses unless it is supported."""
     gmsh = import_gmsh()
     path = Path(path)
     if not path.exists():
@@ -532,13 +510,22 @@ def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curve
         vols = [t for d, t in ents if d == 3]
         if not vols:
             raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
-        for _, tag in gmsh.model.getEntities(2):
-            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, [tag]), f"face{tag}")
+        notes: tuple[str, ...] = ()
+        faces = {tag: [tag] for _, tag in gmsh.model.getEntities(2)}  # face id -> gmsh surfaces
+        if len(vols) > 1:  # an assembly: bond the solids where they touch (shared faces, a conforming mesh)
+            solids = len(vols)
+            vols, faces = bond_solids(gmsh, vols)
+            notes = (f"{path.name} holds {solids} solids: they are bonded where "
+                     "they touch (OpenCASCADE fragment: common faces shared, one conforming mesh; a glued assembly, "
+                     "no contact or sliding)",)
+        for k, tags in sorted(faces.items()):
+            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), f"face{k}")
         gmsh.model.addPhysicalGroup(3, vols)
         gmsh.model.mesh.generate(3)
         if curved and any(gmsh.model.getType(2, tag) != "Plane" for _, tag in gmsh.model.getEntities(2)):
             second_order(gmsh)
-        return from_gmsh_model(gmsh)
+        out = from_gmsh_model(gmsh)
+        return replace(out, notes=notes) if notes else out
     finally:
         restore_step_unit(gmsh)  # the unit is OpenCASCADE's, kept past finalize: later sessions read/wrote metres
         gmsh.finalize()
