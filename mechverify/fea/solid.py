@@ -28,7 +28,7 @@ References
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Any
 
@@ -490,6 +490,7 @@ class SolidModel:
                 handed, K = [K], asm.held_rows(K, held)
                 u, info = solve(handed.pop(), f, held, self.nodes, method=method, progress=step, prolongation=P)
             timings["solve"] = info.seconds
+            info = replace(info, worst_quality=self.mesh.worst_quality)
             t1 = time.perf_counter()
             step("recovering stresses")
             if self.is_curved:
@@ -505,7 +506,8 @@ class SolidModel:
             kind="solid", points=self.nodes.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
             surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
-            warnings=(*held_load_warnings(on_held), *(r.warning for r in reports if r.warning)), recovery=recovery,
+            warnings=(*held_load_warnings(on_held), *(r.warning for r in reports if r.warning),
+                      *filter(None, [self.mesh.sliver_warning()])), recovery=recovery,
             elements=b.element_dofs.T.copy(), ip_points=rec.ip_points, ip_sigma=_tensors(rec.ip_values),
             element_error=rec.element_error, error_estimate=rec.error_estimate)
 
