@@ -159,7 +159,8 @@ def _stress(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult:
     from mechverify.fea.study import REFINE, two_mesh_stress
 
     # the second mesh's memory is estimated before meshing like the first one's
-    fine = SolidModel(_make_mesh({**c.p, "mesh_size": c.p["mesh_size"] / REFINE}, c.unit), c.p["material"],
+    fine_p = {**c.p, "mesh_size": c.p["mesh_size"] / REFINE, "_fine_mesh": True}
+    fine = SolidModel(_make_mesh(fine_p, c.unit), c.p["material"],
                       supports=c.supports, loads=_loads(loads, c.unit, f"load_cases.{ctx.load_case}.{c.name}", _g(ctx)))
     with c.regions():
         governing, notes, warns = two_mesh_stress(res, fine, c.p["mesh_size"], c.p.get("supports"),

@@ -218,16 +218,29 @@ def _native_output() -> Iterator[dict[str, Any]]:
 
 
 def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
-    from mechverify.fea import mesh, study
+    """The mesh of ``step``/``stl``/``box``: its memory estimated before meshing (with the part's surface area and,
+    with ``convergence_check``, the finer second mesh) and checked again with the unknowns of the mesh made, before
+    anything is assembled (review 3 finding 10)."""
+    from mechverify.fea import study
 
     h = p["mesh_size"].m_as("m")
+    refine = study.REFINE if p.get("convergence_check") and not p.get("_fine_mesh") else None
+    m = _mesh_of(p, unit, h, refine)
+    study.require_unknowns(m.n_dofs, h, f"components.{p['_name']}.mesh_size", refine=refine)
+    return m
+
+
+def _mesh_of(p: Mapping[str, Any], unit: str, h: float, refine: float | None) -> Any:
+    from mechverify.fea import mesh, study
+
     what = f"components.{p['_name']}.mesh_size"
     if "step" in p:
         from mechverify.errors import MechverifyError
 
         with _native_output() as said:
             try:
-                study.require_memory(study.step_volume(p["step"]), h, what)
+                volume, area = study.step_size(p["step"])
+                study.require_memory(volume, h, what, area=area, refine=refine)
                 return mesh.from_step(p["step"], p["mesh_size"], unit=unit)
             except MechverifyError as exc:
                 failed = said["failed"] = exc
@@ -236,12 +249,14 @@ def _make_mesh(p: Mapping[str, Any], unit: str) -> Any:
             raise failed
         raise type(failed)(f"{failed}; OpenCASCADE said: {' '.join(reason)[:300]}") from None
     if "stl" in p:
-        study.require_memory(mesh.stl_properties(p["stl"], unit).volume.m_as("m**3"), h, what)
+        props = mesh.stl_properties(p["stl"], unit)
+        study.require_memory(props.volume.m_as("m**3"), h, what, area=props.area.m_as("m**2"), refine=refine)
         return mesh.from_stl(p["stl"], p["mesh_size"], unit=unit)
     size = _vec(p["box"], unit, "length", "box")
     if min(size) <= 0:
         raise InputError(f"box: three positive lengths, got {p['box']!r}")
-    study.require_memory(math.prod(size), h, what)
+    area = 2 * (size[0] * size[1] + size[1] * size[2] + size[0] * size[2])
+    study.require_memory(math.prod(size), h, what, area=area, refine=refine)
     holes = []
     for i, t in enumerate(p.get("holes", []) or []):
         if not isinstance(t, Mapping) or not {"center", "diameter"} <= set(t):
