@@ -75,7 +75,12 @@ class SolidStudy:
 
     def case_model(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
         """The model under one load case; a region name the mesh lacks is an error at its key (a STEP/STL file's
-        names are known after meshing), the same for every analysis of the case (review 3 finding 6)."""
+        names are known after meshing), the same for every analysis of the case (review 3 finding 6). A solid
+        without supports (free-free) takes no load case: an error at ``supports``."""
+        if not self.supports:
+            raise InputError(f"supports: none given (a free-free solid): only natural_frequency can be checked; the "
+                             f"load case {case!r} loads {self.name}, which needs supports for stress, deflection, "
+                             "buckling and fatigue")
         model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
         sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
         return model
@@ -90,7 +95,18 @@ class SolidStudy:
                 if self._shared is None:
                     self._shared = SharedSolve.of(model)
                 self.solved[case] = model.solve(factorization=self._shared)
+            self.export(self.solved[case], case)
         return self.solved[case]
+
+    def export(self, res: Any, name: str) -> None:
+        """``res`` (field or modal results) written to ``<vtu>/<component>_<name>.vtu`` when the design file gives the
+        folder ``vtu`` (made if missing; ParaView reads it)."""
+        folder = self.p.get("_vtu")
+        if folder is not None:
+            from pathlib import Path
+
+            Path(folder).mkdir(parents=True, exist_ok=True)
+            res.to_vtu(Path(folder) / f"{self.name}_{name}.vtu")
 
     @contextlib.contextmanager
     def regions(self, loads: Mapping[str, Any] | None = None) -> Iterator[None]:
@@ -144,6 +160,13 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         named_regions(p.get("supports"), names, "supports")
     if imported is not None:
         named_regions(p.get("supports"), imported.named, "supports")
+    if p.get("vtu"):
+        from pathlib import Path
+
+        design = ctx.get("path") if isinstance(ctx, Mapping) else None
+        folder = Path(p["vtu"])
+        p["_vtu"] = str(folder if folder.is_absolute() else (Path(design).resolve().parent if design else Path.cwd())
+                        / folder)
     return SolidStudy(p["_name"], p, p["unit"], _supports(p.get("supports"), p["unit"]), _mesh=imported)
 
 
@@ -195,8 +218,11 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
 
     with c.regions():
         model = c.model()
+        if not c.supports:  # free-free: the six rigid-body modes are set apart, `modes` elastic ones computed beside
+            settings = dataclasses.replace(settings, modes=settings.modes + 6)
         res = settings.solve(modal, model, hint=(
             "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"))
+    c.export(res, "modes")
     return c.noted(settings.check(res, c.name))
 
 
@@ -234,7 +260,10 @@ SOLID_FEA = REGISTRY.register(ComponentType(
               required=True),
         Field("mesh_size", "length", "element size (required with step, stl or box)"),
         Field("supports", "list", "supports: {named | face | plane = \"x = 0\" | box = [corner, corner], hold = "
-                                  "\"x, y, z\" (default all)}", required=True, item="table"),
+                                  "\"x, y, z\" (default all)}; [] for a free-free solid (natural_frequency only)",
+              required=True, item="table"),
+        Field("vtu", "str", "folder (relative to the design file; made if missing) for ParaView files: "
+                            "<component>_<load case>.vtu (displacement, stress) and <component>_modes.vtu"),
         Field("deflection_limit", "str", "limit on the largest displacement: a length or 'L/250' of span"),
         Field("span", "length", "span of an 'L/n' deflection limit"),
         Field("min_frequency", "frequency", "the first natural frequency must reach this"),

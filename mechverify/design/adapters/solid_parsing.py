@@ -166,9 +166,7 @@ def _supports(items: Any, unit: str) -> tuple[Any, ...]:
         if not comps <= {"x", "y", "z"} or not comps:
             raise InputError(f"{path}.hold: expected components such as \"x, z\", got {hold!r}")
         out.append(Fixed(region) if comps == {"x", "y", "z"} else Restraint(region, *(c in comps for c in "xyz")))
-    if not out:
-        raise InputError("supports: give at least one support ({named | face | plane | box, hold})")
-    return tuple(out)
+    return tuple(out)  # none: a free-free solid, for natural frequencies only (SolidStudy.case_model refuses loads)
 
 
 def _loads(loads: Mapping[str, Any], unit: str, path: str, g: Any) -> tuple[Any, ...]:
