@@ -71,7 +71,7 @@ def command_modules() -> list[ModuleType]:
 #: and imports only its module (``tests/test_cli_main.py`` checks this table against the modules).
 COMMANDS = {"check": "check", "study": "study", "select-motor": "select_motor", "size": "size", "diff": "diff",
             "explain": "explain", "init": "init", "schema": "schema", "materials": "catalogues",
-            "threads": "catalogues", "bearings": "catalogues", "motors": "catalogues"}
+            "threads": "catalogues", "bearings": "catalogues", "motors": "catalogues", "faces": "faces"}
 
 
 class _Version(argparse.Action):

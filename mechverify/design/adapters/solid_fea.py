@@ -82,7 +82,17 @@ class SolidStudy:
                              f"load case {case!r} loads {self.name}, which needs supports for stress, deflection, "
                              "buckling and fatigue")
         model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
-        sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
+        try:
+            sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
+        except InputError as exc:
+            if "unknown mesh region" not in str(exc) or "step" not in self.p:
+                raise
+            from pathlib import Path
+
+            from mechverify.fea.stepfaces import describe_faces
+
+            raise InputError(f"{exc}. The faces of {Path(self.p['step']).name} (`mechverify faces` lists them):\n"
+                             + "\n".join(f"    {ln}" for ln in describe_faces(self.p["step"]).splitlines())) from None
         return model
 
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
