@@ -10,12 +10,13 @@
   system by smoothed-aggregation algebraic multigrid (pyamg, rigid-body modes as near-null space). CG that then
   converges slowly gives way to the factorisation when its measured rate predicts more time than factoring.
 
-Why CG is slow on some thin parts: on the benchmark's 6 mm plate with a hole at 66k DOF CG needed 203
-iterations where the 37k and 181k meshes of the same plate needed 43 and 30. That mesh holds a near-degenerate
-sliver tetrahedron (radius-ratio quality 1e-4; the others' worst are 0.08 and 0.12), and the coarse space is not
+Why CG was slow on some thin parts: on the benchmark's 6 mm plate with a hole at 66k DOF CG needed 203
+iterations where the 37k and 181k meshes of the same plate needed 43 and 30. That mesh held a near-degenerate
+sliver tetrahedron (radius ratio 2.3e-4; the others' worst are 0.17 and 0.25), and the coarse space is not
 the cause: an exact solve of the P1 coarse level still took 172 iterations, and a coarse space of smoothed
-rigid-body modes per vertex aggregate (which represents bending) solved exactly still 88. The factorisation does
-not care (1.2 s), hence the measured switch rather than a better coarse space.
+rigid-body modes per vertex aggregate (which represents bending) solved exactly still 88. gmsh meshes are now read
+with their slivers repaired (:func:`mechverify.fea.meshquality.remove_slivers`: 42 iterations on that mesh); a mesh
+from elsewhere may still have one (the solve WARNs), and the factorisation does not care, hence the measured switch.
 
 References
 ----------
@@ -169,25 +170,19 @@ def describe_mode(v: np.ndarray, names: list[str], centroid: np.ndarray, scale: 
     if np.linalg.norm(w) < 1e-6:
         parts = [f"{names[i]}" for i in range(dim) if abs(t[i]) > 1e-6]
         return "translation along " + " + ".join(p.split()[-1] for p in parts)
+    from mechverify.fea.motions import point_mm, rotation_words
+
     if dim == 2:
         # u = t + w ez x (x - c) / scale is zero at x = c + scale * (-t_y, t_x) / w
         pole = centroid + scale * np.array([-t[1], t[0]]) / w[0]
-        pole = np.where(np.abs(pole) < 1e-9 * scale, 0.0, pole)
-        return f"rotation about z through ({pole[0] * 1e3:.4g}, {pole[1] * 1e3:.4g}) mm"
+        return f"rotation about z through {point_mm(pole, scale)} mm"  # rounded to the model's size (fea.motions)
     axis = w / np.linalg.norm(w)
     along = float(np.dot(t, axis))
     # the axis of a rigid motion passes through c + scale * (w x t)/|w|^2
     pt = centroid + scale * np.cross(w, t) / np.dot(w, w)
-    pt = np.where(np.abs(pt) < 1e-9 * scale, 0.0, pt)
-    axis = np.where(np.abs(axis) < 1e-9, 0.0, axis)
-    words = f"rotation about the axis ({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g}) through " \
-            f"({pt[0] * 1e3:.4g}, {pt[1] * 1e3:.4g}, {pt[2] * 1e3:.4g}) mm"
+    words = "rotation about " + rotation_words(axis, pt, scale)
     if abs(along) > 1e-6:
         words += " (with a slide along it)"
-    for i, ax in enumerate("xyz"):
-        if abs(abs(axis[i]) - 1) < 1e-6:
-            words = words.replace(f"the axis ({axis[0]:.3g}, {axis[1]:.3g}, {axis[2]:.3g})",
-                                  f"an axis parallel to {ax}")
     return words
 
 
