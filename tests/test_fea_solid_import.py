@@ -291,3 +291,29 @@ forces = [{ face = 2, force = "-2000, 0, -300" }]
     with pytest.raises(MechverifyError, match=r"(?s)supports\[0\]\.face: unknown mesh region 99.*mechverify faces.*"
                                               r"cylinder r 4\.25 mm along z"):
         mechverify.load(tmp_path / "d.toml").verify()
+
+
+def test_rigid_motion_words_are_rounded_to_the_model():
+    """Review 3 finding 7: the free motions' words had the null space's noise ("rotation about the line through
+    (150, -0.03794) mm along (0.000253, 1)", "an axis parallel to x through (150, 4.983, 4.984) mm"). One formatter
+    (fea.motions) for solids, frames and plates rounds to the model's size and snaps directions to the axes."""
+    from mechverify.errors import ModelError
+    from mechverify.fea.loads import Restraint
+    from mechverify.fea.motions import rotation_words
+    from mechverify.fea.plate import check_plate_supported
+
+    assert rotation_words(np.array([0.000253, 1]), np.array([0.15, -0.03794e-3]), 0.3) == "the line x = 150 mm (along y)"
+    assert rotation_words(np.array([1, 2e-5, 0]), np.array([0.15, 4.983e-3, 4.984e-3]), 0.3) == \
+        "an axis parallel to x through (150, 5, 5) mm"
+    assert rotation_words(np.array([-1, -1]), np.array([0.0, -1e-12]), 0.3) == "the line through (0, 0) mm along (0.707, 0.707)"
+    # a plate pinned at one point: the two lines through it along the axes, not an arbitrary pair
+    with pytest.raises(ModelError, match=r"rotation about the line x = 150 mm \(along y\); rotation about the line "
+                                         r"y = 150 mm \(along x\)"):
+        check_plate_supported(np.array([[0.15], [0.15]]), np.zeros((2, 0)))
+    # a bar held in x only on its end face: free to turn about the bar's axis through the section's centre
+    m = mesh.box(("300 mm", "10 mm", "10 mm"), (30, 2, 2))
+    model = solid.SolidModel(m, "Structural Steel", supports=(Restraint(Plane(x="0 mm"), x=True),),
+                             loads=(Force(Plane(x="300 mm"), ("0 N", "0 N", "-1 N")),))
+    with pytest.raises(ModelError, match=r"translation along y; translation along z; rotation about an axis parallel "
+                                         r"to x through \(150, 5, 5\) mm\."):
+        model.solve()

@@ -263,18 +263,23 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
     rank = int(np.sum(s > 1e-9 * max(s.max(), 1e-300)))
     if rank == 3:
         return
+    from mechverify.fea.motions import rotation_words
+
     motions = []
-    for v in Vt[rank:]:
+    null = Vt[rank:]
+    if null.shape[0] == 2:  # a point support: the lines through it along x and along y, not a random pair
+        picks = [np.array([null[0, k], -null[1, k]]) @ null[::-1] for k in (2, 1)]  # c = 0, then b = 0
+        if all(np.linalg.norm(q) > 1e-9 for q in picks) and abs(picks[0][1] * picks[1][2] - picks[0][2] * picks[1][1]) > 1e-12:
+            null = np.array([q / np.linalg.norm(q) for q in picks])
+    for v in null:
         a, b, c = v[0], v[1] * scale, v[2] * scale
         if np.hypot(b, c) < 1e-9 * max(abs(a), 1e-300) * 1.0 / scale:
             motions.append("translation along z (the supports hold no deflection)")
             continue
-        # rotation about the line a + b x + c y = 0
+        # rotation about the line a + b x + c y = 0 (words rounded to the plate's size: fea.motions)
         n = np.array([b, c]) / np.hypot(b, c)
         p0 = -a * n / np.hypot(b, c)
-        d = np.array([-n[1], n[0]])
-        motions.append(f"rotation about the line through ({p0[0] * 1e3:.4g}, {p0[1] * 1e3:.4g}) mm "
-                       f"along ({d[0]:.3g}, {d[1]:.3g})")
+        motions.append("rotation about " + rotation_words(np.array([-n[1], n[0]]), p0, scale))
     raise ModelError("the plate is not fully supported: the supports leave free " + "; ".join(motions)
                      + ". Add a support off that line, or clamp an edge.")
 
