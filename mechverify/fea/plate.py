@@ -269,7 +269,8 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
     null = Vt[rank:]
     if null.shape[0] == 2:  # a point support: the lines through it along x and along y, not a random pair
         picks = [np.array([null[0, k], -null[1, k]]) @ null[::-1] for k in (2, 1)]  # c = 0, then b = 0
-        if all(np.linalg.norm(q) > 1e-9 for q in picks) and abs(picks[0][1] * picks[1][2] - picks[0][2] * picks[1][1]) > 1e-12:
+        independent = abs(picks[0][1] * picks[1][2] - picks[0][2] * picks[1][1]) > 1e-12
+        if all(np.linalg.norm(q) > 1e-9 for q in picks) and independent:
             null = np.array([q / np.linalg.norm(q) for q in picks])
     for v in null:
         a, b, c = v[0], v[1] * scale, v[2] * scale
