@@ -150,6 +150,13 @@ forces = [{ face = 8, force = "0, 0, -100" }]
     with pytest.raises(MechverifyError, match=r"supports: the model is not fully supported: the mesh is 2 separate "
                                               r"bodies .*body 2 \(faces face7, .*touches no support"):
         mechverify.load(tmp_path / "d.toml").verify()
+    # free-free (modal only), the two bodies would show six more zero modes as frequencies: refused at supports
+    text = (tmp_path / "d.toml").read_text().split("[load_cases")[0]
+    (tmp_path / "f.toml").write_text(text.replace("supports = [{ face = 1 }]", 'supports = []\nmin_frequency = "50 Hz"')
+                                     + "[components.beam.checks]\nsolid_stress = false\nsolid_deflection = false\n")
+    with pytest.raises(MechverifyError, match=r"supports: a free-free solid must be one body; the mesh is 2 separate "
+                                              r"bodies, body 2 \(faces face7"):
+        mechverify.load(tmp_path / "f.toml").verify()
 
 
 def test_memory_estimate_counts_surface_refinement_and_second_mesh(tmp_path):

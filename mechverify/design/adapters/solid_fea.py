@@ -229,6 +229,10 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
     with c.regions():
         model = c.model()
         if not c.supports:  # free-free: the six rigid-body modes are set apart, `modes` elastic ones computed beside
+            n_bodies = int(model.bodies.max()) + 1
+            if n_bodies > 1:  # each separate body has six more zero modes: they would pass as frequencies
+                raise InputError(f"supports: a free-free solid must be one body; the mesh is {n_bodies} separate "
+                                 f"bodies, {model.body_description(1)} touches no other")
             settings = dataclasses.replace(settings, modes=settings.modes + 6)
         res = settings.solve(modal, model, hint=(
             "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"))
