@@ -84,7 +84,8 @@ def test_a_study_over_the_pressure_factorises_once_per_worker(cache, monkeypatch
     from mechverify.studies import Study
 
     vary = {"load_cases.q.p.pressure": "5 kPa:15 kPa:6"}
-    res = Study(copy.deepcopy(PLATE), vary=vary).run("serial")
+    # (check_inputs=False: the check for inputs that reach no check would add one probe solve, a 7th hit)
+    res = Study(copy.deepcopy(PLATE), vary=vary).run("serial", check_inputs=False)
     assert cache.builds == 1 and cache.hits == 6  # base verify builds; 6 samples re-solve
     monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)
     from mechverify.studies import execution
