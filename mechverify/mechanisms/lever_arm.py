@@ -30,6 +30,7 @@ References
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -41,7 +42,8 @@ from mechverify.errors import InputError
 from mechverify.frozen import set_fields
 from mechverify.mechanisms.errors import SingularPoseError, UnreachablePoseError
 from mechverify.mechanisms.statics import GROUND, AppliedForce, Body, Mechanism, Pin
-from mechverify.units import from_si, require_positive, to_si
+from mechverify.mechanisms.sweep import LinearSweep
+from mechverify.units import Q, from_si, require_positive, to_si
 
 _POINTS = ("O", "A", "B", "C", "D", "E", "F", "G", "H", "I")
 
@@ -236,3 +238,93 @@ def lever_arm_closed_form(arm: LeverArm, pose: LeverArmPose, load: Any) -> dict[
         "elbow": from_si(W * c * math.cos(ph), "torque"),
         "wrist": from_si(W * d * math.cos(ps), "torque"),
     }
+
+
+# ---------------------------------------------------------------- pose sweep with self-weight
+#: The arm's straight members (design-file names) -> (body, segment): one per body segment of :meth:`LeverArm.statics`.
+MEMBERS: dict[str, tuple[str, tuple[str, str]]] = {
+    "OA": ("OA", ("O", "A")), "OD": ("OD", ("O", "D")), "DE": ("DE", ("D", "E")),
+    "EAB_EA": ("EAB", ("E", "A")), "EAB_AB": ("EAB", ("A", "B")), "OF": ("OF", ("O", "F")), "FG": ("FG", ("F", "G")),
+    "GAH_AG": ("GAH", ("A", "G")), "GAH_AH": ("GAH", ("A", "H")), "HI": ("HI", ("H", "I")),
+    "IBC_BI": ("IBC", ("B", "I")), "IBC_BC": ("IBC", ("B", "C")),
+}
+#: The plane motors (the base rotation carries no gravity load).
+MOTORS = ("shoulder", "elbow", "wrist")
+
+
+def member_name(solver_key: str) -> str:
+    """Design-file name of a statics member key: ``"EAB:A-B"`` -> ``"EAB_AB"``, ``"OA"`` -> ``"OA"``."""
+    return solver_key.replace(":", "_").replace("-", "")
+
+
+def member_length(arm: LeverArm, member: str) -> pint.Quantity:
+    """Pin-centre length of a member (the same at every pose): ``OA = DE = FG = b``, ``AB = HI = c``, ``BC = d``,
+    ``OD = AE = p``, ``OF = AG = q``, ``AH = BI = r``."""
+    if member not in MEMBERS:
+        raise InputError(f"member: unknown {member!r}; the lever arm's members are {', '.join(MEMBERS)}")
+    pose = arm.forward("45 deg", "10 deg", "20 deg")
+    a, b = MEMBERS[member][1]
+    return from_si(float(np.linalg.norm(pose.plane[a] - pose.plane[b])), "length")
+
+
+def sweep_label(pose: LeverArmPose) -> str:
+    """Short pose name of a sweep: ``"varphi 0, phi 60, psi 70 deg"``."""
+    return (f"varphi {pose.shoulder.m_as('deg'):.0f}, phi {pose.elbow.m_as('deg'):.0f}, "
+            f"psi {pose.wrist.m_as('deg'):.0f} deg")
+
+
+def pose_grid(arm: LeverArm, shoulder: tuple[float, float], elbow: tuple[float, float], wrist: tuple[float, float],
+              step: float, min_transmission: float) -> list[LeverArmPose]:
+    """Poses on a grid of the three plane joints (ranges and ``step`` in degrees, ends included) whose three
+    parallelograms are all at least ``min_transmission`` degrees from flat (``asin`` of
+    :meth:`LeverArm.singularity_measures`; nearer to flat the coupler forces grow as 1/sin, unbounded)."""
+    if not step > 0:
+        raise InputError(f"step: must be positive, got {step:g} deg")
+    for name, (lo, hi) in (("shoulder_range", shoulder), ("elbow_range", elbow), ("wrist_range", wrist)):
+        if not hi >= lo:
+            raise InputError(f"{name}: expected [low, high] with high >= low, got [{lo:g}, {hi:g}] deg")
+    n = math.prod(int((hi - lo) / step + 1e-9) + 1 for lo, hi in (shoulder, elbow, wrist))
+    if n > 20_000:
+        raise InputError(f"step: {n:,} grid poses (at most 20,000); use a coarser step")
+    out = []
+    for vp in np.arange(shoulder[0], shoulder[1] + 1e-9, step):
+        for ph in np.arange(elbow[0], elbow[1] + 1e-9, step):
+            for ps in np.arange(wrist[0], wrist[1] + 1e-9, step):
+                pose = arm.forward(Q(vp, "deg"), Q(ph, "deg"), Q(ps, "deg"))
+                angles = [math.degrees(math.asin(min(1.0, v))) for v in arm.singularity_measures(pose).values()]
+                if min(angles) >= min_transmission - 1e-9:
+                    out.append(pose)
+    if not out:
+        raise InputError(f"min_transmission_angle: no pose of the grid has every parallelogram at least "
+                         f"{min_transmission:g} deg from flat")
+    return out
+
+
+def sweep_envelope(arm: LeverArm, shoulder: tuple[float, float], elbow: tuple[float, float],
+                   wrist: tuple[float, float], step: float, min_transmission: float,
+                   masses: dict[str, Any] | None = None, gravity: Any = "9.80665 m/s**2") -> LinearSweep:
+    """The pose sweep of the arm with its links' self-weight, linear in the payload ``W`` at C
+    (:class:`~mechverify.mechanisms.sweep.LinearSweep`: the self-weight sweep and the unit-payload sweep of
+    :meth:`LeverArm.statics` over :func:`pose_grid`; members named as in :data:`MEMBERS`). Cached per geometry,
+    grid, masses and gravity (a verify or a sizing run over ``W`` solves the sweeps once)."""
+    g = to_si(gravity, "acceleration", "gravity")
+    m = tuple(sorted((k, to_si(v, "mass", f"masses.{k}")) for k, v in (masses or {}).items()))
+    key = (arm._dims(), arm.name, tuple(map(float, shoulder)), tuple(map(float, elbow)), tuple(map(float, wrist)),
+           float(step), float(min_transmission), m, g)
+    return _envelope(key)
+
+
+@functools.lru_cache(maxsize=16)
+def _envelope(key: tuple) -> LinearSweep:
+    from mechverify.mechanisms.sweep import linear_sweep
+
+    dims, name, shoulder, elbow, wrist, step, min_t, masses, g = key
+    arm = LeverArm(*(from_si(v, "length") for v in dims), name=name)
+    kg = {k: from_si(v, "mass") for k, v in masses}
+    gq = from_si(g, "acceleration")
+    poses = pose_grid(arm, shoulder, elbow, wrist, step, min_t)
+    res = linear_sweep(poses, lambda p: arm.statics(p, "0 N", masses=kg, gravity=gq),
+                       lambda p: arm.statics(p, from_si(1.0, "force"), gravity=gq), label=sweep_label)
+    ren = {k: member_name(k) for k in res.N}
+    return LinearSweep(res.labels, {ren[k]: v for k, v in res.lengths.items()}, {ren[k]: v for k, v in res.N.items()},
+                       {ren[k]: v for k, v in res.V.items()}, {ren[k]: v for k, v in res.M.items()}, res.efforts)

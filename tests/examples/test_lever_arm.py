@@ -17,7 +17,6 @@ Every expected value is computed here from the method it names, never copied fro
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 
 import pytest
@@ -70,8 +69,9 @@ def corrected():
 
 
 @pytest.fixture(scope="module")
-def generated():
-    return tomllib.loads((EXAMPLE / "design.toml").read_text(encoding="utf-8"))["load_cases"]
+def arm_outputs():
+    """The pose sweep's outputs (component "arm" of arm.toml) at design.toml's W."""
+    return load(EXAMPLE / "design.toml").components["arm"]
 
 
 # ---------------------------------------------------------------- end to end
@@ -100,19 +100,17 @@ def test_document_motors_fail_with_the_stepper_margin(results):
     assert TAU_SHOULDER > HOLDING  # the shoulder stepper cannot even hold the arm at full reach
 
 
-def test_largest_payload_the_annex_stepper_holds(run):
-    """W_max = (T_hold/1.5 - tau_self) / b at the shoulder = (0.31071 - 0.23068)/0.2 = 0.400 N (41 g)."""
+def test_largest_payload_the_annex_stepper_holds():
+    """W_max = (T_hold/1.5 - tau_self) / b at the shoulder = (0.31071 - 0.23068)/0.2 = 0.400 N (41 g), by
+    ``mechverify size`` over parameters.W (the sweep's outputs drive the motor checks; more in
+    tests/test_lever_arm_sweep.py)."""
+    from mechverify.studies.sizing import size
+
     tau_self = TAU_SHOULDER - W * b
     expected = (HOLDING / 1.5 - tau_self) / b
-    res = load(EXAMPLE / "design.toml").verify()
-    peaks = {x.component.removesuffix("_motor"): x.demand for x in res if x.check == "motor_peak_torque"}
-
-    class _D:  # the shape run.max_payload reads: governing.motors[name].peak
-        def __init__(self, peak):
-            self.peak = peak
-
-    g = type("G", (), {"motors": {k: _D(v) for k, v in peaks.items()}})()
-    assert run.max_payload(g)["shoulder"].m_as("N") == pytest.approx(expected, rel=1e-4)
+    res = size(EXAMPLE / "design.toml", "parameters.W", "governing", ("0.1 N", "50 N"))
+    assert res.limit == pytest.approx(expected, rel=1e-6)
+    assert res.governing == "shoulder_motor.motor_peak_torque"
     assert expected == pytest.approx(0.400, abs=0.002)
 
 
@@ -125,12 +123,11 @@ def test_corrected_design_belts(corrected):
 
 
 # ---------------------------------------------------------------- members
-def test_oa_bending_equals_shoulder_torque_and_its_stress(generated, results):
+def test_oa_bending_equals_shoulder_torque_and_its_stress(arm_outputs, results):
     """OA is a cantilever from the motor: its largest moment (at O) is the shoulder torque. Body stress
     |N|/A + M/(t h^2/6) with h = 20 mm in the plane, t = 4 mm (Shigley 10th ed. Sec. 5-5, no shear/torsion)."""
-    case = generated["envelope_compression"]["OA"]
-    M = Q(case["bending_moment"]).m_as("N*m")
-    N = Q(case["axial_force"]).m_as("N")
+    M = arm_outputs.members["OA"].moment.m_as("N*m")
+    N = -arm_outputs.members["OA"].compression.m_as("N")
     assert M == pytest.approx(TAU_SHOULDER, rel=1e-5)
     sigma = abs(N) / A_MAIN + M / (4e-3 * 20e-3**2 / 6)
     assert results["OA/member_body_strength"].demand.m_as("Pa") == pytest.approx(sigma, rel=1e-4)
@@ -202,8 +199,10 @@ def test_inverse_quadrant(run):
 def test_sweep_keeps_parallelograms_off_flat(run):
     """Reference pose: OAED |varphi - phi| = 50, OFGA 180 - (varphi + psi) = 100 -> 80, ABIH 90 - (phi + psi)
     = 60 deg; a pose with phi = varphi (OAED flat: the coupler DE cannot drive EAB) is not in the sweep."""
+    from mechverify.mechanisms.lever_arm import pose_grid
+
     ang = run.transmission_angles(run.reference_pose())
     assert ang == pytest.approx({"OAED": 50.0, "OFGA": 80.0, "ABIH": 60.0})
-    poses = run.sweep_poses(step=30.0)
+    poses = pose_grid(run.arm(), (0, 180), (0, 90), (0, 90), 30.0, 40.0)
     assert poses and all(min(run.transmission_angles(x).values()) >= 40 - 1e-9 for x in poses)
     assert not any(abs(x.shoulder.m_as("deg") - x.elbow.m_as("deg")) < 1 for x in poses)
