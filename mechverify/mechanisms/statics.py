@@ -575,30 +575,37 @@ def _member_diagram(body: Body, seg: tuple[str, str], items: list, g: np.ndarray
     total_len = sum(float(np.linalg.norm(pts[b] - pts[a])) for a, b in body.segments)
     w = body.mass_si * g / total_len if (body.mass_si > 0 and body.com is None and total_len > 0) else np.zeros(2)
     far_seg_keys = {f"seg:{a}|{b}" for a, b in far_segs}
-    N, V, M = (np.zeros_like(s_vals) for _ in range(3))
-    for k, s in enumerate(s_vals):
-        cut = p + s * e
-        R = np.zeros(2)
-        Mc = 0.0
-        for pos, f, m, (where, t) in located:
-            if where.startswith("node:"):
-                inside = where[5:] in far_nodes
-            elif where == f"seg:{seg[0]}|{seg[1]}":
-                inside = t > s
-            else:
-                inside = where in far_seg_keys
-            if inside:
-                R += f
-                Mc += m + (_cross(pos - cut, f) if pos is not None else 0.0)
-        if np.any(w):
-            part = (L - s) * w
-            R += part
-            Mc += _cross(p + e * (s + (L - s) / 2) - cut, part)
-            for a, b in far_segs:
-                ls = float(np.linalg.norm(pts[b] - pts[a]))
-                R += ls * w
-                Mc += _cross((pts[a] + pts[b]) / 2 - cut, ls * w)
-        N[k], V[k], M[k] = float(np.dot(R, e)), float(np.dot(R, nrm)), Mc
+    # every station at once (the same arithmetic per station as a loop over them: cut, then the free body beyond it)
+    cut = p + s_vals[:, None] * e  # (n, 2)
+    Rx, Ry, Mc = (np.zeros_like(s_vals) for _ in range(3))
+    for pos, f, m, (where, t) in located:
+        if where.startswith("node:"):
+            inside = np.full(s_vals.shape, where[5:] in far_nodes)
+        elif where == f"seg:{seg[0]}|{seg[1]}":
+            inside = t > s_vals
+        else:
+            inside = np.full(s_vals.shape, where in far_seg_keys)
+        if not inside.any():
+            continue
+        Rx = np.where(inside, Rx + f[0], Rx)
+        Ry = np.where(inside, Ry + f[1], Ry)
+        if pos is not None:
+            d = pos - cut
+            Mc = np.where(inside, Mc + (m + (d[:, 0] * f[1] - d[:, 1] * f[0])), Mc)
+        else:
+            Mc = np.where(inside, Mc + (m + 0.0), Mc)
+    if np.any(w):
+        part = (L - s_vals)[:, None] * w
+        Rx, Ry = Rx + part[:, 0], Ry + part[:, 1]
+        d = p + e * (s_vals + (L - s_vals) / 2)[:, None] - cut
+        Mc = Mc + (d[:, 0] * part[:, 1] - d[:, 1] * part[:, 0])
+        for a, b in far_segs:
+            ls = float(np.linalg.norm(pts[b] - pts[a]))
+            lw = ls * w
+            Rx, Ry = Rx + lw[0], Ry + lw[1]
+            d = (pts[a] + pts[b]) / 2 - cut
+            Mc = Mc + (d[:, 0] * lw[1] - d[:, 1] * lw[0])
+    N, V, M = Rx * e[0] + Ry * e[1], Rx * nrm[0] + Ry * nrm[1], Mc
     kN = int(np.argmax(np.abs(N)))
     kM = int(np.argmax(np.abs(M)))
     return MemberLoad(
