@@ -241,7 +241,7 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
                      needs=("point_loads|patch_loads|pressure|self_weight|in_plane",)),
         CheckSpec.of(feac.check_natural_frequency, _frequency),
-        CheckSpec.of(feac.check_buckling_load_factor, _buckling),
+        CheckSpec.of(feac.check_buckling_load_factor, _buckling, reads=("in_plane",)),
     ),
     outputs=plate_bolt_outputs(),  # bolt-hole support forces for bolted_joint / bolt_group (adapters/bolts.py)
     figures=_figures,
