@@ -108,7 +108,7 @@ def test_key_paths_and_overrides_leave_the_source_alone():
 
 @pytest.mark.parametrize("vary, error, match", [
     ({"components.lift.mas": "1 kg:2 kg:2"}, UnknownNameError, "did you mean"),
-    ({"components.lift_screw.thread": "1:2:2"}, InputError, "not numeric"),
+    ({"components.lift_screw.thread": "1:2:2"}, InputError, "is a text field"),
     ({"components.lift.mass": "normal:30 kg:0 kg"}, InputError, "standard deviation must be > 0"),
     ({"components.lift.mass": "uniform:30 kg:20 kg"}, InputError, "LO must be below HI"),
     ({"components.lift.mass": "triangular:30 kg:10 kg:40 kg"}, InputError, "LO <= MODE <= HI"),

@@ -92,6 +92,48 @@ def _type_default(doc: Mapping[str, Any], steps: list[str | int]) -> tuple[bool 
     return field is not None, None if field is None else field.default
 
 
+_TEXT_KINDS = ("str", "material", "choice", "ref", "bool")
+
+
+def _field_of(doc: Mapping[str, Any], steps: list[str | int]) -> Any:
+    """The :class:`~mechverify.design.spec.Field` declared for ``components.<name>.<key>`` or
+    ``load_cases.<case>.<name>.<key>`` by the component's type; None when not known (another path, an unknown type)."""
+    if len(steps) == 3 and steps[0] == "components":
+        name, key, group = steps[1], steps[2], "fields"
+    elif len(steps) == 4 and steps[0] == "load_cases":
+        name, key, group = steps[2], steps[3], "loads"
+    else:
+        return None
+    comp = (doc.get("components") or {}).get(name) if isinstance(doc.get("components"), dict) else None
+    if not isinstance(comp, dict) or not isinstance(key, str):
+        return None
+    kind = comp.get("type")
+    if kind is None and isinstance(comp.get("extends"), str):
+        kind = ((doc.get("templates") or {}).get(comp["extends"]) or {}).get("type")
+    from mechverify.design import adapters  # noqa: F401  (registers the component types)
+    from mechverify.design.spec import REGISTRY
+
+    ct = REGISTRY.types.get(kind) if isinstance(kind, str) else None
+    if ct is None:
+        return None
+    return next((f for f in getattr(ct, group, ()) if f.name == key), None)
+
+
+def _refuse_text(path: str, raw: Any, field: Any) -> None:
+    """Refuse a value a study cannot vary as one number, before any sample runs: a vector or list written as text
+    (``force = "10000, 0, 0"``: pint reads it as 0), a key whose type declares text (``section = "circle"``: pint
+    reads it as 1 turn; a bearing ``model = "608"``), or a name with no digit (a parameter ``"steel"``)."""
+    if not isinstance(raw, str):
+        return
+    if "," in raw:
+        raise InputError(f"{path} is a vector ({raw!r}): a study varies one number; vary a parameter used in it "
+                         "(e.g. force = \"P, 0, 0\" with [parameters] P = \"10 kN\", then --vary parameters.P=...)")
+    if field is not None and field.kind in _TEXT_KINDS:
+        raise InputError(f"{path} is a text field ({raw!r}): a study varies numbers only")
+    if field is None and not any(c.isdigit() for c in raw):
+        raise InputError(f"{path}: its value {raw!r} is text, not a number: a study varies numbers only")
+
+
 def _not_written(path: str, doc: Mapping[str, Any], steps: list[str | int], table: Mapping[str, Any]) -> InputError:
     """A key the file does not write in a table that exists: it may be a key whose default is not one number (a
     screw stage's mu: the nut material's friction range, both ends checked), so it cannot be varied as is."""
@@ -212,6 +254,7 @@ class Parameter:
                 lo, hi = (float(x) for x in rng)
                 return cls(path, hi, "", default_range=(lo, hi, f"the nut friction range of lead screw {screw!r}"))
         raw = get_path(doc, path, defaults=True)
+        _refuse_text(path, raw, _field_of(doc, split_path(path)))
         if isinstance(raw, str) and resolved is not None:
             try:
                 Q(raw)
@@ -257,8 +300,7 @@ class Parameter:
                 raise InputError(f"{self.path}: cannot read {text!r} as a number or a quantity") from None
         target = Q(1.0, self.unit) if self.unit else Q(1.0)
         if q.dimensionality != target.dimensionality:
-            have = "dimensionless" if q.dimensionless else str(q.dimensionality)
-            want = "dimensionless" if target.dimensionless else str(target.dimensionality)
+            have, want = dimension_name(q), dimension_name(target)
             raise UnitError(f"{self.path}: {token!s} is {have} but the design file's value "
                             f"({self.text(self.base)}) is {want}; a range cannot change a quantity's dimension")
         return float(q.to(target.units).magnitude)
@@ -279,6 +321,22 @@ class Parameter:
         if not self.unit:
             return float(x)
         return f"{float(x)!r} {self.unit}"
+
+
+def dimension_name(q: Any) -> str:
+    """mechverify's name for q's dimension, with its article ("a force", "a torque, energy or torsional
+    stiffness", "dimensionless");
+    pint's ``[mass] * [length] / [time] ** 2`` only for a dimension mechverify has no name for."""
+    from mechverify.units import DIMENSIONS, ureg
+
+    if q.dimensionless:
+        return "dimensionless"
+    names = [n.replace("_", " ") for n, (dim, _) in DIMENSIONS.items()
+             if dim and ureg.get_dimensionality(dim) == q.dimensionality]
+    if not names:
+        return str(q.dimensionality)
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+    return ("an " if names[0][0] in "aeiou" else "a ") + listed
 
 
 def _example(x: float) -> str:
@@ -444,6 +502,12 @@ def _parse_axis(p: Parameter, name: str, spec: str, parts: list[str], head: str)
         if head == "triangular" and not (vals[0] < vals[2] and vals[0] <= vals[1] <= vals[2]):
             raise InputError(f"{name}: {spec!r}: expected LO <= MODE <= HI with LO < HI")
         return Axis(p, head, vals, spec)
+    if len(parts) > 1 and parts[0] and not any(c.isdigit() for c in parts[0]):  # a word where a start value goes
+        from mechverify.errors import suggest
+
+        near = list(suggest(head, list(_ARITY), 1))
+        hint = f"; did you mean {near[0]!r}?" if near else ""
+        raise InputError(f"{name}: {spec!r}: unknown distribution {parts[0]!r} ({', '.join(_ARITY)}){hint}")
     if len(parts) != 3:
         raise InputError(f"{name}: {spec!r}: expected START:STOP:N (a sweep) or normal:MEAN:SD, uniform:LO:HI, "
                          "triangular:LO:MODE:HI (a distribution)")

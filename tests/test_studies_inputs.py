@@ -1,0 +1,85 @@
+"""Study inputs a user can trust (review 3 findings 3, 3b, 4, 14; task fixstudy).
+
+No published numbers here: these tests check which inputs a study refuses before running and what its messages
+say. The lift is reference project 004 (examples/lead_screw_lift/design.toml).
+"""
+
+from __future__ import annotations
+
+import tomllib
+
+import pytest
+
+from mechverify.design import load
+from mechverify.errors import InputError, UnitError
+from mechverify.studies import parse_vary, size
+from mechverify.studies.params import resolver
+from tests.builders import LIFT
+
+
+def _doc() -> dict:
+    with LIFT.open("rb") as fh:
+        return tomllib.load(fh)
+
+
+# ----------------------------------------------------------------------------- review 3 finding 3 / 3b
+@pytest.mark.parametrize("path, text", [
+    ("components.screw_horizontal.section", "'circle'"),  # pint reads "circle" as 1 turn
+    ("components.screw_bearing.model", "'608'"),  # a catalogue designation that looks like a number
+    ("components.lift_screw.material", None),
+])
+def test_a_text_field_is_refused_before_running(path, text):
+    """A key whose component type declares text (Field kind str/choice/material) is refused up front, not sampled
+    as a number whose every sample is then invalid."""
+    doc = _doc()
+    with pytest.raises(InputError, match=r"is a text field .*a study varies numbers only") as e:
+        parse_vary(doc, {path: "1:2:2"}, resolver(load(LIFT)))
+    assert str(e.value).startswith(path)
+    if text:
+        assert text in str(e.value)
+
+
+def test_size_refuses_a_text_field_before_evaluating():
+    with pytest.raises(InputError, match="components.screw_horizontal.section is a text field"):
+        size(LIFT, "components.screw_horizontal.section", until="motor_peak_torque", bounds=("0.5 turn", "2 turn"))
+
+
+def test_a_vector_is_refused_and_names_the_way_to_vary_it():
+    """force = "10000, 0, 0" (pint reads it as 0) is a vector: vary a parameter used in it."""
+    doc = {"design": {"name": "plate"},
+           "components": {"bar": {"type": "solid_fea", "box": "100, 50, 5", "material": "Structural Steel",
+                                  "supports": [{"named": "xmin"}]}},
+           "load_cases": {"pull": {"bar": {"forces": [{"named": "xmax", "force": "10000, 0, 0"}]}}}}
+    with pytest.raises(InputError, match=r"forces\[0\]\.force is a vector \('10000, 0, 0'\).*parameter"):
+        parse_vary(doc, {"load_cases.pull.bar.forces[0].force": "1:2:2"})
+    with pytest.raises(InputError, match=r"components.bar.box is a vector"):
+        parse_vary(doc, {"components.bar.box": "1:2:2"})
+
+
+def test_a_text_parameter_is_refused_and_numbers_still_pass():
+    doc = {"parameters": {"finish": "circle", "t": ".5 mm", "n": "-3 N"}}
+    with pytest.raises(InputError, match=r"parameters.finish: its value 'circle' is text"):
+        parse_vary(doc, {"parameters.finish": "1:2:2"})
+    (t, n) = parse_vary(doc, {"parameters.t": "1 mm:2 mm:2", "parameters.n": "normal:-3 N:1 N"})
+    assert t.args == (1.0, 2.0, 2.0) and t.param.unit == "mm" and n.args == (-3.0, 1.0)
+
+
+# ----------------------------------------------------------------------------- review 3 finding 4
+def test_an_unknown_distribution_is_named_not_read_as_a_sweep():
+    doc = {"parameters": {"load": "350 N"}}
+    with pytest.raises(InputError, match=r"unknown distribution 'lognormal' \(normal, uniform, triangular\)"):
+        parse_vary(doc, {"parameters.load": "lognormal:140 N:10 N"})
+    with pytest.raises(InputError, match=r"unknown distribution 'gauss'"):
+        parse_vary(doc, {"parameters.load": "gauss:140 N:10 N"})
+
+
+@pytest.mark.parametrize("spec, have, want", [
+    ("140 kg:150 kg:2", "a mass", "a force"),
+    ("1 N*m:2 N*m:2", "a torque, energy or torsional stiffness", "a force"),
+    ("0.1 m/m:0.2 m/m:2", "dimensionless", "a force"),
+])
+def test_a_dimension_error_names_the_dimensions(spec, have, want):
+    with pytest.raises(UnitError) as e:
+        parse_vary({"parameters": {"load": "350 N"}}, {"parameters.load": spec})
+    msg = str(e.value)
+    assert f"is {have} but" in msg and f"is {want};" in msg and "[" not in msg, msg
