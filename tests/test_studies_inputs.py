@@ -83,3 +83,31 @@ def test_a_dimension_error_names_the_dimensions(spec, have, want):
         parse_vary({"parameters": {"load": "350 N"}}, {"parameters.load": spec})
     msg = str(e.value)
     assert f"is {have} but" in msg and f"is {want};" in msg and "[" not in msg, msg
+
+
+# ----------------------------------------------------------------------------- review 3 finding 14
+def test_an_invalid_sample_shows_its_first_error_and_the_count():
+    """A negative screw length makes the screw invalid, and everything that reads it ('lift_screw is invalid (see
+    its own errors)'): the console line shows the cause, the first error of the list, and how many there are."""
+    from mechverify.studies import Study
+
+    res = Study(LIFT, vary={"components.lift_screw.length": "-100 mm:200 mm:2"}).run("serial")
+    bad = res.samples[0]
+    assert bad["status"] == "error"
+    n = bad["message"].count("\n")  # one line per error after the header line
+    assert n >= 2, bad["message"]
+    line = next(x for x in res.summary().splitlines() if x.startswith("sample 0 invalid:"))
+    assert "length: must be positive, got -100 mm" in line and f"(first of {n} errors)" in line, line
+    assert "see its own errors" not in line
+
+
+# ----------------------------------------------------------------------------- review 3 finding 8 (first part)
+def test_the_sweep_table_says_how_many_changing_checks_it_leaves_out():
+    from mechverify.studies import Study
+
+    res = Study(LIFT, vary={"parameters.lifted_load": "100 N:400 N:2"}).run("serial")
+    changing = res.changing_checks()
+    assert len(changing) > 3
+    text = res.summary()
+    assert f"u·SF of the 3 highest of the {len(changing)} checks that change over the sweep" in text, text
+    assert "all of them in the --json and --csv outputs" in text

@@ -15,6 +15,7 @@ import copy
 import csv
 import io
 import math
+import re
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
@@ -308,7 +309,8 @@ class StudyResult:
                 for c, v in sens.items():
                     lines.append(f"  {c:42s} " + ", ".join(f"{n} {r:+.3f}" for n, r in v))
         else:
-            shown = self.changing_checks()[:3]
+            changing = self.changing_checks()
+            shown = changing[:3]
             heads = [self.label(n) for n in self.names]
             lines.append("  ".join(heads) + "  " + "  ".join(shown) + "  governing (u·SF)  verdict")
             for s in self.samples:
@@ -319,7 +321,10 @@ class StudyResult:
                 else:
                     why = _last_line(s["message"])
                     lines.append(f"{ins}  invalid: " + (why if len(why) <= 60 else why[:59] + "… (below)"))
-            if shown:
+            if len(changing) > len(shown):
+                lines.append(f"(u·SF of the {len(shown)} highest of the {len(changing)} checks that change over the "
+                             "sweep, highest first; all of them in the --json and --csv outputs)")
+            elif shown:
                 lines.append("(u·SF of the checks that change over the sweep, highest first)")
         for s in self.errors[:5]:
             lines.append(f"sample {s['index']} invalid: {_last_line(s['message'])}")
@@ -369,10 +374,21 @@ def pretty_unit(unit: str) -> str:
         return unit
 
 
+_ERRORS_HEAD = re.compile(r"(\d+) errors? in the design file:$")
+
+
 def _last_line(message: str) -> str:
-    """The error itself: the last non-empty line of a sample's message (after the file's header line)."""
+    """The error itself, for one console line: of a design file's error list (``N errors in the design file:``)
+    the FIRST error (the cause; later ones are often its cascade, 'lift_screw is invalid (see its own errors)') and
+    how many there are; otherwise the last non-empty line of the message (after a header line)."""
     lines = [x.strip() for x in message.splitlines() if x.strip()]
-    return lines[-1] if lines else ""
+    if not lines:
+        return ""
+    m = _ERRORS_HEAD.search(lines[0])
+    if m and len(lines) > 1:
+        n = len(lines) - 1
+        return lines[1] + (f" (first of {n} errors)" if n > 1 else "")
+    return lines[-1]
 
 
 def _full(v: float | None) -> str:
