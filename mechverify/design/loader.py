@@ -380,6 +380,10 @@ def _materials(doc: dict[str, Any], col: _Collector, pctx: dict[str, Any]) -> Ma
         if not isinstance(entry, dict):
             col.add(path, "expected a table")
             continue
+        if "extends" in entry and "base" not in entry:  # the components' key; a material's is 'base' (review 3)
+            col.add(f"{path}.extends", "unknown key; did you mean 'base'? (a material builds on another with "
+                    "base = \"...\"; extends is the key of components and templates)")
+            entry = {("base" if k == "extends" else k): v for k, v in entry.items()}  # no cascade of errors
         try:
             if "base" in entry:
                 base = lib.get(entry["base"])
