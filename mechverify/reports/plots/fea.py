@@ -32,30 +32,58 @@ def _mode_figure(r: CheckResult, label: str) -> Any:
         ax.set_aspect("equal", adjustable="datalim")
         return fig
     D = P + 0.12 * span * S  # deformed, the largest motion drawn at 12 % of the model's size
-    # view: the two axes of the largest extent of the deformed shape
-    ext = np.ptp(np.vstack([P, D]), axis=0)
-    i, j = (int(k) for k in np.argsort(ext)[::-1][:2])
+    views = _views(P, S)
     mag = np.linalg.norm(S, axis=1)
-    fig, ax = new_figure()
+    fig, ax = new_figure(7.5 if len(views) > 1 else 5.5, 3.2)
+    axes = [ax]
+    if len(views) > 1:  # the model's plane and a view that shows the out-of-plane mode
+        fig.clear()
+        axes = list(fig.subplots(1, 2))
+        for a in axes:
+            a.grid(True, lw=0.4, alpha=0.5)
     lines = d.get("mode_lines")
-    if lines is not None and len(lines):
-        L = np.asarray(lines, dtype=int)
-        for a, b in L:
-            ax.plot(P[[a, b], i], P[[a, b], j], color="0.75", lw=1.0)
-            ax.plot(D[[a, b], i], D[[a, b], j], color="#0969da", lw=1.5)
-        ax.plot([], [], color="0.75", label="undeformed")
-        ax.plot([], [], color="#0969da", label=label)
-    else:
-        ax.scatter(P[:, i], P[:, j], s=2, color="0.8", label="undeformed", rasterized=True)
-        sc = ax.scatter(D[:, i], D[:, j], s=3, c=mag, cmap="viridis", label=label, rasterized=True)
-        fig.colorbar(sc, ax=ax, label="relative displacement of the mode")
     names = "xyz"
-    ax.set_xlabel(f"{names[i]} [mm]")
-    ax.set_ylabel(f"{names[j]} [mm]")
-    ax.set_aspect("equal", adjustable="datalim")
+    for n, (a, (i, j)) in enumerate(zip(axes, views, strict=True)):
+        if lines is not None and len(lines):
+            L = np.asarray(lines, dtype=int)
+            for p, q in L:
+                a.plot(P[[p, q], i], P[[p, q], j], color="0.75", lw=1.0)
+                a.plot(D[[p, q], i], D[[p, q], j], color="#0969da", lw=1.5)
+            a.plot([], [], color="0.75", label="undeformed")
+            a.plot([], [], color="#0969da", label=label)
+        else:
+            a.scatter(P[:, i], P[:, j], s=2, color="0.8", label="undeformed", rasterized=True)
+            sc = a.scatter(D[:, i], D[:, j], s=3, c=mag, cmap="viridis", label=label, rasterized=True)
+            if n == len(views) - 1:
+                fig.colorbar(sc, ax=a, label="relative displacement of the mode")
+        a.set_xlabel(f"{names[i]} [mm]")
+        a.set_ylabel(f"{names[j]} [mm]")
+        a.set_aspect("equal", adjustable="datalim")
+    if len(views) > 1:
+        out = names[views[1][0] if views[1][0] not in views[0] else views[1][1]]
+        axes[0].set_title(f"model plane: mode out of plane ({out})", fontsize=8)
+        axes[1].set_title(f"side view: the mode along {out}", fontsize=8)
     # above the axes: inside them "best" still sat on the model's points (a mesh fills the whole view)
-    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.01), ncol=2, fontsize=7, frameon=False, borderaxespad=0.0)
+    axes[0].legend(loc="lower left", bbox_to_anchor=(0.0, 1.01 if len(views) == 1 else 1.08), ncol=2, fontsize=7,
+                   frameon=False, borderaxespad=0.0)
     return fig
+
+
+def _views(P: Any, S: Any) -> list[tuple[int, int]]:
+    """The (horizontal, vertical) axes of the figure's views (review 3 finding 15): the model's plane, its two
+    largest extents, drawn with the higher axis index up (z up when z is in the view: gravity down the page, a
+    portal in x-z stands upright); and when the mode's largest translation is along the third axis (a portal
+    swaying out of its plane, invisible in that view), a second view of that axis against the plane's axis
+    that keeps z (or its longer one)."""
+    import numpy as np
+
+    ext = np.ptp(P, axis=0)
+    a, b = sorted(int(k) for k in np.argsort(ext, kind="stable")[::-1][:2])  # ties go to the higher axis (z)
+    main = int(np.argmax(np.max(np.abs(S), axis=0)))
+    if main in (a, b):
+        return [(a, b)]
+    keep = b if b == 2 else (a if ext[a] > ext[b] else b)
+    return [(a, b), tuple(sorted((keep, main)))]  # type: ignore[list-item]
 
 
 @plotter("natural_frequency")
