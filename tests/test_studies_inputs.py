@@ -111,3 +111,17 @@ def test_the_sweep_table_says_how_many_changing_checks_it_leaves_out():
     text = res.summary()
     assert f"u·SF of the 3 highest of the {len(changing)} checks that change over the sweep" in text, text
     assert "all of them in the --json and --csv outputs" in text
+
+
+def test_a_parameter_written_as_an_expression_of_names_is_still_varied(tmp_path):
+    """The text rule (no digit: text) leaves expressions alone: [parameters] arms = "lifted_load" resolves to
+    350 N and is varied from that value."""
+    from mechverify.studies.tomlout import dumps
+
+    doc = _doc()
+    doc["parameters"]["arms"] = "lifted_load"
+    doc["load_cases"]["raise"]["lift_screw"]["axial_force"] = "arms"
+    path = tmp_path / "lift.toml"
+    path.write_text(dumps(doc))
+    (ax,) = parse_vary(doc, {"parameters.arms": "300 N:400 N:2"}, resolver(load(path)))
+    assert ax.param.base == pytest.approx(350.0) and ax.param.expression == "lifted_load"

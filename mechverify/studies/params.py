@@ -119,7 +119,15 @@ def _field_of(doc: Mapping[str, Any], steps: list[str | int]) -> Any:
     return next((f for f in getattr(ct, group, ()) if f.name == key), None)
 
 
-def _refuse_text(path: str, raw: Any, field: Any) -> None:
+def _is_quantity(text: str) -> bool:
+    try:
+        Q(text)
+    except MechverifyError:
+        return False
+    return True
+
+
+def _refuse_text(path: str, raw: Any, field: Any, resolved: Any = None) -> None:
     """Refuse a value a study cannot vary as one number, before any sample runs: a vector or list written as text
     (``force = "10000, 0, 0"``: pint reads it as 0), a key whose type declares text (``section = "circle"``: pint
     reads it as 1 turn; a bearing ``model = "608"``), or a name with no digit (a parameter ``"steel"``)."""
@@ -130,7 +138,8 @@ def _refuse_text(path: str, raw: Any, field: Any) -> None:
                          "(e.g. force = \"P, 0, 0\" with [parameters] P = \"10 kN\", then --vary parameters.P=...)")
     if field is not None and field.kind in _TEXT_KINDS:
         raise InputError(f"{path} is a text field ({raw!r}): a study varies numbers only")
-    if field is None and not any(c.isdigit() for c in raw):
+    if field is None and not any(c.isdigit() for c in raw) and _is_quantity(raw) and not (
+            resolved is not None and isinstance(resolved(path), Quantity)):  # not an expression ("payload + m")
         raise InputError(f"{path}: its value {raw!r} is text, not a number: a study varies numbers only")
 
 
@@ -254,7 +263,7 @@ class Parameter:
                 lo, hi = (float(x) for x in rng)
                 return cls(path, hi, "", default_range=(lo, hi, f"the nut friction range of lead screw {screw!r}"))
         raw = get_path(doc, path, defaults=True)
-        _refuse_text(path, raw, _field_of(doc, split_path(path)))
+        _refuse_text(path, raw, _field_of(doc, split_path(path)), resolved)
         if isinstance(raw, str) and resolved is not None:
             try:
                 Q(raw)
@@ -301,8 +310,9 @@ class Parameter:
         target = Q(1.0, self.unit) if self.unit else Q(1.0)
         if q.dimensionality != target.dimensionality:
             have, want = dimension_name(q), dimension_name(target)
-            raise UnitError(f"{self.path}: {token!s} is {have} but the design file's value "
-                            f"({self.text(self.base)}) is {want}; a range cannot change a quantity's dimension")
+            base = f"{self.base:.6g} {self.unit}".strip()
+            raise UnitError(f"{self.path}: {token!s} is {have} but the design file's value ({base}) is {want}; "
+                            "a range cannot change a quantity's dimension")
         return float(q.to(target.units).magnitude)
 
     def _bare(self, x: float, token: Any) -> float:
