@@ -127,6 +127,18 @@ def _is_quantity(text: str) -> bool:
     return True
 
 
+def _is_measure(text: str) -> bool:
+    """A number with a unit of some dimension (``"1 mm"``): what a text field that also takes a quantity holds when it
+    holds one (``deflection_limit = "1 mm"`` or ``"L/250"``); ``"608"`` (dimensionless) and ``"circle"`` are not."""
+    if not any(c.isdigit() for c in text):
+        return False
+    try:
+        q = Q(text)
+    except MechverifyError:
+        return False
+    return isinstance(q, Quantity) and not q.dimensionless
+
+
 def _refuse_text(path: str, raw: Any, field: Any, resolved: Any = None) -> None:
     """Refuse a value a study cannot vary as one number, before any sample runs: a vector or list written as text
     (``force = "10000, 0, 0"``: pint reads it as 0), a key whose type declares text (``section = "circle"``: pint
@@ -136,7 +148,7 @@ def _refuse_text(path: str, raw: Any, field: Any, resolved: Any = None) -> None:
     if "," in raw:
         raise InputError(f"{path} is a vector ({raw!r}): a study varies one number; vary a parameter used in it "
                          "(e.g. force = \"P, 0, 0\" with [parameters] P = \"10 kN\", then --vary parameters.P=...)")
-    if field is not None and field.kind in _TEXT_KINDS:
+    if field is not None and field.kind in _TEXT_KINDS and not _is_measure(raw):
         raise InputError(f"{path} is a text field ({raw!r}): a study varies numbers only")
     if field is None and not any(c.isdigit() for c in raw) and _is_quantity(raw) and not (
             resolved is not None and isinstance(resolved(path), Quantity)):  # not an expression ("payload + m")
