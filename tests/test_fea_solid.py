@@ -196,3 +196,21 @@ def test_gmsh_leaves_python_ignoring_sigpipe():
     pytest.importorskip("gmsh")
     mesh.cylinder("5 mm", "20 mm", "5 mm")
     assert _sigpipe_ignored_by_the_os()
+
+
+def test_support_box_cutting_through_facets_warns_with_the_held_area():
+    """Review 3 finding 22: a support box that cuts boundary facets holds only the whole facets inside it (a
+    mesh-dependent area) - the same WARN as a load's box, with the held area. End face x = 0 of a 20 x 20 mm
+    section, nodes at y = 0, 6.67, 13.3, 20 mm: a box up to y = 10 mm holds the strip y <= 6.67 mm, 6.667 x 20 =
+    133.3 mm² (hand calculation), warned; a box up to y = 13.333 mm cuts nothing and is not warned."""
+    m = mesh.box(("100 mm", "20 mm", "20 mm"), (10, 3, 3))
+    load = (Force(Plane(x="100 mm"), ("1 N", "0 N", "0 N")),)
+    for hi, warned in (("10 mm", True), ("13.3333333333 mm", False)):
+        sup = Fixed(Box(("-1 mm", "-1 mm", "-1 mm"), ("0.5 mm", hi, "21 mm")))
+        rep = solid.SolidModel(m, "Structural Steel", supports=(sup,), loads=load).region_reports()[1]
+        assert rep.item.startswith("Fixed 1")
+        assert (rep.warning is not None) is warned
+        if warned:
+            assert "cuts through" in rep.warning
+            assert "holds 133.333 mm² of boundary" in rep.warning
+            assert rep.measure * 1e6 == pytest.approx(20 * 20 / 3)
