@@ -334,7 +334,8 @@ def _restrained_stiffness(frame: Frame, mesh: _Mesh) -> tuple[sp.csr_matrix, np.
     for dof, (kv, _) in one_way.items():
         diag[dof] += kv
     if one_way:
-        notes.append("one-way springs are taken as in contact (linear) for the eigenvalue analysis")
+        notes.append("one-way springs are linearised as in contact (acting both ways) for the natural frequencies: "
+                     "a support that lifts off while vibrating gives a lower frequency than this")
     Ks = (K + sp.diags(diag)).tocsr()
     free = np.setdiff1d(np.arange(mesh.ndof), held)
     if frame.supports:
