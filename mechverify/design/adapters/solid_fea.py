@@ -62,6 +62,7 @@ class SolidStudy:
         """``result`` (a CheckResult or a list of them) with what the import did to the geometry in its notes
         (``SolidMesh.notes``: a STEP file's touching solids bonded)."""
         notes = getattr(self._mesh, "notes", ()) if not isinstance(self._mesh, Exception) else ()
+        notes = (*notes, *sp.clamp_notes(self.p.get("supports")))  # a held hole wall is a clamp (review 3 #16)
         if not notes:
             return result
         if isinstance(result, list):
