@@ -119,16 +119,19 @@ REFINE = 1.5
 
 
 def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
+    from mechverify.fea.plate import mesh_sizes
+
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
     notes, warns, held = _mesh_notes(c, res), [], c.in_plane_supports if "in_plane" in loads else ()
+    h_hh = mesh_sizes(c.plate, c.mesh_size, c.hole_mesh_size)
+    hh = h_hh[1]
     if c.convergence is not None:  # convergence_check: the peak again on a mesh REFINE times finer
-        from mechverify.fea.plate import mesh_sizes
-
         fine = c.solve_model(model, loads, ctx.load_case, REFINE)
-        h_hh = mesh_sizes(c.plate, c.mesh_size, c.hole_mesh_size)
         res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, h_hh, held)
+        hh = hh / REFINE if res is fine else hh
         notes += more
-    return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns, in_plane_supports=held)
+    return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns, in_plane_supports=held,
+                                     hole_mesh_size=hh)
 
 
 def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
