@@ -14,6 +14,7 @@ import functools
 import inspect
 import math
 import os
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any, TypeAlias
@@ -220,9 +221,24 @@ def _parse(text: str, name: str) -> pint.Quantity:
     return Quantity(magnitude, units)  # a new object each time: callers may modify it
 
 
+#: ``"<number> <unit>"`` with a plain unit text (names, ``*``, ``/``, ``^`` or ``**`` powers): what a study's drawn
+#: values look like (``"14.751431137084994 kg"``, a new string every sample)
+_NUMBER_UNIT = re.compile(r"([-+]?(?:\d+\.?\d*|\.\d+))([eE][-+]?\d+)?[ \t]+([A-Za-z_µ][A-Za-z_µ0-9]*"
+                          r"(?:[ \t]*(?:\*\*|\^|[*/])[ \t]*[A-Za-z_µ0-9]+)*)")
+_OFFSET_TEXT = ("deg", "celsius", "fahrenheit", "rankine", "reaumur")
+
+
 @functools.lru_cache(maxsize=4096)
 def _parse_cached(text: str) -> tuple[Any, Any]:
-    """``"350 N"`` -> (350, <Unit N>), parsed once per distinct string (design files repeat them)."""
+    """``"350 N"`` -> (350, <Unit N>), parsed once per distinct string (design files repeat them). A number and a
+    plain unit text take the number as pint's tokenizer does (an int without a point or exponent, else a float)
+    and the unit parsed once per unit text (issue 19: a study's drawn values are new strings every sample; pint's
+    full parse of each cost ~0.2 ms); tests/test_units.py compares this with pint's parse."""
+    m = _NUMBER_UNIT.fullmatch(text)
+    if m is not None and not any(k in m.group(3).lower() for k in _OFFSET_TEXT):
+        num, exp = m.group(1), m.group(2)
+        u = m.group(3)  # pint divides by a unit: an int over one becomes a float
+        return (float(num + exp) if exp else float(num) if "." in num or "/" in u else int(num)), _unit(u)
     q = ureg.Quantity(text)
     if not isinstance(q, Quantity):  # a bare number in a string: "12"
         return q, ureg.dimensionless

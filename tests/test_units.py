@@ -227,3 +227,20 @@ def test_fmt_positional_text_is_numpys():
         for d in (2, 4, 6):
             assert units._positional(v, d) == np.format_float_positional(v, precision=d, unique=False,
                                                                          fractional=False, trim="-")
+
+
+def test_number_and_unit_text_parse_as_pint_does():
+    """The fast path of units._parse_cached ("<number> <unit>", a study's drawn values) gives pint's own parse: the same
+    magnitude, of the same type (pint divides by a unit: "1 mm/s" is 1.0), and the same unit; offset units and
+    anything else go to pint (oracle: pint's ureg.Quantity(text), issue 19)."""
+    from mechverify.units import _parse_cached, ureg
+
+    texts = ["14.751431137084994 kg", "320.7938649155673 N", "0.08929600587547441 m/s^2", "15 kg", "-5 N", "1e3 N",
+             "1.5e-3 m", ".5 mm", "5. mm", "2 m/s**2", "3 N*m", "3 N * m", "10 kgf*cm", "66 ozf*in", "540 rpm",
+             "9 Hz", "2 kg*m^2", "7850 kg/m^3", "200 GPa", "1 mm/s", "12 mm / s", "0.3 N/mm", "4 µm", "20 degC",
+             "5 delta_degC", "100 kN/m", "3 m^2", "1 inch", "2 lbf", "+4 mm", "1E-3 m", "2 N/mm**2", "1 rad/s",
+             "10 deg", "1 m/s/s", "2 kg m", "5 N m", "1 kWh", "60 1/min", "1 N*m/rad", "3.0 s", "2 N*m/A"]
+    for text in texts:
+        q = ureg.Quantity(text)
+        mag, units = _parse_cached.__wrapped__(text)
+        assert type(mag) is type(q.magnitude) and mag == q.magnitude and units == q.units, text

@@ -236,13 +236,19 @@ def _describe_dim(q: Any) -> str:
 # ----------------------------------------------------------------------------------------------- parsing
 
 
+@functools.lru_cache(maxsize=1024)
+def _parse_units(text: str) -> Any:
+    """A literal's unit text parsed once (a study's drawn values repeat a few units in new strings every sample)."""
+    return ureg.parse_units(text)
+
+
 def _literal_value(number: str, unit: str | None, source: str) -> Any:
     value: float | int = int(number) if re.fullmatch(r"\d+", number) else float(number)
     if not unit:
         return float(value)
     text = unit.replace("·", "*").replace("^", "**")
     try:
-        u = ureg.parse_units(text)
+        u = _parse_units(text)
     except Exception:
         raise ExpressionError(f"{source!r}: unknown unit {unit!r} after {number} (to multiply by a parameter, "
                               f"write {number} * {unit})") from None
