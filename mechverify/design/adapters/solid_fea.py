@@ -143,7 +143,7 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
     sources = [k for k in ("step", "stl", "box", "mesh") if k in p]
     if len(sources) != 1:
         raise InputError(f"step: give exactly one geometry: step, stl, box or mesh (got {sources or 'none'})")
-    resolve_files(p, ctx, tuple(f.name for f in SOLID_FEA.fields if f.file))
+    resolve_files(p, ctx, tuple(f.name for f in SOLID_FEA.fields if f.file and f.name != "vtu"))  # vtu: an output
     if isinstance(p.get("box"), str) and isinstance(ctx, Mapping) and ctx.get("parameters"):
         from mechverify.design.parameters import substitute  # "300, 10, t": parameters in the block's size
 
@@ -278,7 +278,8 @@ SOLID_FEA = REGISTRY.register(ComponentType(
                                   "\"x, y, z\" (default all)}; [] for a free-free solid (natural_frequency only)",
               required=True, item="table"),
         Field("vtu", "str", "folder (relative to the design file; made if missing) for ParaView files: "
-                            "<component>_<load case>.vtu (displacement, stress) and <component>_modes.vtu"),
+                            "<component>_<load case>.vtu (displacement, stress) and <component>_modes.vtu",
+              file=True),
         Field("deflection_limit", "str", "limit on the largest displacement: a length or 'L/250' of span"),
         Field("span", "length", "span of an 'L/n' deflection limit"),
         Field("min_frequency", "frequency", "the first natural frequency must reach this"),
