@@ -146,10 +146,36 @@ class Design:
         return iter(hit[1])
 
     def _enabled_checks(self, entry: Entry) -> Iterator[tuple[CheckSpec, float]]:
+        left_out = self.left_out(entry)
         for spec in entry.type.checks:
             setting = entry.checks.get(spec.name, {})
-            if setting.get("enabled", spec.default):
+            if setting.get("enabled", spec.default) and spec.name not in left_out:
                 yield spec, float(setting.get("required_sf", self.data.safety_factors[spec.sf_kind]))
+
+    def left_out(self, entry: Entry) -> tuple[str, ...]:
+        """The checks that need loads and are on by default (the file does not name them under ``checks``) of a
+        component that no load case names and that has a check without loads on: a modal-only study (a free-free
+        solid, a frame's natural frequencies). They are left out of the plan, with a note on the component's results
+        (:meth:`verify`), instead of one error each asking for ``checks.<name> = false``; a check the file turns on
+        itself stays in the plan, and so an error without loads (issue 23)."""
+        memo = self.__dict__.setdefault("_left_out", {})
+        hit = memo.get(entry.name)
+        if hit is not None and hit[0] is entry:
+            return hit[1]
+        out: tuple[str, ...] = ()
+        if not any(entry.name in comps for comps in self.data.load_cases.values()):
+            on = [s for s in entry.type.checks if entry.checks.get(s.name, {}).get("enabled", s.default)]
+            if any(not s.needs for s in on):
+                out = tuple(s.name for s in on if s.needs and s.name not in entry.checks)
+        memo[entry.name] = (entry, out)
+        return out
+
+    @staticmethod
+    def _needs_error(entry: Entry, spec: CheckSpec) -> tuple[str, str]:
+        needs = ", ".join(n.replace("|", " or ") for n in spec.needs)
+        return (f"components.{entry.name}.checks.{spec.name}",
+                f"needs {needs} from a load case, and no [load_cases.*.{entry.name}] gives it (give it, or disable "
+                f"the check with checks.{spec.name} = false)")
 
     def _cases_for(self, entry: Entry, spec: CheckSpec) -> list[tuple[str, dict[str, Any]]]:
         memo = self.__dict__.setdefault("_cases", {})  # (the plan and verify read it: found once per design)
@@ -193,11 +219,7 @@ class Design:
         for entry in self.data.components.values():
             for spec, _ in self.enabled_checks(entry):
                 if spec.needs and not self._cases_for(entry, spec):
-                    needs = ", ".join(n.replace("|", " or ") for n in spec.needs)
-                    errors.append((f"components.{entry.name}.checks.{spec.name}",
-                                   f"needs {needs} from a load case, and no [load_cases.*."
-                                   f"{entry.name}] gives it (give it, or disable the check with "
-                                   f"checks.{spec.name} = false)"))
+                    errors.append(self._needs_error(entry, spec))
         if errors:
             raise DesignFileError(errors, str(self.path or ""))
 
@@ -303,6 +325,14 @@ class Design:
                         gov = gov.replace(notes=(*gov.notes, f"Governing of {len(rs)} load cases "
                                                              f"(others: {others})."))
                     results.append(gov)
+            left = self.left_out(entry)
+            if left and len(errors) == n_err:  # a modal-only study: what was left out, on its results
+                if len(results) == start:  # (no result at all: the checks that need loads are asked for after all)
+                    errors.extend(self._needs_error(entry, s) for s in entry.type.checks if s.name in left)
+                else:
+                    note = (f"{', '.join(left)} left out: no load case loads {entry.name} (the checks that need loads "
+                            f"run in the load cases that give them: add a [load_cases.<case>.{entry.name}])")
+                    results[start:] = [r.replace(notes=(*r.notes, note)) for r in results[start:]]
             if len(errors) == n_err:
                 done[entry.name] = (results[start:], steps)
         if errors:

@@ -2,6 +2,8 @@
 
 - :class:`Fixed` - every displacement component of a region held at zero (a clamped face).
 - :class:`Restraint` - chosen components held (a roller or symmetry plane: ``Restraint(r, x=True)``).
+- :class:`Pin` - a frictionless pin in a hole: the wall held radially, free tangentially and (unless ``axial``)
+  along the axis (:mod:`mechverify.fea.pins`).
 - :class:`Force` - a total force spread uniformly (per unit area) over a region: a bolt or pin
   load on a hole wall, a load on a face.
 - :class:`Pressure` - a pressure acting on a region, pushing into the surface when positive.
@@ -48,7 +50,7 @@ class RegionReport:
 
     def __str__(self) -> str:
         scale, u = (1e6, "mm²") if self.unit == "m**2" else (1e3, "mm")
-        what = "nodes" if self.item.startswith(("Fixed", "Restraint")) else "facets"
+        what = "nodes" if self.item.startswith(("Fixed", "Restraint", "Pin")) else "facets"
         text = f"{self.item}: {self.count} {what}, {self.measure * scale:.6g} {u}"
         if self.resultant is not None:
             text += ", resultant (" + ", ".join(f"{v:.4g}" for v in self.resultant) + ") N"
@@ -211,6 +213,37 @@ class Restraint:
         return (self.x, self.y, self.z)
 
 
+@dataclass(frozen=True)
+class Pin:
+    """A frictionless pin in a hole: the wall of ``region`` (a cylinder: a hole wall, a STEP cylinder face) held
+    **radially** - both ways, bilateral, no contact - and free tangentially, so the part turns about the pin; free
+    along the pin's axis unless ``axial`` (then held along it too). The wall's axis is fitted to its nodes
+    (:mod:`mechverify.fea.pins`). Unlike :class:`Fixed` on the wall, which clamps the section at the hole, a beam on
+    two pinned holes is simply supported. A pin that would lift off the wall is not modelled (no contact)."""
+
+    region: Region
+    axial: bool = False
+    expect_area: Any = None
+    expect_length: Any = None
+
+    def __post_init__(self) -> None:
+        _region(self.region, "Pin")
+        a, ln = _expect(self.expect_area, self.expect_length)
+        set_fields(self, expect_area=a, expect_length=ln, axial=bool(self.axial))
+
+    @property
+    def components(self) -> tuple[bool, bool, bool]:
+        """The reaction's components reported (x, y, z: a pin's reaction is radial, in every direction across)."""
+        return (True, True, True)
+
+    @property
+    def note(self) -> str:
+        """What the support is, for a result's notes."""
+        return ("pin: radial held, tangential and rotation free" + (", axial held" if self.axial else ", axial free")
+                + " (bilateral: the whole wall held radially both ways, no contact; a pin that lifts off is not "
+                  "modelled)")
+
+
 @dataclass(frozen=True, init=False)
 class Force:
     """A total force vector [N] spread uniformly over the area of ``region``."""
@@ -313,8 +346,10 @@ STANDARD_GRAVITY = 9.80665  # m/s^2, CGPM 1901 (ISO 80000-3)
 def held_load_names(loads: Sequence[Any], parts: Sequence[np.ndarray], held: np.ndarray) -> list[str]:
     """Names of the ``loads`` whose nodal force vectors ``parts`` lie wholly on the ``held`` DOFs (solid and
     plane models); a :class:`ModelError` when every load does (nothing would be loaded: zero stress, a silent
-    PASS)."""
-    free = np.ones(parts[0].size if parts else 0, bool)
+    PASS). No loads at all (a load case of ``gravity = false`` only) name none."""
+    if not parts:
+        return []
+    free = np.ones(parts[0].size, bool)
     free[held] = False
     out = []
     for i, (ld, fi) in enumerate(zip(loads, parts, strict=True)):
