@@ -299,8 +299,13 @@ class PlaneModel:
                 comp = np.array(s.components[:2], bool)
                 res = tuple(np.where(comp, reaction.reshape(-1, 2)[nodes].sum(axis=0), 0.0))
             expected = s.expect_length if s.expect_length is not None else self._known_length(s.region)
+            # a box cutting through edges holds only the whole ones inside it: the same WARN as loads and as the
+            # solid's supports (review 3 #22; issue 23)
+            cut = self._straddle(name, s.region)
+            if cut:
+                cut += f" (the support holds {got * 1e3:.6g} mm of boundary)"
             out.append(RegionReport(name, int(nodes.size), got, "m", res, expected,
-                                    compare_measure(name, got, expected, "m")))
+                                    _join(compare_measure(name, got, expected, "m"), cut)))
         return tuple(out)
 
     def _straddle(self, name: str, region: Region) -> str | None:
