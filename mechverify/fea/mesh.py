@@ -542,6 +542,22 @@ def bond_solids(gmsh: Any, vols: list[int]) -> tuple[list[int], dict[int, list[i
     return [t for _, t in gmsh.model.getEntities(3)], faces
 
 
+def import_step_solids(gmsh: Any, path: Path) -> list[int]:
+    """Read the STEP file ``path`` into gmsh's current model, lengths in metres (OpenCASCADE's target unit: the
+    caller restores it with :func:`mechverify.fea.gmshstate.restore_step_unit`), and return the volume tags.
+    A file gmsh cannot read, or one that holds no solid, is a :class:`ModelError` naming the file."""
+    gmsh.option.setString("Geometry.OCCTargetUnit", "M")
+    try:
+        ents = gmsh.model.occ.importShapes(str(path))
+    except Exception as exc:  # gmsh raises a bare Exception with its log message
+        raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
+    gmsh.model.occ.synchronize()
+    vols = [t for d, t in ents if d == 3]
+    if not vols:
+        raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+    return vols
+
+
 def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curved: bool = True) -> SolidMesh:
     """Tetrahedral mesh of the solid(s) in a STEP file (gmsh/OpenCASCADE); ``unit`` is the unit the
     file's lengths are in when it declares none (CAD exports are usually mm). Each CAD face becomes a
@@ -560,15 +576,7 @@ def from_step(path: str | Path, mesh_size: QuantityLike, unit: str = "mm", curve
     h = to_si(mesh_size, "length", "mesh_size")
     gmsh_session(gmsh, h)
     try:
-        gmsh.option.setString("Geometry.OCCTargetUnit", "M")
-        try:
-            ents = gmsh.model.occ.importShapes(str(path))
-        except Exception as exc:  # gmsh raises a bare Exception with its log message
-            raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
-        gmsh.model.occ.synchronize()
-        vols = [t for d, t in ents if d == 3]
-        if not vols:
-            raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+        vols = import_step_solids(gmsh, path)
         notes: tuple[str, ...] = ()
         faces = {tag: [tag] for _, tag in gmsh.model.getEntities(2)}  # face id -> gmsh surfaces
         if len(vols) > 1:  # an assembly: bond the solids where they touch (shared faces, a conforming mesh)

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError
 
 
 @dataclass(frozen=True)
@@ -61,7 +61,7 @@ def _mm(v: float) -> str:
 def step_faces(path: str | Path) -> list[StepFace]:
     """The faces of the STEP file ``path`` with their ids as meshed (lengths in metres, as the mesh)."""
     from mechverify.fea.gmshstate import restore_step_unit
-    from mechverify.fea.mesh import bond_solids, import_gmsh, initialize_gmsh
+    from mechverify.fea.mesh import bond_solids, import_gmsh, import_step_solids, initialize_gmsh
 
     path = Path(path)
     if not path.exists():
@@ -70,16 +70,8 @@ def step_faces(path: str | Path) -> list[StepFace]:
     initialize_gmsh(gmsh)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setString("Geometry.OCCTargetUnit", "M")
         gmsh.model.add("faces")
-        try:
-            ents = gmsh.model.occ.importShapes(str(path))
-        except Exception as exc:  # gmsh raises a bare Exception with its log message
-            raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
-        gmsh.model.occ.synchronize()
-        vols = [t for d, t in ents if d == 3]
-        if not vols:
-            raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+        vols = import_step_solids(gmsh, path)
         faces = {tag: [tag] for _, tag in gmsh.model.getEntities(2)}
         if len(vols) > 1:
             vols, faces = bond_solids(gmsh, vols)
