@@ -222,3 +222,38 @@ def test_an_explicit_local_run_beats_dask_scheduler_address(local, capsys, monke
     captured = capsys.readouterr()
     assert rc == 0, captured.err
     assert "Monte Carlo study" in captured.out and "Dask" not in captured.err
+
+
+# ------------------------------------------------ task fix19 (audit of issue 19): a batch that kills its worker every time
+def _die_on_one_batch(doc, path, overrides):
+    """A task whose worker process dies (os._exit) every time it runs one given batch (the one whose first lift mass
+    is the design's description): a sample that always crashes its worker, not an exception."""
+    if overrides[0]["components.lift.mass"] == doc["design"]["description"]:
+        with open(os.environ["MECHVERIFY_TEST_RUNS"], "a") as fh:
+            fh.write("run\n")
+        os._exit(13)
+    return ex.run_batch(doc, path, overrides)
+
+
+@pytest.mark.parametrize("batch", [0, 2], ids=["first-batch", "third-batch"])
+def test_a_batch_that_always_kills_its_worker_fails_alone(batch, monkeypatch, serial_json, tmp_path):
+    """Issue 19, bad input: 'a worker that dies mid-study: its batch retried once, then its samples reported as
+    failed'. A dead process breaks the local pool, and the pool fails every batch it holds (the running ones and the
+    queued ones) with the same BrokenProcessPool: before, each was charged a run, so a batch that kills its worker
+    every time (here the first of four, with 2 workers) took the whole study down: 12 of 12 samples 'failed'. Only
+    its 3 samples may fail; the other 9 equal the serial study's."""
+    study = Study(LIFT, vary=VARY, samples=12, seed=7, batch_size=3)
+    study.doc["design"]["description"] = study.overrides(study.inputs()[3 * batch])["components.lift.mass"]
+    monkeypatch.setattr(Study, "batch_fn", staticmethod(_die_on_one_batch))
+    monkeypatch.setenv("MECHVERIFY_TEST_RUNS", str(tmp_path / "runs"))
+    res = study.run(workers=2)
+    assert (tmp_path / "runs").read_text() == "run\n" * 2  # retried once, then failed
+    bad = set(range(3 * batch, 3 * batch + 3))
+    assert [s["status"] for s in res.samples] == ["error" if i in bad else "ok" for i in range(12)]
+    for i in bad:
+        assert "worker failed 2 times on this batch" in res.samples[i]["message"]
+        assert "BrokenProcessPool" in res.samples[i]["message"]
+    import json
+
+    ref = json.loads(serial_json)["samples"]
+    assert [s for s in res.samples if s["index"] not in bad] == [s for s in ref if s["index"] not in bad]

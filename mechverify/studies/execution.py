@@ -17,7 +17,9 @@ import math
 import multiprocessing
 import multiprocessing.context
 import os
+import shutil
 import sys
+import tempfile
 import threading
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
@@ -341,44 +343,105 @@ def _discard(client: Any) -> None:
         pass
 
 
+def _marked(batch_fn: Callable[..., list[dict[str, Any]]], marks: str, i: int, doc: Mapping[str, Any],
+            path: str | None, overrides: Sequence[Mapping[str, Any]]) -> list[dict[str, Any]]:
+    """The task of a local process pool: leaves the file ``marks/i`` when batch ``i`` starts in a worker, so that
+    after a worker's death :func:`run_batches` knows which batches were running (the suspects) and which were only
+    queued (the broken pool fails them all alike)."""
+    Path(marks, str(i)).touch()
+    return batch_fn(doc, path, overrides)
+
+
 def run_batches(batch_fn: Callable[..., list[dict[str, Any]]], doc: Mapping[str, Any], path: str | None,
                 batches: Sequence[Sequence[Mapping[str, Any]]], executor: cf.Executor | None = None, *,
                 workers: int | None = None, retries: int = 1,
                 on_done: Callable[[int], None] | None = None) -> list[list[dict[str, Any]]]:
     """Run every batch; results in batch order. A batch whose future fails (worker died, pool broken) is
-    resubmitted ``retries`` times, then each of its samples is recorded as failed with the reason."""
+    resubmitted ``retries`` times, then each of its samples is recorded as failed with the reason.
+
+    On the local process pool (``executor`` None) a dead worker breaks the whole pool, which then fails every batch
+    it holds with the same error. A new pool is started; the batches that were queued but not yet running (a file
+    per batch started, :func:`_marked`, tells them apart) are resubmitted as they were, uncharged; those that were
+    running (with others: which one killed the worker is unknown) are charged a run and rerun one at a time, each
+    alone in the pool, where a death is the batch's own. A batch that kills its worker every time is so reported
+    failed after two runs, and it is the only one (it took every batch of the study with it before)."""
     own = executor is None
     ex = process_pool(workers, task=batch_fn) if own else executor
     results: list[list[dict[str, Any]] | None] = [None] * len(batches)
     attempts = [0] * len(batches)
+    marks = tempfile.mkdtemp(prefix="mechverify-study-") if own else None
+    solo: list[int] = []  # batches to rerun alone: they were running, with others, when a worker died
+    later: list[int] = []  # batches to (re)submit when no batch is running alone
+    alone = False  # the batch in flight runs alone
+
+    def submit(i: int) -> None:
+        if marks is None:
+            pending[ex.submit(batch_fn, doc, path, list(batches[i]))] = i
+            return
+        Path(marks, str(i)).unlink(missing_ok=True)
+        pending[ex.submit(_marked, batch_fn, marks, i, doc, path, list(batches[i]))] = i
+
+    def failed(i: int, exc: BaseException, retry: list[int]) -> None:
+        """A run of batch ``i`` failed and the failure is its own: retry it (in ``retry``: ``later``, or ``solo``
+        for a batch whose worker died), or record its samples as failed."""
+        attempts[i] += 1
+        if attempts[i] <= retries:
+            retry.append(i)
+            return
+        msg = f"worker failed {attempts[i]} times on this batch: {type(exc).__name__}: {exc}"
+        results[i] = [{"status": "error", "message": msg, "checks": {}} for _ in batches[i]]
+        if on_done is not None:
+            on_done(len(batches[i]))
+
+    pending: dict[cf.Future, int] = {}
     try:
-        pending = {ex.submit(batch_fn, doc, path, list(b)): i for i, b in enumerate(batches)}
-        while pending:
+        for i in range(len(batches)):
+            submit(i)
+        while True:
+            if not pending and solo:
+                submit(solo.pop(0))
+                alone = True
+            elif later and not solo and not (pending and alone):
+                for i in sorted(set(later)):
+                    submit(i)
+                later.clear()
+                alone = False
+            if not pending:
+                break
+            only = len(pending) == 1
             done, _ = cf.wait(list(pending), return_when=cf.FIRST_COMPLETED)
-            retry: list[int] = []
+            if own and any(isinstance(f.exception(), cf.BrokenExecutor) for f in done):
+                done, _ = cf.wait(list(pending))  # a broken pool fails every future it holds: take them all
+            broken: list[tuple[int, BaseException]] = []
             for f in done:
                 i = pending.pop(f)
-                try:
+                exc = f.exception()
+                if exc is None:
                     results[i] = f.result()
-                except Exception as exc:  # (a lost worker must not stop the study)
+                    if on_done is not None:
+                        on_done(len(batches[i]))
+                elif own and isinstance(exc, cf.BrokenExecutor):
+                    broken.append((i, exc))
+                else:  # the task raised, or another executor lost it: the failure is this batch's
+                    failed(i, exc, later)
+            if not broken:
+                continue
+            ex.shutdown(wait=False, cancel_futures=True)
+            ex = process_pool(workers, task=batch_fn)
+            assert marks is not None
+            ran = {i for i, _ in broken if Path(marks, str(i)).exists()}
+            if only:  # its own death: it was alone in the pool; retried alone
+                failed(*broken[0], solo)
+            elif not ran:  # a pool that dies before running anything: every batch is charged (this ends)
+                for i, exc in sorted(broken, key=lambda b: b[0]):
+                    failed(i, exc, later)
+            else:  # each batch that was running is charged a run and reruns alone, where a death is its own
+                for i in sorted(ran):
                     attempts[i] += 1
-                    if attempts[i] <= retries:
-                        retry.append(i)
-                        continue
-                    msg = f"worker failed {attempts[i]} times on this batch: {type(exc).__name__}: {exc}"
-                    results[i] = [{"status": "error", "message": msg, "checks": {}} for _ in batches[i]]
-                if on_done is not None:
-                    on_done(len(batches[i]))
-            if retry:
-                if own and getattr(ex, "_broken", False):  # a dead process breaks the whole local pool
-                    ex.shutdown(wait=False, cancel_futures=True)
-                    ex = process_pool(workers, task=batch_fn)
-                    for f, i in list(pending.items()):  # futures of the broken pool will fail: resubmit them too
-                        pending.pop(f)
-                        retry.append(i)
-                for i in sorted(set(retry)):
-                    pending[ex.submit(batch_fn, doc, path, list(batches[i]))] = i
+                    solo.append(i)
+                later.extend(i for i, _ in broken if i not in ran)
     finally:
         if own:
             ex.shutdown(wait=True, cancel_futures=True)
+            shutil.rmtree(marks, ignore_errors=True)  # type: ignore[arg-type]
     return [r if r is not None else [] for r in results]
