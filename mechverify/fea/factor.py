@@ -25,7 +25,11 @@ plate); :meth:`SymbolicCost.factor_seconds` turns them into seconds and :func:`f
 
 CHOLMOD runs with one BLAS thread (``threadpoolctl``, when installed): triangular solves are memory-bound,
 and on the shared 2-core box busy-waiting BLAS threads made a solve up to 9 times and a factorisation up to
-3 times slower than one thread (measured with a load average of 10).
+3 times slower than one thread (measured with a load average of 10). It also runs without OpenMP threads
+(:func:`one_openmp_thread`): CHOLMOD 3 (SuiteSparse 5, Debian 12) opens parallel regions of a fixed four threads in
+its supernodal factorisation (``cholmod_super_numeric``, whatever ``OMP_NUM_THREADS`` says), which only copy and
+clear supernodes; on the 2-core box the three extra threads spun for 0.15-0.2 s CPU per factorisation of the
+37k-DOF plate (1.00 against 0.80 s CPU for the whole solve) and gave the same bits.
 
 References
 ----------
@@ -36,10 +40,14 @@ References
 
 from __future__ import annotations
 
+import contextlib
 import ctypes
 import ctypes.util
 import functools
+import os
+import threading
 import time
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -63,6 +71,54 @@ FACTOR_BYTES_PER_NNZ = 10.0
 #: Seconds per non-zero of L of one solve (the two triangular solves; memory-bound): 0.028 s at 16.2M and 0.099 s
 #: at 71.9M non-zeros measured (the plate with a hole at 66k and 179k DOF, CPU time, one BLAS thread).
 SOLVE_SECONDS_PER_NNZ = 1.75e-9
+
+
+_omp_lock = threading.Lock()
+_omp_depth = 0
+_omp_saved: int | None = None
+
+
+_omp_runtime: list[Any] = []
+
+
+def _openmp_runtime() -> Any:
+    """The OpenMP runtime already loaded into this process (GNU, LLVM or Intel; None while there is none: nothing
+    is loaded here, and it is looked for again next time)."""
+    if _omp_runtime:
+        return _omp_runtime[0]
+    for name in ("libgomp.so.1", "libomp.so", "libomp.so.5", "libiomp5.so"):
+        try:
+            lib = ctypes.CDLL(name, mode=os.RTLD_NOLOAD | os.RTLD_LAZY)
+            lib.omp_get_max_active_levels.restype = ctypes.c_int
+            lib.omp_set_max_active_levels.argtypes = [ctypes.c_int]
+        except (OSError, AttributeError):
+            continue
+        _omp_runtime.append(lib)
+        return lib
+    return None
+
+
+@contextlib.contextmanager
+def one_openmp_thread() -> Iterator[None]:
+    """Run the block with OpenMP parallel regions inactive (``omp_set_max_active_levels(0)``: a region then runs on
+    the calling thread alone, even one that asks for a number of threads), then restore the setting. Re-entrant and
+    safe across threads (set by the first block to enter, restored by the last to leave)."""
+    global _omp_depth, _omp_saved
+    with _omp_lock:
+        if _omp_depth == 0:
+            lib = _openmp_runtime()
+            if lib is not None:
+                _omp_saved = lib.omp_get_max_active_levels()
+                lib.omp_set_max_active_levels(0)
+        _omp_depth += 1
+    try:
+        yield
+    finally:
+        with _omp_lock:
+            _omp_depth -= 1
+            if _omp_depth == 0 and _omp_saved is not None:
+                _openmp_runtime().omp_set_max_active_levels(_omp_saved)
+                _omp_saved = None
 
 
 def cholmod_available() -> bool:
@@ -227,7 +283,7 @@ class Factorization:
         b = np.asarray(b, dtype=float)
         if b.shape[0] != self.n:
             raise InputError(f"right-hand side of length {b.shape[0]} for a factorisation of size {self.n}")
-        with one_blas_thread():
+        with one_blas_thread(), one_openmp_thread():
             return self._solve(np.ascontiguousarray(b) if self.method == "superlu" else b)
 
     __call__ = solve
@@ -272,7 +328,7 @@ def factorize(A: sp.spmatrix, method: str = "auto", what: str = "the stiffness m
 
         p = None if symbolic is None or method != "cholmod" else symbolic.perm
         try:
-            with one_blas_thread():  # LLᵀ: a matrix that is not positive definite fails
+            with one_blas_thread(), one_openmp_thread():  # LLᵀ: a matrix that is not positive definite fails
                 F = cholesky(A, mode="supernodal") if p is None else \
                     cholesky(permuted_matrix(A, p), mode="supernodal", ordering_method="natural")
         except CholmodError as exc:
