@@ -86,15 +86,21 @@ class SolidStudy:
         try:
             sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
         except InputError as exc:
-            if "unknown mesh region" not in str(exc) or "step" not in self.p:
-                raise
-            from pathlib import Path
-
-            from mechverify.fea.stepfaces import describe_faces
-
-            raise InputError(f"{exc}. The faces of {Path(self.p['step']).name} (`mechverify faces` lists them):\n"
-                             + "\n".join(f"    {ln}" for ln in describe_faces(self.p["step"]).splitlines())) from None
+            raise self.with_faces(exc) from None
         return model
+
+    def with_faces(self, exc: InputError) -> InputError:
+        """``exc`` with the STEP file's faces listed when it names an unknown mesh region (``face = 99``), else
+        ``exc``: the same text from every analysis (stress of a load case, natural frequency), so the design file
+        reports it once, at its key."""
+        if "unknown mesh region" not in str(exc) or "step" not in self.p:
+            return exc
+        from pathlib import Path
+
+        from mechverify.fea.stepfaces import describe_faces
+
+        return InputError(f"{exc}. The faces of {Path(self.p['step']).name} (`mechverify faces` lists them):\n"
+                          + "\n".join(f"    {ln}" for ln in describe_faces(self.p["step"]).splitlines()))
 
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
@@ -229,6 +235,11 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
 
     with c.regions():
         model = c.model()
+        try:  # the supports' regions on the mesh, as a load case checks them (a STEP file's faces listed; issue 23)
+            sp.named_regions(c.p.get("supports"), model.mesh.named, "supports")
+            sp.geometric_regions(model, c.p.get("supports"), c.unit, "supports")
+        except InputError as exc:
+            raise c.with_faces(exc) from None
         if not c.supports:  # free-free: the six rigid-body modes are set apart, `modes` elastic ones computed beside
             n_bodies = int(model.bodies.max()) + 1
             if n_bodies > 1:  # each separate body has six more zero modes: they would pass as frequencies

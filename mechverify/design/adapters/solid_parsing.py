@@ -77,7 +77,7 @@ def _region(t: Any, unit: str, path: str) -> Any:
     if k == "named":
         return Named(str(t["named"]))
     if k == "face":
-        return Named(f"face{int(t['face'])}")
+        return Named(face_name(t["face"], f"{path}.face"))
     if k == "plane":
         axis, _, val = str(t["plane"]).partition("=")
         if axis.strip() not in ("x", "y", "z") or not val.strip():
@@ -90,13 +90,22 @@ def _region(t: Any, unit: str, path: str) -> Any:
     return Box(tuple(Q(v, "m") for v in lo), tuple(Q(v, "m") for v in hi))
 
 
+def face_name(face: Any, path: str) -> str:
+    """``face = k`` as the region name ``face<k>``: ``k`` a whole number from 1 (a STEP/STL file's face ids, which
+    ``mechverify faces <file>`` lists), else an InputError at ``path``."""
+    if isinstance(face, bool) or not isinstance(face, int) or face < 1:
+        raise InputError(f"{path}: expected a face number 1, 2, ... (`mechverify faces <file>` lists a STEP file's "
+                         f"faces), got {face!r}")
+    return f"face{face}"
+
+
 def named_regions(tables: Any, names: Any, path: str) -> None:
     """Every region written as ``named``/``face`` in ``tables`` is one of the mesh's ``names``, else an
     InputError at its key (``supports[0].named``): once, not per check that meshes and solves."""
     names = sorted(names)
     for i, t in enumerate(tables or []):
         key = next((k for k in ("named", "face") if isinstance(t, Mapping) and k in t), None)
-        if key is not None and (str(t[key]) if key == "named" else f"face{t[key]}") not in names:
+        if key is not None and (str(t[key]) if key == "named" else face_name(t[key], f"{path}[{i}].face")) not in names:
             hint = suggest(str(t[key]), names, 1)
             raise InputError(f"{path}[{i}].{key}: unknown mesh region {t[key]!r}; "
                              + (f"did you mean {hint[0]!r}? " if hint else "") + f"valid regions: {', '.join(names)}")
