@@ -257,3 +257,21 @@ def test_a_batch_that_always_kills_its_worker_fails_alone(batch, monkeypatch, se
 
     ref = json.loads(serial_json)["samples"]
     assert [s for s in res.samples if s["index"] not in bad] == [s for s in ref if s["index"] not in bad]
+
+
+def test_a_peer_answering_garbage_is_called_not_a_scheduler_not_a_memory_error(capsys):
+    """Task fix19 (audit of issue 19's unreachable scheduler): an HTTP server answering on the scheduler's port (the
+    sandbox's proxy at 10.255.255.1:8786 does) was reported as 'cannot reach ... (MemoryError: Unable to allocate
+    3.07 EiB for an array ...)': Dask read the reply's first bytes as a frame length. The reason now says what
+    happened: something answered that is not a Dask scheduler."""
+    pytest.importorskip("distributed")
+    peer = _FakePeer(b"HTTP/1.1 400 Bad Request\r\nconnection: close\r\ncontent-length: 0\r\n\r\n")
+    try:
+        rc = main(["study", str(LIFT), "--vary", "parameters.lifted_load=normal:300 N:10 N", "--samples", "2",
+                   "--scheduler", peer.address, "--timeout", "3", "--no-progress"])
+    finally:
+        peer.close()
+    err = capsys.readouterr().err
+    assert rc == 2 and f"cannot reach the Dask scheduler at {peer.address} within 3 s" in err
+    assert "MemoryError" not in err and "EiB" not in err, err
+    assert "something answered there that is not a Dask scheduler" in err, err

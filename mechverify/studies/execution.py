@@ -321,10 +321,24 @@ def connect_dask(address: str, timeout: float = 10.0) -> Any:
     exc = box.get("error")
     for c in made:
         _discard(c)
-    why = "no answer" if exc is None else f"{type(exc).__name__}: {exc}"
+    why = "no answer" if exc is None else _not_dask(exc) or f"{type(exc).__name__}: {exc}"
     raise SchedulerError(f"cannot reach the Dask scheduler at {address} within {timeout:g} s ({why[:300]}); give the "
                          "scheduler's address, e.g. tcp://host:8786 (8787 is its dashboard), or run locally "
                          "(--serial, --workers N)")
+
+
+def _not_dask(exc: BaseException) -> str | None:
+    """The reason to print when ``exc`` comes from reading a reply that is no Dask message, else None. Dask reads a
+    message's first 8 bytes as a frame length: an HTTP server's "HTTP/1.1" asks for 3.07 EiB (a MemoryError that
+    used to be the whole reason given); other bytes fail in msgpack, struct or pickle."""
+    import pickle
+    import struct
+
+    module = type(exc).__module__ or ""
+    if isinstance(exc, MemoryError | struct.error | UnicodeDecodeError | pickle.UnpicklingError) \
+            or module.split(".")[0] == "msgpack":
+        return "something answered there that is not a Dask scheduler: its reply is not a Dask message"
+    return None
 
 
 def _discard(client: Any) -> None:
