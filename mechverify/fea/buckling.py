@@ -121,16 +121,18 @@ def buckling(model: Any, n_modes: int = 1, method: str = "auto", memory: float |
         raise InputError(f"n_modes: between 1 and {free.size // 2 - 1} for this model ({free.size} free DOFs), "
                          f"got {n_modes}")
     require_memory(free.size, dim, n_modes + 4, method, memory)  # before assembling: the factor's estimate
-    K = stiffness_matrix(model).tocsr()
+    basis = getattr(model, "dof_basis", None)  # pin supports: K, f and K_G in the pins' axes (fea.pins)
+    K = (stiffness_matrix(model) if basis is None else basis.rotate(stiffness_matrix(model))).tocsr()
     Kf = K[free][:, free].tocsc()
     fac = factorize(Kf, method, what="the stiffness matrix")  # CHOLMOD when installed, else SuperLU
-    f = model.load_vector()
+    f = model.load_vector() if basis is None else basis.inward(model.load_vector())
     if not np.any(f[free]):  # every load on held nodes: nothing is stressed (ARPACK would fail on K_G = 0)
         model.loads_on_held()  # names them (a ModelError)
         raise ModelError("buckling: the loads reach no free node, so nothing is stressed and nothing can buckle")
     u = np.zeros(K.shape[0])
     u[free] = fac.solve(f[free])
-    G = geometric_stiffness(model, u).tocsr()
+    G = geometric_stiffness(model, u if basis is None else basis.outward(u))
+    G = (G if basis is None else basis.rotate(G)).tocsr()
     Gf = -G[free][:, free].tocsr()
     op = fac.operator()
     k = min(max(2 * n_modes, n_modes + 4), free.size - 2)
@@ -167,6 +169,8 @@ def buckling(model: Any, n_modes: int = 1, method: str = "auto", memory: float |
     n = model.nodes.shape[1]
     full = np.zeros((n * dim, len(mu)))
     full[free] = V
+    if basis is not None:
+        full = basis.outward(full)
     full /= np.max(np.abs(full), axis=0)[None, :]
     shapes = np.zeros((len(mu), n, 3))
     shapes[:, :, :dim] = full.T.reshape(len(mu), n, dim)

@@ -197,8 +197,13 @@ def free_dofs(model: Any) -> np.ndarray:
     n = model.nodes.shape[1] * dim
     if not model.supports:
         return np.arange(n)
-    held = model.held_dofs()
-    check_supported(model.nodes, held)
+    basis = getattr(model, "dof_basis", None)  # pin supports: the held DOFs are in the pins' axes (fea.pins)
+    if basis is not None:
+        held = model.held_in_axes()[0]
+        basis.check_supported(model.nodes, held)
+    else:
+        held = model.held_dofs()
+        check_supported(model.nodes, held)
     mask = np.ones(n, bool)
     mask[held] = False
     return np.flatnonzero(mask)
@@ -357,7 +362,9 @@ def _prolongation(model: Any, dim: int) -> sp.csr_matrix:
     """Linear-to-quadratic interpolation of the model's mesh (the coarse level of the p-multigrid)."""
     if dim == 3:
         m = model.mesh.mesh
-        return p1_prolongation(m.nvertices, m.edges, 3)
+        basis = getattr(model, "dof_basis", None)  # pins: in the pins' axes, Tᵀ P T₁
+        P = p1_prolongation(m.nvertices, m.edges, 3)
+        return P if basis is None else basis.prolongation(P)
     return p1_prolongation(model.mesh.nvertices, model.mesh.facets, 2)
 
 
@@ -465,8 +472,13 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     # before assembling anything: what the least demanding allowed path needs must fit (the measured rule)
     require_memory(free.size, dim, n_modes, "lobpcg" if method == "auto" and shift is None else used, memory)
     pattern = _pattern(model, dim, _parts(model)[1])
+    basis = getattr(model, "dof_basis", None)  # pin supports: K and M in the pins' axes, K' = Tᵀ K T (fea.pins)
+
+    def axes(A: sp.spmatrix) -> sp.spmatrix:
+        return A if basis is None else basis.rotate(A)
+
     # one matrix at a time, each cut to the free DOFs before the next (peak memory); CSR: the faster product
-    Kf = stiffness_matrix(model, pattern).tocsr()[free][:, free].tocsr()
+    Kf = axes(stiffness_matrix(model, pattern)).tocsr()[free][:, free].tocsr()
     symbolic = None
     if method == "auto" and shift is None and cholmod_available():
         # CHOLMOD's symbolic analysis (METIS ordering) counts the factor exactly: it decides instead of the rule,
@@ -478,10 +490,10 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     if used == "lobpcg" and not block_fits:
         used = "cholmod" if cholmod_available() else "superlu"
     Mf: Any
-    if used == "lobpcg":  # the node mass m (M = m ⊗ I): a ninth of M's memory and a cheaper product
+    if used == "lobpcg" and basis is None:  # the node mass m (M = m ⊗ I): a ninth of M's memory, a cheaper product
         Mf = _NodeMass(node_mass_matrix(model, pattern), free, dim)
-    else:
-        Mf = mass_matrix(model, pattern).tocsr()[free][:, free].tocsr()
+    else:  # (pins: Tᵀ M T is not m ⊗ I at the wall nodes)
+        Mf = axes(mass_matrix(model, pattern)).tocsr()[free][:, free].tocsr()
     del pattern
     if shift is None:
         sigma = _default_shift(Kf, Mf) if not model.supports else 0.0
@@ -534,11 +546,15 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     shapes = np.zeros((n_modes, n, 3))
     full = np.zeros((n * dim, n_modes))
     full[free] = V
+    if basis is not None:
+        full = basis.outward(full)
     shapes[:, :, :dim] = full.T.reshape(n_modes, n, dim)
     # effective masses: r_i = unit translation along axis i restricted to the free DOFs
     R = np.zeros((n * dim, dim))
     for i in range(dim):
         R[i::dim, i] = 1.0
+    if basis is not None:
+        R = basis.inward(R)
     MR = Mf @ R[free]
     gamma = V.T @ MR  # k, dim
     eff = np.zeros((n_modes, 3))

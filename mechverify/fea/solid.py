@@ -44,6 +44,7 @@ from mechverify.fea.loads import (
     Fixed,
     Force,
     Gravity,
+    Pin,
     PinLoad,
     Pressure,
     RegionReport,
@@ -94,7 +95,7 @@ class SolidModel:
 
     mesh: SolidMesh
     material: Material | str
-    supports: tuple[Fixed | Restraint, ...] = ()
+    supports: tuple[Fixed | Restraint | Pin, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
 
@@ -103,8 +104,8 @@ class SolidModel:
             raise InputError(f"mesh: expected a SolidMesh (mechverify.fea.mesh), got {type(self.mesh).__name__}")
         set_fields(self, material=_as_material(self.material), supports=tuple(self.supports), loads=tuple(self.loads))
         for s in self.supports:
-            if not isinstance(s, Fixed | Restraint):
-                raise InputError(f"supports: expected Fixed or Restraint, got {s!r}")
+            if not isinstance(s, Fixed | Restraint | Pin):
+                raise InputError(f"supports: expected Fixed, Restraint or Pin, got {s!r}")
         for ld in self.loads:
             if not isinstance(ld, Force | Pressure | PinLoad | Traction | Gravity):
                 raise InputError(f"loads: expected Force, Pressure, PinLoad, Traction or Gravity, got {ld!r}")
@@ -355,8 +356,69 @@ class SolidModel:
         return None
 
     def held_dofs(self) -> np.ndarray:
-        """Indices of the DOFs the supports hold at zero."""
+        """Indices of the DOFs (x, y, z of each node) the supports hold at zero. A model with a :class:`Pin` holds
+        DOFs in the pins' axes instead: a :class:`ModelError` here (use :meth:`held_in_axes`), so that nothing
+        applies them to the stiffness in x, y, z (a CalculiX export would need ``*TRANSFORM``)."""
+        if self.dof_basis is not None:
+            raise ModelError("a pin support holds the radial DOFs of its wall (in the pin's axes, not x, y, z): use "
+                             "held_in_axes() and dof_basis (K' = T^T K T); exporting pins to CalculiX is not supported")
         return self._held()
+
+    def held_in_axes(self) -> tuple[np.ndarray, Any]:
+        """The held DOFs and the DOF axes they are in: ``(held, None)`` (x, y, z) without pins, ``(held, basis)``
+        (:attr:`dof_basis`: radial, tangential, axial at each pinned wall node) with them; the bodies checked."""
+        return self._held(), self.dof_basis
+
+    @cached_property
+    def dof_basis(self) -> Any:
+        """The DOF axes of a model with :class:`Pin` supports (:class:`mechverify.fea.pins.DofBasis`: each pinned
+        wall node in its radial, tangential and axial axes, the held DOFs in them), else None (x, y, z everywhere).
+        A pin region that is not a cylinder, two pins sharing nodes, or a :class:`Restraint` holding a direction
+        that is none of a pinned node's axes is an :class:`InputError`."""
+        from mechverify.fea import pins
+
+        if not any(isinstance(s, Pin) for s in self.supports):
+            return None
+        n = self.mesh.n_nodes
+        R = np.broadcast_to(np.eye(3), (n, 3, 3)).copy()
+        owner = np.full(n, -1)
+        fits, pinned = {}, {}
+        for k, s in enumerate(self.supports):
+            if not isinstance(s, Pin):
+                continue
+            what = f"Pin {k + 1} on {s.region.describe()}"
+            nodes = self._support_nodes(s.region, np.empty(0))
+            fc = self.facets(s.region)
+            fit = pins.fit_cylinder(self.nodes[:, np.unique(fc.nodes[:, :3])], fc.normal, fc.area, what)
+            shared = owner[nodes] >= 0
+            if np.any(shared):
+                raise InputError(f"{what}: shares {int(shared.sum())} nodes with Pin {owner[nodes][shared][0] + 1}; "
+                                 "a node can be on one pin only")
+            owner[nodes] = k
+            R[nodes] = pins.frames(self.nodes[:, nodes], fit)
+            fits[k], pinned[k] = fit, nodes
+        held = []
+        for k, s in enumerate(self.supports):
+            if isinstance(s, Pin):
+                held += [3 * pinned[k]] + ([3 * pinned[k] + 2] if s.axial else [])
+                continue
+            nodes = self._support_nodes(s.region, np.empty(0))
+            plain, rot = nodes[owner[nodes] < 0], nodes[owner[nodes] >= 0]
+            for i, on in enumerate(s.components):
+                if not on:
+                    continue
+                held.append(3 * plain + i)
+                if isinstance(s, Fixed):  # all three held: the same in any axes
+                    held.append(3 * rot + i)
+                    continue
+                along = R[rot][:, i, :]  # x, y or z in each pinned node's axes (rows of R)
+                j = np.argmax(np.abs(along), axis=1)
+                if np.any(np.abs(along[np.arange(rot.size), j]) < 1 - 1e-9):
+                    raise InputError(f"{type(s).__name__} {k + 1} on {s.region.describe()} holds {'xyz'[i]} at nodes "
+                                     f"of Pin {owner[rot][0] + 1}, a direction that is none of the pin's axes (radial, "
+                                     "tangential, axial) there: hold the whole region, or only along the pin's axis")
+                held.append(3 * rot + j)
+        return pins.DofBasis(R, np.flatnonzero(owner >= 0), np.unique(np.concatenate(held)), fits, pinned)
 
     def loads_on_held(self, held: np.ndarray | None = None) -> list[str]:
         """The loads whose nodal forces all fall on held DOFs: they go straight into the supports and load
@@ -367,8 +429,12 @@ class SolidModel:
         return held_load_names(self.loads, [f for _, f in self._load_parts(measure)], held)
 
     def _held(self) -> np.ndarray:
+        """The held DOFs (in the pins' axes where there are pins: :attr:`dof_basis`), each body checked."""
         if not self.supports:
             raise ModelError("the model has no supports; add Fixed(...) or Restraint(...) on a region")
+        if self.dof_basis is not None:
+            self.check_bodies(self.dof_basis.held)
+            return self.dof_basis.held
         held = []
         for s in self.supports:
             nodes = self._support_nodes(s.region, np.empty(0))
@@ -406,7 +472,7 @@ class SolidModel:
         :class:`ModelError` naming the body (its faces and extent) and what is free: a second solid of a STEP file
         that touches no other and no support floated, and the solve reported "equilibrium not met" (review 3
         finding 11). One body: nothing to do here (the solver's rigid-body check names the free motion)."""
-        from mechverify.fea.linsolve import check_supported
+        from mechverify.fea.pins import check_supported
 
         nb = int(self.bodies.max()) + 1
         if nb == 1:
@@ -423,7 +489,8 @@ class SolidModel:
             local = np.full(self.bodies.size, -1)
             local[nodes] = np.arange(nodes.size)
             try:
-                check_supported(self.nodes[:, nodes], 3 * local[mine // 3] + mine % 3)
+                check_supported(self.nodes[:, nodes], 3 * local[mine // 3] + mine % 3,
+                                None if self.dof_basis is None else self.dof_basis.R[nodes])
             except ModelError as exc:
                 raise ModelError(f"{what}: {str(exc).removeprefix('the model is not fully supported: ')}") from None
 
@@ -468,9 +535,14 @@ class SolidModel:
         m, b = self.mesh.mesh, self.mesh.basis
         show = self.mesh.n_dofs > PROGRESS_DOFS if progress is None else progress
         timings: dict[str, float] = {}
+        basis = self.dof_basis  # pins: K, loads and held DOFs in the pins' axes (fea.pins), u = T u'
         with Steps(show, "solid") as step:
             t0 = time.perf_counter()
             step(f"assembling {m.nelements} quadratic tetrahedra ({self.mesh.n_dofs} DOF)")
+            if basis is not None and factorization is None:  # linsolve.solve's rigid-body check is in x, y, z
+                from mechverify.fea.study import SharedSolve
+
+                factorization = SharedSolve.of(self, method)
             projection = recovery == "projection" and not self.is_curved
             pattern = asm.block_pattern(b.element_dofs, b.N) if factorization is None or projection else None
             if factorization is not None:
@@ -483,6 +555,8 @@ class SolidModel:
             parts = [fi for _, fi in self._load_parts(measure)] if self.loads else []
             f = np.sum(parts, axis=0) if parts else np.zeros(self.mesh.n_dofs)
             held = self._held()
+            if basis is not None:
+                f, parts = basis.inward(f), [basis.inward(fi) for fi in parts]
             on_held = held_load_names(self.loads, parts, held)
             timings["assembly"] = time.perf_counter() - t0
             if factorization is not None:
@@ -494,6 +568,9 @@ class SolidModel:
                 handed, K = [K], asm.held_rows(K, held)
                 u, info = solve(handed.pop(), f, held, self.nodes, method=method, progress=step, prolongation=P)
             timings["solve"] = info.seconds
+            r = nodal_reactions(K, u, f, held)
+            if basis is not None:  # back to x, y, z
+                u, f, r = basis.outward(u), basis.outward(f), basis.outward(r)
             info = replace(info, worst_quality=self.mesh.worst_quality)
             t1 = time.perf_counter()
             step("recovering stresses")
@@ -503,8 +580,8 @@ class SolidModel:
                 rec = rc.recover(recovery, m.p, m.t, b.element_dofs, b.doflocs, u, lam, mu, E, nu, measure, pattern)
             sigma = _tensors(rec.nodal)
             timings["recovery"] = time.perf_counter() - t1
-            reaction, applied = _equilibrium(K, u, f, held, self.nodes, 3)
-            reports = self.region_reports(nodal_reactions(K, u, f, held))
+            reaction, applied = _balance(r, f, self.nodes, 3)
+            reports = self.region_reports(r)
         bf, nodes, _, _ = self._boundary
         return FieldResults(
             kind="solid", points=self.nodes.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
@@ -558,6 +635,12 @@ def _equilibrium(K: Any, u: np.ndarray, f: np.ndarray, held: np.ndarray, points:
     """
     r = np.zeros_like(f)
     r[held] = (K @ u)[held] - f[held]
+    return _balance(r, f, points, dim)
+
+
+def _balance(r: np.ndarray, f: np.ndarray, points: np.ndarray, dim: int) -> tuple[np.ndarray, np.ndarray]:
+    """Total reaction and applied force of nodal reactions ``r`` and loads ``f`` (x, y, z); :class:`ModelError`
+    unless forces and moments balance."""
     R, F = r.reshape(-1, dim), f.reshape(-1, dim)
     X = points.T - points.mean(axis=1)
     tot_r, tot_f = R.sum(axis=0), F.sum(axis=0)

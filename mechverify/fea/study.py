@@ -70,7 +70,9 @@ MEMORY_SHARE = 0.8
 class SharedSolve:
     """One factorisation (or one multigrid hierarchy) of ``K`` with the supports' held DOFs, reused for every
     load vector given to :meth:`solve`. ``K`` keeps the stiffness's held rows only (``assembly.held_rows``: the
-    reactions ``(K @ u)[held]`` need no more; the full K, 0.7 kB per DOF, is freed once its free part exists)."""
+    reactions ``(K @ u)[held]`` need no more; the full K, 0.7 kB per DOF, is freed once its free part exists). With
+    pin supports (``SolidModel.dof_basis``, :mod:`mechverify.fea.pins`) ``K``, ``held``, the load vectors and the
+    solutions are in the pins' axes (``K' = Tᵀ K T``): ``SolidModel.solve`` rotates ``f`` in and ``u`` out."""
 
     K: sp.spmatrix
     held: np.ndarray
@@ -94,8 +96,13 @@ class SharedSolve:
         from mechverify.fea.assembly import free_submatrix, held_rows
 
         K = stiffness_matrix(model)
-        held = np.unique(model.held_dofs())
-        check_supported(model.nodes, held)
+        basis = getattr(model, "dof_basis", None)  # pin supports: K and the held DOFs in the pins' axes (fea.pins)
+        if basis is not None:
+            K, held = basis.rotate(K), np.unique(model.held_in_axes()[0])
+            basis.check_supported(model.nodes, held)
+        else:
+            held = np.unique(model.held_dofs())
+            check_supported(model.nodes, held)
         mask = np.ones(K.shape[0], bool)
         mask[held] = False
         free = np.flatnonzero(mask)
@@ -113,7 +120,7 @@ class SharedSolve:
         elif method == "amg":
             m = model.mesh.mesh
             P = p1_prolongation(m.nvertices, m.edges, 3)
-            apply = pmg_preconditioner(Kff, model.nodes, free, 3, P)
+            apply = pmg_preconditioner(Kff, model.nodes, free, 3, P if basis is None else basis.prolongation(P))
         else:
             raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
         return cls(K, held, method, apply, Kff, free, time.perf_counter() - t0)

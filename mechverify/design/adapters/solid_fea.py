@@ -62,7 +62,8 @@ class SolidStudy:
         """``result`` (a CheckResult or a list of them) with what the import did to the geometry in its notes
         (``SolidMesh.notes``: a STEP file's touching solids bonded)."""
         notes = getattr(self._mesh, "notes", ()) if not isinstance(self._mesh, Exception) else ()
-        notes = (*notes, *sp.clamp_notes(self.p.get("supports")))  # a held hole wall is a clamp (review 3 #16)
+        notes = (*notes, *sp.clamp_notes(self.p.get("supports")),  # a held hole wall is a clamp (review 3 #16)
+                 *sp.pin_notes(self.p.get("supports")))
         if not notes:
             return result
         if isinstance(result, list):
@@ -85,6 +86,7 @@ class SolidStudy:
         model = self.model(_loads(loads, self.unit, f"load_cases.{case}.{self.name}", g))
         try:
             sp.case_regions(model, self.p.get("supports"), loads, self.unit, f"load_cases.{case}.{self.name}")
+            sp.pin_regions(model, self.p.get("supports"))
         except InputError as exc:
             raise self.with_faces(exc) from None
         return model
@@ -240,6 +242,7 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
             sp.geometric_regions(model, c.p.get("supports"), c.unit, "supports")
         except InputError as exc:
             raise c.with_faces(exc) from None
+        sp.pin_regions(model, c.p.get("supports"))
         if not c.supports:  # free-free: the six rigid-body modes are set apart, `modes` elastic ones computed beside
             n_bodies = int(model.bodies.max()) + 1
             if n_bodies > 1:  # each separate body has six more zero modes: they would pass as frequencies
@@ -286,7 +289,9 @@ SOLID_FEA = REGISTRY.register(ComponentType(
               required=True),
         Field("mesh_size", "length", "element size (required with step, stl or box)"),
         Field("supports", "list", "supports: {named | face | plane = \"x = 0\" | box = [corner, corner], hold = "
-                                  "\"x, y, z\" (default all)}; [] for a free-free solid (natural_frequency only)",
+                                  "\"x, y, z\" (default all) | pin = true (a hole wall held radially, free to turn; "
+                                  "axial = true also holds it along the pin)}; [] for a free-free solid "
+                                  "(natural_frequency only)",
               required=True, item="table"),
         Field("vtu", "str", "folder (relative to the design file; made if missing) for ParaView files: "
                             "<component>_<load case>.vtu (displacement, stress) and <component>_modes.vtu",

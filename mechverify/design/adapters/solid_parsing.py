@@ -164,18 +164,75 @@ def deflection_limit_keys(p: Mapping[str, Any]) -> None:
 
 
 def _supports(items: Any, unit: str) -> tuple[Any, ...]:
-    from mechverify.fea.loads import Fixed, Restraint
+    from mechverify.fea.loads import Fixed, Pin, Restraint
 
     out = []
+    pinned: dict[str, int] = {}
+    held: dict[str, int] = {}
     for i, s in enumerate(items or []):
         path = f"supports[{i}]"
         region = _region(s, unit, path)
+        where = _region_key(s)
+        if "pin" in s or "axial" in s:
+            if "pin" not in s:
+                raise InputError(f"{path}.axial: only with pin = true (axial = true holds a pin's wall along its axis)")
+            if not isinstance(s["pin"], bool) or not s["pin"]:
+                raise InputError(f"{path}.pin: expected true (a frictionless pin: the wall held radially, free to "
+                                 f"turn), got {s['pin']!r}; leave it out to hold the region")
+            if "hold" in s:
+                raise InputError(f"{path}.hold: a pin holds its wall radially (and along its axis with axial = true); "
+                                 "give pin = true or hold, not both")
+            if not isinstance(s.get("axial", False), bool):
+                raise InputError(f"{path}.axial: expected true or false, got {s['axial']!r}")
+            if where in held:
+                raise InputError(f"{path}.pin: supports[{held[where]}] already holds this region; a wall is either "
+                                 "pinned or held, not both")
+            pinned[where] = i
+            out.append(Pin(region, axial=bool(s.get("axial", False))))
+            continue
+        if where in pinned:
+            raise InputError(f"{path}.hold: supports[{pinned[where]}] pins this region; a wall is either pinned or "
+                             "held, not both")
+        held[where] = i
         hold = s.get("hold", "x, y, z")
         comps = {c.strip() for c in str(hold).split(",")}
         if not comps <= {"x", "y", "z"} or not comps:
             raise InputError(f"{path}.hold: expected components such as \"x, z\", got {hold!r}")
         out.append(Fixed(region) if comps == {"x", "y", "z"} else Restraint(region, *(c in comps for c in "xyz")))
     return tuple(out)  # none: a free-free solid, for natural frequencies only (SolidStudy.case_model refuses loads)
+
+
+def _region_key(t: Mapping[str, Any]) -> str:
+    """A region table as text, to find two supports on one region (``named = "hole0"`` and ``face = 0`` differ)."""
+    k = next(k for k in ("named", "face", "plane", "box") if k in t)
+    return f"{k}={t[k]!r}" if k != "face" else f"named='face{t[k]}'"
+
+
+def pin_notes(items: Any) -> tuple[str, ...]:
+    """A note per pin support: what the model holds there (:class:`mechverify.fea.loads.Pin`)."""
+    from mechverify.fea.loads import Pin
+    from mechverify.fea.regions import Named
+
+    out = []
+    for i, s in enumerate(items or []):
+        if isinstance(s, Mapping) and s.get("pin") is True:
+            note = Pin(Named("-"), axial=bool(s.get("axial", False))).note
+            out.append(f"supports[{i}] ({_region_key(s).split('=', 1)[1].strip(chr(39))}) {note}")
+    return tuple(out)
+
+
+def pin_regions(model: Any, items: Any) -> None:
+    """The pins of ``items`` (the ``supports`` tables) fitted on ``model``'s mesh (``SolidModel.dof_basis``): a region
+    that is not a cylinder, or a hold that clashes with a pin's axes, is an error at its key."""
+    if not any(isinstance(s, Mapping) and "pin" in s for s in items or []):
+        return
+    try:
+        model.dof_basis  # noqa: B018 - the fit runs here, once
+    except InputError as exc:
+        m = re.match(r"(Pin|Restraint|Fixed) (\d+) on", str(exc))
+        i = int(m.group(2)) - 1 if m else 0
+        key = "pin" if not m or m.group(1) == "Pin" else "hold"
+        raise InputError(f"supports[{i}].{key}: {exc}") from None
 
 
 def clamp_notes(items: Any) -> tuple[str, ...]:
@@ -186,7 +243,7 @@ def clamp_notes(items: Any) -> tuple[str, ...]:
     hole, 154 MPa, against PL/4·c/I = 105 MPa at mid-span)."""
     out = []
     for i, s in enumerate(items or []):
-        name = s.get("named") if isinstance(s, Mapping) else None
+        name = s.get("named") if isinstance(s, Mapping) and "pin" not in s else None
         comps = {c.strip() for c in str(s.get("hold", "x, y, z")).split(",")} if isinstance(s, Mapping) else set()
         if isinstance(name, str) and re.fullmatch(r"hole\d+", name) and comps & {"x", "y"}:
             out.append(f"supports[{i}] holds the whole wall of {name} in {', '.join(sorted(comps))}: that clamps the "

@@ -1,0 +1,254 @@
+"""A rotation-free pin support on a hole wall: the wall's displacement held **radially**, free tangentially
+(the part turns about the pin) and, unless ``axial``, along the pin's axis - a frictionless pin, bilateral.
+
+This is the standard linear model of a pin in a hole (ANSYS "cylindrical support" with the radial direction fixed
+and the tangential one free; Abaqus/CalculiX ``*TRANSFORM, TYPE=C`` and a boundary condition on the radial DOF,
+CalculiX 2.20 manual sec. 7.131). It is **not** a contact model: a real pin bears on half the wall and only
+pushes; here the whole wall is held radially both ways, so a wall that would lift off the pin is held to it. The
+part is not clamped at the hole: a beam on two pinned holes deflects as a pinned-pinned beam
+(``tests/validation/test_gere_pinned_beam_solid.py``), where holding the whole wall (``Fixed``) clamps the section.
+
+How: every node of the wall gets its own axes, ``[e_r, e_θ, e_z]`` (radial from the fitted axis, tangential, axial),
+and the displacement there is written in them, ``u = T u'`` with ``T`` block-diagonal and orthogonal (identity away
+from the pins). The stiffness becomes ``K' = Tᵀ K T`` (the same sparsity, still symmetric positive definite, so
+the factorisation and multigrid CG work unchanged), the loads ``f' = Tᵀ f``, the mass ``M' = Tᵀ M T``; the radial
+DOF (and the axial one with ``axial = true``) is then held like any other, and ``u = T u'``, the reactions
+``r = T r'``. No penalty. The rigid-body check uses the rotated rigid motions ``Tᵀ B``: one pin leaves the slide
+along its axis and the rotation about it free (named), two parallel pins the slide only.
+
+The wall's axis, centre and radius are fitted to its nodes (:func:`fit_cylinder`): the axis is the direction the
+facet normals of a cylinder are all perpendicular to, the circle a least-squares fit of the vertices projected
+across it; a region that is not a cylinder within :data:`CYLINDER_RTOL` of its radius is refused.
+
+References
+----------
+1. Cook, Malkus, Plesha & Witt, Concepts and Applications of Finite Element Analysis, 4th ed., Wiley 2002,
+   sec. 9.2 (skew supports: nodal DOFs in rotated axes, ``K' = Tᵀ K T``).
+2. Dhondt, CalculiX CrunchiX User's Manual 2.20, sec. 7.131 (``*TRANSFORM``: cylindrical local axes for
+   boundary conditions).
+3. Shakarji, "Least-squares fitting algorithms of the NIST algorithm testing system", J. Res. NIST 103 (1998)
+   633-641, sec. 3.5 (cylinder fit; the circle fit across the axis, algebraic start and Gauss-Newton).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+from mechverify.errors import InputError, ModelError
+
+#: A pin's wall must lie within this fraction of its fitted radius of a cylinder (vertices; a faceted mesh of a true
+#: cylinder puts them on it to round-off), and the facet normals' scatter along the fitted axis stay under
+#: :data:`AXIS_RTOL` of the total (a cone or sphere has normals with a share along any axis).
+CYLINDER_RTOL = 0.02
+AXIS_RTOL = 0.02
+#: Below this share of the normals' scatter across the axis the region is flat (a plane face), not a cylinder.
+FLAT_RTOL = 0.02
+
+
+@dataclass(frozen=True)
+class CylinderFit:
+    """A cylinder fitted to a wall: a point ``center[3]`` on the axis (at the nodes' mean axial position), the unit
+    ``axis[3]``, the ``radius`` [m], the largest radial deviation of the wall's vertices [m] and the angle their
+    positions span about the axis [rad] (2π for a whole hole)."""
+
+    center: np.ndarray
+    axis: np.ndarray
+    radius: float
+    deviation: float
+    arc: float
+
+    def describe(self) -> str:
+        c = ", ".join(f"{v * 1e3:.4g}" for v in self.center)
+        a = ", ".join(f"{v:.4g}" for v in (self.axis + 0.0))
+        return f"cylinder r = {self.radius * 1e3:.4g} mm, axis ({a}) through ({c}) mm"
+
+
+def _circle(x: np.ndarray, y: np.ndarray) -> tuple[float, float, float]:
+    """Least-squares circle through ``(x, y)``: algebraic (Kasa) start, then Gauss-Newton on the distances."""
+    A = np.column_stack([x, y, np.ones_like(x)])
+    sol, *_ = np.linalg.lstsq(A, -(x * x + y * y), rcond=None)
+    cx, cy = -sol[0] / 2, -sol[1] / 2
+    r = float(np.sqrt(max(cx * cx + cy * cy - sol[2], 0.0)))
+    for _ in range(20):
+        dx, dy = x - cx, y - cy
+        d = np.hypot(dx, dy)
+        d = np.where(d > 0, d, 1e-300)
+        J = np.column_stack([-dx / d, -dy / d, -np.ones_like(d)])
+        step, *_ = np.linalg.lstsq(J, -(d - r), rcond=None)
+        cx, cy, r = cx + step[0], cy + step[1], r + step[2]
+        if np.max(np.abs(step)) <= 1e-13 * max(abs(r), 1e-300):
+            break
+    return float(cx), float(cy), float(abs(r))
+
+
+def _refine(points: np.ndarray, axis: np.ndarray, p: np.ndarray, q: np.ndarray, start: tuple[float, float, float]
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, tuple[float, float, float]]:
+    """The axis tilted and the circle moved to minimise the vertices' radial distances (Gauss-Newton, ref. 3): the
+    facet normals of a faceted cylinder lean a little along the axis, the vertices lie on the cylinder."""
+    from scipy.optimize import least_squares
+
+    def frame(t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        a = axis + t[0] * p + t[1] * q
+        a = a / np.linalg.norm(a)
+        pp = p - (p @ a) * a
+        pp = pp / np.linalg.norm(pp)
+        return a, pp, np.cross(a, pp)
+
+    def residual(t: np.ndarray) -> np.ndarray:
+        _, pp, qq = frame(t)
+        return np.hypot(pp @ points - t[2], qq @ points - t[3]) - t[4]
+
+    sol = least_squares(residual, np.array([0.0, 0.0, *start]), x_scale=np.array([1.0, 1.0, *[start[2]] * 3]),
+                        xtol=1e-14, ftol=1e-14, gtol=1e-14)
+    a, pp, qq = frame(sol.x)
+    return a, pp, qq, (float(sol.x[2]), float(sol.x[3]), float(abs(sol.x[4])))
+
+
+def fit_cylinder(points: np.ndarray, normals: np.ndarray, areas: np.ndarray, what: str) -> CylinderFit:
+    """The cylinder of a wall: vertices ``points[3, k]`` [m], its facets' unit normals ``normals[m, 3]`` and areas
+    ``areas[m]``. :class:`InputError` (``what`` names the region) when the wall is flat or not a cylinder within
+    :data:`CYLINDER_RTOL` of its radius."""
+    S = np.einsum("k,ki,kj->ij", areas, normals, normals)
+    w, V = np.linalg.eigh(S)
+    total = float(np.trace(S))
+    if total <= 0 or points.shape[1] < 4:
+        raise InputError(f"{what}: a pin needs a hole wall (a cylindrical face); the region has too few facets")
+    if w[1] < FLAT_RTOL * total:
+        raise InputError(f"{what}: a pin needs a hole wall (a cylindrical face); this region is flat (its facets all "
+                         "face one way). Hold a flat face with hold = \"...\" instead")
+    axis = V[:, 0]
+    axis = axis * (1 if axis[np.argmax(np.abs(axis))] > 0 else -1)
+    p = V[:, 1]
+    q = np.cross(axis, p)
+    x, y = p @ points, q @ points
+    cx, cy, r = _circle(x, y)
+    axis, p, q, (cx, cy, r) = _refine(points, axis, p, q, (cx, cy, r))
+    x, y = p @ points, q @ points
+    along = float(np.mean(axis @ points))
+    center = cx * p + cy * q + along * axis
+    dev = float(np.max(np.abs(np.hypot(x - cx, y - cy) - r)))
+    ang = np.sort(np.mod(np.arctan2(y - cy, x - cx), 2 * np.pi))
+    gaps = np.diff(np.r_[ang, ang[0] + 2 * np.pi])
+    arc = float(2 * np.pi - np.max(gaps)) if ang.size > 1 else 0.0
+    fit = CylinderFit(center, axis, r, dev, arc)
+    if w[0] > AXIS_RTOL * total or dev > CYLINDER_RTOL * r:
+        raise InputError(f"{what}: a pin needs a hole wall (a cylindrical face); the region is not a cylinder: the "
+                         f"best fit, {fit.describe()}, misses its nodes by up to {dev * 1e3:.3g} mm "
+                         f"({dev / r:.1%} of the radius; {CYLINDER_RTOL:.0%} allowed)"
+                         + (f" and its facets' normals lean {np.sqrt(w[0] / total):.2g} along the axis"
+                            if w[0] > AXIS_RTOL * total else ""))
+    return fit
+
+
+def frames(points: np.ndarray, fit: CylinderFit) -> np.ndarray:
+    """The pin axes ``[k, 3, 3]`` of nodes ``points[3, k]``: columns ``e_r`` (radial from the axis), ``e_θ`` and
+    ``e_z`` (the axis), a right-handed orthonormal frame per node."""
+    a = fit.axis
+    d = points.T - fit.center[None, :]
+    d = d - (d @ a)[:, None] * a[None, :]
+    n = np.linalg.norm(d, axis=1)
+    if np.any(n <= 1e-9 * fit.radius):
+        raise InputError("a pin's wall node lies on its axis")
+    er = d / n[:, None]
+    et = np.cross(np.broadcast_to(a, er.shape), er)
+    return np.stack([er, et, np.broadcast_to(a, er.shape)], axis=2)
+
+
+@dataclass(frozen=True, eq=False)
+class DofBasis:
+    """The DOF axes of a model with pins: ``R[n, 3, 3]`` per node (columns: the node's axes in x, y, z; identity
+    away from the pins), the ``rotated`` node indices, ``held`` DOFs in these axes, ``pinned[k]`` the nodes of each
+    pin support (by support index) and ``fits`` their cylinders. ``u = T u'`` (:meth:`outward`)."""
+
+    R: np.ndarray
+    rotated: np.ndarray
+    held: np.ndarray
+    fits: dict[int, CylinderFit]
+    pinned: dict[int, np.ndarray]
+
+    @property
+    def T(self) -> sp.csr_matrix:
+        """``T[3n, 3n]``: block-diagonal, orthogonal; ``u = T u'``."""
+        n = self.R.shape[0]
+        return sp.block_diag(list(self.R), format="csr") if n < 64 else _block_diag(self.R)
+
+    def rotate(self, A: sp.spmatrix) -> sp.bsr_matrix:
+        """``Tᵀ A T`` of a node-interleaved ``A`` (3x3 BSR, the assembly's format), keeping its sparsity and block
+        order; the blocks away from the pins are untouched."""
+        A = A.tobsr(blocksize=(3, 3)) if not (sp.issparse(A) and A.format == "bsr" and A.blocksize == (3, 3)) \
+            else A.copy()
+        rows = np.repeat(np.arange(A.shape[0] // 3), np.diff(A.indptr))
+        cols = A.indices
+        on = np.zeros(self.R.shape[0], bool)
+        on[self.rotated] = True
+        touch = np.flatnonzero(on[rows] | on[cols])
+        A.data[touch] = np.einsum("bji,bjk,bkl->bil", self.R[rows[touch]], A.data[touch], self.R[cols[touch]])
+        return A
+
+    def inward(self, f: np.ndarray) -> np.ndarray:
+        """``Tᵀ f`` of node-interleaved vectors ``f[3n]`` or ``f[3n, k]``."""
+        return self._apply(f, transpose=True)
+
+    def outward(self, u: np.ndarray) -> np.ndarray:
+        """``T u'``: displacements (or reactions) ``[3n]`` or ``[3n, k]`` from the pin axes back to x, y, z."""
+        return self._apply(u, transpose=False)
+
+    def _apply(self, v: np.ndarray, transpose: bool) -> np.ndarray:
+        v = np.asarray(v, dtype=float)
+        out = v.copy()
+        n = self.R.shape[0]
+        V = v.reshape(n, 3, -1)[self.rotated]
+        R = self.R[self.rotated]
+        out.reshape(n, 3, -1)[self.rotated] = np.einsum("kji,kjc->kic" if transpose else "kij,kjc->kic", R, V)
+        return out
+
+    def prolongation(self, P: sp.spmatrix) -> sp.csr_matrix:
+        """The P1 -> P2 interpolation in the pin axes, ``Tᵀ P T₁`` (``T₁``: the vertices' axes; vertices are
+        the first nodes), for the multigrid's coarse level."""
+        T = self.T
+        nv = P.shape[1]
+        return (T.T @ P @ T[:nv][:, :nv]).tocsr()
+
+    def rigid_modes(self, points: np.ndarray) -> tuple[np.ndarray, list[str]]:
+        """The rigid motions of :func:`mechverify.fea.linsolve.rigid_modes` in the pin axes (``Tᵀ B``)."""
+        from mechverify.fea.linsolve import rigid_modes
+
+        B, names = rigid_modes(points)
+        return self.inward(B), names
+
+    def check_supported(self, points: np.ndarray, held: np.ndarray | None = None) -> None:
+        """:func:`mechverify.fea.linsolve.check_supported` with the rotated rigid motions: a :class:`ModelError`
+        naming every rigid motion the held DOFs (default :attr:`held`) do not prevent."""
+        check_supported(points, self.held if held is None else held, self.R)
+
+
+def _block_diag(R: np.ndarray) -> sp.csr_matrix:
+    n = R.shape[0]
+    return sp.bsr_matrix((R, np.arange(n), np.arange(n + 1)), shape=(3 * n, 3 * n)).tocsr()
+
+
+def check_supported(points: np.ndarray, held: np.ndarray, R: np.ndarray | None = None) -> None:
+    """Raise :class:`ModelError` naming every rigid motion that the DOFs ``held`` (in the node axes ``R[n, 3, 3]``;
+    None: x, y, z) do not prevent (as :func:`mechverify.fea.linsolve.check_supported`)."""
+    from mechverify.fea.linsolve import describe_mode, plain_basis, rigid_modes
+
+    B, names = rigid_modes(points)
+    if R is not None:
+        n = points.shape[1]
+        B = np.einsum("nji,njc->nic", R, B.reshape(n, 3, -1)).reshape(B.shape)
+    Bc = B[np.asarray(held, dtype=np.int64)]
+    w, V = np.linalg.eigh(Bc.T @ Bc)
+    tol = 1e-10 * max(float(np.trace(B.T @ B)) / B.shape[1], 1.0)
+    free = V[:, w <= tol]
+    if free.shape[1]:
+        c = points.mean(axis=1)
+        scale = max(float(np.max(np.ptp(points, axis=1))), 1e-300)
+        free = plain_basis(free)
+        motions = [describe_mode(free[:, k], names, c, scale) for k in range(free.shape[1])]
+        pin = (" (a pin leaves the rotation about its axis and, without axial = true, the slide along it free)"
+               if R is not None else "")
+        raise ModelError("the model is not fully supported: the supports leave free " + "; ".join(motions)
+                         + f". Add a support that prevents this motion{pin}.")
