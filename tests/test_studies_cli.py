@@ -274,3 +274,34 @@ def test_report_scatter_has_a_verdict_legend(monkeypatch):
     rstudy.scatter(res, "x")
     labels = [t.get_text() for t in figs[0].axes[0].get_legend().get_texts()]
     assert labels == ["pass (5)", "warn (2)", "fail (3)"]
+
+
+# ------------------------------------------------ task fix19 (audit of issue 19): the parts of "done when" no test held
+def test_study_report_as_pdf_holds_the_tables_and_the_figures(tmp_path, capsys):
+    """Issue 19: '--report study.html|pdf'. The PDF path (weasyprint) had no test. The report's tables and its
+    figures (drawn as SVG: their text, e.g. the limit line's legend, is text in the PDF) must be in the PDF."""
+    import shutil
+    import subprocess
+
+    pdf = tmp_path / "mc.pdf"
+    rc = main(["study", str(LIFT), "--vary", "components.lift.mass=normal:15 kg:1 kg", "-n", "8", "--seed", "2",
+               "--serial", "--no-progress", "--report", str(pdf)])
+    assert rc == 0
+    assert pdf.read_bytes().startswith(b"%PDF-")
+    if shutil.which("pdftotext") is None:
+        pytest.skip("pdftotext (poppler-utils) is not installed: the PDF's text is not read")
+    text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    for part in ("Failure probability", "Sensitivity", "Most influential input", "u·SF per check",
+                 "limit u·SF = 1", "lift.motor_peak_torque"):
+        assert part in text, part
+
+
+def test_study_draws_a_progress_bar_on_the_console(capsys):
+    """Issue 19: 'Progress bar on the console'. No test asserted it is drawn (every CLI test passes
+    --no-progress). The bar (rich, on stderr) counts the samples to the last one; --no-progress leaves it out."""
+    args = ["study", str(LIFT), "--vary", "components.lift.mass=10 kg:20 kg:5", "--serial"]
+    assert main(args) == 0
+    err = capsys.readouterr().err
+    assert "samples" in err and "5/5" in err, err
+    assert main([*args, "--no-progress"]) == 0
+    assert "5/5" not in capsys.readouterr().err
