@@ -36,7 +36,7 @@ from skfem.quadrature import get_quadrature
 from skfem.refdom import RefTet, RefTri
 
 from mechverify.errors import InputError
-from mechverify.fea.assembly import BlockPattern, assemble_blocks
+from mechverify.fea.assembly import BlockPattern, _add_product, assemble_blocks
 
 
 @cache
@@ -174,8 +174,9 @@ def patch_recovery(points: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, 
         e, vk = np.arange(k0, k1) // nv, v[k0:k1]
         X = (sample_points[e] - points[:, vk].T[:, None, :]) / h[vk][:, None, None]  # k, q, d
         P = _monomials(X, degree)  # k, q, mm
-        np.add.at(A, vk, np.einsum("kqa,kqb->kab", P, P))
-        np.add.at(B, vk, np.einsum("kqa,kqc->kac", P, sample_values[e]))
+        S = _scatter(vk, nverts)
+        _add_product(S, np.einsum("kqa,kqb->kab", P, P).reshape(vk.size, -1), A.reshape(nverts, -1))
+        _add_product(S, np.einsum("kqa,kqc->kac", P, sample_values[e]).reshape(vk.size, -1), B.reshape(nverts, -1))
     w = np.linalg.eigvalsh(A)
     valid = w[:, 0] > 1e-8 * np.maximum(w[:, -1], 1e-300)
     del w
@@ -201,13 +202,24 @@ def patch_recovery(points: np.ndarray, t: np.ndarray, element_dofs: np.ndarray, 
             Xn = (points[:, nodes].transpose(1, 2, 0) - points[:, vk].T[:, None, :]) / h[vk][:, None, None]
             vals = np.einsum("kba,kac->kbc", _monomials(Xn, degree), coef[vk])
             idx = nodes.ravel()
-            np.add.at(cnt, idx, 1.0)
-            for c in range(vals.shape[2]):  # sequential sums in pair order: the bits of one bincount
-                np.add.at(total[:, c], idx, vals[:, :, c].ravel())
+            S = _scatter(idx, n)
+            cnt += np.diff(S.indptr)
+            _add_product(S, vals.reshape(idx.size, -1), total)  # sequential sums in pair order
         reached = (cnt > 0) & ~done
         out[reached] = total[reached] / cnt[reached, None]
         done |= reached
     return out
+
+
+def _scatter(index: np.ndarray, n: int) -> sp.csr_matrix:
+    """The 0/1 matrix ``S[n, k]`` with ``S[index[i], i] = 1``, columns sorted within each row: ``Y += S @ X`` by
+    :func:`~mechverify.fea.assembly._add_product` adds ``X[i]`` to ``Y[index[i]]`` one after the other in ``i``
+    order - ``np.add.at(Y, index, X)`` bit for bit, at a fraction of its time (0.035 s a solve of the 37k-DOF
+    plate, task thinperf)."""
+    order = np.argsort(index, kind="stable")
+    indptr = np.zeros(n + 1, dtype=np.int64)
+    np.cumsum(np.bincount(index, minlength=n), out=indptr[1:])
+    return sp.csr_matrix((np.ones(index.size), order, indptr), shape=(n, index.size))
 
 
 def _boundary_vertices(t: np.ndarray, nverts: int) -> np.ndarray:
