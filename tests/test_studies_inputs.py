@@ -125,3 +125,27 @@ def test_a_parameter_written_as_an_expression_of_names_is_still_varied(tmp_path)
     path.write_text(dumps(doc))
     (ax,) = parse_vary(doc, {"parameters.arms": "300 N:400 N:2"}, resolver(load(path)))
     assert ax.param.base == pytest.approx(350.0) and ax.param.expression == "lifted_load"
+
+
+# ----------------------------------------------------------------------------- review 4 finding 4
+def test_a_check_constant_up_to_rounding_does_not_change_over_the_sweep():
+    """Review 4 finding 4: the plates' thickness sweep of design_plates.toml listed arm_screws.bolt_working_stress
+    (u·SF 0.8692159734470266 / 0.8692159734470295: the bolt loads scale exactly with a uniform thickness change,
+    constant in theory) among 'the 3 highest of the 14 checks that change over the sweep'; 10 of the 14 were such
+    round-off. A check changes when its u·SF spread exceeds 1e-9 of its size, the tolerance the rank correlation
+    already uses (studies.stats.spearman)."""
+    from mechverify.studies.study import StudyResult
+
+    def sample(i: int, x: float, fus: dict[str, float]) -> dict:
+        checks = {c: {"u": v, "required_sf": 1.0, "fu": v, "verdict": "pass"} for c, v in fus.items()}
+        return {"index": i, "inputs": {"parameters.t": x}, "status": "ok", "message": "", "verdict": "pass",
+                "governing": max(fus, key=fus.get), "max_fu": max(fus.values()), "checks": checks}
+
+    samples = [sample(0, 4.0, {"a.bolt": 0.8692159734470266, "a.plate": 0.5, "a.zero": 0.0, "a.tiny": 1e-12}),
+               sample(1, 6.0, {"a.bolt": 0.8692159734470295, "a.plate": 0.25, "a.zero": 0.0, "a.tiny": 2e-12}),
+               sample(2, 8.0, {"a.bolt": 0.8692159734470266, "a.plate": 0.125, "a.zero": 0.0, "a.tiny": 3e-12})]
+    axes = [{"name": "parameters.t", "spec": "4:8:3", "unit": "mm", "integer": False}]
+    res = StudyResult("sweep", "grid", None, axes, samples, "plates", {}, None)
+    assert res.changing_checks() == ["a.plate", "a.tiny"]  # (a small u·SF that doubles does change)
+    header = res.summary().splitlines()[1]
+    assert "a.plate" in header and "a.bolt" not in header, header  # (it still governs: the last column names it)
