@@ -8,7 +8,7 @@ from __future__ import annotations
 import pytest
 
 from mechverify.fea import mesh2d
-from mechverify.fea.loads import Force, Fixed, Restraint
+from mechverify.fea.loads import Fixed, Force, Restraint
 from mechverify.fea.plane import PlaneModel
 from mechverify.fea.regions import Box, Plane
 

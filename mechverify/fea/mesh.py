@@ -1,6 +1,7 @@
 """Solid meshes: linear tetrahedra (scikit-fem ``MeshTet``) that the solver raises to quadratic (P2).
 
-Builders: :func:`box` (structured, no mesher needed), :func:`cylinder` and :func:`from_stl` (gmsh,
+Builders: :func:`box` (structured, no mesher needed), :func:`cylinder`, :func:`block_with_holes`,
+:func:`extruded_polygon` and :func:`from_stl` (gmsh,
 an optional GPL extra imported only when called), :func:`from_arrays`. STL files are read and
 checked with trimesh (:func:`stl_properties`: watertightness, volume, mass properties).
 
@@ -496,6 +497,96 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: QuantityLike = "5 mm
             if name is None:
                 k = int(np.argmin([np.hypot(com[0] - cx, com[1] - cy) for cx, cy, _ in hs]))
                 name = f"hole{k}"
+            groups.setdefault(name, []).append(tag)
+        for name, tags in groups.items():
+            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
+        gmsh.model.addPhysicalGroup(3, [vol])
+        hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
+        if hole_faces and hh < h:
+            refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
+            gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
+        gmsh.model.mesh.generate(3)
+        if curved and hs:
+            second_order(gmsh)
+        return from_gmsh_model(gmsh)
+    finally:
+        gmsh.finalize()
+
+
+def extruded_polygon(outline: Any, thickness: QuantityLike, mesh_size: QuantityLike = "5 mm", holes: Any = (),
+                     hole_mesh_size: QuantityLike | None = None, curved: bool = True) -> SolidMesh:
+    """A plate of any outline: the polygon ``outline`` = [(x, y), ...] (three or more corners in order, lengths or
+    strings; not closed: the last corner joins the first) in the x-y plane, extruded along z from 0 to
+    ``thickness``, with through-holes along z, ``holes`` = [((x, y), diameter), ...], meshed by gmsh with
+    ``hole_mesh_size`` (default mesh_size / 2) at the holes (a bracket, a lug, a gusset from its drawing).
+
+    Named regions: ``zmin`` and ``zmax`` (the flat faces), ``side0``, ``side1``, ... (``side k`` the face on the edge
+    from corner k to corner k + 1), ``hole0``, ``hole1``, ... (walls). With holes and ``curved`` (default) the
+    mid-side nodes lie on the hole walls (isoparametric elements).
+
+    Raises:
+        InputError: fewer than three corners, an outline that crosses itself or encloses no area, a hole that does
+            not lie inside the outline, a length that is not positive.
+    """
+    import shapely
+
+    gmsh = import_gmsh()
+    pts = []
+    for i, c in enumerate(outline):
+        if isinstance(c, str) or len(c) != 2:
+            raise InputError(f"outline[{i}]: expected a corner (x, y), got {c!r}")
+        pts.append(tuple(to_si(v, "length", f"outline[{i}]") for v in c))
+    if len(pts) < 3:
+        raise InputError(f"outline: a polygon needs at least three corners, got {len(pts)}")
+    poly = shapely.Polygon(pts)
+    scale = max(np.ptp(np.asarray(pts), axis=0))
+    if not poly.is_valid or poly.area <= 1e-12 * scale**2:
+        from shapely.validation import explain_validity
+
+        raise InputError(f"outline: the corners do not make a simple polygon ({explain_validity(poly)}; in metres): "
+                         "give them in order around the outline, without crossing edges")
+    T = to_si(thickness, "length", "thickness")
+    h = to_si(mesh_size, "length", "mesh_size")
+    for name, v in (("thickness", T), ("mesh_size", h)):
+        if not v > 0:
+            raise InputError(f"extruded_polygon: {name} must be positive")
+    hh = h / 2 if hole_mesh_size is None else to_si(hole_mesh_size, "length", "hole_mesh_size")
+    hs = []
+    for i, (center, d) in enumerate(holes):
+        cx, cy = (to_si(c, "length", f"holes[{i}].center") for c in center)
+        r = to_si(d, "length", f"holes[{i}].diameter") / 2
+        if not (r > 0 and poly.contains(shapely.Point(cx, cy).buffer(r * (1 + 1e-6)))):
+            raise InputError(f"holes[{i}]: a hole of diameter {2 * r * 1e3:g} mm at ({cx * 1e3:g}, {cy * 1e3:g}) mm "
+                             "does not lie inside the outline")
+        hs.append((cx, cy, r))
+    for i, (cx, cy, r) in enumerate(hs):
+        for j, (cx2, cy2, r2) in enumerate(hs[:i]):
+            if np.hypot(cx - cx2, cy - cy2) <= r + r2:
+                raise InputError(f"holes[{i}]: overlaps holes[{j}]")
+    gmsh_session(gmsh, h)
+    try:
+        occ = gmsh.model.occ
+        corners = [occ.addPoint(x, y, 0.0) for x, y in pts]
+        lines = [occ.addLine(corners[k], corners[(k + 1) % len(corners)]) for k in range(len(corners))]
+        face = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+        vol = next(tag for dim, tag in occ.extrude([(2, face)], 0, 0, T) if dim == 3)
+        if hs:
+            tools = [(3, occ.addCylinder(cx, cy, -0.1 * T, 0, 0, 1.2 * T, r)) for cx, cy, r in hs]
+            out, _ = occ.cut([(3, vol)], tools)
+            vol = out[0][1]
+        occ.synchronize()
+        segments = [shapely.LineString([pts[k], pts[(k + 1) % len(pts)]]) for k in range(len(pts))]
+        groups: dict[str, list[int]] = {}
+        for _, tag in gmsh.model.getBoundary([(3, vol)], oriented=False):
+            com = occ.getCenterOfMass(2, tag)
+            if abs(com[2]) < 1e-9 * scale or abs(com[2] - T) < 1e-9 * scale:
+                name = "zmin" if abs(com[2]) < 1e-9 * scale else "zmax"
+            else:  # a side's centre lies on its edge, a hole wall's on the hole's axis
+                at = shapely.Point(com[0], com[1])
+                ds = [s.distance(at) for s in segments]
+                dh = [np.hypot(com[0] - cx, com[1] - cy) for cx, cy, _ in hs]
+                k = int(np.argmin(ds))
+                name = f"side{k}" if not dh or ds[k] <= min(dh) else f"hole{int(np.argmin(dh))}"
             groups.setdefault(name, []).append(tag)
         for name, tags in groups.items():
             gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)

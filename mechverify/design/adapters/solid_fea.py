@@ -51,8 +51,8 @@ class SolidStudy:
                 self._mesh = _make_mesh(self.p, self.unit)
             except MechverifyError as exc:
                 msg = str(exc)
-                if not msg.startswith(("components.", "mesh_size", "box", "holes")):
-                    key = next((k for k in ("step", "stl", "holes") if self.p.get(k)), "box")
+                if not msg.startswith(("components.", "mesh_size", "box", "holes", "outline", "thickness")):
+                    key = next((k for k in ("step", "stl", "holes", "outline") if self.p.get(k)), "box")
                     exc = InputError(f"{key}: {msg}")
                 self._mesh = exc
                 raise exc from None
@@ -148,9 +148,12 @@ class SolidStudy:
 
 
 def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
-    sources = [k for k in ("step", "stl", "box", "mesh") if k in p]
+    sources = [k for k in ("step", "stl", "box", "outline", "mesh") if k in p]
     if len(sources) != 1:
-        raise InputError(f"step: give exactly one geometry: step, stl, box or mesh (got {sources or 'none'})")
+        raise InputError(f"step: give exactly one geometry: step, stl, box, outline or mesh (got {sources or 'none'})")
+    if ("thickness" in p) != ("outline" in p):
+        raise InputError("thickness: give it with outline (the plate extruded along z), and only then" if "thickness"
+                         in p else "outline: needs thickness (the length the outline is extruded along z)")
     resolve_files(p, ctx, tuple(f.name for f in SOLID_FEA.fields if f.file and f.name != "vtu"))  # vtu: an output
     if isinstance(p.get("box"), str) and isinstance(ctx, Mapping) and ctx.get("parameters"):
         from mechverify.design.parameters import substitute  # "300, 10, t": parameters in the block's size
@@ -168,15 +171,18 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         except MechverifyError as exc:
             raise InputError(f"mesh: {exc}") from None
     elif p.get("mesh_size") is None:
-        raise InputError("mesh_size: required with step, stl or box (the element size)")
+        raise InputError("mesh_size: required with step, stl, box or outline (the element size)")
     elif not p["mesh_size"].magnitude > 0:
         raise InputError("mesh_size: must be positive")
     p["_modal"] = modal_settings(p)  # modes, band and margin checked at their keys
     sp.deflection_limit_keys(p)
-    if "box" in p:  # a block's region names are known before meshing: a misspelt one is reported here, once
-        holes = p.get("holes") or []
-        names = [f"{c}{e}" for c in "xyz" for e in ("min", "max")] + [f"hole{i}" for i in range(len(holes))]
-        named_regions(p.get("supports"), names, "supports")
+    if "outline" in p:
+        sp.outline_corners(p, p["unit"])  # corners, simple polygon and thickness at their keys, before meshing
+    if "box" in p or "outline" in p:  # a builder's region names are known before meshing: a misspelt one is
+        holes = p.get("holes") or []    # reported here, once
+        names = ([f"{c}{e}" for c in "xyz" for e in ("min", "max")] if "box" in p else
+                 ["zmin", "zmax", *(f"side{i}" for i in range(len(p["outline"] or [])))])
+        named_regions(p.get("supports"), names + [f"hole{i}" for i in range(len(holes))], "supports")
     if imported is not None:
         named_regions(p.get("supports"), imported.named, "supports")
     if p.get("vtu"):
@@ -282,12 +288,16 @@ SOLID_FEA = REGISTRY.register(ComponentType(
         Field("box", "str", "a block \"x, y, z\" from the origin (faces xmin ... zmax)"),
         Field("mesh", "str", "a tetrahedral mesh made by another tool (.msh, .inp, .bdf, .vtu, .vtk; coordinates in "
                              "unit): its named groups are the regions, no mesh_size", file=True),
-        Field("holes", "list", "through-holes along z of the block: {center = \"x, y\", diameter} (walls hole0, "
-                               "hole1, ...; gmsh needed)", item="table"),
+        Field("outline", "list", "a plate of any outline: its corners [\"x, y\", ...] in order, extruded along z by "
+                                 "thickness (faces zmin, zmax, side0 = corner 0 to 1, side1, ...; gmsh needed)",
+              item="str"),
+        Field("thickness", "length", "the outline's extrusion along z"),
+        Field("holes", "list", "through-holes along z of the block or outline: {center = \"x, y\", diameter} (walls "
+                               "hole0, hole1, ...; gmsh needed)", item="table"),
         Field("unit", "str", "unit of bare numbers (points, box, STEP files without units)", default="mm"),
         Field("material", "material", "material (E, nu, yield strength; density for frequency and gravity)",
               required=True),
-        Field("mesh_size", "length", "element size (required with step, stl or box)"),
+        Field("mesh_size", "length", "element size (required with step, stl, box or outline)"),
         Field("supports", "list", "supports: {named | face | plane = \"x = 0\" | box = [corner, corner], hold = "
                                   "\"x, y, z\" (default all) | pin = true (a hole wall held radially, free to turn; "
                                   "axial = true also holds it along the pin)}; [] for a free-free solid "

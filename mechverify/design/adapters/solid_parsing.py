@@ -334,11 +334,22 @@ def _mesh_of(p: Mapping[str, Any], unit: str, h: float, refine: float | None) ->
         props = mesh.stl_properties(p["stl"], unit)
         study.require_memory(props.volume.m_as("m**3"), h, what, area=props.area.m_as("m**2"), refine=refine)
         return mesh.from_stl(p["stl"], p["mesh_size"], unit=unit)
+    if "outline" in p:
+        return _extruded(p, unit, h, refine)
     size = _vec(p["box"], unit, "length", "box")
     if min(size) <= 0:
         raise InputError(f"box: three positive lengths, got {p['box']!r}")
     area = 2 * (size[0] * size[1] + size[1] * size[2] + size[0] * size[2])
     study.require_memory(math.prod(size), h, what, area=area, refine=refine)
+    holes = _holes(p, unit)
+    if not holes:
+        divs = tuple(max(1, round(s / h)) for s in size)
+        return mesh.box(tuple(Q(s, "m") for s in size), divs)
+    return mesh.block_with_holes(tuple(Q(s, "m") for s in size), holes, p["mesh_size"])
+
+
+def _holes(p: Mapping[str, Any], unit: str) -> list[Any]:
+    """``holes`` as [((x, y), diameter), ...] for the mesh builders (centres in metres)."""
     holes = []
     for i, t in enumerate(p.get("holes", []) or []):
         if not isinstance(t, Mapping) or not {"center", "diameter"} <= set(t):
@@ -349,7 +360,44 @@ def _mesh_of(p: Mapping[str, Any], unit: str, h: float, refine: float | None) ->
         if not as_quantity(t["diameter"], "length", f"holes[{i}].diameter").magnitude > 0:
             raise InputError(f"holes[{i}].diameter: must be positive, got {t['diameter']!r}")
         holes.append(((Q(c[0], "m"), Q(c[1], "m")), t["diameter"]))
-    if not holes:
-        divs = tuple(max(1, round(s / h)) for s in size)
-        return mesh.box(tuple(Q(s, "m") for s in size), divs)
-    return mesh.block_with_holes(tuple(Q(s, "m") for s in size), holes, p["mesh_size"])
+    return holes
+
+
+def _extruded(p: Mapping[str, Any], unit: str, h: float, refine: float | None) -> Any:
+    """The mesh of ``outline`` (corners ``"x, y"`` in ``unit`` or quantities) extruded by ``thickness``, its memory
+    estimated first from the plate's volume and surface (issue 23: the builders' extruded polygon)."""
+    import shapely
+
+    from mechverify.fea import mesh, study
+
+    corners = outline_corners(p, unit)
+    poly = shapely.Polygon(corners)
+    t = p["thickness"].m_as("m")
+    study.require_memory(poly.area * t, h, f"components.{p['_name']}.mesh_size", area=2 * poly.area + poly.length * t,
+                         refine=refine)
+    return mesh.extruded_polygon([(Q(x, "m"), Q(y, "m")) for x, y in corners], p["thickness"], p["mesh_size"],
+                                 holes=_holes(p, unit))
+
+
+def outline_corners(p: Mapping[str, Any], unit: str) -> list[tuple[float, float]]:
+    """``outline``'s corners [m] checked at their keys (``outline[1]``: a corner is \"x, y\"; ``outline``: three or
+    more corners making a simple polygon) and ``thickness`` positive, before any meshing."""
+    import shapely
+
+    corners = []
+    for i, c in enumerate(p["outline"] or []):
+        parts = c.split(",") if isinstance(c, str) else c if isinstance(c, list) else []
+        if len(parts) != 2:
+            raise InputError(f"outline[{i}]: expected a corner \"x, y\" (numbers in {unit} or lengths), got {c!r}")
+        corners.append(tuple(_num(v, unit, "length", f"outline[{i}]") for v in parts))
+    if len(corners) < 3:
+        raise InputError(f"outline: a polygon needs at least three corners, got {len(corners)}")
+    poly = shapely.Polygon(corners)
+    if not poly.is_valid or poly.area <= 0:
+        from shapely.validation import explain_validity
+
+        raise InputError(f"outline: the corners do not make a simple polygon ({explain_validity(poly)}, in metres): "
+                         "give them in order around the outline, without crossing edges")
+    if not p["thickness"].magnitude > 0:
+        raise InputError(f"thickness: must be positive, got {p['thickness']:~P}")
+    return corners  # type: ignore[return-value]
