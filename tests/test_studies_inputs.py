@@ -6,6 +6,7 @@ say. The lift is reference project 004 (examples/lead_screw_lift/design.toml).
 
 from __future__ import annotations
 
+import math
 import tomllib
 
 import pytest
@@ -149,3 +150,54 @@ def test_a_check_constant_up_to_rounding_does_not_change_over_the_sweep():
     assert res.changing_checks() == ["a.plate", "a.tiny"]  # (a small u·SF that doubles does change)
     header = res.summary().splitlines()[1]
     assert "a.plate" in header and "a.bolt" not in header, header  # (it still governs: the last column names it)
+
+
+# ----------------------------------------------------------------------------- review 4 finding 6
+def _rate_lift(tmp_path):
+    """The lift with a frequency parameter besides its screw speed (540 rpm): ``f = "50 Hz"`` (read by no check) and
+    ``f2 = "f / 2"`` (an expression: a frequency the file never writes a unit for)."""
+    text = LIFT.read_text().replace('screw_speed = "540 rpm"',
+                                    'screw_speed = "540 rpm"\nf = "50 Hz"\nf2 = "f / 2"', 1)
+    assert 'f = "50 Hz"' in text
+    p = tmp_path / "lift.toml"
+    p.write_text(text)
+    return p
+
+
+def test_a_speed_in_hertz_for_a_value_the_file_writes_in_rpm_is_a_revolution_per_second(tmp_path):
+    """Review 4 finding 6 (a)-(c): spec values were converted with pint's own factor, for which 1 Hz = 1/s = 1 rad/s:
+    '6 Hz:9 Hz:2' for screw_speed = "540 rpm" became 57.2958 / 85.9437 rpm (nut_pv u·SF 0.2482 / 0.3723, PASS) where
+    6 and 9 rev/s are 360 and 540 rpm (1.559 / 2.339, FAIL: the same study written in rpm). Hand: 1 Hz = 60 rpm."""
+    from mechverify.studies import Study
+
+    hz = Study(LIFT, vary={"parameters.screw_speed": "6 Hz:9 Hz:2"}).run("serial", check_inputs=False)
+    rpm = Study(LIFT, vary={"parameters.screw_speed": "360 rpm:540 rpm:2"}).run("serial", check_inputs=False)
+    assert [s["inputs"]["parameters.screw_speed"] for s in hz.samples] == pytest.approx([360.0, 540.0], rel=1e-12)
+    assert [s["checks"]["lift_screw.nut_pv"]["fu"] for s in hz.samples] == pytest.approx(
+        [s["checks"]["lift_screw.nut_pv"]["fu"] for s in rpm.samples], rel=1e-12)
+    # (b) sizing bounds in Hz: the same limit as the same range in rpm (review: 'no limit ... in 9.5493..190.986 rpm')
+    lift = load(LIFT)
+    a = size(lift, vary="parameters.screw_speed", until="nut_pv", bounds=("1 Hz", "20 Hz"))
+    b = size(lift, vary="parameters.screw_speed", until="nut_pv", bounds=("60 rpm", "1200 rpm"))
+    assert a.limit == pytest.approx(b.limit, rel=1e-9) and 200 < b.limit < 260
+    # (c) a normal distribution in Hz: mean and standard deviation both times 60
+    mc = Study(LIFT, vary={"parameters.screw_speed": "normal:9 Hz:0.5 Hz"}, samples=8, seed=1)
+    ref = Study(LIFT, vary={"parameters.screw_speed": "normal:540 rpm:30 rpm"}, samples=8, seed=1)
+    assert [x["parameters.screw_speed"] for x in mc.inputs()] == pytest.approx(
+        [x["parameters.screw_speed"] for x in ref.inputs()], rel=1e-12)
+
+
+def test_a_frequency_given_in_rpm_is_a_revolution_per_minute(tmp_path):
+    """Review 4 finding 6 (d), the other way: rpm for a value the file writes in Hz was 2 pi too high (3000 rpm read
+    as 314.159 Hz; a revolution per minute is 1/60 Hz: 3000 rpm = 50 Hz). Also a frequency written as an expression
+    ("f / 2"): its value is 25 Hz, not 25 rad/s (pint's 1 Hz = 1 rad/s gave today's value 2 pi too low)."""
+    from mechverify.studies import Study
+
+    p = _rate_lift(tmp_path)
+    s = Study(p, vary={"parameters.f": "3000 rpm:6000 rpm:2"})
+    assert [x["parameters.f"] for x in s.inputs()] == pytest.approx([50.0, 100.0], rel=1e-12)
+    e = Study(p, vary={"parameters.f2": "3000 rpm:6000 rpm:2"})
+    ax = e.axes[0].param
+    assert ax.base * {"Hz": 1.0, "rad/s": 1 / (2 * math.pi)}[ax.unit] == pytest.approx(25.0, rel=1e-12), ax
+    assert [float(str(e.overrides(x)["parameters.f2"]).split()[0]) for x in e.inputs()] == pytest.approx(
+        [50.0, 100.0] if ax.unit == "Hz" else [100 * math.pi, 200 * math.pi], rel=1e-12)

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from mechverify.errors import InputError, MechverifyError, UnitError, UnknownNameError
-from mechverify.units import Q, Quantity
+from mechverify.units import Q, Quantity, rate_to
 
 _STEP = re.compile(r"([^.\[\]]+)|\[(\d+)\]")
 
@@ -283,7 +283,7 @@ class Parameter:
                 q = resolved(path)
                 if isinstance(q, Quantity) and isinstance(q.magnitude, int | float):
                     unit = _si_unit(q)
-                    return cls(path, float(q.to(unit).magnitude), unit, expression=raw)
+                    return cls(path, float(rate_to(q, unit).magnitude), unit, expression=raw)
         if isinstance(raw, bool) or not isinstance(raw, int | float | str):
             raise InputError(f"parameter {path!r}: its value {raw!r} is not numeric; only numbers and quantities "
                              "(a number with a unit, e.g. \"35 kg\") can be varied")
@@ -325,7 +325,7 @@ class Parameter:
             base = f"{self.base:.6g} {self.unit}".strip()
             raise UnitError(f"{self.path}: {token!s} is {have} but the design file's value ({base}) is {want}; "
                             "a range cannot change a quantity's dimension")
-        return float(q.to(target.units).magnitude)
+        return float(rate_to(q, target.units).magnitude)  # (a revolution is 2 pi rad: 9 Hz = 540 rpm, not pint's 86)
 
     def _bare(self, x: float, token: Any) -> float:
         """A bare number: in the file's unit; refused for a value written as an expression (no unit was written)."""
@@ -367,8 +367,10 @@ def _example(x: float) -> str:
 
 def _si_unit(q: Any) -> str:
     """The unit mechverify uses for q's dimension ("kg" for N·s²/m), else its SI base units."""
-    from mechverify.units import DIMENSIONS, ureg
+    from mechverify.units import DIMENSIONS, rate_kind, ureg
 
+    if rate_kind(q.units) == "cycles":  # (a frequency: rad/s, the first unit of 1/[time], would be 2 pi off)
+        return "Hz"
     for dim, unit in DIMENSIONS.values():
         if dim and unit and ureg.get_dimensionality(dim) == q.dimensionality:
             return unit
