@@ -529,3 +529,16 @@ def test_reproduce_falls_back_to_the_whole_document_when_a_value_is_not_on_its_o
     data = tomllib.loads(out.read_text())
     assert data["components"]["screw_bearing"]["reliability"] == 0.99
     assert data["parameters"]["lifted_load"] == "350 N"
+
+
+def test_size_margin_words_when_todays_value_is_zero():
+    """Task fix19: a parameter that is zero today (an extra load "0 N") printed 'the limit is -0.373861 (today's value
+    is zero)': no unit, no direction. Now the limit's value with its unit and what it means (no percentage of zero)."""
+    from mechverify.studies.sizing import SizingResult
+
+    def r(limit: float, fu: float) -> SizingResult:
+        return SizingResult("parameters.extra", "N", "governing", 0.0, fu, limit, "x", (limit,), (-100.0, 500.0), 9)
+
+    assert r(-0.373861, 1.0025).margin_text() == ("today's value is zero: it must fall to -0.373861 N for u·SF to "
+                                                   "come down to 1")
+    assert r(12.5, 0.8).margin_text() == "today's value is zero: it may rise to 12.5 N before u·SF reaches 1"

@@ -70,8 +70,12 @@ class SizingResult:
         """The margin in words, its sign spelt out: 'the limit is 7.3 % below today's value: it may fall by
         7.3 % before u·SF reaches 1' (passes today) or '... it must fall by 58.3 % for u·SF to reach 1' (fails)."""
         m = self.margin
-        if not math.isfinite(m):
-            return f"the limit is {self.limit:.6g} (today's value is zero)"
+        if not math.isfinite(m):  # (no percentage of zero: the limit itself)
+            u = f" {self.unit}" if self.unit else ""
+            verb = "rise" if self.limit > 0 else "fall"
+            if self.today_fu <= 1:
+                return f"today's value is zero: it may {verb} to {self.limit:.6g}{u} before u·SF reaches 1"
+            return f"today's value is zero: it must {verb} to {self.limit:.6g}{u} for u·SF to come down to 1"
         if m == 0:
             return "today's value is the limit"
         pct = f"{abs(m):.1%}".replace("%", " %")
