@@ -9,7 +9,10 @@
     >>> res = model.solve()
 
 Loads and supports are declared on regions (:mod:`mechverify.fea.regions`); a model the supports
-leave free to move raises :class:`ModelError` naming the free motion. The reactions are checked to
+leave free to move raises :class:`ModelError` naming the free motion. A :class:`~mechverify.fea.loads.Pin` on a hole
+wall holds it radially and leaves it free to turn (a frictionless, bilateral pin; :mod:`mechverify.fea.pins`): the
+wall's DOFs are then solved in their own radial, tangential and axial axes (``dof_basis``), ``u`` returned in x, y, z.
+The reactions are checked to
 balance the applied loads (forces and moments) before results are returned. Each load and support
 reports what its region caught (:meth:`SolidModel.region_reports`, ``FieldResults.regions`` and
 ``warnings``). On a gmsh second-order mesh (curved CAD: the default of :func:`mechverify.fea.mesh.cylinder`,
