@@ -201,3 +201,44 @@ def test_a_frequency_given_in_rpm_is_a_revolution_per_minute(tmp_path):
     assert ax.base * {"Hz": 1.0, "rad/s": 1 / (2 * math.pi)}[ax.unit] == pytest.approx(25.0, rel=1e-12), ax
     assert [float(str(e.overrides(x)["parameters.f2"]).split()[0]) for x in e.inputs()] == pytest.approx(
         [50.0, 100.0] if ax.unit == "Hz" else [100 * math.pi, 200 * math.pi], rel=1e-12)
+
+
+# ----------------------------------------------------------------------------- task fix19: a spread in an offset unit
+_BEARING = """
+[design]
+name = "bearing temperature"
+[requirements]
+bearing_life = "5000 h"
+[components.b]
+type = "ball_bearing"
+model = "6204"
+iso_vg = 68
+viscosity_100 = "8.6 mm^2/s"
+operating_temperature = "{t}"
+contamination = "normal_cleanliness"
+[components.b.checks]
+bearing_modified_life = true
+[load_cases.run.b]
+radial_force = "1 kN"
+speed = "1500 rpm"
+"""
+
+
+@pytest.mark.parametrize("written, spec, mean, sd", [
+    ("70 degC", "normal:70 degC:5 K", 70.0, 5.0),          # was 'the standard deviation must be > 0' (5 K = -268.15 degC)
+    ("343.15 K", "normal:70 degC:5 degC", 343.15, 5.0),   # was an SD of 278.15 K, silently
+    ("70 degC", "normal:70 degC:9 degF", 70.0, 5.0),       # 9 degF of spread = 5 K (hand: 9 x 5/9)
+    ("70 degC", "normal:70 degC:5 degC", 70.0, 5.0),
+])
+def test_a_standard_deviation_is_a_difference_not_a_temperature(tmp_path, written, spec, mean, sd):
+    """Task fix19 (audit): a normal's SD was converted to the file's unit as a temperature, not as a difference of
+    two: for a bearing's operating_temperature = "70 degC", 'normal:70 degC:5 K' was refused ('the standard
+    deviation must be > 0': 5 K is -268.15 degC) and for "343.15 K", '5 degC' became an SD of 278.15 K. A spread of
+    5 K is one of 5 degC (hand: the scales differ by an offset only; degF by 5/9)."""
+    from mechverify.studies import Study
+
+    p = tmp_path / "b.toml"
+    p.write_text(_BEARING.format(t=written))
+    axis = Study(p, vary={"components.b.operating_temperature": spec}, samples=4).axes[0]
+    assert axis.args[0] == pytest.approx(mean, rel=1e-12)
+    assert axis.args[1] == pytest.approx(sd, rel=1e-9)

@@ -327,6 +327,26 @@ class Parameter:
                             "a range cannot change a quantity's dimension")
         return float(rate_to(q, target.units).magnitude)  # (a revolution is 2 pi rad: 9 Hz = 540 rpm, not pint's 86)
 
+    def difference(self, token: str | float | int) -> float:
+        """A spec value that is a difference of two values (a normal's standard deviation) in this parameter's unit:
+        an offset unit's zero is not counted (a spread of ``"5 K"`` for a value in degC is 5 degC, not -268.15;
+        ``"5 degC"`` for a value in K is 5 K, not 278.15)."""
+        x = self.value(token)
+        if isinstance(token, int | float):
+            return x
+        q = token
+        if not isinstance(q, Quantity):
+            text = str(token).strip()
+            try:
+                float(text)
+            except ValueError:
+                q = Q(text)  # (value() read it already)
+            else:
+                return x
+        if not isinstance(q, Quantity):
+            return x
+        return x - self.value(Quantity(0.0, q.units))
+
     def _bare(self, x: float, token: Any) -> float:
         """A bare number: in the file's unit; refused for a value written as an expression (no unit was written)."""
         if self.expression and self.unit:
@@ -516,7 +536,7 @@ def _parse_axis(p: Parameter, name: str, spec: str, parts: list[str], head: str)
         if len(parts) != _ARITY[head] + 1:
             form = {"normal": "normal:MEAN:SD", "uniform": "uniform:LO:HI", "triangular": "triangular:LO:MODE:HI"}
             raise InputError(f"{name}: {spec!r}: expected {form[head]}")
-        vals = tuple(p.value(x) for x in parts[1:])
+        vals = tuple(p.difference(x) if head == "normal" and k == 1 else p.value(x) for k, x in enumerate(parts[1:]))
         if not all(math.isfinite(v) for v in vals):
             raise InputError(f"{name}: {spec!r}: values must be finite")
         if head == "normal" and not vals[1] > 0:
