@@ -711,7 +711,16 @@ def stl_properties(path: str | Path, unit: str = "mm", density: QuantityLike | N
     path = Path(path)
     if not path.exists():
         raise InputError(f"STL file {str(path)!r} does not exist")
-    tm = trimesh.load(path, force="mesh")
+    if path.suffix.lower() != ".stl":  # trimesh reads by the name's ending: base.toml was a NotImplementedError
+        raise InputError(f"{path.name}: not an STL file (the name ends in {path.suffix or 'nothing'!r}, not '.stl')")
+    with np.errstate(all="ignore"):  # an empty file: trimesh divides by its zero area
+        try:
+            tm = trimesh.load(path, force="mesh")
+        except Exception as exc:  # trimesh's own errors (its parsers raise what they meet): named, with its reason
+            raise InputError(f"{path.name}: trimesh cannot read it as an STL file ({type(exc).__name__}: "
+                             f"{exc})") from None
+    if len(getattr(tm, "faces", ())) == 0:
+        raise InputError(f"{path.name}: no triangles read (not an STL file, or an empty one)")
     s = Q(1, unit).m_as("m")
     tm.apply_scale(s)
     rho = to_si(density, "density", "density") if density is not None else None

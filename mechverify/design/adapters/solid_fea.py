@@ -124,8 +124,12 @@ class SolidStudy:
         if folder is not None:
             from pathlib import Path
 
-            Path(folder).mkdir(parents=True, exist_ok=True)
-            res.to_vtu(Path(folder) / f"{self.name}_{name}.vtu")
+            path = Path(folder) / f"{self.name}_{name}.vtu"
+            try:
+                Path(folder).mkdir(parents=True, exist_ok=True)
+                res.to_vtu(path)
+            except OSError as exc:  # a folder the build's check let through (review 4 #1: /proc as root)
+                raise InputError(f"vtu: cannot write into the folder {folder!r}: {exc.strerror or exc}") from None
 
     @contextlib.contextmanager
     def regions(self, loads: Mapping[str, Any] | None = None) -> Iterator[None]:
@@ -192,6 +196,12 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         folder = Path(p["vtu"])
         p["_vtu"] = str(folder if folder.is_absolute() else (Path(design).resolve().parent if design else Path.cwd())
                         / folder)
+        sp.output_folder(p["_vtu"], "vtu")  # before meshing and solving, not after (review 4 #1)
+    if "convergence_tolerance" in p:  # a fraction (review 4 #3: -1 was taken and WARNed 'tolerance -100 %')
+        tol = float(p["convergence_tolerance"])
+        if not 0 < tol < 1:
+            hint = f"; did you mean {tol / 100:g} ({tol:g} %)?" if 1 <= tol < 100 else ""
+            raise InputError(f"convergence_tolerance: a fraction between 0 and 1 (0.05 = 5 %), got {tol:g}{hint}")
     return SolidStudy(p["_name"], p, p["unit"], _supports(p.get("supports"), p["unit"]), _mesh=imported)
 
 

@@ -401,3 +401,20 @@ def outline_corners(p: Mapping[str, Any], unit: str) -> list[tuple[float, float]
     if not p["thickness"].magnitude > 0:
         raise InputError(f"thickness: must be positive, got {p['thickness']:~P}")
     return corners  # type: ignore[return-value]
+
+
+def output_folder(folder: str, key: str) -> None:
+    """An InputError at ``key`` when the folder ``folder`` cannot be made: a file of that name, or the nearest existing
+    ancestor is a file or not writable (review 4 #1: checked when the design file is read, not after the solve)."""
+    from pathlib import Path
+
+    path = Path(folder)
+    if path.exists() and not path.is_dir():
+        raise InputError(f"{key}: cannot make the folder {folder!r}: a file of that name exists")
+    up = path
+    while not up.exists() and up != up.parent:
+        up = up.parent
+    if not up.is_dir():
+        raise InputError(f"{key}: cannot make the folder {folder!r}: {str(up)!r} is a file, not a folder")
+    if not os.access(up, os.W_OK | os.X_OK):
+        raise InputError(f"{key}: cannot make the folder {folder!r}: {str(up)!r} is not writable")
