@@ -99,9 +99,9 @@ def test_metis_is_tried_only_when_it_may_pay(monkeypatch):
     calls = []
     original = factor.symbolic_cost
 
-    def spy(M, ordering="amd", g=None):
+    def spy(M, ordering="amd", g=None, graph=None):
         calls.append(ordering)
-        return original(M, ordering, g)
+        return original(M, ordering, g, graph=graph)
 
     monkeypatch.setattr(factor, "symbolic_cost", spy)
     monkeypatch.setattr(linsolve, "METIS_SECONDS_PER_NNZ", 1.0)  # METIS never pays

@@ -276,6 +276,98 @@ def free_submatrix(K: sp.spmatrix, free: np.ndarray, chunk: int = 1 << 16) -> sp
     return _submatrix(K, free, free, chunk)
 
 
+def node_graph(K: sp.bsr_matrix, free: np.ndarray) -> tuple[sp.csr_matrix, np.ndarray, int]:
+    """The graph of the nodes (block rows of the BSR ``K``) that keep a free DOF (boolean mask ``free`` of K's rows),
+    the starts of each such node's run of free DOFs in the free numbering (plus their count at the end: the
+    ``groups`` of :func:`mechverify.fea.factor.symbolic_cost`), and the non-zeros of ``K[free][:, free]`` - all from
+    K's block pattern, before any scalar matrix is extracted (the pattern of ``K[free][:, free]`` at its nodes' first
+    free DOFs, so the ordering found on it is the same)."""
+    R = K.blocksize[0]
+    fc = np.asarray(free, dtype=bool).reshape(-1, R).sum(axis=1)  # free DOFs per node
+    kept = fc > 0
+    nbr = fc.size
+    G = sp.csr_matrix((np.ones(K.indices.size, dtype=np.int8), K.indices, K.indptr), shape=(nbr, nbr))
+    brow = np.repeat(np.arange(nbr), np.diff(K.indptr))
+    nnz = int(np.dot(fc[brow].astype(np.int64), fc[K.indices]))
+    G = G[kept][:, kept]
+    G.sort_indices()
+    return G, np.r_[0, np.cumsum(fc[kept])], nnz
+
+
+def free_lower_permuted(K: sp.bsr_matrix, free: np.ndarray, perm: np.ndarray, rows: int = 1 << 15) -> sp.csc_matrix:
+    """The lower triangle of ``A[perm][:, perm]`` with ``A = K[free][:, free]``, as CSC with sorted row indices, read
+    straight from the BSR ``K`` (task thinperf): what :func:`mechverify.fea.factor.factorize_lower` factors, without
+    the full ``A`` (1.2 kB/DOF), its permuted copy and the sort of that copy. ``perm`` keeps each node's free DOFs
+    together and in order (:func:`mechverify.fea.factor.symbolic_cost` on :func:`node_graph`), so a block whose
+    column node comes before its row node in the new order lies wholly below the diagonal, and a node's own block
+    contributes its lower triangle. Entries are emitted row by row in the new order, ``rows`` rows at a time
+    (bounded work arrays), then counted into columns in that order (SciPy's ``coo_tocsr`` kernel): the rows come out
+    sorted. Values: the lower triangle of ``Aᵀ[perm][:, perm]`` (the transposed block), which is what
+    :func:`mechverify.fea.factor.factorize` gives CHOLMOD from a CSR ``A`` read as CSC, so the factor is the same bit
+    for bit. ``K``'s block pattern must be symmetric (a stiffness matrix's is)."""
+    from scipy.sparse import _sparsetools
+
+    R = K.blocksize[0]
+    if K.format != "bsr" or K.blocksize != (R, R) or K.shape[0] != K.shape[1]:
+        raise ValueError("free_lower_permuted: a square BSR matrix with square blocks")
+    K.sort_indices()
+    free = np.asarray(free, dtype=bool)
+    nf = int(free.sum())
+    perm = np.asarray(perm)
+    if perm.size != nf:
+        raise ValueError(f"free_lower_permuted: a permutation of the {nf} free DOFs, got {perm.size}")
+    idx = np.int32 if max(K.shape[0], K.data.size) < np.iinfo(np.int32).max else np.int64
+    free_dofs = np.flatnonzero(free)
+    new = np.full(K.shape[0], -1, dtype=idx)  # new index of each DOF (-1: held)
+    new[free_dofs[perm]] = np.arange(nf, dtype=idx)
+    nbr = K.shape[0] // R
+    node_pos = new.reshape(nbr, R).max(axis=1)  # a node's last free DOF's new index orders the nodes
+    bptr, bcol = K.indptr, K.indices
+    brow = np.repeat(np.arange(nbr, dtype=idx), np.diff(bptr))
+    lower = (node_pos[bcol] >= 0) & (node_pos[bcol] <= node_pos[brow])  # blocks on or below the diagonal
+    lower_blocks = np.flatnonzero(lower).astype(idx)
+    # the value at (i, j), i >= j, is read from K's row of j (block transposed): the entry SciPy's slice, read as
+    # CSC, gives there (K's two triangles may differ in the last bit), so the factor is the same bit for bit
+    nnzb = bcol.size
+    transposed = sp.csr_matrix((np.arange(nnzb, dtype=idx), bcol, bptr), shape=(nbr, nbr)).tocsc().data
+    lptr = np.zeros(nbr + 1, dtype=np.int64)
+    np.cumsum(np.bincount(brow[lower], minlength=nbr), out=lptr[1:])
+    data = K.data.reshape(-1)
+    row_dofs = free_dofs[perm]  # old DOF of each new row
+    parts_i, parts_j, parts_v = [], [], []
+    lanes = np.arange(R, dtype=idx)
+    for i0 in range(0, nf, max(int(rows), 1)):
+        i1 = min(i0 + max(int(rows), 1), nf)
+        d = row_dofs[i0:i1]
+        q, r = d // R, (d % R).astype(idx)
+        counts = lptr[q + 1] - lptr[q]
+        first = np.repeat(lptr[q] - np.cumsum(counts) + counts, counts)
+        blk = lower_blocks[first + np.arange(first.size)]  # each row's lower blocks, rows in new order
+        i_of = np.repeat(np.arange(i0, i1, dtype=idx), counts)
+        r_of = np.repeat(r, counts)
+        col = (R * bcol[blk])[:, None] + lanes  # [row-block, R] scalar columns
+        j = new[col]
+        keep = (j >= 0) & (j <= i_of[:, None])
+        parts_j.append(j[keep])
+        parts_i.append(np.broadcast_to(i_of[:, None], j.shape)[keep])
+        parts_v.append(data[((R * R) * transposed[blk] + r_of)[:, None] + R * lanes][keep])
+    i_all = np.concatenate(parts_i)
+    del parts_i
+    j_all = np.concatenate(parts_j)
+    del parts_j
+    v_all = np.concatenate(parts_v)
+    del parts_v
+    nnz = v_all.size
+    colptr = np.empty(nf + 1, dtype=idx)
+    rows_out = np.empty(nnz, dtype=idx)
+    vals = np.empty(nnz)
+    # counting sort by column, stable: each column's rows in emission (ascending) order
+    _sparsetools.coo_tocsr(nf, nf, nnz, j_all, i_all, v_all, colptr, rows_out, vals)
+    out = sp.csc_matrix((vals, rows_out, colptr), shape=(nf, nf))
+    out.has_sorted_indices = True
+    return out
+
+
 def held_rows(K: sp.spmatrix, held: np.ndarray, chunk: int = 1 << 16) -> sp.csr_matrix:
     """``K`` with only the rows ``held`` (indices) kept, all columns, the other rows empty: ``(held_rows(K, h) @ u)[h]``
     is ``(K @ u)[h]`` (the reactions) for the memory of those rows alone, so ``K`` itself can go before the solve."""

@@ -95,8 +95,9 @@ def cg_seconds(A: sp.spmatrix, iterations: float) -> float:
     return A.nnz * CG_SECONDS_PER_NNZ * (iterations + CG_SETUP_ITERATIONS)
 
 
-def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1,
-                  groups: np.ndarray | None = None) -> tuple[SolverChoice, Any]:
+def choose_solver(A: sp.spmatrix | None, analyse: bool = True, cases: int = 1,
+                  groups: np.ndarray | None = None, graph: sp.spmatrix | None = None,
+                  nnz: int | None = None) -> tuple[SolverChoice, Any]:
     """Direct or iterative for the SPD system ``A`` with ``cases`` right-hand sides, from a cost model: CHOLMOD's
     symbolic analysis predicts the factorisation's seconds and memory and the seconds per solve
     (:func:`mechverify.fea.factor.symbolic_cost` with AMD on the node graph ``groups``, then METIS when
@@ -106,22 +107,25 @@ def choose_solver(A: sp.spmatrix, analyse: bool = True, cases: int = 1,
     :class:`SolverChoice` ("direct" or "amg"; its seconds are the totals over the cases) and the
     :class:`~mechverify.fea.factor.SymbolicCost` to factor with (None when CHOLMOD is absent, the system is above
     :data:`DIRECT_SWITCH_MAX` or its factor would take more than :data:`DIRECT_BYTES_PER_DOF` per unknown).
-    ``analyse=False`` predicts CG only (the analysis is left for later)."""
+    ``analyse=False`` predicts CG only (the analysis is left for later). ``graph`` and ``nnz``: the node graph of
+    ``A``, its ``groups`` and ``A.nnz`` instead of ``A`` (:func:`mechverify.fea.assembly.node_graph`: the choice is made
+    before ``A`` is extracted, so a factorisation never needs the full ``A``)."""
     from mechverify.fea.factor import symbolic_cost
 
-    n = A.shape[0]
-    t_cg = A.nnz * CG_SECONDS_PER_NNZ * (CG_EXPECTED_ITERATIONS * cases + CG_SETUP_ITERATIONS)
+    n = A.shape[0] if graph is None else int(groups[-1])
+    nnz = A.nnz if nnz is None else int(nnz)
+    t_cg = nnz * CG_SECONDS_PER_NNZ * (CG_EXPECTED_ITERATIONS * cases + CG_SETUP_ITERATIONS)
 
     def direct(c: Any) -> float:
         return c.factor_seconds + cases * c.solve_seconds
 
     cost, spent = None, 0.0
     if analyse and n <= DIRECT_SWITCH_MAX:
-        cost = symbolic_cost(A, "amd", groups)
+        cost = symbolic_cost(A, "amd", groups, graph=graph)
         spent = 0.0 if cost is None else cost.seconds
         if cost is not None and direct(cost) <= 2 * t_cg and \
-                METIS_GAIN * cost.factor_seconds > METIS_SECONDS_PER_NNZ * A.nnz:
-            nested = symbolic_cost(A, "metis", groups)
+                METIS_GAIN * cost.factor_seconds > METIS_SECONDS_PER_NNZ * nnz:
+            nested = symbolic_cost(A, "metis", groups, graph=graph)
             if nested is not None:
                 spent += nested.seconds
                 cost = nested if nested.factor_seconds < cost.factor_seconds else cost
@@ -266,25 +270,51 @@ def solve(K: sp.spmatrix, f: np.ndarray, held: np.ndarray, points: np.ndarray, p
     from mechverify.fea.assembly import free_submatrix
 
     rhs = f[free] - ((K @ u)[free] if prescribed is not None and np.any(u[held]) else 0.0)
-    Kff = free_submatrix(K, free_mask)
-    del K  # a caller that handed K over (SolidModel.solve keeps only its held rows) frees it before the solve
-    from mechverify.fea.factor import cholmod_available, factorize
+    from mechverify.fea.assembly import free_lower_permuted, node_graph
+    from mechverify.fea.factor import cholmod_available, factorize, factorize_lower
     from mechverify.fea.reproducible import one_blas_thread
 
-    cost, label, analysis = None, "", None
+    cost, label, analysis, Kff = None, "", None, None
     if method == "auto":
         big = dim == 3 and free.size > ITERATIVE_THRESHOLD_3D and prolongation is not None
         method = "amg" if big else "direct"
         if big and cholmod_available():
-            groups = np.r_[0, np.flatnonzero(np.diff(free // dim)) + 1, free.size]  # each node's free DOFs
-            choice, cost = choose_solver(Kff, analyse=free.size <= ANALYSE_FIRST_MAX, groups=groups)
+            # the choice on the node graph, before any scalar matrix: a factorisation then reads the lower triangle
+            # of the permuted K[free][:, free] straight from K (free_lower_permuted), never the full one (task thinperf)
+            bsr = sp.issparse(K) and K.format == "bsr" and K.blocksize == (dim, dim)
+            if bsr:
+                graph, groups, nnz = node_graph(K, free_mask)
+                choice, cost = choose_solver(None, analyse=free.size <= ANALYSE_FIRST_MAX, groups=groups,
+                                             graph=graph, nnz=nnz)
+            else:
+                Kff = free_submatrix(K, free_mask)
+                groups = np.r_[0, np.flatnonzero(np.diff(free // dim)) + 1, free.size]  # each node's free DOFs
+                graph, nnz = None, Kff.nnz
+                choice, cost = choose_solver(Kff, analyse=free.size <= ANALYSE_FIRST_MAX, groups=groups)
             method, label = choice.method, choice.describe()
             if choice.direct_seconds is None and free.size <= DIRECT_SWITCH_MAX:
                 def analysis() -> float | None:  # run when CG turns out slower than expected
                     nonlocal cost, label
-                    later, cost = choose_solver(Kff, groups=groups)
+                    later, cost = choose_solver(Kff, groups=groups, graph=graph, nnz=nnz)
                     label = later.describe() + " (analysed when CG was slow)"
                     return None if cost is None else cost.factor_seconds
+            if method == "direct" and cost is not None and bsr:
+                lower = free_lower_permuted(K, free_mask, cost.perm)
+                del K  # a caller that handed K over (SolidModel.solve keeps only its held rows) frees it here
+                if progress:
+                    progress(f"solving {free.size} unknowns (direct)")
+                x = factorize_lower(lower, cost).solve(rhs)
+                if not np.all(np.isfinite(x)):
+                    raise ModelError("the solve produced non-finite displacements; the model has a mechanism")
+                xp = x[cost.perm]  # the residual with the lower triangle: A x = L x + Lᵀ x - diag(A) x
+                r = lower @ xp + lower.T @ xp - lower.diagonal() * xp - rhs[cost.perm]
+                u[free] = x
+                return u, SolveInfo(f"direct (cholmod; {label})", int(free.size), 0,
+                                    float(np.linalg.norm(r) / max(np.linalg.norm(rhs), 1e-300)),
+                                    time.perf_counter() - t0)
+    if Kff is None:
+        Kff = free_submatrix(K, free_mask)
+    del K  # a caller that handed K over (SolidModel.solve keeps only its held rows) frees it before the solve
     if progress:
         progress(f"solving {free.size} unknowns ({method})")
     iters = 0
