@@ -428,3 +428,16 @@ def test_expression_results_show_simplified_units():
     lines = [n for r in design.verify() for n in r.notes if "← drum_speed" in n]
     assert lines and all(re.search(r"= 12\.5 rad/s ← drum_speed", n) for n in lines), lines
     assert all("/mm" not in n for n in lines)
+
+
+@pytest.mark.parametrize("text, names", [
+    ("350 N + 2 m", "a force and a length"),
+    ("1 m + 1 s", "a length and a time"),
+    ("2 N*m + 1 kg", "a torque, energy or torsional stiffness and a mass"),
+])
+def test_a_unit_mismatch_names_mechverify_dimensions(text, names):
+    """Task fix19: '350 N + 2 m' said 'units do not match ([mass] * [length] / [time] ** 2 and [length])' (pint's
+    dimensions); the studies' messages already name mechverify's ('a force', studies.params.dimension_name)."""
+    with pytest.raises(ExpressionError, match=r"units do not match \(") as info:
+        evaluate(text, {})
+    assert f"({names})" in str(info.value), str(info.value)

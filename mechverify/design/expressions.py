@@ -117,8 +117,29 @@ def _hint(name: str, env: Mapping[str, Any]) -> str:
 
 
 def _dim_text(exc: pint.DimensionalityError) -> str:
-    d1, d2 = exc.dim1, exc.dim2
-    return f"{d1} and {d2}" if d2 else str(d1)
+    """'a force and a length': mechverify's names of the two dimensions (pint's ``[mass] * [length] / [time] ** 2``
+    only for a dimension it has no name for)."""
+    d1, d2 = _dim_name(exc.dim1), _dim_name(exc.dim2)
+    return f"{d1} and {d2}" if d2 else d1
+
+
+def _dim_name(dim: Any) -> str:
+    from mechverify.units import DIMENSIONS, ureg
+
+    text = str(dim) if dim is not None else ""
+    if not text:
+        return ""
+    try:
+        d = ureg.get_dimensionality(text)
+    except Exception:  # (not a dimensionality pint reads back: its text)
+        return text
+    if not d:
+        return "dimensionless"
+    names = [n.replace("_", " ") for n, (dd, _) in DIMENSIONS.items() if dd and ureg.get_dimensionality(dd) == d]
+    if not names:
+        return text
+    listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
+    return ("an " if names[0][0] in "aeiou" else "a ") + listed
 
 
 def _finite(v: Any, source: str) -> None:
