@@ -2,11 +2,11 @@
 (the part turns about the pin) and, unless ``axial``, along the pin's axis - a frictionless pin, bilateral.
 
 This is the standard linear model of a pin in a hole (ANSYS "cylindrical support" with the radial direction fixed
-and the tangential one free; Abaqus/CalculiX ``*TRANSFORM, TYPE=C`` and a boundary condition on the radial DOF,
-CalculiX 2.20 manual sec. 7.131). It is **not** a contact model: a real pin bears on half the wall and only
-pushes; here the whole wall is held radially both ways, so a wall that would lift off the pin is held to it. The
-part is not clamped at the hole: a beam on two pinned holes deflects as a pinned-pinned beam
-(``tests/validation/test_gere_pinned_beam_solid.py``), where holding the whole wall (``Fixed``) clamps the section.
+and the tangential one free; Abaqus/CalculiX ``*TRANSFORM, TYPE=C`` and a boundary condition on the radial DOF).
+It is **not** a contact model: a real pin bears on half the wall and only pushes; here the whole wall is held
+radially both ways, so a wall that would lift off the pin is held to it. The part is not clamped at the hole: a
+beam on two pinned holes deflects as a pinned-pinned beam (``tests/validation/test_shigley_pinned_beam_solid.py``),
+where holding the whole wall (``Fixed``) clamps the section.
 
 How: every node of the wall gets its own axes, ``[e_r, e_θ, e_z]`` (radial from the fitted axis, tangential, axial),
 and the displacement there is written in them, ``u = T u'`` with ``T`` block-diagonal and orthogonal (identity away
@@ -22,12 +22,12 @@ across it; a region that is not a cylinder within :data:`CYLINDER_RTOL` of its r
 
 References
 ----------
-1. Cook, Malkus, Plesha & Witt, Concepts and Applications of Finite Element Analysis, 4th ed., Wiley 2002,
-   sec. 9.2 (skew supports: nodal DOFs in rotated axes, ``K' = Tᵀ K T``).
-2. Dhondt, CalculiX CrunchiX User's Manual 2.20, sec. 7.131 (``*TRANSFORM``: cylindrical local axes for
-   boundary conditions).
+1. Cook, Malkus, Plesha & Witt, Concepts and Applications of Finite Element Analysis, 4th ed., Wiley 2002 (skew
+   supports: nodal DOFs in rotated axes, ``K' = Tᵀ K T``; the section number not checked here).
+2. Dhondt, CalculiX CrunchiX User's Manual, the ``*TRANSFORM`` keyword (cylindrical local axes for boundary
+   conditions; section number not checked here).
 3. Shakarji, "Least-squares fitting algorithms of the NIST algorithm testing system", J. Res. NIST 103 (1998)
-   633-641, sec. 3.5 (cylinder fit; the circle fit across the axis, algebraic start and Gauss-Newton).
+   633-641 (cylinder fit: the geometric distances minimised by Gauss-Newton from an algebraic start).
 """
 
 from __future__ import annotations
