@@ -441,3 +441,11 @@ def test_a_unit_mismatch_names_mechverify_dimensions(text, names):
     with pytest.raises(ExpressionError, match=r"units do not match \(") as info:
         evaluate(text, {})
     assert f"({names})" in str(info.value), str(info.value)
+
+
+def test_a_number_added_to_a_length_names_both():
+    """Task fix19: pint gives no dimensions for '1 m + 1' (units only): the message named nothing, 'units do not
+    match ()'."""
+    with pytest.raises(ExpressionError) as info:
+        evaluate("1 m + 1", {})
+    assert "(a length and dimensionless)" in str(info.value), str(info.value)

@@ -119,7 +119,17 @@ def _hint(name: str, env: Mapping[str, Any]) -> str:
 def _dim_text(exc: pint.DimensionalityError) -> str:
     """'a force and a length': mechverify's names of the two dimensions (pint's ``[mass] * [length] / [time] ** 2``
     only for a dimension it has no name for)."""
-    d1, d2 = _dim_name(exc.dim1), _dim_name(exc.dim2)
+    if not exc.dim1 and not exc.dim2:  # (pint gives the units only: 1 m + 1)
+        from mechverify.units import ureg
+
+        def dims(u: Any) -> str:
+            try:
+                return str(ureg.Quantity(1.0, u).dimensionality)
+            except Exception:  # (not a unit pint builds: its text)
+                return str(u)
+        d1, d2 = _dim_name(dims(exc.units1)), _dim_name(dims(exc.units2))
+    else:
+        d1, d2 = _dim_name(exc.dim1), _dim_name(exc.dim2)
     return f"{d1} and {d2}" if d2 else d1
 
 
