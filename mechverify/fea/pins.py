@@ -32,7 +32,9 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -43,6 +45,8 @@ from mechverify.errors import InputError, ModelError
 #: cylinder puts them on it to round-off; a cone's or a sphere's miss any cylinder by far more). The facet normals
 #: only start the fit: a coarse mesh's triangles across a hole lean along its axis (0.16 on a 6 mm hole of a STEP file).
 CYLINDER_RTOL = 0.02
+#: A load with more than this share of its nodal forces on a pin's held DOFs is said to go into the pin (WARN).
+PINNED_LOAD_SHARE = 0.5
 #: Below this share of the normals' scatter across the axis the region is flat (a plane face), not a cylinder.
 FLAT_RTOL = 0.02
 
@@ -208,6 +212,28 @@ class DofBasis:
         T = self.T
         nv = P.shape[1]
         return (T.T @ P @ T[:nv][:, :nv]).tocsr()
+
+    def load_warnings(self, loads: Sequence[Any], parts: Sequence[np.ndarray], named: Sequence[str]) -> tuple[str, ...]:
+        """A warning for each load (nodal forces ``parts`` in these axes; not one of ``named``, those already said to
+        act only on held DOFs) of which more than :data:`PINNED_LOAD_SHARE` falls on a pin's held DOFs: a load on a
+        pinned wall (a ``PinLoad`` on the pinned hole) goes mostly straight into the pin."""
+        on = np.zeros(self.R.shape[0] * 3, bool)
+        on[self.held] = True
+        pin_dofs = np.zeros_like(on)
+        for nodes in self.pinned.values():
+            pin_dofs[3 * nodes] = pin_dofs[3 * nodes + 2] = True
+        on &= pin_dofs
+        out = []
+        for i, (ld, fi) in enumerate(zip(loads, parts, strict=True)):
+            total = float(np.abs(fi).sum())
+            region = getattr(ld, "region", None)
+            name = f"load {i} ({type(ld).__name__.lower()}" + (f" on {region.describe()})" if region else ")")
+            share = float(np.abs(fi[on]).sum()) / total if total > 0 else 0.0
+            if share > PINNED_LOAD_SHARE and name not in named:
+                out.append(f"{name} acts on a pinned wall: {share:.0%} of its nodal forces go straight into the pin "
+                           "(the wall is held radially there) and load nothing; load the part elsewhere, or model the "
+                           "pin as a load on an unsupported hole (pin_loads)")
+        return tuple(out)
 
     def rigid_modes(self, points: np.ndarray) -> tuple[np.ndarray, list[str]]:
         """The rigid motions of :func:`mechverify.fea.linsolve.rigid_modes` in the pin axes (``Tᵀ B``)."""

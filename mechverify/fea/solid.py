@@ -561,6 +561,7 @@ class SolidModel:
             if basis is not None:
                 f, parts = basis.inward(f), [basis.inward(fi) for fi in parts]
             on_held = held_load_names(self.loads, parts, held)
+            pinned_loads = () if basis is None else basis.load_warnings(self.loads, parts, on_held)
             timings["assembly"] = time.perf_counter() - t0
             if factorization is not None:
                 u, info = factorization.solve(f, held)
@@ -590,7 +591,7 @@ class SolidModel:
             kind="solid", points=self.nodes.T.copy(), u=u.reshape(-1, 3), sigma=sigma, material=mat,
             reaction=reaction, applied=applied, cells=[("tetra10", b.element_dofs.T.copy())],
             surface=nodes[:, :3].copy(), info=info, timings=timings, regions=reports,
-            warnings=(*held_load_warnings(on_held), *(r.warning for r in reports if r.warning),
+            warnings=(*held_load_warnings(on_held), *pinned_loads, *(r.warning for r in reports if r.warning),
                       *filter(None, [self.mesh.sliver_warning()])), recovery=recovery,
             elements=b.element_dofs.T.copy(), ip_points=rec.ip_points, ip_sigma=_tensors(rec.ip_values),
             element_error=rec.element_error, error_estimate=rec.error_estimate)
