@@ -305,3 +305,16 @@ def test_study_draws_a_progress_bar_on_the_console(capsys):
     assert "samples" in err and "5/5" in err, err
     assert main([*args, "--no-progress"]) == 0
     assert "5/5" not in capsys.readouterr().err
+
+
+def test_size_names_the_cause_of_invalid_scan_points_not_its_cascade(capsys):
+    """Task fix19 (audit; review 3 finding 14 was fixed for the study's console only): sizing the lift screw's
+    length over -100..500 mm gave '... invalid at 2 of 9 scan points (-100..-25 mm): load_cases.raise.screw_bearing.
+    axial_force: 'lift_screw.support_axial_force': lift_screw is invalid (see its own errors)', the LAST error of the
+    cascade. Now the first, the cause, and how many there are."""
+    rc = main(["size", str(LIFT), "--vary", "components.lift_screw.length", "--bounds", "-100 mm:500 mm"])
+    err = capsys.readouterr().err
+    assert rc == 2
+    assert "invalid at 2 of 9 scan points (-100..-25 mm): components.lift_screw: lift_screw.length: must be " \
+           "positive" in err and "errors)" in err, err
+    assert "see its own errors" not in err, err

@@ -185,9 +185,12 @@ def size(design: Any, vary: str, until: str = "governing", bounds: Sequence[Any]
 
 
 def _reason(message: str) -> str:
-    """The last line of an invalid sample's message (the error itself, after the file's header line)."""
-    lines = [x.strip() for x in message.splitlines() if x.strip()]
-    return lines[-1] if lines else message
+    """An invalid scan point's error on one line: of a design file's error list the first (the cause, not the
+    cascade that follows from it) and how many there are, as the study's console line
+    (:func:`mechverify.studies.study._last_line`)."""
+    from mechverify.studies.study import _last_line
+
+    return _last_line(message) or message
 
 
 def _span(xs: Sequence[float], unit: str) -> str:
