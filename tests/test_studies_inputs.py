@@ -242,3 +242,48 @@ def test_a_standard_deviation_is_a_difference_not_a_temperature(tmp_path, writte
     axis = Study(p, vary={"components.b.operating_temperature": spec}, samples=4).axes[0]
     assert axis.args[0] == pytest.approx(mean, rel=1e-12)
     assert axis.args[1] == pytest.approx(sd, rel=1e-9)
+
+
+# ----------------------------------------------------------------------------- review 4 finding 7
+_SS_BEAM = """
+[design]
+name = "ss beam"
+[components.beam]
+type = "frame"
+material = "Structural Steel"
+section = "rectangle"
+width = "10 mm"
+height = "20 mm"
+theory = "euler"
+nodes = {{ A = ["0 mm", "0 mm", "0 mm"], B = ["1000 mm", "0 mm", "0 mm"] }}
+members = [ {{ name = "m", start = "A", end = "B" }} ]
+supports = [ {{ at = "A", type = "pinned" }}, {{ at = "B", type = "custom", hold = ["y", "z", "rx"] }} ]
+{limit}
+[load_cases.udl.beam]
+distributed_loads = [ {{ member = "m", load = ["0 N/m", "0 N/m", "-200 N/m"], axes = "global" }} ]
+"""
+
+
+@pytest.mark.parametrize("spec", ["5 mm:10 mm:2", "0.002:0.004:2"])
+def test_a_deflection_limit_written_as_a_span_fraction_is_refused_with_the_way_to_vary_it(tmp_path, spec):
+    """Review 4 finding 7: deflection_limit = "L/250" (a fraction of the span) is read by pint as a litre / 250:
+    '5 mm:10 mm:2' was refused as 'the design file's value (0.004 l) is a volume', and bare numbers ran every sample
+    invalid ('expected a length, got 0.002 l'), exit 2. Refused up front, naming the span fraction and the way to
+    vary it: the frame's numeric deflection_limit_fraction (0.004 = L/250), which then varies (the midspan
+    deflection check's limit 1000 mm x 0.002 = 2 mm, hand)."""
+    from mechverify.studies import Study
+
+    p = tmp_path / "ss.toml"
+    p.write_text(_SS_BEAM.format(limit='deflection_limit = "L/250"'))
+    with pytest.raises(InputError) as info:
+        Study(p, vary={"components.beam.deflection_limit": spec})
+    text = str(info.value)
+    assert "'L/250'" in text and "fraction of the span" in text and "volume" not in text, text
+    assert "deflection_limit_fraction = 0.004" in text, text
+    q = tmp_path / "ssf.toml"
+    q.write_text(_SS_BEAM.format(limit="deflection_limit_fraction = 0.004"))
+    res = Study(q, vary={"components.beam.deflection_limit_fraction": "0.002:0.004:2"}).run("serial",
+                                                                                          check_inputs=False)
+    assert [s["status"] for s in res.samples] == ["ok", "ok"]
+    fus = [s["checks"]["beam.frame_deflection"]["fu"] for s in res.samples]
+    assert fus[0] == pytest.approx(2 * fus[1], rel=1e-9)  # half the limit, twice the utilisation

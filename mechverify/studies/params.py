@@ -155,6 +155,32 @@ def _refuse_text(path: str, raw: Any, field: Any, resolved: Any = None) -> None:
         raise InputError(f"{path}: its value {raw!r} is text, not a number: a study varies numbers only")
 
 
+#: ``"L/250"``, ``"span/250"``: a limit written as a fraction of the span (checks.members' form of it)
+_SPAN_FRACTION = re.compile(r"^\s*(?:l|L|span)\s*/\s*([0-9.]+)\s*$")
+
+
+def _refuse_span_fraction(doc: Mapping[str, Any], path: str, raw: Any) -> None:
+    """Refuse a key written as a fraction of the span (``deflection_limit = "L/250"``), naming the way to vary it:
+    pint reads "L/250" as a litre / 250 (a volume, review 4 finding 7), and a sample's number would replace it by a
+    length or a bare number the key reads otherwise. The type's numeric ``<key>_fraction`` when it has one."""
+    m = _SPAN_FRACTION.match(raw) if isinstance(raw, str) else None
+    steps = split_path(path)
+    if m is None or _field_of(doc, steps) is None or not isinstance(steps[-1], str):
+        return
+    try:
+        frac = 1.0 / float(m.group(1))
+    except (ValueError, ZeroDivisionError):
+        return
+    key = steps[-1]
+    table = path.rsplit(".", 1)[0]
+    if _field_of(doc, [*steps[:-1], f"{key}_fraction"]) is not None:
+        how = (f"write {key}_fraction = {frac:.6g} in its place (the same limit) and vary "
+               f"{table}.{key}_fraction (e.g. {frac / 2:.6g}:{frac * 2:.6g}:5)")
+    else:
+        how = f"write the limit as a length in the file ({key} = \"2 mm\") and vary that"
+    raise InputError(f"{path} is written {raw!r}, a fraction of the span: a study varies numbers only; {how}")
+
+
 def _not_written(path: str, doc: Mapping[str, Any], steps: list[str | int], table: Mapping[str, Any]) -> InputError:
     """A key the file does not write in a table that exists: it may be a key whose default is not one number (a
     screw stage's mu: the nut material's friction range, both ends checked), so it cannot be varied as is."""
@@ -275,6 +301,7 @@ class Parameter:
                 lo, hi = (float(x) for x in rng)
                 return cls(path, hi, "", default_range=(lo, hi, f"the nut friction range of lead screw {screw!r}"))
         raw = get_path(doc, path, defaults=True)
+        _refuse_span_fraction(doc, path, raw)
         _refuse_text(path, raw, _field_of(doc, split_path(path)), resolved)
         if isinstance(raw, str) and resolved is not None:
             try:
