@@ -12,6 +12,7 @@ Triangles are kept counter-clockwise (:func:`tri_mesh`).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -95,16 +96,20 @@ def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float
     return tri_mesh(p, orient_triangles(p, t))
 
 
-def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri:
+def polygon(region: Any, size: float, hole_size: float | None = None,
+            ring_sizes: Mapping[int, float] | None = None) -> MeshTri:
     """Mesh a shapely polygon (metres) with element size ``size``, graded to ``hole_size`` (default
     size/3) at the holes and at curved parts of the outline (runs of segments shorter than size/2:
-    fillets, arcs). Straight segments of the polygon are kept as mesh edges."""
+    fillets, arcs). ``ring_sizes`` (interior ring index -> element size) overrides ``hole_size`` at single holes
+    (a round hole's rim, graded from its own size: :func:`mechverify.fea.plate.hole_sizes`). Straight segments of
+    the polygon are kept as mesh edges."""
     gmsh = import_gmsh()
     if size <= 0:
         raise InputError("mesh size must be positive")
     hole_size = size / 3 if hole_size is None else hole_size
+    ring_sizes = dict(ring_sizes or {})
     gmsh_session(gmsh, size)
-    gmsh.option.setNumber("Mesh.MeshSizeMin", min(hole_size, size) / 2)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", min(hole_size, size, *ring_sizes.values()) / 2)
     try:
         geo = gmsh.model.geo
 
@@ -116,18 +121,29 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
 
         outer, outer_lines = ring(region.exterior.coords)
         inner, hole_lines = [], []
-        for interior in region.interiors:
+        by_size: dict[float, list[int]] = {}  # element size -> curves graded to it
+        for k, interior in enumerate(region.interiors):
             loop, lines = ring(interior.coords)
             inner.append(loop)
-            hole_lines += lines
+            if k in ring_sizes:
+                by_size.setdefault(float(ring_sizes[k]), []).extend(lines)
+            else:
+                hole_lines += lines
         # arcs of the outline (fillets, a hole cut by a symmetry line) come as runs of short segments
         ext = np.asarray(region.exterior.coords)
         seg = np.linalg.norm(np.diff(ext, axis=0), axis=1)
         hole_lines += [line for line, s in zip(outer_lines, seg) if s < size / 2]
         geo.addPlaneSurface([outer, *inner])
         geo.synchronize()
-        if hole_lines and hole_size < size:
-            refine_near(gmsh, "CurvesList", hole_lines, hole_size, size, 4 * size, sampling=20)
+        if hole_lines:
+            by_size.setdefault(float(hole_size), []).extend(hole_lines)
+        by_size = {s: lines for s, lines in by_size.items() if s < size}
+        if len(by_size) == 1:
+            (s, lines), = by_size.items()
+            refine_near(gmsh, "CurvesList", lines, s, size, 4 * size, sampling=20)
+        elif by_size:
+            _graded_min(gmsh, by_size, size)
+        if by_size:
             gmsh.option.setNumber("Mesh.MeshSizeExtendFromBoundary", 0)
         gmsh.model.mesh.generate(2)
         tags, coords, _ = gmsh.model.mesh.getNodes()
@@ -143,6 +159,27 @@ def polygon(region: Any, size: float, hole_size: float | None = None) -> MeshTri
     p = coords.reshape(-1, 3).T[:2, used]
     t = remap[t]
     return tri_mesh(p, orient_triangles(p, t))
+
+
+def _graded_min(gmsh: Any, by_size: Mapping[float, list[int]], size: float) -> None:
+    """The background size field: the smallest of one :func:`refine_near` grading per element size (from that size
+    on its curves to ``size`` at 4 ``size`` from them)."""
+    f = gmsh.model.mesh.field
+    fields = []
+    for s, lines in by_size.items():
+        dist = f.add("Distance")
+        f.setNumbers(dist, "CurvesList", lines)
+        f.setNumber(dist, "Sampling", 20)
+        thr = f.add("Threshold")
+        f.setNumber(thr, "InField", dist)
+        f.setNumber(thr, "SizeMin", s)
+        f.setNumber(thr, "SizeMax", size)
+        f.setNumber(thr, "DistMin", 0.0)
+        f.setNumber(thr, "DistMax", 4 * size)
+        fields.append(thr)
+    low = f.add("Min")
+    f.setNumbers(low, "FieldsList", fields)
+    f.setAsBackgroundMesh(low)
 
 
 def from_gmsh_model(gmsh: Any) -> NamedMeshTri:

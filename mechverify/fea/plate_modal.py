@@ -58,12 +58,12 @@ def plate_mass_matrix(sys_: Any, rho: float) -> sp.csr_matrix:
 
 
 def plate_modes(model: Any, n_modes: int = 6, mesh_size: QuantityLike | None = None,
-                hole_mesh_size: QuantityLike | None = None) -> ModalResults:
+                hole_mesh_size: QuantityLike | None = None, refine: float = 1.0) -> ModalResults:
     """The first ``n_modes`` natural frequencies and mode shapes of a
     :class:`mechverify.components.plates.PlateModel` (its loads are ignored; its supports hold the plate).
 
-    ``mesh_size`` (default: shorter side / 16) and ``hole_mesh_size`` as for
-    :func:`mechverify.fea.plate.solve_plate`. Supports that leave a rigid motion free are a
+    ``mesh_size`` (default: shorter side / 16), ``hole_mesh_size`` and ``refine`` (every element size divided by
+    it) as for :func:`mechverify.fea.plate.solve_plate`. Supports that leave a rigid motion free are a
     :class:`ModelError` naming it; asking for as many modes as free unknowns is an :class:`InputError`.
     """
     from mechverify.components import plates as P
@@ -81,7 +81,7 @@ def plate_modes(model: Any, n_modes: int = 6, mesh_size: QuantityLike | None = N
     rho = mat.density.m_as("kg/m**3")
     h = None if mesh_size is None else to_si(mesh_size, "length", "mesh_size")
     hh = None if hole_mesh_size is None else to_si(hole_mesh_size, "length", "hole_mesh_size")
-    mesh = plate_mesh(model.plate, h, hh)
+    mesh = plate_mesh(model.plate, h, hh, refine)
     sys_ = _PlateSystem(model, mesh)
     K = _stiffness(sys_).tocsr()
     M = plate_mass_matrix(sys_, rho)

@@ -89,3 +89,75 @@ def test_clamped_square_default_mesh_accuracy_as_documented():
     assert -0.10 < err[1] < -0.05 and -0.10 < err[3] < -0.07  # higher modes worse
     f10 = plate_modes(model, 1, mesh_size="10 mm").frequencies.m_as("Hz")[0]
     assert -0.02 < f10 / leissa[0] - 1 < 0.0  # converges from below
+
+
+# Leissa's CCCC square parameters, checked against a second printed source: Harris, Shock and Vibration Handbook, as
+# printed on engineersedge.com ("Thin Flat Plates Uniform Thickness Natural Frequency", all edges clamped:
+# omega = B sqrt(E t^2 / (rho a^4 (1 - nu^2))), B = 10.40, 21.21, 31.29): lambda = B sqrt(12) = 36.03, 73.47, 108.4,
+# 0.1-0.2 % above Leissa's 35.99, 73.39, 108.2 (B printed to four digits) - so Leissa's values are verified to that.
+HARRIS_B = (10.40, 21.21, 31.29)
+LEISSA_CCCC = (35.99, 73.39, 108.2)
+
+CCCC = """
+[design]
+name = "clamped square plate modes"
+[components.p]
+type = "plate_fea"
+width = "300 mm"
+height = "300 mm"
+thickness = "3 mm"
+material = "Structural Steel"
+supports = [{{ edges = "all", type = "fixed" }}]
+{extra}
+[components.p.checks]
+plate_stress_fea = false
+plate_deflection_fea = false
+"""
+
+
+def _cccc_hz(lam):
+    a, t = 0.3, 0.003
+    D = E * t**3 / (12 * (1 - NU**2))
+    return lam / (2 * math.pi * a**2) * math.sqrt(D / (RHO * t))
+
+
+def test_leissa_cccc_parameters_agree_with_harris():
+    for b, lam in zip(HARRIS_B, LEISSA_CCCC, strict=True):
+        assert b * math.sqrt(12) == pytest.approx(lam, rel=0.003)
+
+
+def _frequency_result(tmp_path, extra):
+    import mechverify
+
+    f = tmp_path / "cccc.toml"
+    f.write_text(CCCC.format(extra=extra))
+    return next(r for r in mechverify.load(f).verify() if r.check == "natural_frequency")
+
+
+def test_clamped_band_check_uses_extrapolated_frequencies_and_warns(tmp_path):
+    """Review 3 #2 (cccc_band4.toml): band 980-1100 Hz, margin 15 % -> no mode in 852.2-1265 Hz. Leissa's (2,2) mode
+    (lambda 108.2) is at 876.8 Hz (hand), inside: FAIL. The default mesh alone gave 799.0 Hz, WARN u 0.938 (wrong
+    side); now the frequencies are extrapolated from two meshes (code: 291.1, 592.1, 592.1, 870.2 Hz, within 1 % of
+    Leissa's 291.6, 594.7, 594.7, 876.8), the check FAILs and a WARN names the design mesh's error (8.2 % on mode 4)."""
+    r = _frequency_result(tmp_path, 'excitation_band = ["980 Hz", "1100 Hz"]\nmodes = 4')
+    hand = np.array([_cccc_hz(x) for x in (35.99, 73.39, 73.39, 108.2)])
+    assert hand[3] == pytest.approx(876.79, abs=0.05) and 980 / 1.15 < hand[3] < 1100 * 1.15
+    f = r.details["frequencies"].m_as("Hz")
+    assert f == pytest.approx(hand, rel=0.01)
+    assert r.verdict.name.lower() == "fail"
+    w = [x for x in r.warnings if x.startswith("mesh convergence of the frequencies")]
+    assert len(w) == 1 and "mode 4 is 799" in w[0], r.warnings
+    assert any(n.startswith("two-mesh check of the frequencies") for n in r.notes)
+
+
+def test_clamped_minimum_frequency_with_convergence_check(tmp_path):
+    """min_frequency 280 Hz, convergence_check: three meshes, observed order per mode about 2 (Morley), the
+    extrapolated mode 1 within 0.5 % of Leissa's 291.6 Hz (code 291.8); the check takes the more critical of the
+    finest mesh's (289.0 Hz) and the extrapolated frequencies, so it passes on 289.0 Hz."""
+    r = _frequency_result(tmp_path, 'min_frequency = "280 Hz"\nmodes = 2\nconvergence_check = true')
+    note = next(n for n in r.notes if n.startswith("three-mesh check of the frequencies"))
+    p = float(note.split("observed order ")[2].split(",")[0])
+    assert 1.5 < p < 2.5
+    ext = float(note.split("extrapolated ")[1].split(" Hz")[0])
+    assert ext == pytest.approx(_cccc_hz(35.99), rel=0.005)
+    assert r.capacity.m_as("Hz") < ext and r.verdict.name.lower() == "warn"  # mode 2's design-mesh error > 5 %

@@ -21,8 +21,10 @@ from mechverify.checks import plates as pc
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
 from mechverify.design.adapters import modal_parsing as mp
+from mechverify.design.adapters import plate_fea_eigen as pe
 from mechverify.design.adapters import plate_in_plane as ip
 from mechverify.design.adapters.bolts import plate_bolt_outputs
+from mechverify.design.adapters.plate_fea_eigen import REFINE
 from mechverify.design.adapters.plate_geometry import parse_limit, parse_plate
 from mechverify.design.adapters.plate_parsing import _loads, _supports
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
@@ -46,9 +48,10 @@ class PlateFEA:
     span: Any
     unit: str = "mm"
     modal: mp.ModalSettings | None = None
-    convergence: float | None = None  # the two-mesh check's tolerance when convergence_check is on
+    convergence: float | None = None  # the mesh-convergence tolerance when convergence_check is on
     in_plane_supports: tuple[Any, ...] = ()  # fea.plate_stress.InPlaneSupport
     hole_groups: dict[str, list[str]] = dataclasses.field(default_factory=dict)
+    tolerance: float = 0.05  # convergence_tolerance (also of the frequencies' two-mesh estimate, always made)
     solved: dict[str, tuple[pl.PlateModel, FieldResults]] = dataclasses.field(default_factory=dict)
 
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> tuple[pl.PlateModel, FieldResults]:
@@ -62,12 +65,11 @@ class PlateFEA:
     def solve_model(self, model: pl.PlateModel, loads: Mapping[str, Any], case: str, refine: float = 1.0) -> Any:
         """:func:`mechverify.fea.plate.solve_plate` of ``model`` with the case's in-plane loads, the element sizes
         divided by ``refine``."""
-        from mechverify.fea.plate import mesh_sizes, solve_plate
+        from mechverify.fea.plate import solve_plate
 
-        h, hh = mesh_sizes(self.plate, self.mesh_size, self.hole_mesh_size)
         try:
-            return solve_plate(model, Q(h / refine, "m"), Q(hh / refine, "m"), self.in_plane(loads, case),
-                               in_plane_supports=self.in_plane_supports)
+            return solve_plate(model, self.mesh_size, self.hole_mesh_size, self.in_plane(loads, case),
+                               in_plane_supports=self.in_plane_supports, refine=refine)
         except MechverifyError as exc:
             if "in_plane" not in loads or "in-plane" not in str(exc):
                 raise
@@ -106,16 +108,12 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
         raise InputError(f"convergence_tolerance: a fraction between 0 and 1 (0.05 = 5 %), got {tol:g}")
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
                     unit, mp.modal_settings(p), tol if p.get("convergence_check") else None,
-                    ip.in_plane_supports(p, plate, groups), groups)
+                    ip.in_plane_supports(p, plate, groups), groups, tolerance=tol)
 
 
 # ------------------------------------------------------------------------------------------------------ checks
 def _g(ctx: Any) -> Any:
     return ctx.requirements.get("g", Q(9.80665, "m/s**2"))
-
-
-#: The two-mesh check's second mesh has elements this many times smaller (as solid_fea's).
-REFINE = 1.5
 
 
 def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
@@ -125,10 +123,10 @@ def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     notes, warns, held = _mesh_notes(c, res), [], c.in_plane_supports if "in_plane" in loads else ()
     h_hh = mesh_sizes(c.plate, c.mesh_size, c.hole_mesh_size)
     hh = h_hh[1]
-    if c.convergence is not None:  # convergence_check: the peak again on a mesh REFINE times finer
-        fine = c.solve_model(model, loads, ctx.load_case, REFINE)
-        res, more, warns = pc.plate_convergence(model, res, fine, REFINE, c.convergence, h_hh, held)
-        hh = hh / REFINE if res is fine else hh
+    if c.convergence is not None:  # convergence_check: the peak again on meshes REFINE and REFINE² times finer
+        runs = [res, *(c.solve_model(model, loads, ctx.load_case, REFINE**k) for k in (1, 2))]
+        res, more, warns = pc.plate_convergence(model, runs, REFINE, c.convergence, h_hh, held)
+        hh = hh / REFINE ** runs.index(res)
         notes += more
     return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns, in_plane_supports=held,
                                      hole_mesh_size=hh)
@@ -142,44 +140,10 @@ def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
                                          notes=[*lateral, *_mesh_notes(c, res)])
 
 
-def _frequency(c: PlateFEA, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
-    if c.modal is None:  # natural_frequency runs when min_frequency or excitation_band is given
-        return []
-    from mechverify.fea.plate_modal import plate_modes
-
-    res = c.modal.solve(plate_modes, pl.PlateModel(c.plate, c.supports), c.mesh_size, c.hole_mesh_size,
-                        hint="lower mesh_size (finer mesh) or ask fewer modes")
-    return c.modal.check(res, c.name)
-
-
-def _buckling(c: PlateFEA, loads: Any, ctx: Any) -> list[CheckResult]:
-    """buckling_load_factor of every load case that gives in_plane edge loads (lateral loads cause no membrane
-    force); none: the check does not run. A case whose in-plane load compresses nothing passes with a note."""
-    from mechverify.fea.frame.modal import NoCompressionError
-    from mechverify.fea.plate_buckling import plate_buckling
-
-    out = []
-    for case, comps in ctx.design.data.load_cases.items():
-        if "in_plane" in (comps.get(c.name) or {}):
-            path = f"load_cases.{case}.{c.name}.in_plane"
-            load = c.in_plane(comps[c.name], case)
-            try:
-                res = plate_buckling(pl.PlateModel(c.plate, c.supports), load, 3, c.mesh_size, c.hole_mesh_size,
-                                     in_plane_supports=c.in_plane_supports)
-            except NoCompressionError as exc:  # a pull: the envelope is governed by the compressive cases
-                out.append(feac.no_buckling_result(float("inf"), str(exc), component=c.name, load_case=case))
-                continue
-            except MechverifyError as exc:
-                raise type(exc)(f"{path}: {exc}") from None
-            r = feac.check_buckling_load_factor(res, component=c.name, load_case=case)
-            bound = [n for n in res.notes if n.startswith("LOWER BOUND")]  # fea.plate_buckling._lower_bound
-            out.append(dataclasses.replace(r, notes=(*bound, *r.notes)) if bound else r)
-    return out
-
-
 def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
     size = "shorter side / 16 (default)" if c.mesh_size is None else fmt(c.mesh_size, "mm")
-    hole = "mesh size / 3 (default)" if c.hole_mesh_size is None else fmt(c.hole_mesh_size, "mm")
+    hole = ("a round hole's radius / 30, at most mesh size / 3 (default)" if c.hole_mesh_size is None
+            else fmt(c.hole_mesh_size, "mm"))
     return [f"mesh: {len(res.surface)} Morley triangles, {res.points.shape[0]} vertices; element size {size}, "
             f"at holes and cut-outs {hole}"]
 
@@ -216,16 +180,19 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                   "| holes = \"all\" | [group or hole names], type = fixed | pinned, "
                                   "washer_diameter}", required=True, item="table"),
         Field("mesh_size", "length", "element size (default: shorter side / 16)"),
-        Field("hole_mesh_size", "length", "element size at holes and cut-outs (default: mesh_size / 3)"),
+        Field("hole_mesh_size", "length", "element size at holes and cut-outs (default: a round hole's radius / 30, "
+                                          "at most mesh_size / 3; cut-outs mesh_size / 3)"),
         Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span "
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
         Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
         *mp.MODAL_FIELDS,
-        Field("convergence_check", "bool", "also solve at mesh_size / 1.5 and hole_mesh_size / 1.5 and WARN when the "
-                                           "peak stress changes more than convergence_tolerance (with the mesh sizes "
-                                           "needed, or naming a singular peak); the larger peak is the demand"),
-        Field("convergence_tolerance", "float", "tolerance of the two-mesh check", default=0.05),
+        Field("convergence_check", "bool", "also solve with elements 1.5x and 2.25x smaller: observed order, "
+                                           "Richardson error of the peak stress and the frequencies, WARN above "
+                                           "convergence_tolerance (with the mesh sizes needed, or naming a singular "
+                                           "peak); the largest peak is the demand"),
+        Field("convergence_tolerance", "float", "tolerance of the convergence check (and of the frequencies' "
+                                                "two-mesh estimate, always made)", default=0.05),
         ip.IN_PLANE_SUPPORTS_FIELD,
     ),
     build=lambda p, ctx: _build(p, ctx),
@@ -243,8 +210,8 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                      needs=("point_loads|patch_loads|pressure|self_weight|in_plane",)),
         CheckSpec.of(pc.check_plate_deflection_fea, lambda c, loads, ctx: _deflection(c, loads, ctx),
                      needs=("point_loads|patch_loads|pressure|self_weight|in_plane",)),
-        CheckSpec.of(feac.check_natural_frequency, _frequency),
-        CheckSpec.of(feac.check_buckling_load_factor, _buckling, reads=("in_plane",)),
+        CheckSpec.of(feac.check_natural_frequency, pe.frequency),
+        CheckSpec.of(feac.check_buckling_load_factor, pe.buckling, reads=("in_plane",)),
     ),
     outputs=plate_bolt_outputs(),  # bolt-hole support forces for bolted_joint / bolt_group (adapters/bolts.py)
     figures=_figures,
