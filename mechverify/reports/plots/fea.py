@@ -74,12 +74,18 @@ def _views(P: Any, S: Any) -> list[tuple[int, int]]:
     largest extents, drawn with the higher axis index up (z up when z is in the view: gravity down the page, a
     portal in x-z stands upright); and when the mode's largest translation is along the third axis (a portal
     swaying out of its plane, invisible in that view), a second view of that axis against the plane's axis
-    that keeps z (or its longer one)."""
+    that keeps z (or its longer one). Members on one line (a beam) have no plane: one view of the line's axis
+    against the mode's largest translation (review 4 finding 8: a cantilever bending along y was an x-z view with
+    a straight line and a y-z end view)."""
     import numpy as np
 
     ext = np.ptp(P, axis=0)
-    a, b = sorted(int(k) for k in np.argsort(ext, kind="stable")[::-1][:2])  # ties go to the higher axis (z)
     main = int(np.argmax(np.max(np.abs(S), axis=0)))
+    long = int(np.argmax(ext))
+    if np.sort(ext)[-2] <= 1e-6 * ext[long]:  # members on one line (a beam): one view, along it against the mode
+        other = main if main != long else (2 if long != 2 else 0)  # (an axial mode: against z, or x for a column)
+        return [tuple(sorted((long, other)))]  # type: ignore[list-item]  # (review 4 finding 8)
+    a, b = sorted(int(k) for k in np.argsort(ext, kind="stable")[::-1][:2])  # ties go to the higher axis (z)
     if main in (a, b):
         return [(a, b)]
     keep = b if b == 2 else (a if ext[a] > ext[b] else b)
