@@ -89,3 +89,17 @@ def test_solve_takes_the_lower_path_with_the_same_bits(system, monkeypatch):
     _, cost = linsolve.choose_solver(Kff, groups=groups)
     x = factor.factorize(Kff, "cholmod", symbolic=cost).solve(f[free])
     assert np.array_equal(u[free], x) and not np.any(u[~free])
+
+
+def test_held_rows_are_ks_rows(system):
+    """held_rows (read from the held rows' blocks): K's held rows bit for bit, the other rows empty, with whole nodes
+    and single components held."""
+    K, free, f, held, model = system
+    Kc = K.tocsr()
+    for rows in (held, held[held % 3 == 1], np.array([K.shape[0] - 1])):
+        A = assembly.held_rows(K, rows)
+        others = np.setdiff1d(np.arange(K.shape[0]), rows)
+        assert A[others].nnz == 0
+        assert (A[rows] != Kc[rows]).nnz == 0 and A[rows].nnz == Kc[rows].nnz
+        u = np.random.default_rng(2).standard_normal(K.shape[0])
+        assert np.array_equal((A @ u)[rows], (Kc @ u)[rows])

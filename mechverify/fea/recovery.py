@@ -227,8 +227,21 @@ def _boundary_vertices(t: np.ndarray, nverts: int) -> np.ndarray:
     nv = t.shape[0]
     faces = np.vstack([np.delete(t, k, axis=0).T for k in range(nv)])
     faces = np.sort(faces, axis=1)
-    _, inv, cnt = np.unique(faces, axis=0, return_inverse=True, return_counts=True)
     on = np.zeros(nverts, bool)
+    if nverts ** (nv - 1) < 2 ** 62:  # each sorted face as one integer: a 1D sort instead of np.unique's row sort
+        key = np.zeros(faces.shape[0], dtype=np.int64)
+        for k in range(nv - 1):
+            key *= nverts
+            key += faces[:, k]
+        order = np.argsort(key)
+        key = key[order]
+        single = np.ones(key.size, bool)  # a face met once (no equal neighbour in the sorted keys)
+        same = key[1:] == key[:-1]
+        single[1:] &= ~same
+        single[:-1] &= ~same
+        on[faces[order[single]].ravel()] = True
+        return on
+    _, inv, cnt = np.unique(faces, axis=0, return_inverse=True, return_counts=True)
     on[np.unique(faces[cnt[inv.ravel()] == 1])] = True
     return on
 
