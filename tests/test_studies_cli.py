@@ -318,3 +318,28 @@ def test_size_names_the_cause_of_invalid_scan_points_not_its_cascade(capsys):
     assert "invalid at 2 of 9 scan points (-100..-25 mm): components.lift_screw: lift_screw.length: must be " \
            "positive" in err and "errors)" in err, err
     assert "see its own errors" not in err, err
+
+
+def test_reproduce_into_another_folder_rebases_only_the_types_file_keys(tmp_path):
+    """Review 4 finding 12: the lever arm's reproduce into another folder wrote `step = "../ex/lever_arm/10 deg"`
+    (the pose sweep's angle step rebased as a file name: `step` is a STEP file of solid_fea, a number of
+    lever_arm_sweep) and `check` of it failed with 52 errors. Only the keys the table's own type (or its template's)
+    declares as files are rebased; a table of unknown type keeps every type's file keys."""
+    import tomllib
+
+    from mechverify.studies.study import rebase_files
+
+    doc = {"components": {"arm": {"type": "lever_arm_sweep", "step": "10 deg"},
+                          "beam": {"type": "solid_fea", "step": "beam.step"},
+                          "copy": {"extends": "t"}},
+           "templates": {"t": {"type": "solid_fea", "step": "t.step"}, "u": {"step": "u.step"}}}
+    out = rebase_files(doc, tmp_path, tmp_path / "repro")
+    assert out["components"]["arm"]["step"] == "10 deg"
+    assert out["components"]["beam"]["step"] == "../beam.step"
+    assert out["templates"] == {"t": {"type": "solid_fea", "step": "../t.step"}, "u": {"step": "../u.step"}}
+    # the lever arm example itself (its arm is the lever_arm_sweep of arm.toml, merged by the study)
+    data = tomllib.loads((EXAMPLES / "lever_arm" / "arm.toml").read_text())
+    arm = {"components": {k: dict(v) for k, v in data["components"].items()}}
+    assert any(t.get("type") == "lever_arm_sweep" and "step" in t for t in arm["components"].values())
+    assert rebase_files(arm, EXAMPLES / "lever_arm", tmp_path / "repro") == {
+        "components": {k: dict(v) for k, v in data["components"].items()}}

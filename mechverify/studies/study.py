@@ -273,11 +273,10 @@ class StudyResult:
             if any(isinstance(x, int) for x in steps):
                 return None
             values[tuple(str(x) for x in steps)] = get_path(doc, k)
-        keys = file_keys()
         for section in ("components", "templates"):  # file names rebased for another folder
             for name, table in (doc.get(section) or {}).items():
-                for key in keys:
-                    if isinstance(table, dict) and key in table:
+                for key in table_file_keys(doc, table) if isinstance(table, dict) else ():
+                    if key in table:
                         was = ((original.get(section) or {}).get(name) or {}).get(key)
                         if was != table[key]:
                             values[(section, name, key)] = table[key]
@@ -344,17 +343,34 @@ def file_keys() -> tuple[str, ...]:
     return tuple(sorted({f.name for t in REGISTRY.types.values() for f in t.fields if f.file}))
 
 
+def table_file_keys(doc: Mapping[str, Any], table: Mapping[str, Any]) -> tuple[str, ...]:
+    """The file-name keys of one component or template table: those its type (``type``, or its template's through
+    ``extends``) declares ``file=True``; every type's (:func:`file_keys`) when the type is not known. By type, since
+    a key name can be a file in one type and a number in another: the lever arm sweep's ``step = "10 deg"`` was
+    rebased as a file name, "../ex/lever_arm/10 deg" (review 4 finding 12)."""
+    from mechverify.design.spec import REGISTRY
+
+    kind, seen = table.get("type"), set()
+    while kind is None and isinstance(table.get("extends"), str) and table["extends"] not in seen:
+        seen.add(table["extends"])
+        table = (doc.get("templates") or {}).get(table["extends"]) or {}
+        kind = table.get("type") if isinstance(table, Mapping) else None
+    ct = REGISTRY.types.get(kind) if isinstance(kind, str) else None
+    if ct is None:
+        return file_keys()
+    return tuple(sorted(f.name for f in ct.fields if f.file))
+
+
 def rebase_files(doc: dict[str, Any], source_dir: Path, out_dir: Path) -> dict[str, Any]:
-    """``doc`` with every relative file name of a component or template (:func:`file_keys`) rewritten from
+    """``doc`` with every relative file name of a component or template (:func:`table_file_keys`) rewritten from
     ``source_dir`` to ``out_dir`` (relative when both are on one drive, else absolute); in place, returned."""
     import os
 
-    keys = file_keys()
     for section in ("components", "templates"):
         for table in (doc.get(section) or {}).values():
             if not isinstance(table, dict):
                 continue
-            for k in keys:
+            for k in table_file_keys(doc, table):
                 v = table.get(k)
                 if isinstance(v, str) and v and not Path(v).is_absolute():
                     target = (source_dir / v).resolve()
