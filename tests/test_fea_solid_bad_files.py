@@ -89,3 +89,30 @@ def test_convergence_tolerance_out_of_range_is_named(tmp_path, tol, match):
     errs = _errors(tmp_path, extra=f"convergence_check = true\nconvergence_tolerance = {tol}")
     assert [e[0] for e in errs] == ["components.beam.convergence_tolerance"]
     assert match in errs[0][1]
+
+
+def test_free_free_mode_request_names_the_elastic_modes(tmp_path):
+    """A free-free solid asked for more modes than it has: the message counts the user's modes and the elastic modes
+    the model has (task fix23's audit: 'modes = 5000' was reported as '5006 modes asked ... at most 1646', the six
+    rigid-body modes the adapter adds counted in both)."""
+    p = tmp_path / "d.toml"
+    p.write_text(textwrap.dedent("""
+        [design]
+        name = "free-free"
+        [components.bar]
+        type = "solid_fea"
+        box = "300, 10, 10"
+        mesh_size = "10 mm"
+        material = "Structural Steel"
+        supports = []
+        min_frequency = "100 Hz"
+        modes = 5000
+        """))
+    with pytest.raises(DesignFileError) as exc:
+        load(p).verify()
+    (key, msg), = exc.value.errors
+    assert key == "components.bar.modes" and msg.startswith("5000 elastic modes asked")
+    import re
+
+    n = int(re.search(r"of (\d+) degrees of freedom", msg).group(1))
+    assert f"at most {n - 7} " in msg and "rigid-body" in msg

@@ -264,9 +264,14 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
             if n_bodies > 1:  # each separate body has six more zero modes: they would pass as frequencies
                 raise InputError(f"supports: a free-free solid must be one body; the mesh is {n_bodies} separate "
                                  f"bodies, {model.body_description(1)} touches no other")
+        hint = "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"
+        if not c.supports:
+            n = model.mesh.n_dofs  # all free; ARPACK gives at most n - 1 modes, six of them rigid-body motions
+            if settings.modes + 6 > n - 1:
+                raise InputError(f"modes: {settings.modes} elastic modes asked, but a free-free model of {n} degrees "
+                                 f"of freedom has at most {n - 7} (six of its modes are rigid-body motions); {hint}")
             settings = dataclasses.replace(settings, modes=settings.modes + 6)
-        res = settings.solve(modal, model, hint=(
-            "ask fewer modes" if "mesh" in c.p else "use a smaller mesh_size (more elements) or ask fewer modes"))
+        res = settings.solve(modal, model, hint=hint)
     c.export(res, "modes")
     return c.noted(settings.check(res, c.name))
 
