@@ -275,3 +275,18 @@ def test_a_peer_answering_garbage_is_called_not_a_scheduler_not_a_memory_error(c
     assert rc == 2 and f"cannot reach the Dask scheduler at {peer.address} within 3 s" in err
     assert "MemoryError" not in err and "EiB" not in err, err
     assert "something answered there that is not a Dask scheduler" in err, err
+
+
+@pytest.mark.parametrize("size", ["2", "2 %", "0.5"])
+def test_a_memory_size_without_a_unit_is_refused(size, capsys):
+    """Review 4 finding 10: '--memory-per-worker 2' was read as 2 bits (pint's information units are dimensionless,
+    so a bare number converts): 'note: 2 local worker(s) for 2.5e-10 GB per sample'. A size needs a unit of
+    information ('2 GB'), as '2 kg' is refused."""
+    from mechverify.errors import InputError
+
+    with pytest.raises(InputError, match="memory size"):
+        ex.default_workers(size)
+    rc = main(["study", str(LIFT), *MC, "--samples", "2", "--memory-per-worker", size, "--no-progress"])
+    err = capsys.readouterr().err
+    assert rc == 2 and "memory size such as '2 GB'" in err and "GB per sample" not in err, err
+    assert ex.default_workers("512 MiB") >= 1 and ex.default_workers("2 kbit") >= 1

@@ -151,10 +151,13 @@ def default_workers(memory_per_worker: Any = None) -> int:
         n = max(1, os.cpu_count() or 1)
     if memory_per_worker is not None:
         from mechverify.errors import InputError
-        from mechverify.units import Q
+        from mechverify.units import Q, ureg
 
         try:
-            per = float(Q(memory_per_worker).to("byte").magnitude)
+            q = Q(memory_per_worker)
+            if q.to_root_units().units != ureg.bit:  # (pint's information units are dimensionless: '2' was 2 bits)
+                raise ValueError("no unit of information")
+            per = float(q.to("byte").magnitude)
         except MechverifyError as exc:
             raise InputError(f"memory_per_worker: {exc}") from None
         except Exception:  # (pint: not a memory size)
