@@ -103,3 +103,27 @@ def test_held_rows_are_ks_rows(system):
         assert (A[rows] != Kc[rows]).nnz == 0 and A[rows].nnz == Kc[rows].nnz
         u = np.random.default_rng(2).standard_normal(K.shape[0])
         assert np.array_equal((A @ u)[rows], (Kc @ u)[rows])
+
+
+def test_metis_is_tried_for_memory(system, monkeypatch):
+    """choose_solver tries METIS when AMD's factor is over METIS_BYTES_PER_DOF even where its ordering would not pay in
+    time (the plate at 67k DOF: AMD's factor 2.9 kB/DOF put the solve's peak at 5.05 kB/DOF); not when under it."""
+    K, free, *_ = system
+    graph, groups, nnz = assembly.node_graph(K, free)
+    calls = []
+    original = factor.symbolic_cost
+
+    def spy(M, ordering="amd", g=None, graph=None):
+        calls.append(ordering)
+        return original(M, ordering, g, graph=graph)
+
+    monkeypatch.setattr(factor, "symbolic_cost", spy)
+    monkeypatch.setattr(linsolve, "METIS_SECONDS_PER_NNZ", 1.0)  # never pays in time
+    amd = original(None, "amd", groups, graph=graph)
+    monkeypatch.setattr(linsolve, "METIS_BYTES_PER_DOF", 1.01 * amd.factor_bytes / groups[-1])
+    linsolve.choose_solver(None, groups=groups, graph=graph, nnz=nnz)
+    assert calls == ["amd"]
+    calls.clear()
+    monkeypatch.setattr(linsolve, "METIS_BYTES_PER_DOF", 0.99 * amd.factor_bytes / groups[-1])
+    linsolve.choose_solver(None, groups=groups, graph=graph, nnz=nnz)
+    assert calls == ["amd", "metis"]

@@ -60,12 +60,14 @@ from mechverify.fea.reproducible import one_blas_thread
 
 METHODS = ("auto", "cholmod", "superlu")
 ORDERINGS = ("amd", "metis")
-#: Seconds per non-zero of L and flops per second of CHOLMOD's supernodal factorisation with one BLAS thread,
-#: fitted on the benchmark's P2 meshes (plates with a hole 37k-179k DOF, the lug at 46k; CPU time with a load
-#: average of 5-10 on the 2-core box): t = nnz(L) * FACTOR_SECONDS_PER_NNZ + flops / FACTOR_FLOP_RATE is within
-#: 30 % of the measured factor time on all of them (0.40 s at 7.8M non-zeros, 4.2 s at 71M).
-FACTOR_SECONDS_PER_NNZ = 5e-8
-FACTOR_FLOP_RATE = 50e9
+#: Seconds per non-zero of L and flops per second of CHOLMOD's supernodal factorisation with one BLAS thread and no
+#: OpenMP threads (:func:`one_openmp_thread`), CHOLMOD's own analysis included, fitted on the benchmark's plate with a
+#: hole (37k, 67k and 188k DOF, AMD and METIS orderings; CPU time, the least of three runs, load average 6-7 on the
+#: 2-core box; task thinperf): t = nnz(L) * FACTOR_SECONDS_PER_NNZ + flops / FACTOR_FLOP_RATE is within 4 % of the
+#: measured time on all six (0.20 s at 7.9M non-zeros, 0.61 s at 19M, 5.2 s at 104M). The constants before (5e-8 s,
+#: 50e9/s, fitted while CHOLMOD's three OpenMP threads spun beside it) over-predicted by 60-130 %.
+FACTOR_SECONDS_PER_NNZ = 1.77e-8
+FACTOR_FLOP_RATE = 46e9
 #: Bytes of the supernodal factor per non-zero of L (8-byte values, supernode padding and indices).
 FACTOR_BYTES_PER_NNZ = 10.0
 #: Seconds per non-zero of L of one solve (the two triangular solves; memory-bound): 0.028 s at 16.2M and 0.099 s

@@ -62,9 +62,18 @@ ANALYSE_FIRST_MAX = 100_000
 #: 67k DOF and its lug at 47k, about 5 % at 37k (predicted 0.95 / 1.21 s, 1.39 / 1.95 s, 0.46 / 0.53 s), and ordering
 #: the node graph costs METIS_SECONDS_PER_NNZ per non-zero of A (0.095 s at 37k, 0.19 s at 67k, 0.15 s for the lug;
 #: AMD 0.02-0.035 s). METIS is tried after AMD only when a factorisation may be chosen and METIS_GAIN of AMD's
-#: predicted factor time would pay for the ordering (it would not at 37k).
+#: predicted factor time would pay for the ordering (it would not at 37k). Since the factorisation runs without
+#: CHOLMOD's OpenMP threads (task thinperf), measured CPU with METIS / AMD: factor 0.20 / 0.25 s and whole solve 0.69 /
+#: 0.67 s at 37k, factor 0.45 / 0.62 s and whole solve 1.39 / 1.33 s at 67k (METIS's ordering cost more than it
+#: saved); with the re-fitted factor constants METIS is no longer tried at either.
 METIS_GAIN = 0.17
 METIS_SECONDS_PER_NNZ = 4.2e-8
+#: METIS is also tried when AMD's factor would take more than this many bytes per unknown: a direct solve's peak is
+#: the factor plus about 2.3 kB/DOF (the interpreter and its libraries, 84 MB, the mesh, the matrix) at 37k-67k DOF,
+#: and the budget is 5 kB/DOF in all (issue 23). The plate at 67k DOF: AMD's factor 193 MB (2.9 kB/DOF), peak 339 MB
+#: (5.05 kB/DOF); METIS's 160 MB, peak 302 MB (4.5 kB/DOF), the whole solve 1.39 against 1.33 s CPU (task thinperf).
+#: At 37k (2.4 kB/DOF) and 46k (2.4) AMD stays: METIS cost more CPU than its 10 and 6 MB were worth there.
+METIS_BYTES_PER_DOF = 2500.0
 
 
 @dataclass(frozen=True)
@@ -101,7 +110,8 @@ def choose_solver(A: sp.spmatrix | None, analyse: bool = True, cases: int = 1,
     """Direct or iterative for the SPD system ``A`` with ``cases`` right-hand sides, from a cost model: CHOLMOD's
     symbolic analysis predicts the factorisation's seconds and memory and the seconds per solve
     (:func:`mechverify.fea.factor.symbolic_cost` with AMD on the node graph ``groups``, then METIS when
-    :data:`METIS_GAIN` of the factor time would pay for its ordering; METIS's factor took 0.6-0.9 of AMD's flops on
+    :data:`METIS_GAIN` of the factor time would pay for its ordering or AMD's factor is over
+    :data:`METIS_BYTES_PER_DOF`; METIS's factor took 0.6-0.9 of AMD's flops on
     the benchmark's plates and lug, its ordering 5-10x AMD's),
     CG is predicted at :data:`CG_EXPECTED_ITERATIONS` per case on one multigrid setup. Returns the
     :class:`SolverChoice` ("direct" or "amg"; its seconds are the totals over the cases) and the
@@ -123,8 +133,9 @@ def choose_solver(A: sp.spmatrix | None, analyse: bool = True, cases: int = 1,
     if analyse and n <= DIRECT_SWITCH_MAX:
         cost = symbolic_cost(A, "amd", groups, graph=graph)
         spent = 0.0 if cost is None else cost.seconds
-        if cost is not None and direct(cost) <= 2 * t_cg and \
-                METIS_GAIN * cost.factor_seconds > METIS_SECONDS_PER_NNZ * nnz:
+        if cost is not None and direct(cost) <= 2 * t_cg and (
+                METIS_GAIN * cost.factor_seconds > METIS_SECONDS_PER_NNZ * nnz
+                or cost.factor_bytes > METIS_BYTES_PER_DOF * n):
             nested = symbolic_cost(A, "metis", groups, graph=graph)
             if nested is not None:
                 spent += nested.seconds
