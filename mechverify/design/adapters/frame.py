@@ -8,7 +8,9 @@ per case and the governing one is reported (the envelope). Keys: docs/design-fil
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -22,7 +24,7 @@ from mechverify.design.adapters.frame_parsing import case_loads, frame_cases, it
 from mechverify.design.adapters.modal_parsing import MODAL_FIELDS, ModalSettings, modal_settings
 from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSIONS, SECTION_KINDS
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
-from mechverify.errors import InputError, MechverifyError
+from mechverify.errors import InputError, MechverifyError, ModelError
 from mechverify.fea import frame as fe
 from mechverify.units import Q, fmt
 
@@ -51,8 +53,21 @@ class FrameComponent:
         if ctx.load_case not in self.solved:
             g = ctx.requirements.get("g", Q(9.80665, "m/s**2"))
             cases, combos = frame_cases(ctx.design.data.load_cases, self.frame.name, g, ctx.load_case)
-            self.solved.update(self.frame.analyse(cases, combos).results)
+            with at_supports():
+                self.solved.update(self.frame.analyse(cases, combos).results)
         return self.solved[ctx.load_case]
+
+
+@contextlib.contextmanager
+def at_supports() -> Iterator[None]:
+    """A frame its supports leave a rigid motion (a mechanism) is one error at ``supports``, the same text from every
+    analysis, instead of one per check and load case at the checks' keys (task fix23)."""
+    try:
+        yield
+    except ModelError as exc:
+        if "is not fully supported" in str(exc):
+            raise InputError(f"supports: {exc}") from None
+        raise
 
 
 def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
@@ -102,9 +117,10 @@ def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[Ch
     if c.modal is None:
         return []
     if not c.modes:
-        c.modes.append(c.modal.solve(fe.frame_modes, c.frame, masses=c.masses, hint=(
-            "raise the members' divisions (members[i].divisions; at least 10 elements per member are used) or ask "
-            "fewer modes")))
+        with at_supports():
+            c.modes.append(c.modal.solve(fe.frame_modes, c.frame, masses=c.masses, hint=(
+                "raise the members' divisions (members[i].divisions; at least 10 elements per member are used) or "
+                "ask fewer modes")))
     r = c.modal.check(c.modes[0], c.frame.name)
     linearised = tuple(n for n in c.modes[0].notes if n.startswith("one-way springs"))  # review 3 finding 25
     return r.replace(notes=(*r.notes, *linearised)) if linearised else r
@@ -118,12 +134,13 @@ def _buckling(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[Che
 
     name, g = c.frame.name, ctx.requirements.get("g", Q(9.80665, "m/s**2"))
     try:
-        if "combination" in loads:
-            cases, combos = frame_cases(ctx.design.data.load_cases, name, g, ctx.load_case)
-            combo = next(x for x in combos if x.name == ctx.load_case)
-            res = fe.frame_buckling(c.frame, {k: cases[k] for k in combo.factors}, 1, combination=combo.factors)
-        else:
-            res = fe.frame_buckling(c.frame, case_loads(loads, ctx.load_case, name, g), 1)
+        with at_supports():
+            if "combination" in loads:
+                cases, combos = frame_cases(ctx.design.data.load_cases, name, g, ctx.load_case)
+                combo = next(x for x in combos if x.name == ctx.load_case)
+                res = fe.frame_buckling(c.frame, {k: cases[k] for k in combo.factors}, 1, combination=combo.factors)
+            else:
+                res = fe.frame_buckling(c.frame, case_loads(loads, ctx.load_case, name, g), 1)
     except NoCompressionError as exc:
         return feac.no_buckling_result(float("inf"), str(exc), component=name, load_case=ctx.load_case)
     return feac.check_buckling_load_factor(res, component=name, load_case=ctx.load_case)
