@@ -287,3 +287,46 @@ def test_a_deflection_limit_written_as_a_span_fraction_is_refused_with_the_way_t
     assert [s["status"] for s in res.samples] == ["ok", "ok"]
     fus = [s["checks"]["beam.frame_deflection"]["fu"] for s in res.samples]
     assert fus[0] == pytest.approx(2 * fus[1], rel=1e-9)  # half the limit, twice the utilisation
+
+
+# ----------------------------------------------------------------------------- review 4 finding 11
+def test_monte_carlo_says_p_fail_is_over_the_valid_samples_and_counts_the_invalid_as_failures():
+    """Review 4 finding 11: the cable neck's Monte Carlo of wire_d left out its 21 invalid samples (every draw below
+    2.78 mm: 'the weight 9.81 N alone buckles the spine', a failure the design cannot express) with no hint, so
+    P_fail and the worst sample read low. The summary, the JSON and the report now say that P_fail is over the valid
+    samples, which inputs the invalid ones had, and give the overall P_fail with them counted as failures (hand:
+    5 samples, 1 fail + 2 invalid -> 3/5 = 0.6, Wilson 95 % (3, 5) = [0.2307, 0.8824], Newcombe 1998 method 3)."""
+    import json
+
+    from mechverify.reports.study import render_study_html
+    from mechverify.studies.study import StudyResult
+
+    def ok(i: int, x: float, fu: float) -> dict:
+        v = "fail" if fu > 1 else "pass"
+        return {"index": i, "inputs": {"parameters.d": x}, "status": "ok", "message": "", "verdict": v,
+                "governing": "s.buckling", "max_fu": fu,
+                "checks": {"s.buckling": {"u": fu, "required_sf": 1.0, "fu": fu, "verdict": v}}}
+
+    def bad(i: int, x: float) -> dict:
+        return {"index": i, "inputs": {"parameters.d": x}, "status": "error", "verdict": "error", "governing": "",
+                "max_fu": None, "checks": {}, "message": "d.toml: 1 error in the design file:\n  neck: buckles"}
+
+    samples = [ok(0, 2.9, 0.5), bad(1, 2.6), ok(2, 3.0, 0.4), bad(3, 2.7), ok(4, 2.8, 1.3)]
+    axes = [{"name": "parameters.d", "spec": "normal:2.9 mm:0.15 mm", "unit": "mm", "integer": False, "base": 3.07}]
+    res = StudyResult("monte_carlo", "lhs", 1, axes, samples, "neck", {}, None)
+    assert res.failure_probability()["overall"]["failures"] == 1 and res.failure_probability()["overall"]["n"] == 3
+    inv = res.invalid_as_failures()
+    assert (inv["failures"], inv["n"], inv["invalid"]) == (3, 5, 2)
+    assert inv["p"] == pytest.approx(0.6) and (inv["lo"], inv["hi"]) == (pytest.approx(0.2307, abs=5e-5),
+                                                                        pytest.approx(0.8824, abs=5e-5))
+    assert inv["inputs"] == {"parameters.d": [2.6, 2.7]}
+    text = res.summary()
+    assert "overall, invalid counted as failures" in text and "0.6000  [0.2307, 0.8824]" in text, text
+    assert "P_fail is over the 3 valid samples" in text and "parameters.d 2.6..2.7 mm" in text, text
+    assert json.loads(res.to_json())["invalid_as_failures"]["failures"] == 3
+    html = render_study_html(res)
+    assert "overall, invalid counted as failures" in html and "over the 3 valid samples" in html
+    # no invalid sample: nothing added
+    clean = StudyResult("monte_carlo", "lhs", 1, axes, [ok(0, 2.9, 0.5), ok(1, 3.0, 0.4)], "neck", {}, None)
+    assert clean.invalid_as_failures() is None and "invalid counted" not in clean.summary()
+    assert "invalid_as_failures" not in json.loads(clean.to_json())

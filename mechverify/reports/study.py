@@ -153,7 +153,13 @@ def render_study_html(result: StudyResult, title: str | None = None) -> str:
         for c, v in fp.items():
             parts.append(f"<tr><td>{_e(c)}</td><td>{v['failures']}</td><td>{v['n']}</td><td>{v['p']:.4f}</td>"
                          f"<td>{v['lo']:.4f} – {v['hi']:.4f}</td></tr>")
+        inv = result.invalid_as_failures()
+        if inv is not None:
+            parts.append(f"<tr><td>overall, invalid counted as failures</td><td>{inv['failures']}</td><td>{inv['n']}"
+                         f"</td><td>{inv['p']:.4f}</td><td>{inv['lo']:.4f} – {inv['hi']:.4f}</td></tr>")
         parts.append("</table>")
+        if inv is not None:
+            parts.append(f"<p>{_e(result.invalid_note())}.</p>")
         w = result.worst()
         if w is not None:
             ins = ", ".join(f"{k} = {result.value_text(k, v)}" for k, v in w["inputs"].items())

@@ -150,6 +150,35 @@ class StudyResult:
             out[c] = {"failures": k, "n": n, "p": k / n, "lo": lo, "hi": hi}
         return out
 
+    def invalid_as_failures(self, z: float = Z95) -> dict[str, Any] | None:
+        """Overall failure probability with the invalid samples counted as failures, or None when every sample is
+        valid. :meth:`failure_probability` is over the valid samples only; a design that cannot be built for some
+        inputs may be one that fails there (the cable neck's spine buckling under the head's weight alone is an
+        error of the design file, review 4 finding 11), so this is its upper reading: k = failing + invalid of
+        n = valid + invalid, the Wilson interval, and the range of each input over the invalid samples."""
+        bad = [s for s in self.samples if s["status"] == "error"]
+        if not bad:
+            return None
+        ok = self.ok
+        k = sum(1 for s in ok if s["verdict"] == "fail") + len(bad)
+        n = len(ok) + len(bad)
+        lo, hi = wilson_interval(k, n, z)
+        inputs = {name: [float(min(s["inputs"][name] for s in bad)), float(max(s["inputs"][name] for s in bad))]
+                  for name in self.names}
+        return {"invalid": len(bad), "failures": k, "n": n, "p": k / n, "lo": lo, "hi": hi, "inputs": inputs}
+
+    def invalid_note(self) -> str:
+        """One sentence for the console and the report when samples are invalid: what P_fail is over, the invalid
+        samples' inputs, and what the row with them counted as failures means."""
+        inv = self.invalid_as_failures()
+        if inv is None:
+            return ""
+        spans = ", ".join(f"{name} {self.value_text(name, a)}" if a == b else
+                          f"{name} {a:.6g}..{self.value_text(name, b)}" for name, (a, b) in inv["inputs"].items())
+        return (f"P_fail is over the {len(self.ok)} valid samples; the {inv['invalid']} invalid ones ({spans}) are "
+                "left out: the row 'overall, invalid counted as failures' counts them as failures, in case the "
+                "design could not be built because it fails there")
+
     def worst(self) -> dict[str, Any] | None:
         """The valid sample with the highest governing u·SF."""
         ok = self.ok
@@ -197,6 +226,9 @@ class StudyResult:
             d["sensitivity"] = {k: [[n, r] for n, r in v] for k, v in self.sensitivity().items()}
             w = self.worst()
             d["worst"] = None if w is None else w["index"]
+            inv = self.invalid_as_failures()
+            if inv is not None:
+                d["invalid_as_failures"] = inv
         if self.warnings:
             d["warnings"] = list(self.warnings)
         return d
@@ -301,6 +333,11 @@ class StudyResult:
                 lines.append(f"{'check':44s} {'fail':>6s} {'P_fail':>8s}  95 % interval (Wilson)")
                 for c, v in fp.items():
                     lines.append(f"{c:44s} {v['failures']:6d} {v['p']:8.4f}  [{v['lo']:.4f}, {v['hi']:.4f}]")
+            inv = self.invalid_as_failures()
+            if inv is not None:
+                lines.append(f"{'overall, invalid counted as failures':44s} {inv['failures']:6d} {inv['p']:8.4f}  "
+                             f"[{inv['lo']:.4f}, {inv['hi']:.4f}]")
+                lines.append(f"({self.invalid_note()})")
             w = self.worst()
             if w is not None:
                 lines.append(f"worst sample {w['index']}: {w['governing']} u·SF = {_num(w['max_fu'])}  "
