@@ -7,7 +7,8 @@ target DOF count, the gmsh mesh is made here and handed to fresh child processes
 - ``rss`` child: peak resident set (``getrusage`` max RSS, the figure issue 23's target is about), RSS after the
   imports and after the mesh (so the solve's own share is known), and the largest RSS sampled (every 2 ms by a
   thread reading ``/proc/self/statm``) inside each phase: P2 pattern, element stiffness + assembly, loads and
-  supports, free-DOF extraction, multigrid setup, CG, stress recovery, equilibrium and region reports, results.
+  supports, free-DOF extraction, solver choice, the direct path's lower triangle and factorisation, multigrid
+  setup, CG, stress recovery, equilibrium and region reports, results.
 - ``budget`` child (with ``--budget``): the same solve under ``tracemalloc`` (NumPy registers its buffers with
   it, so this is the Python-side array memory, not RSS): bytes alive at each phase's end and the peak inside
   it, and an itemised count of the big objects (mesh and P2 numbering, block pattern, K, Kff, the p-multigrid
@@ -168,6 +169,10 @@ def child(path: str, part: str, method: str, mode: str) -> None:
     # freed once Kff exists): its first call, the supports check, starts the phase
     ph.wrap(linsolve, "check_supported", "free DOFs, Kff", after="free DOFs, Kff")
     ph.wrap(linsolve, "choose_solver", "solver choice")
+    ph.wrap(assembly, "node_graph", "solver choice")
+    # the direct path (task thinperf): the permuted lower triangle read from K, then CHOLMOD on it
+    ph.wrap(assembly, "free_lower_permuted", "lower triangle", after="lower triangle")
+    ph.wrap(factor, "factorize_lower", "factorisation", after="after CG")
     ph.wrap(linsolve, "pmg_preconditioner", "multigrid setup", after="CG")
     ph.wrap(linsolve, "pcg", "CG", after="after CG")
     ph.wrap(factor, "factorize", "factorisation", after="after CG")
@@ -197,6 +202,14 @@ def child(path: str, part: str, method: str, mode: str) -> None:
             items["CG vectors (x, r, z, p, Ap, b)"] = 6 * b.nbytes
             return pcg(A, b, *a, **k)
 
+        lower_of = assembly.free_lower_permuted
+
+        def count_lower(*a, **k):
+            out = lower_of(*a, **k)
+            items["lower triangle of the permuted Kff (CSC)"] = nbytes(out)
+            return out
+
+        assembly.free_lower_permuted = count_lower
         assembly.block_pattern, solid.SolidModel._stiffness = count_pattern, count_k
         linsolve.pmg_preconditioner, linsolve.pcg = count_pmg, count_pcg
     ph.enter("loads, supports")
