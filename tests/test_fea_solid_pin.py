@@ -1,4 +1,4 @@
-"""The rotation-free pin support (:class:`mechverify.fea.loads.Pin`, :mod:`mechverify.fea.pins`; issue 23, review 3
+"""The rotation-free pin support (:class:`mechverify.fea.loads.PinSupport`, :mod:`mechverify.fea.pins`; issue 23, review 3
 finding 16): the transform itself, the rigid-body check's words, design-file syntax, notes and named errors.
 
 Numbers: the review's beam, 300 x 20 x 10 mm steel on two 6 mm holes 280 mm apart, 1000 N down at mid-span:
@@ -16,7 +16,7 @@ import pytest
 
 from mechverify.errors import InputError, MechverifyError, ModelError
 from mechverify.fea import mesh, pins, solid
-from mechverify.fea.loads import Fixed, Force, Pin, Restraint
+from mechverify.fea.loads import Fixed, Force, PinSupport, Restraint
 from mechverify.fea.modal import stiffness_matrix
 from mechverify.fea.regions import Named
 from mechverify.units import Q
@@ -60,7 +60,7 @@ def _model(m, *supports, loads=()):
 def test_cylinder_fit_finds_the_hole(holes):
     """The fit of hole1's wall: centre (290, 10) mm, radius 3 mm, axis z (as built), the vertices on it to round-off;
     each node's axes are orthonormal and right-handed."""
-    model = _model(holes, Pin(Named("hole0"), axial=True), Pin(Named("hole1")))
+    model = _model(holes, PinSupport(Named("hole0"), axial=True), PinSupport(Named("hole1")))
     fit = model.dof_basis.fits[1]
     assert fit.center[:2] * 1e3 == pytest.approx([290, 10], abs=1e-6)
     assert fit.radius * 1e3 == pytest.approx(3.0, rel=1e-6)
@@ -77,7 +77,7 @@ def test_cylinder_fit_finds_the_hole(holes):
 def test_rotate_is_t_transpose_k_t(holes):
     """``DofBasis.rotate`` (block by block, in place of the BSR data) equals the sparse product Tᵀ K T; ``inward`` and
     ``outward`` are Tᵀ and T (and inverse to each other)."""
-    model = _model(holes, Pin(Named("hole0"), axial=True), Pin(Named("hole1")))
+    model = _model(holes, PinSupport(Named("hole0"), axial=True), PinSupport(Named("hole1")))
     b = model.dof_basis
     K = stiffness_matrix(model)
     T = b.T
@@ -94,10 +94,10 @@ def test_one_pin_leaves_the_slide_and_the_turn_about_it_free(holes):
     load_ = (Force(Named("xmax"), ("0 N", "-10 N", "0 N")),)
     with pytest.raises(ModelError, match=r"leave free translation along z; rotation about an axis parallel to z "
                                          r"through \(10, 10, 5\) mm"):
-        _model(holes, Pin(Named("hole0")), loads=load_).solve()
+        _model(holes, PinSupport(Named("hole0")), loads=load_).solve()
     with pytest.raises(ModelError, match=r"leave free translation along z\. Add a support"):
-        _model(holes, Pin(Named("hole0")), Pin(Named("hole1")), loads=load_).solve()
-    res = _model(holes, Pin(Named("hole0"), axial=True), Pin(Named("hole1")), loads=load_).solve()
+        _model(holes, PinSupport(Named("hole0")), PinSupport(Named("hole1")), loads=load_).solve()
+    res = _model(holes, PinSupport(Named("hole0"), axial=True), PinSupport(Named("hole1")), loads=load_).solve()
     assert res.reaction[1] == pytest.approx(10.0)
 
 
@@ -105,14 +105,14 @@ def test_pin_errors_in_the_api(holes):
     """A flat region, and a Restraint across a pinned node's axes (x on hole0's rim face zmin is not a pin axis; z
     along the pin's axis is), are named errors."""
     with pytest.raises(InputError, match=r"Pin 1 on region 'xmin': a pin needs a hole wall .* this region is flat"):
-        _model(holes, Pin(Named("xmin")), Fixed(Named("xmax"))).held_in_axes()
+        _model(holes, PinSupport(Named("xmin")), Fixed(Named("xmax"))).held_in_axes()
     with pytest.raises(InputError, match=r"Restraint 2 on region 'zmin' holds x at nodes of Pin 1"):
-        _model(holes, Pin(Named("hole0")), Restraint(Named("zmin"), x=True)).held_in_axes()
-    held, basis = _model(holes, Pin(Named("hole0")), Pin(Named("hole1")), Restraint(Named("zmin"), z=True)
+        _model(holes, PinSupport(Named("hole0")), Restraint(Named("zmin"), x=True)).held_in_axes()
+    held, basis = _model(holes, PinSupport(Named("hole0")), PinSupport(Named("hole1")), Restraint(Named("zmin"), z=True)
                          ).held_in_axes()
     assert basis is not None and held.size
     with pytest.raises(ModelError, match="held_in_axes"):
-        _model(holes, Pin(Named("hole0"))).held_dofs()
+        _model(holes, PinSupport(Named("hole0"))).held_dofs()
 
 
 def test_design_file_pin_deflects_pinned_and_says_so(tmp_path):
@@ -234,7 +234,7 @@ def test_fit_refuses_a_cone_and_takes_a_tilted_cylinder():
 def test_a_load_on_a_pinned_wall_warns(holes):
     """A pin load on the pinned hole itself: 94 % of its cosine pressure's nodal forces land on the held radial DOFs
     (measured at mesh_size 8 mm) - it goes into the pin: WARN naming it; a load elsewhere does not."""
-    pins_ = (Pin(Named("hole0"), axial=True), Pin(Named("hole1")))
+    pins_ = (PinSupport(Named("hole0"), axial=True), PinSupport(Named("hole1")))
     from mechverify.fea.loads import PinLoad
 
     res = _model(holes, *pins_, loads=(PinLoad(Named("hole1"), ("0 N", "-100 N", "0 N")),

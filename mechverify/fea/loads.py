@@ -2,7 +2,7 @@
 
 - :class:`Fixed` - every displacement component of a region held at zero (a clamped face).
 - :class:`Restraint` - chosen components held (a roller or symmetry plane: ``Restraint(r, x=True)``).
-- :class:`Pin` - a frictionless pin in a hole: the wall held radially, free tangentially and (unless ``axial``)
+- :class:`PinSupport` - a frictionless pin in a hole: the wall held radially, free tangentially and (unless ``axial``)
   along the axis (:mod:`mechverify.fea.pins`).
 - :class:`Force` - a total force spread uniformly (per unit area) over a region: a bolt or pin
   load on a hole wall, a load on a face.
@@ -214,7 +214,7 @@ class Restraint:
 
 
 @dataclass(frozen=True)
-class Pin:
+class PinSupport:
     """A frictionless pin in a hole: the wall of ``region`` (a cylinder: a hole wall, a STEP cylinder face) held
     **radially** - both ways, bilateral, no contact - and free tangentially, so the part turns about the pin; free
     along the pin's axis unless ``axial`` (then held along it too). The wall's axis is fitted to its nodes
@@ -227,7 +227,7 @@ class Pin:
     expect_length: Any = None
 
     def __post_init__(self) -> None:
-        _region(self.region, "Pin")
+        _region(self.region, "PinSupport")
         a, ln = _expect(self.expect_area, self.expect_length)
         set_fields(self, expect_area=a, expect_length=ln, axial=bool(self.axial))
 

@@ -9,8 +9,8 @@
     >>> res = model.solve()
 
 Loads and supports are declared on regions (:mod:`mechverify.fea.regions`); a model the supports
-leave free to move raises :class:`ModelError` naming the free motion. A :class:`~mechverify.fea.loads.Pin` on a hole
-wall holds it radially and leaves it free to turn (a frictionless, bilateral pin; :mod:`mechverify.fea.pins`): the
+leave free to move raises :class:`ModelError` naming the free motion. A :class:`~mechverify.fea.loads.PinSupport` on a
+hole wall holds it radially and leaves it free to turn (a frictionless, bilateral pin; :mod:`mechverify.fea.pins`): the
 wall's DOFs are then solved in their own radial, tangential and axial axes (``dof_basis``), ``u`` returned in x, y, z.
 The reactions are checked to
 balance the applied loads (forces and moments) before results are returned. Each load and support
@@ -47,8 +47,8 @@ from mechverify.fea.loads import (
     Fixed,
     Force,
     Gravity,
-    Pin,
     PinLoad,
+    PinSupport,
     Pressure,
     RegionReport,
     Restraint,
@@ -98,7 +98,7 @@ class SolidModel:
 
     mesh: SolidMesh
     material: Material | str
-    supports: tuple[Fixed | Restraint | Pin, ...] = ()
+    supports: tuple[Fixed | Restraint | PinSupport, ...] = ()
     loads: tuple[Force | Pressure | PinLoad | Traction | Gravity, ...] = ()
     curved: bool | None = None  # None: curved (isoparametric) elements where the mesh has curved sides
 
@@ -107,8 +107,8 @@ class SolidModel:
             raise InputError(f"mesh: expected a SolidMesh (mechverify.fea.mesh), got {type(self.mesh).__name__}")
         set_fields(self, material=_as_material(self.material), supports=tuple(self.supports), loads=tuple(self.loads))
         for s in self.supports:
-            if not isinstance(s, Fixed | Restraint | Pin):
-                raise InputError(f"supports: expected Fixed, Restraint or Pin, got {s!r}")
+            if not isinstance(s, Fixed | Restraint | PinSupport):
+                raise InputError(f"supports: expected Fixed, Restraint or PinSupport, got {s!r}")
         for ld in self.loads:
             if not isinstance(ld, Force | Pressure | PinLoad | Traction | Gravity):
                 raise InputError(f"loads: expected Force, Pressure, PinLoad, Traction or Gravity, got {ld!r}")
@@ -359,8 +359,8 @@ class SolidModel:
         return None
 
     def held_dofs(self) -> np.ndarray:
-        """Indices of the DOFs (x, y, z of each node) the supports hold at zero. A model with a :class:`Pin` holds
-        DOFs in the pins' axes instead: a :class:`ModelError` here (use :meth:`held_in_axes`), so that nothing
+        """Indices of the DOFs (x, y, z of each node) the supports hold at zero. A model with a :class:`PinSupport`
+        holds DOFs in the pins' axes instead: a :class:`ModelError` here (use :meth:`held_in_axes`), so that nothing
         applies them to the stiffness in x, y, z (a CalculiX export would need ``*TRANSFORM``)."""
         if self.dof_basis is not None:
             raise ModelError("a pin support holds the radial DOFs of its wall (in the pin's axes, not x, y, z): use "
@@ -374,20 +374,20 @@ class SolidModel:
 
     @cached_property
     def dof_basis(self) -> Any:
-        """The DOF axes of a model with :class:`Pin` supports (:class:`mechverify.fea.pins.DofBasis`: each pinned
+        """The DOF axes of a model with :class:`PinSupport` supports (:class:`mechverify.fea.pins.DofBasis`: each pinned
         wall node in its radial, tangential and axial axes, the held DOFs in them), else None (x, y, z everywhere).
         A pin region that is not a cylinder, two pins sharing nodes, or a :class:`Restraint` holding a direction
         that is none of a pinned node's axes is an :class:`InputError`."""
         from mechverify.fea import pins
 
-        if not any(isinstance(s, Pin) for s in self.supports):
+        if not any(isinstance(s, PinSupport) for s in self.supports):
             return None
         n = self.mesh.n_nodes
         R = np.broadcast_to(np.eye(3), (n, 3, 3)).copy()
         owner = np.full(n, -1)
         fits, pinned = {}, {}
         for k, s in enumerate(self.supports):
-            if not isinstance(s, Pin):
+            if not isinstance(s, PinSupport):
                 continue
             what = f"Pin {k + 1} on {s.region.describe()}"
             nodes = self._support_nodes(s.region, np.empty(0))
@@ -402,7 +402,7 @@ class SolidModel:
             fits[k], pinned[k] = fit, nodes
         held = []
         for k, s in enumerate(self.supports):
-            if isinstance(s, Pin):
+            if isinstance(s, PinSupport):
                 held += [3 * pinned[k]] + ([3 * pinned[k] + 2] if s.axial else [])
                 continue
             nodes = self._support_nodes(s.region, np.empty(0))

@@ -1,4 +1,4 @@
-"""A beam on two bolt-hole pins (the rotation-free ``Pin`` support, :mod:`mechverify.fea.pins`) against beam theory.
+"""A beam on two bolt-hole pins (the rotation-free ``PinSupport``, :mod:`mechverify.fea.pins`) against beam theory.
 
 The model: review 3's finding 16 beam - 300 x 20 x 10 mm steel (E = 200 GPa, nu = 0.3, rho = 7850 kg/m³, the
 materials database's "Structural Steel"), 6 mm holes at x = 10 and 290 mm on the neutral axis (y = 10 mm), so the
@@ -33,7 +33,7 @@ import numpy as np
 import pytest
 
 from mechverify.fea import buckling, mesh, modal, solid
-from mechverify.fea.loads import Fixed, Force, Pin, Restraint
+from mechverify.fea.loads import Fixed, Force, PinSupport, Restraint
 from mechverify.fea.regions import Box, Named
 from mechverify.units import Q
 
@@ -58,8 +58,8 @@ def _load():
 
 
 def _pinned(beam_mesh, loads=()):
-    return solid.SolidModel(beam_mesh, "Structural Steel", supports=(Pin(Named("hole0"), axial=True),
-                                                                     Pin(Named("hole1"))), loads=loads)
+    return solid.SolidModel(beam_mesh, "Structural Steel", supports=(PinSupport(Named("hole0"), axial=True),
+                                                                     PinSupport(Named("hole1"))), loads=loads)
 
 
 @pytest.fixture(scope="module")
@@ -103,8 +103,8 @@ def test_pin_reactions_are_half_the_load_each(pinned):
     """P/2 = 500 N in y at each pin (statics, within 0.5 %); the pin without axial hold takes no z force, and the
     pins on the neutral axis take almost no axial force (|Rx| < 2 % of P: both pins hold across, the span cannot
     lengthen freely, but the holes sit on the neutral axis)."""
-    (p0,) = [r for r in pinned.regions if r.item.startswith("Pin 1")]
-    (p1,) = [r for r in pinned.regions if r.item.startswith("Pin 2")]
+    (p0,) = [r for r in pinned.regions if r.item.startswith("PinSupport 1")]
+    (p1,) = [r for r in pinned.regions if r.item.startswith("PinSupport 2")]
     assert p0.resultant[1] == pytest.approx(P / 2, rel=5e-3)
     assert p1.resultant[1] == pytest.approx(P / 2, rel=5e-3)
     assert p0.resultant[1] + p1.resultant[1] == pytest.approx(P, rel=1e-9)
@@ -152,7 +152,7 @@ def test_column_on_a_pin_buckles_at_euler_pinned_pinned():
     39.12 for 1 kN (within 1 %; measured 39.09). The mode bends in y, about the pin."""
     pytest.importorskip("gmsh")
     m = mesh.block_with_holes((Q(300, "mm"), Q(10, "mm"), Q(20, "mm")), [((Q(10, "mm"), Q(5, "mm")), "4 mm")], "5 mm")
-    col = solid.SolidModel(m, "Structural Steel", supports=(Pin(Named("hole0"), axial=True),
+    col = solid.SolidModel(m, "Structural Steel", supports=(PinSupport(Named("hole0"), axial=True),
                                                             Restraint(Named("xmax"), y=True, z=True)),
                            loads=(Force(Named("xmax"), ("-1000 N", "0 N", "0 N")),))
     res = buckling.buckling(col, 1)

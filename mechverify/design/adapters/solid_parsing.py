@@ -164,7 +164,7 @@ def deflection_limit_keys(p: Mapping[str, Any]) -> None:
 
 
 def _supports(items: Any, unit: str) -> tuple[Any, ...]:
-    from mechverify.fea.loads import Fixed, Pin, Restraint
+    from mechverify.fea.loads import Fixed, PinSupport, Restraint
 
     out = []
     pinned: dict[str, int] = {}
@@ -188,7 +188,7 @@ def _supports(items: Any, unit: str) -> tuple[Any, ...]:
                 raise InputError(f"{path}.pin: supports[{held[where]}] already holds this region; a wall is either "
                                  "pinned or held, not both")
             pinned[where] = i
-            out.append(Pin(region, axial=bool(s.get("axial", False))))
+            out.append(PinSupport(region, axial=bool(s.get("axial", False))))
             continue
         if where in pinned:
             raise InputError(f"{path}.hold: supports[{pinned[where]}] pins this region; a wall is either pinned or "
@@ -209,14 +209,14 @@ def _region_key(t: Mapping[str, Any]) -> str:
 
 
 def pin_notes(items: Any) -> tuple[str, ...]:
-    """A note per pin support: what the model holds there (:class:`mechverify.fea.loads.Pin`)."""
-    from mechverify.fea.loads import Pin
+    """A note per pin support: what the model holds there (:class:`mechverify.fea.loads.PinSupport`)."""
+    from mechverify.fea.loads import PinSupport
     from mechverify.fea.regions import Named
 
     out = []
     for i, s in enumerate(items or []):
         if isinstance(s, Mapping) and s.get("pin") is True:
-            note = Pin(Named("-"), axial=bool(s.get("axial", False))).note
+            note = PinSupport(Named("-"), axial=bool(s.get("axial", False))).note
             out.append(f"supports[{i}] ({_region_key(s).split('=', 1)[1].strip(chr(39))}) {note}")
     return tuple(out)
 
