@@ -97,19 +97,23 @@ def rectangle(width: float, height: float, nx: int, ny: int, origin: tuple[float
 
 
 def polygon(region: Any, size: float, hole_size: float | None = None,
-            ring_sizes: Mapping[int, float] | None = None) -> MeshTri:
+            ring_sizes: Mapping[int, float] | None = None,
+            segment_sizes: Mapping[tuple[int, int], float] | None = None) -> MeshTri:
     """Mesh a shapely polygon (metres) with element size ``size``, graded to ``hole_size`` (default
     size/3) at the holes and at curved parts of the outline (runs of segments shorter than size/2:
     fillets, arcs). ``ring_sizes`` (interior ring index -> element size) overrides ``hole_size`` at single holes
-    (a round hole's rim, graded from its own size: :func:`mechverify.fea.plate.hole_sizes`). Straight segments of
-    the polygon are kept as mesh edges."""
+    (a round hole's rim, graded from its own size: :func:`mechverify.fea.plate.hole_sizes`), and ``segment_sizes``
+    (``(interior ring, segment i from vertex i to i + 1) -> size``) single segments of an interior ring (a cut-out's
+    rounded corners: :func:`mechverify.fea.plate.arc_sizes`). Straight segments of the polygon are kept as mesh
+    edges."""
     gmsh = import_gmsh()
     if size <= 0:
         raise InputError("mesh size must be positive")
     hole_size = size / 3 if hole_size is None else hole_size
     ring_sizes = dict(ring_sizes or {})
+    segment_sizes = dict(segment_sizes or {})
     gmsh_session(gmsh, size)
-    gmsh.option.setNumber("Mesh.MeshSizeMin", min(hole_size, size, *ring_sizes.values()) / 2)
+    gmsh.option.setNumber("Mesh.MeshSizeMin", min(hole_size, size, *ring_sizes.values(), *segment_sizes.values()) / 2)
     try:
         geo = gmsh.model.geo
 
@@ -125,10 +129,13 @@ def polygon(region: Any, size: float, hole_size: float | None = None,
         for k, interior in enumerate(region.interiors):
             loop, lines = ring(interior.coords)
             inner.append(loop)
-            if k in ring_sizes:
-                by_size.setdefault(float(ring_sizes[k]), []).extend(lines)
-            else:
-                hole_lines += lines
+            for i, line in enumerate(lines):
+                if (k, i) in segment_sizes:
+                    by_size.setdefault(float(segment_sizes[(k, i)]), []).append(line)
+                elif k in ring_sizes:
+                    by_size.setdefault(float(ring_sizes[k]), []).append(line)
+                else:
+                    hole_lines.append(line)
         # arcs of the outline (fillets, a hole cut by a symmetry line) come as runs of short segments
         ext = np.asarray(region.exterior.coords)
         seg = np.linalg.norm(np.diff(ext, axis=0), axis=1)

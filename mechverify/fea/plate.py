@@ -30,6 +30,7 @@ References
 from __future__ import annotations
 
 import copy
+import math
 import time
 from typing import Any
 
@@ -52,26 +53,137 @@ except ImportError:  # pragma: no cover - components always ship with mechverify
 
 #: The default element size at a round hole's rim is its radius / RIM_DIVISIONS (at most mesh_size / 3): the rim's
 #: bending peak on the lumped-projection moments converges as O(h) (measured, 400 x 200 x 4 mm steel plate, pinned,
-#: 10 kPa, 20 mm hole: 27.57 / 27.70 / 27.86 / 27.97 / 28.11 MPa at radius / 10 / 20 / 30 / 40 / 80, -1.3 % at /30
-#: from the extrapolated 28.24 MPa; tests/validation/test_timoshenko_plate_hole_rim_accuracy.py).
+#: 10 kPa, 20 mm hole: 27.07 / 27.66 / 27.84 / 27.93 / 28.08 / 28.15 MPa at radius / 10 / 20 / 30 / 40 / 80 / 160,
+#: about -1.3 % at /30 from the converged ~28.2 MPa; tests/validation/test_timoshenko_plate_hole_rim_accuracy.py;
+#: a cut-out's 10 mm corner: 40.08 MPa at /30 against ~40.5).
+#: The same fraction of a cut-out's corner radius is used on its rounded corners (:func:`ring_arcs`).
 RIM_DIVISIONS = 30.0
+
+
+def _circumcircle(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, float] | None:
+    """Centre and radius of the circle through three points (None when they are collinear)."""
+    d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]))
+    scale = max(float(np.ptp(np.array([a, b, c]), axis=0).max()), 1e-300)
+    if abs(d) <= 1e-9 * scale**2:
+        return None
+    sa, sb, sc = a @ a, b @ b, c @ c
+    ux = (sa * (b[1] - c[1]) + sb * (c[1] - a[1]) + sc * (a[1] - b[1])) / d
+    uy = (sa * (c[0] - b[0]) + sb * (a[0] - c[0]) + sc * (b[0] - a[0])) / d
+    centre = np.array([ux, uy])
+    return centre, float(np.linalg.norm(a - centre))
+
+
+def ring_arcs(coords: Any) -> list[tuple[list[int], np.ndarray, float]]:
+    """The circular arcs of a polygon ring (a cut-out's rounded corners: runs of three or more consecutive vertices
+    whose circles through their two neighbours agree to 0.1 %): per arc the indices of its segments (segment i runs
+    from vertex i to i + 1, the arc's end segments to its tangent points included), its centre and radius [m]."""
+    pts = np.asarray(coords, dtype=float)
+    if len(pts) > 1 and np.allclose(pts[0], pts[-1]):
+        pts = pts[:-1]
+    n = len(pts)
+    circ = [_circumcircle(pts[i - 1], pts[i], pts[(i + 1) % n]) for i in range(n)]
+
+    def same(i: int, j: int) -> bool:
+        ci, cj = circ[i % n], circ[j % n]
+        if ci is None or cj is None:
+            return False
+        tol = 1e-3 * max(ci[1], cj[1])
+        return float(np.linalg.norm(ci[0] - cj[0])) <= tol and abs(ci[1] - cj[1]) <= tol
+
+    if n < 3 or all(same(i, i + 1) for i in range(n)):  # a whole circle (round holes are handled by their circle)
+        return []
+    start = next(i for i in range(n) if not same(i, i + 1))  # a run ends here: start scanning after it
+    arcs: list[tuple[list[int], np.ndarray, float]] = []
+    run: list[int] = []
+    for k in range(1, n + 2):
+        i = (start + k) % n
+        if run and same(run[-1], i):
+            run.append(i)
+            continue
+        if len(run) >= 3:  # a straight side between two arcs gives a pair of vertices on one (huge) circle
+            segs = sorted({(run[0] - 1) % n, *run})
+            centre, r = circ[run[len(run) // 2]]
+            arcs.append((segs, centre, r))
+        run = [i] if circ[i] is not None else []
+    return arcs
 
 
 def hole_sizes(plate: Any, size: float, hole_size: float | None = None, refine: float = 1.0) -> list[float]:
     """The element size [m] at each interior ring of ``plate.region`` (its round holes, then its cut-outs):
     ``hole_size`` where given, else a round hole's radius / :data:`RIM_DIVISIONS` (at most size / 3) and size / 3
-    at a cut-out; all divided by ``refine`` (``size`` is taken as already refined)."""
+    at a cut-out (its rounded corners: :func:`mesh_region`); all divided by ``refine`` (``size`` is taken as already
+    refined)."""
     if hole_size is not None:
         return [hole_size / refine] * (len(plate.holes) + len(plate.cutouts))
     return ([min(size / 3, hole.radius / RIM_DIVISIONS / refine) for hole in plate.holes]
             + [size / 3] * len(plate.cutouts))
 
 
+def _arc_points(centre: np.ndarray, r: float, a: np.ndarray, b: np.ndarray, size: float) -> list[np.ndarray]:
+    """Points on the circle (centre, r) from ``a`` to ``b`` (the shorter way, ``a`` included, ``b`` not) about
+    ``size`` apart (at least one: ``a``)."""
+    t0 = math.atan2(a[1] - centre[1], a[0] - centre[0])
+    dt = math.atan2(b[1] - centre[1], b[0] - centre[0]) - t0
+    dt = (dt + math.pi) % (2 * math.pi) - math.pi
+    m = max(1, math.ceil(abs(dt) * r / size - 1e-9))
+    return [a] + [centre + r * np.array([math.cos(t0 + dt * j / m), math.sin(t0 + dt * j / m)]) for j in range(1, m)]
+
+
+def mesh_region(plate: Any, size: float, hole_size: float | None = None, refine: float = 1.0
+                ) -> tuple[Any, dict[int, float], dict[tuple[int, int], float]]:
+    """The polygon the plate is meshed on [m] and its element sizes: each round hole as a polygon of vertices ON
+    its circle about as far apart as its element size (:func:`hole_sizes`; at least the plate's
+    :data:`~mechverify.components.plates.HOLE_SEGMENTS` sides), each rounded corner of a cut-out
+    (:func:`ring_arcs`) likewise on its circle at its radius / :data:`RIM_DIVISIONS` (at most size / 3; the cut-out's
+    other sides at size / 3). Returns the polygon, ``interior ring -> size`` and ``(interior ring, segment) -> size``
+    for :func:`mechverify.fea.mesh2d.polygon` (``size`` is taken as already refined).
+
+    Why on the circle: the plate's geometry holds a hole as a polygon of 48 sides (a rounded corner as 6 per quarter
+    circle) whose corners are slightly re-entrant, and a mesh finer than a side resolves them as weak corner
+    singularities: the rim's bending peak then overshoots and keeps growing (20 mm hole: 28.77 / 29.41 MPa at 0.25 /
+    0.125 mm against a converged ~28.2; 10 mm hole 29.94 at 0.0625 mm against 28.75 by hand; a cut-out's 10 mm corner
+    37.2 / 40.1 / 42.8 / 45.7 MPa at 4.2 / 1 / 0.33 / 0.125 mm). Moving the mesh's boundary vertices onto the circle
+    afterwards distorts elements smaller than the polygon's sagitta; a polygon on the circle at the mesh's own
+    resolution converges monotonically."""
+    import shapely
+
+    region = plate.region
+    sizes = hole_sizes(plate, size, hole_size, refine)
+    rings, ring_sizes, seg_sizes = [], {}, {}
+    nh = len(plate.holes)
+    for k, ring in enumerate(region.interiors):
+        hk = sizes[k]
+        if k < nh:
+            hole = plate.holes[k]
+            # a multiple of 4 sides: vertices on the hole's axes (where a uniaxial field peaks), as the 48-gon's
+            n = max(len(ring.coords) - 1, 4 * math.ceil(math.pi * hole.radius / (2 * hk) - 1e-9))
+            t = np.linspace(0.0, 2 * math.pi, n, endpoint=False)
+            rings.append(np.c_[hole.center[0] + hole.radius * np.cos(t), hole.center[1] + hole.radius * np.sin(t)])
+            ring_sizes[k] = hk
+            continue
+        pts = np.asarray(ring.coords, dtype=float)[:-1]
+        arcs = {i: (c, r) for segs, c, r in ring_arcs(ring.coords) for i in segs}
+        out: list[np.ndarray] = []
+        for i in range(len(pts)):
+            if i in arcs:
+                c, r = arcs[i]
+                hs = hk if hole_size is not None else min(hk, r / RIM_DIVISIONS / refine)
+                new = _arc_points(c, r, pts[i], pts[(i + 1) % len(pts)], hs)
+                seg_sizes.update({(k, len(out) + j): hs for j in range(len(new))})
+                out += new
+            else:
+                out.append(pts[i])
+        rings.append(np.array(out))
+        ring_sizes[k] = hk
+    poly = shapely.Polygon(region.exterior.coords, [r for r in rings])
+    return poly, ring_sizes, seg_sizes
+
+
 def plate_mesh(plate: Any, size: float | None = None, hole_size: float | None = None, refine: float = 1.0
                ) -> MeshTri:
-    """Triangles covering ``plate.region``: structured for a plain rectangle, else gmsh, graded to
-    :func:`hole_sizes` at the holes and cut-outs, with the vertices of round hole rims on their circles
-    (:func:`snap_to_holes`); all element sizes divided by ``refine``."""
+    """Triangles covering ``plate.region``: structured for a plain rectangle, else gmsh on :func:`mesh_region` (the
+    round holes and cut-outs' rounded corners on their circles), graded to :func:`hole_sizes` at the holes and
+    cut-outs; all element sizes divided by ``refine``."""
     region = plate.region
     x0, y0, x1, y1 = region.bounds
     span = min(x1 - x0, y1 - y0)
@@ -85,29 +197,9 @@ def plate_mesh(plate: Any, size: float | None = None, hole_size: float | None = 
         nx = max(2, int(round((x1 - x0) / h)))
         ny = max(2, int(round((y1 - y0) / h)))
         return mesh2d.rectangle(x1 - x0, y1 - y0, nx + nx % 2, ny + ny % 2, (x0, y0))
-    sizes = hole_sizes(plate, h, hole_size, refine)
     other = h / 3 if hole_size is None else hole_size / refine  # curved runs of the outline
-    return snap_to_holes(plate, mesh2d.polygon(region, h, other, dict(enumerate(sizes))))
-
-
-def snap_to_holes(plate: Any, mesh: MeshTri) -> MeshTri:
-    """``mesh`` with its boundary vertices on each round hole's polygon moved onto the hole's circle.
-
-    The plate's geometry holds a hole as a polygon of :data:`~mechverify.components.plates.HOLE_SEGMENTS` sides; its
-    corners are slightly re-entrant, and a mesh finer than a side resolves them as weak corner singularities: the
-    rim's bending peak then overshoots and keeps growing (20 mm hole: 28.77 / 29.41 MPa at 0.25 / 0.125 mm against
-    a converged 28.24; 10 mm hole 29.94 at 0.0625 mm against 28.75 by hand). On the circle the peak converges
-    monotonically (as :func:`mechverify.fea.plate_stress.round_hole_mesh` does for the membrane problem)."""
-    if not plate.holes:
-        return mesh
-    p = np.array(mesh.p, float)
-    bv = np.unique(mesh.facets[:, mesh.boundary_facets()])
-    for hole in plate.holes:
-        c, r = np.asarray(hole.center, float)[:, None], float(hole.radius)
-        d = np.linalg.norm(p[:, bv] - c, axis=0)
-        on = bv[np.abs(d - r) <= 0.02 * r]
-        p[:, on] = c + r * (p[:, on] - c) / np.linalg.norm(p[:, on] - c, axis=0)
-    return mesh2d.tri_mesh(p, np.asarray(mesh.t))
+    poly, ring_sizes, seg_sizes = mesh_region(plate, h, hole_size, refine)
+    return mesh2d.polygon(poly, h, other, ring_sizes, seg_sizes)
 
 
 def mesh_sizes(plate: Any, mesh_size: QuantityLike | None = None, hole_mesh_size: QuantityLike | None = None
@@ -201,8 +293,8 @@ def _load_vector(sys_: _PlateSystem) -> tuple[np.ndarray, float]:
 
             fu = asm(uniform, basis)
             f += fu
-            # the integral of q over the mesh (the vertex shape functions sum to 1): a hole rim snapped to its
-            # circle (plate_mesh) makes the meshed area differ from the polygon's by ~1e-3 of the hole's area
+            # the integral of q over the mesh (the vertex shape functions sum to 1): a hole rim meshed on its
+            # circle (mesh_region) makes the meshed area differ from the polygon's by ~1e-3 of the hole's area
             total += float(fu[basis.nodal_dofs[0]].sum())
         elif isinstance(ld, P.PatchLoad):
             poly = shapely.Polygon(ld.polygon)

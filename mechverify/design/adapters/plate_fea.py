@@ -122,11 +122,12 @@ def _stress(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
     model, res = c.solve(loads, ctx.load_case, _g(ctx))
     notes, warns, held = _mesh_notes(c, res), [], c.in_plane_supports if "in_plane" in loads else ()
     h_hh = mesh_sizes(c.plate, c.mesh_size, c.hole_mesh_size)
-    hh = h_hh[1]
+    # the rim check measures the element size at the peak where the sizes are the defaults (one per hole)
+    hh = None if c.hole_mesh_size is None else h_hh[1]
     if c.convergence is not None:  # convergence_check: the peak again on meshes REFINE and REFINE² times finer
         runs = [res, *(c.solve_model(model, loads, ctx.load_case, REFINE**k) for k in (1, 2))]
         res, more, warns = pc.plate_convergence(model, runs, REFINE, c.convergence, h_hh, held)
-        hh = hh / REFINE ** runs.index(res)
+        hh = None if hh is None else hh / REFINE ** runs.index(res)
         notes += more
     return pc.check_plate_stress_fea(model, res, component=c.name, notes=notes, warnings=warns, in_plane_supports=held,
                                      hole_mesh_size=hh)
