@@ -243,3 +243,23 @@ def test_a_load_on_a_pinned_wall_warns(holes):
     assert w.startswith("load 0 (pinload on region 'hole1') acts on a pinned wall: 9") and "go straight into the pin" in w
     res = _model(holes, *pins_, loads=(Force(Named("xmax"), ("0 N", "-100 N", "0 N")),)).solve()
     assert not [w for w in res.warnings if "pinned wall" in w]
+
+
+def test_a_hole_split_in_two_faces_pinned_twice_is_one_pin(holes):
+    """A CAD system may split a hole's wall into two half-cylinder faces; pinning both (here two overlapping Arc
+    regions of hole0's wall, sharing nodes) is the same support as pinning the whole wall: the same displacements to
+    round-off. Two pins on different axes that share nodes are refused."""
+    from mechverify.fea.regions import Arc
+
+    load_ = (Force(Named("xmax"), ("0 N", "-100 N", "0 N")),)
+    whole = _model(holes, PinSupport(Named("hole0"), axial=True), PinSupport(Named("hole1")), loads=load_).solve()
+    # overlapping arcs (each 270 deg): every wall facet lies wholly in one of them, so together they hold the wall
+    # (arcs meeting at 90 deg would miss the mid-edge nodes of the facets across that line: gmsh's wall has no seam
+    # there; a CAD face split has one, and the faces share it)
+    halves = (PinSupport(Arc(("10 mm", "10 mm"), "3 mm", -135, 135), axial=True),
+              PinSupport(Arc(("10 mm", "10 mm"), "3 mm", 45, 315), axial=True), PinSupport(Named("hole1")))
+    split = _model(holes, *halves, loads=load_).solve()
+    np.testing.assert_allclose(split.u, whole.u, atol=1e-9 * np.abs(whole.u).max())
+    assert not pins.same_cylinder(whole_fit := _model(holes, PinSupport(Named("hole0"))).dof_basis.fits[0],
+                                  _model(holes, PinSupport(Named("hole1"))).dof_basis.fits[0])
+    assert pins.same_cylinder(whole_fit, whole_fit)

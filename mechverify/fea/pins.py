@@ -144,6 +144,15 @@ def fit_cylinder(points: np.ndarray, normals: np.ndarray, areas: np.ndarray, wha
     return fit
 
 
+def same_cylinder(a: CylinderFit, b: CylinderFit, rtol: float = CYLINDER_RTOL) -> bool:
+    """Whether two fits are one cylinder (two faces of one hole, split by the CAD system, pinned each): parallel axes
+    (within 1 mrad), the axes within ``rtol`` of the radius of each other, the radii within ``rtol``."""
+    d = b.center - a.center
+    off = d - (d @ a.axis) * a.axis
+    return bool(abs(a.axis @ b.axis) >= 1 - 5e-7 and np.linalg.norm(off) <= rtol * a.radius
+                and abs(a.radius - b.radius) <= rtol * a.radius)
+
+
 def frames(points: np.ndarray, fit: CylinderFit) -> np.ndarray:
     """The pin axes ``[k, 3, 3]`` of nodes ``points[3, k]``: columns ``e_r`` (radial from the axis), ``e_θ`` and
     ``e_z`` (the axis), a right-handed orthonormal frame per node."""

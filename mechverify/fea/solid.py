@@ -394,9 +394,11 @@ class SolidModel:
             fc = self.facets(s.region)
             fit = pins.fit_cylinder(self.nodes[:, np.unique(fc.nodes[:, :3])], fc.normal, fc.area, what)
             shared = owner[nodes] >= 0
-            if np.any(shared):
-                raise InputError(f"{what}: shares {int(shared.sum())} nodes with Pin {owner[nodes][shared][0] + 1}; "
-                                 "a node can be on one pin only")
+            other = int(owner[nodes][shared][0]) if np.any(shared) else -1
+            if other >= 0 and not pins.same_cylinder(fit, fits[other]):  # two faces of one hole may share a seam
+                raise InputError(f"{what}: shares {int(shared.sum())} nodes with Pin {other + 1}, a pin about another "
+                                 f"axis ({fit.describe()} against {fits[other].describe()}); a node can be on one pin "
+                                 "only")
             owner[nodes] = k
             R[nodes] = pins.frames(self.nodes[:, nodes], fit)
             fits[k], pinned[k] = fit, nodes
