@@ -244,6 +244,23 @@ class DofBasis:
                            "pin as a load on an unsupported hole (pin_loads)")
         return tuple(out)
 
+    def calculix(self, axial: Sequence[bool]) -> tuple[list[str], list[str]]:
+        """The pins in a CalculiX deck: per pin ``k`` the node set ``PIN<k>`` with its cylindrical ``*TRANSFORM,
+        TYPE=C`` (two points on the fitted axis; local direction 1 radial, 2 tangential, 3 axial), to go before
+        ``*MATERIAL``, and the ``*BOUNDARY`` lines (radial, and axial where ``axial[k]``) for the step. The same
+        model (``tests/validation/test_calculix_pinned_beam.py``: displacements agree to 1.6e-6)."""
+        from mechverify.fea.calculix import fortran_field
+
+        sets, bc = [], []
+        for k, nodes in self.pinned.items():
+            fit = self.fits[k]
+            a, c = fit.center, fit.center + fit.radius * fit.axis
+            sets.append(f"*NSET, NSET=PIN{k}")
+            sets += [", ".join(str(n + 1) for n in nodes[i:i + 8]) for i in range(0, nodes.size, 8)]
+            sets += [f"*TRANSFORM, NSET=PIN{k}, TYPE=C", ", ".join(fortran_field(float(v)) for v in (*a, *c))]
+            bc += [f"PIN{k}, 1, 1"] + ([f"PIN{k}, 3, 3"] if axial[k] else [])
+        return sets, bc
+
     def rigid_modes(self, points: np.ndarray) -> tuple[np.ndarray, list[str]]:
         """The rigid motions of :func:`mechverify.fea.linsolve.rigid_modes` in the pin axes (``Tᵀ B``)."""
         from mechverify.fea.linsolve import rigid_modes

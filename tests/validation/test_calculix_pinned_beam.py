@@ -31,18 +31,11 @@ pytestmark = [pytest.mark.ccx, pytest.mark.skipif(shutil.which("ccx") is None, r
 def _pinned_deck(model, work: Path) -> None:
     """The model's deck (``calculix.write_inp`` without held DOFs) with each pin's wall node set, its cylindrical
     ``*TRANSFORM`` and the radial (and axial) boundary conditions in that system."""
-    b = model.dof_basis
     m = model.mesh
     calculix.write_inp(work / "job.inp", model.nodes.T, m.basis.element_dofs.T, model.material.E.m_as("Pa"),
                        model.material.nu.m_as(""), np.empty(0, int), model.load_vector())
-    sets, bc = [], ["*BOUNDARY"]
-    for k, nodes in b.pinned.items():
-        fit = b.fits[k]
-        a, c = fit.center, fit.center + 0.01 * fit.axis
-        sets.append(f"*NSET, NSET=PIN{k}")
-        sets += [", ".join(str(n + 1) for n in nodes[i:i + 8]) for i in range(0, nodes.size, 8)]
-        sets += [f"*TRANSFORM, NSET=PIN{k}, TYPE=C", ", ".join(calculix.fortran_field(float(v)) for v in (*a, *c))]
-        bc += [f"PIN{k}, 1, 1"] + ([f"PIN{k}, 3, 3"] if model.supports[k].axial else [])
+    sets, bc = model.dof_basis.calculix([getattr(s, "axial", False) for s in model.supports])
+    bc = ["*BOUNDARY", *bc]
     text = (work / "job.inp").read_text()
     assert text.count("*MATERIAL") == 1 and text.count("*STEP\n*STATIC\n") == 1
     text = text.replace("*MATERIAL", "\n".join(sets) + "\n*MATERIAL")
