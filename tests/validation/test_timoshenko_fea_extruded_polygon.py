@@ -166,3 +166,15 @@ def test_thickness_goes_with_outline(tmp_path):
     (tmp_path / "d.toml").write_text(text)
     with pytest.raises(DesignFileError, match=r"components.arm.outline: needs thickness"):
         load(tmp_path / "d.toml")
+
+
+def test_parameters_in_the_outline(tmp_path):
+    """Corners may use [parameters] ("L, 0"): L = 100 mm gives PL^3/3EI + PL/kappa G A = 0.02500 + 0.00078 =
+    0.02578 mm ([TG-M], hand), 2 %. Before, 'L' was 'expected a length'."""
+    p = tmp_path / "d.toml"
+    p.write_text('[parameters]\nL = "100 mm"\n' + textwrap.dedent(DESIGN.format(
+        outline='["0, 0", "L, 0", "L, 20", "0, 20"]', support="side3")))
+    rs = load(p).verify()
+    L, h, t, P = 0.1, 0.02, 0.01, 100.0
+    expect = P * L**3 / (3 * E * t * h**3 / 12) + P * L / (5 / 6 * E / (2 * (1 + NU)) * h * t)
+    assert rs.get("arm", "solid_deflection").demand.m_as("m") == pytest.approx(expect, rel=0.02)

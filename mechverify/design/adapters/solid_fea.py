@@ -163,6 +163,10 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         from mechverify.design.parameters import substitute  # "300, 10, t": parameters in the block's size
 
         p["box"] = substitute(p["box"], f"components.{p['_name']}.box", ctx)
+    if isinstance(p.get("outline"), list) and isinstance(ctx, Mapping) and ctx.get("parameters"):
+        from mechverify.design.parameters import substitute  # "L, 0": parameters in the corners
+
+        p["outline"] = substitute(p["outline"], f"components.{p['_name']}.outline", ctx)
     imported = None
     if "mesh" in p:  # another tool's mesh: read now, so that its errors are reported once, at the key
         if p.get("convergence_check"):
