@@ -143,8 +143,8 @@ def _deflection(c: PlateFEA, loads: Mapping[str, Any], ctx: Any) -> CheckResult:
 
 def _mesh_notes(c: PlateFEA, res: FieldResults) -> list[str]:
     size = "shorter side / 16 (default)" if c.mesh_size is None else fmt(c.mesh_size, "mm")
-    hole = ("a round hole's radius / 30, at most mesh size / 3 (default)" if c.hole_mesh_size is None
-            else fmt(c.hole_mesh_size, "mm"))
+    hole = ("a round hole's or rounded corner's radius / 30, at most mesh size / 3, elsewhere mesh size / 3 "
+            "(default)" if c.hole_mesh_size is None else fmt(c.hole_mesh_size, "mm"))
     return [f"mesh: {len(res.surface)} Morley triangles, {res.points.shape[0]} vertices; element size {size}, "
             f"at holes and cut-outs {hole}"]
 
@@ -181,8 +181,8 @@ PLATE_FEA = REGISTRY.register(ComponentType(
                                   "| holes = \"all\" | [group or hole names], type = fixed | pinned, "
                                   "washer_diameter}", required=True, item="table"),
         Field("mesh_size", "length", "element size (default: shorter side / 16)"),
-        Field("hole_mesh_size", "length", "element size at holes and cut-outs (default: a round hole's radius / 30, "
-                                          "at most mesh_size / 3; cut-outs mesh_size / 3)"),
+        Field("hole_mesh_size", "length", "element size at holes and cut-outs (default: a round hole's or a cut-out "
+                                          "corner's radius / 30, at most mesh_size / 3; straight sides mesh_size / 3)"),
         Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span "
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
