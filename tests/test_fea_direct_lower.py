@@ -127,3 +127,11 @@ def test_metis_is_tried_for_memory(system, monkeypatch):
     monkeypatch.setattr(linsolve, "METIS_BYTES_PER_DOF", 0.99 * amd.factor_bytes / groups[-1])
     linsolve.choose_solver(None, groups=groups, graph=graph, nnz=nnz)
     assert calls == ["amd", "metis"]
+
+
+@pytest.mark.parametrize("high", [1, 300, 1 << 20, 1 << 40, 1 << 50])
+def test_stable_argsort_is_numpys(high):
+    """assembly.stable_argsort (16-bit LSD radix) gives NumPy's stable argsort, ties in input order, for keys of 1 to
+    50 bits (above 48 NumPy's own sort)."""
+    key = np.random.default_rng(high).integers(0, high, 5000, dtype=np.int64)
+    assert np.array_equal(assembly.stable_argsort(key), np.argsort(key, kind="stable"))

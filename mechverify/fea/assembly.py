@@ -227,6 +227,23 @@ class BlockPattern:
     n: int  # number of block rows (scalar DOFs)
 
 
+def stable_argsort(key: np.ndarray) -> np.ndarray:
+    """``np.argsort(key, kind="stable")`` of non-negative integers, by least-significant-digit radix sort on 16-bit
+    digits (NumPy's stable sort of 16-bit integers is a radix sort): the same permutation in two or three linear
+    passes. The block pattern's 606k keys at 37k DOF: 0.013 against 0.042 s, at 67k 0.030 against 0.074 s (task
+    thinperf). Keys of more than 48 bits go to NumPy's stable sort."""
+    key = np.asarray(key)
+    if key.size == 0 or key.dtype.kind not in "iu" or int(key.min()) < 0 or int(key.max()) >= 1 << 48:
+        return np.argsort(key, kind="stable")
+    order = None
+    for shift in range(0, max(int(key.max()).bit_length(), 1), 16):
+        digit = ((key if order is None else key[order]) >> shift).astype(np.uint16)  # the low 16 bits
+        o = np.argsort(digit, kind="stable")
+        del digit
+        order = o if order is None else order[o]
+    return order
+
+
 def block_pattern(element_dofs: np.ndarray, n: int) -> BlockPattern:
     """The BSR pattern of ``element_dofs[nb, e]`` (scalar DOFs) coupling every pair of local nodes."""
     nb, ne = element_dofs.shape
@@ -236,17 +253,8 @@ def block_pattern(element_dofs: np.ndarray, n: int) -> BlockPattern:
     key *= n
     key += np.tile(element_dofs, (nb, 1))
     key = key.ravel()
-    m = key.size
-    if m and int(key.max()) < (np.iinfo(np.int64).max - m) // m:
-        # the stable argsort of key, faster: sort the distinct numbers key * m + position (0.031 vs 0.043 s at 37k DOF)
-        key *= m
-        key += np.arange(m)
-        key.sort()
-        order = key % m
-        key //= m  # sorted
-    else:
-        order = np.argsort(key, kind="stable")
-        key = key[order]  # sorted
+    order = stable_argsort(key)
+    key = key[order]  # sorted
     first = np.empty(key.size, dtype=bool)
     first[:1] = True
     np.not_equal(key[1:], key[:-1], out=first[1:])
@@ -336,7 +344,7 @@ def free_lower_permuted(K: sp.bsr_matrix, free: np.ndarray, perm: np.ndarray, ro
     del brow
     key = pq[blocks].astype(np.int64) * n + pp[blocks]
     del pq, pp
-    order = np.argsort(key)  # by column node, then row node (distinct keys)
+    order = stable_argsort(key)  # by column node, then row node (distinct keys)
     blocks = blocks[order]
     qpos = key[order] // n
     del key, order

@@ -36,7 +36,7 @@ from skfem.quadrature import get_quadrature
 from skfem.refdom import RefTet, RefTri
 
 from mechverify.errors import InputError
-from mechverify.fea.assembly import BlockPattern, _add_product, assemble_blocks
+from mechverify.fea.assembly import BlockPattern, _add_product, assemble_blocks, stable_argsort
 
 
 @cache
@@ -216,7 +216,7 @@ def _scatter(index: np.ndarray, n: int) -> sp.csr_matrix:
     :func:`~mechverify.fea.assembly._add_product` adds ``X[i]`` to ``Y[index[i]]`` one after the other in ``i``
     order - ``np.add.at(Y, index, X)`` bit for bit, at a fraction of its time (0.035 s a solve of the 37k-DOF
     plate, task thinperf)."""
-    order = np.argsort(index, kind="stable")
+    order = stable_argsort(index)
     indptr = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(np.bincount(index, minlength=n), out=indptr[1:])
     return sp.csr_matrix((np.ones(index.size), order, indptr), shape=(n, index.size))
@@ -233,7 +233,7 @@ def _boundary_vertices(t: np.ndarray, nverts: int) -> np.ndarray:
         for k in range(nv - 1):
             key *= nverts
             key += faces[:, k]
-        order = np.argsort(key)
+        order = stable_argsort(key)
         key = key[order]
         single = np.ones(key.size, bool)  # a face met once (no equal neighbour in the sorted keys)
         same = key[1:] == key[:-1]
