@@ -277,16 +277,30 @@ def test_report_scatter_has_a_verdict_legend(monkeypatch):
 
 
 # ------------------------------------------------ task fix19 (audit of issue 19): the parts of "done when" no test held
-def test_study_report_as_pdf_holds_the_tables_and_the_figures(tmp_path, capsys):
+@pytest.mark.slow
+def test_study_report_as_pdf_holds_the_tables_and_the_figures(tmp_path):
     """Issue 19: '--report study.html|pdf'. The PDF path (weasyprint) had no test. The report's tables and its
-    figures (drawn as SVG: their text, e.g. the limit line's legend, is text in the PDF) must be in the PDF."""
+    figures (drawn as SVG: their text, e.g. the limit line's legend, is text in the PDF) must be in the PDF. A small
+    Monte Carlo (two checks, six samples: weasyprint's time grows with the figures)."""
     import shutil
     import subprocess
 
-    pdf = tmp_path / "mc.pdf"
-    rc = main(["study", str(LIFT), "--vary", "components.lift.mass=normal:15 kg:1 kg", "-n", "8", "--seed", "2",
-               "--serial", "--no-progress", "--report", str(pdf)])
-    assert rc == 0
+    from mechverify.reports.study import write_study_report
+    from mechverify.studies.study import StudyResult
+
+    def sample(i: int, x: float) -> dict:
+        fus = {"lift.motor_peak_torque": x / 10, "lift_screw.nut_pv": x / 12}
+        checks = {c: {"u": v, "required_sf": 1.0, "fu": v, "verdict": "fail" if v > 1 else "pass"}
+                  for c, v in fus.items()}
+        return {"index": i, "inputs": {"components.lift.mass": x}, "status": "ok", "message": "",
+                "verdict": "fail" if max(fus.values()) > 1 else "pass", "governing": "lift.motor_peak_torque",
+                "max_fu": max(fus.values()), "checks": checks}
+
+    axes = [{"name": "components.lift.mass", "spec": "normal:10 kg:2 kg", "unit": "kg", "integer": False,
+             "base": 10.0}]
+    res = StudyResult("monte_carlo", "lhs", 2, axes, [sample(i, x) for i, x in enumerate([7, 9, 10, 11, 12, 14])],
+                      "lift", {}, None)
+    pdf = write_study_report(res, tmp_path / "mc.pdf")
     assert pdf.read_bytes().startswith(b"%PDF-")
     if shutil.which("pdftotext") is None:
         pytest.skip("pdftotext (poppler-utils) is not installed: the PDF's text is not read")
