@@ -542,3 +542,22 @@ def test_size_margin_words_when_todays_value_is_zero():
     assert r(-0.373861, 1.0025).margin_text() == ("today's value is zero: it must fall to -0.373861 N for u·SF to "
                                                    "come down to 1")
     assert r(12.5, 0.8).margin_text() == "today's value is zero: it may rise to 12.5 N before u·SF reaches 1"
+
+
+def test_size_margin_of_a_temperature_is_a_difference():
+    """Review 4 finding 18: sizing a bearing's operating_temperature (limit 42.3628 degC, today 70 degC) said 'the
+    limit is 39.5 % below today's value': a percentage of a Celsius reading means nothing. Now the difference,
+    27.64 K (hand: 70 - 42.3628), and the JSON margin on the absolute scale: (315.5128 - 343.15)/343.15 = -8.05 %."""
+    from mechverify.studies.sizing import SizingResult
+
+    r = SizingResult("components.b.operating_temperature", "degC", "b.bearing_modified_life", 70.0, 1.2, 42.3628,
+                     "b.bearing_modified_life", (42.3628,), (20.0, 150.0), 12)
+    assert r.margin_text() == ("the limit is 27.64 K below today's value: it must fall by 27.64 K for u·SF to come "
+                               "down to 1")
+    assert "%" not in r.text()
+    assert r.margin == pytest.approx((315.5128 - 343.15) / 343.15, rel=1e-9)
+    f = SizingResult("t", "degF", "x", 100.0, 0.5, 150.0, "x", (150.0,), (0.0, 200.0), 9)
+    assert f.margin_text() == ("the limit is 50 degF (a difference) above today's value: it may rise by 50 degF (a "
+                               "difference) before u·SF reaches 1")
+    assert SizingResult("t", "K", "x", 343.15, 1.2, 315.5128, "x", (1.0,), (1.0, 2.0), 9).margin_text().startswith(
+        "the limit is 8.1 % below")  # (kelvin: a percentage is fine)

@@ -52,8 +52,25 @@ class SizingResult:
 
     @property
     def margin(self) -> float:
-        """(limit − today) / today: +0.25 means today's value may grow by 25 % before the limit."""
+        """(limit − today) / today: +0.25 means today's value may grow by 25 % before the limit. For a value in an
+        offset unit (degC, degF) on its absolute scale (kelvin): a percentage of a Celsius reading means nothing."""
+        if self._offset():
+            from mechverify.units import ureg
+
+            lim, now = (ureg.Quantity(x, self.unit).to("K").magnitude for x in (self.limit, self.today))
+            return (lim - now) / now if now else math.inf
         return (self.limit - self.today) / self.today if self.today else math.inf
+
+    def _offset(self) -> bool:
+        """Whether the unit is an offset one (degC, degF): its readings are not proportional to the quantity."""
+        if not self.unit:
+            return False
+        try:
+            from mechverify.units import ureg
+
+            return not ureg.Quantity(1.0, self.unit)._is_multiplicative
+        except Exception:  # (not a pint unit: a plain label)
+            return False
 
     def text(self) -> str:
         u = f" {self.unit}" if self.unit else ""
@@ -70,6 +87,16 @@ class SizingResult:
         """The margin in words, its sign spelt out: 'the limit is 7.3 % below today's value: it may fall by
         7.3 % before u·SF reaches 1' (passes today) or '... it must fall by 58.3 % for u·SF to reach 1' (fails)."""
         m = self.margin
+        if self._offset():  # (a difference of temperatures, not a percentage of a reading: review 4 finding 18)
+            diff = self.limit - self.today
+            if diff == 0:
+                return "today's value is the limit"
+            delta = {"degC": "K", "degree_Celsius": "K", "celsius": "K"}.get(self.unit, f"{self.unit} (a difference)")
+            way, verb = ("above", "rise") if diff > 0 else ("below", "fall")
+            by = f"{abs(diff):.4g} {delta}"
+            if self.today_fu <= 1:
+                return f"the limit is {by} {way} today's value: it may {verb} by {by} before u·SF reaches 1"
+            return f"the limit is {by} {way} today's value: it must {verb} by {by} for u·SF to come down to 1"
         if not math.isfinite(m):  # (no percentage of zero: the limit itself)
             u = f" {self.unit}" if self.unit else ""
             verb = "rise" if self.limit > 0 else "fall"
