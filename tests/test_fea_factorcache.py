@@ -170,3 +170,55 @@ def test_a_frame_study_over_a_load_factorises_once(cache, monkeypatch):
     execution._BASE.clear()
     off = Study(copy.deepcopy(FRAME), vary=vary).run("serial")
     assert res.to_json() == off.to_json()
+
+
+# ------------------------------------------------------------------------------------ solid_fea (the lead, issue 19)
+
+SOLID = {
+    "design": {"name": "solid cantilever"},
+    "parameters": {"P": "100 N"},
+    "components": {"bar": {"type": "solid_fea", "box": "200, 10, 10", "mesh_size": "5 mm",
+                           "material": "Structural Steel", "supports": [{"named": "xmin"}],
+                           "deflection_limit": "2 mm", "min_frequency": "150 Hz", "modes": 2}},
+    "load_cases": {"tip": {"bar": {"forces": [{"named": "xmax", "force": "0, 0, -P"}]}}},
+}
+
+
+def test_a_solid_study_over_a_load_meshes_and_factorises_once(cache, monkeypatch):
+    """A study of a solid_fea design over its tip load: the base design and every sample share one mesh, one
+    factorised stiffness and one modal solution (fea.factorcache.parts_of; fix19's audit counted 4 factorisations
+    per sample before); the study's JSON equals the same study with the cache off, byte for byte. Oracle for the
+    numbers: the cantilever is linear in P (tip deflection u(300 N) = 3 u(100 N) to round-off) and the natural
+    frequency does not depend on the load."""
+    from mechverify.fea import study as fea_study
+    from mechverify.studies import Study, execution
+
+    made = []
+    real_of = fea_study.SharedSolve.of
+    monkeypatch.setattr(fea_study.SharedSolve, "of", classmethod(lambda cls, m: made.append(1) or real_of(m)))
+    vary = {"parameters.P": "100 N:300 N:3"}
+    res = Study(copy.deepcopy(SOLID), vary=vary).run("serial", check_inputs=False)
+    assert len(made) == 1
+    samples = json.loads(res.to_json())["samples"]
+    defl = [s["checks"]["bar.solid_deflection"]["fu"] for s in samples]
+    assert defl[2] == pytest.approx(3 * defl[0], rel=1e-9)
+    freq = {s["checks"]["bar.natural_frequency"]["fu"] for s in samples}
+    assert len(freq) == 1
+    monkeypatch.setattr(factorcache, "key_of", lambda *parts: None)  # every design builds its own
+    execution._BASE.clear()
+    off = Study(copy.deepcopy(SOLID), vary=vary).run("serial", check_inputs=False)
+    assert res.to_json() == off.to_json()
+    assert len(made) == 1 + 4  # the base and three samples, each its own factorisation
+
+
+def test_an_edited_step_or_mesh_file_is_read_again(cache, tmp_path):
+    """The key holds the files' size and modification time: a process that verifies a design, has its mesh file
+    rewritten and verifies again reads the new file (never a stale cached mesh)."""
+    f = tmp_path / "m.msh"
+    f.write_text("a")
+    a = factorcache.parts_of("solid_fea", {"mesh": str(f)}, (str(f),))
+    a["mesh"] = "old"
+    assert factorcache.parts_of("solid_fea", {"mesh": str(f)}, (str(f),)) is a
+    f.write_text("bb")
+    assert "mesh" not in factorcache.parts_of("solid_fea", {"mesh": str(f)}, (str(f),))
+    assert factorcache.parts_of("solid_fea", {"mesh": str(tmp_path / "gone.msh")}, (str(tmp_path / "gone.msh"),)) == {}

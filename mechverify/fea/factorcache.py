@@ -13,6 +13,11 @@ installed) and :meth:`mechverify.fea.frame.Frame.analyse` (key: the mesh's node 
 stiffnesses, releases and springs, and the restraints; parts: the assembled stiffness after the support, release
 and mechanism checks - a dense eigenvalue check below 3000 unknowns - and its SuperLU factorisation).
 
+and :class:`mechverify.design.adapters.solid_fea.SolidStudy` (:func:`parts_of`, key: the solid's design-file
+table - geometry, mesh sizes, material, supports, analysis settings - and the size and modification time of its
+STEP/STL/mesh files; parts: the mesh, the factorised stiffness (:class:`mechverify.fea.study.SharedSolve`) and the
+natural frequencies, which no load changes; one solid kept per process, the last one).
+
 Results are bit-identical to a solve without the cache: the same matrices and the same factorisation solve
 the same right-hand side.
 """
@@ -85,3 +90,28 @@ def key_of(*parts: Any) -> bytes | None:
         return pickle.dumps(parts, protocol=pickle.HIGHEST_PROTOCOL)
     except Exception:  # an unpicklable input: solve without the cache
         return None
+
+
+_LAST: dict[str, Hashable] = {}  # kind -> the key of its one kept entry (parts_of)
+
+
+def parts_of(kind: str, inputs: Any, files: tuple[str, ...] = ()) -> dict[str, Any]:
+    """The parts this process built for ``inputs`` (any picklable description of what the parts depend on) and
+    the files they were read from (their size and modification time join the key, so an edited STEP file is read
+    again). Only the last ``kind`` entry is kept: a process verifying other solids one after the other does not
+    hold each one's factorisation. Unpicklable inputs or a missing file: a fresh dict, not stored."""
+    import os
+
+    try:
+        stats = tuple((f, os.stat(f).st_size, os.stat(f).st_mtime_ns) for f in files)
+    except OSError:
+        return {}
+    key = key_of(kind, inputs, stats)
+    if key is None:
+        return {}
+    with CACHE._lock:
+        old = _LAST.get(kind)
+        _LAST[kind] = key
+    if old is not None and old != key:
+        CACHE.forget(old)
+    return CACHE.entry(key)[0]

@@ -40,6 +40,24 @@ class SolidStudy:
     _mesh: Any = None
     _shared: Any = None
     solved: dict[str, Any] = dataclasses.field(default_factory=dict)
+    _parts: Any = None
+
+    def parts(self) -> dict[str, Any]:
+        """What this process already built for the same solid (fea.factorcache.parts_of: the mesh, the factorised
+        stiffness, the modes): a study that changes only loads meshes and factorises once per worker (issue 19)."""
+        if self._parts is None:
+            from mechverify.fea.factorcache import parts_of
+
+            files = tuple(str(self.p[k]) for k in ("step", "stl", "mesh") if self.p.get(k))
+            self._parts = parts_of("solid_fea", dict(self.p), files)
+        return self._parts
+
+    def part(self, name: str, build: Any) -> Any:
+        """``parts()[name]``, built by ``build()`` when this process has not built it yet (an error is not kept)."""
+        parts = self.parts()
+        if name not in parts:
+            parts[name] = build()
+        return parts[name]
 
     def mesh(self) -> Any:
         """The mesh, made once; a failure (gmsh missing, a STEP file gmsh cannot read) is raised at the geometry's
@@ -48,7 +66,7 @@ class SolidStudy:
             raise self._mesh
         if self._mesh is None:
             try:
-                self._mesh = _make_mesh(self.p, self.unit)
+                self._mesh = self.part("mesh", lambda: _make_mesh(self.p, self.unit))
             except MechverifyError as exc:
                 msg = str(exc)
                 if not msg.startswith(("components.", "mesh_size", "box", "holes", "outline", "thickness")):
@@ -112,7 +130,7 @@ class SolidStudy:
             model = self.case_model(loads, case, g)
             with self.regions(loads):
                 if self._shared is None:
-                    self._shared = SharedSolve.of(model)
+                    self._shared = self.part("shared", lambda: SharedSolve.of(model))
                 self.solved[case] = model.solve(factorization=self._shared)
             self.export(self.solved[case], case)
         return self.solved[case]
@@ -275,7 +293,7 @@ def _frequency(c: SolidStudy, loads: Any, ctx: Any) -> CheckResult | list[CheckR
                 raise InputError(f"modes: {settings.modes} elastic modes asked, but a free-free model of {n} degrees "
                                  f"of freedom has at most {n - 7} (six of its modes are rigid-body motions); {hint}")
             settings = dataclasses.replace(settings, modes=settings.modes + 6)
-        res = settings.solve(modal, model, hint=hint)
+        res = c.part("modes", lambda: settings.solve(modal, model, hint=hint))  # no load changes them
     c.export(res, "modes")
     return c.noted(settings.check(res, c.name))
 
