@@ -513,10 +513,39 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: QuantityLike = "5 mm
         gmsh.finalize()
 
 
+def polygon_corners(pts: list[tuple[float, float]], unit: str = "mm",
+                    where: str = "outline") -> list[tuple[float, float]]:
+    """The corners ``pts`` [m] of a simple polygon, checked: a last corner equal to the first (a closed outline, as a
+    CAD or CSV export and plate_fea's ``outline`` write it) is dropped; a corner equal to the one before it, fewer
+    than three corners, crossing edges or no area is an InputError at ``where`` (``outline[4]``), coordinates shown
+    in ``unit`` (review 4 finding 17: a closed outline was gmsh's 'Could not create line')."""
+    import shapely
+
+    P = np.asarray(pts, float).reshape(-1, 2)
+    scale = float(np.max(np.ptp(P, axis=0))) if len(P) else 0.0
+    if len(P) > 3 and np.hypot(*(P[-1] - P[0])) <= 1e-9 * scale:
+        P = P[:-1]
+    f = Q(1, unit).m_as("m")
+    for i in range(1, len(P)):
+        if np.hypot(*(P[i] - P[i - 1])) <= 1e-9 * scale:
+            raise InputError(f"{where}[{i}]: the same corner as {where}[{i - 1}] ({P[i, 0] / f:g}, {P[i, 1] / f:g}) "
+                             f"{unit}; give each corner once")
+    if len(P) < 3:
+        raise InputError(f"{where}: a polygon needs at least three corners, got {len(P)}")
+    poly = shapely.Polygon(P / f)
+    if not poly.is_valid or poly.area <= 1e-12 * (scale / f) ** 2:
+        from shapely.validation import explain_validity
+
+        raise InputError(f"{where}: the corners do not make a simple polygon ({explain_validity(poly)}, in {unit}): "
+                         "give them in order around the outline, without crossing edges")
+    return [(float(x), float(y)) for x, y in P]
+
+
 def extruded_polygon(outline: Any, thickness: QuantityLike, mesh_size: QuantityLike = "5 mm", holes: Any = (),
                      hole_mesh_size: QuantityLike | None = None, curved: bool = True) -> SolidMesh:
     """A plate of any outline: the polygon ``outline`` = [(x, y), ...] (three or more corners in order, lengths or
-    strings; not closed: the last corner joins the first) in the x-y plane, extruded along z from 0 to
+    strings; the last corner joins the first, a closing corner equal to the first is dropped) in the x-y plane,
+    extruded along z from 0 to
     ``thickness``, with through-holes along z, ``holes`` = [((x, y), diameter), ...], meshed by gmsh with
     ``hole_mesh_size`` (default mesh_size / 2) at the holes (a bracket, a lug, a gusset from its drawing).
 
@@ -536,15 +565,9 @@ def extruded_polygon(outline: Any, thickness: QuantityLike, mesh_size: QuantityL
         if isinstance(c, str) or len(c) != 2:
             raise InputError(f"outline[{i}]: expected a corner (x, y), got {c!r}")
         pts.append(tuple(to_si(v, "length", f"outline[{i}]") for v in c))
-    if len(pts) < 3:
-        raise InputError(f"outline: a polygon needs at least three corners, got {len(pts)}")
+    pts = polygon_corners(pts)
     poly = shapely.Polygon(pts)
     scale = max(np.ptp(np.asarray(pts), axis=0))
-    if not poly.is_valid or poly.area <= 1e-12 * scale**2:
-        from shapely.validation import explain_validity
-
-        raise InputError(f"outline: the corners do not make a simple polygon ({explain_validity(poly)}; in metres): "
-                         "give them in order around the outline, without crossing edges")
     T = to_si(thickness, "length", "thickness")
     h = to_si(mesh_size, "length", "mesh_size")
     for name, v in (("thickness", T), ("mesh_size", h)):

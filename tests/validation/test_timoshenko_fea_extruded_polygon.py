@@ -178,3 +178,25 @@ def test_parameters_in_the_outline(tmp_path):
     L, h, t, P = 0.1, 0.02, 0.01, 100.0
     expect = P * L**3 / (3 * E * t * h**3 / 12) + P * L / (5 / 6 * E / (2 * (1 + NU)) * h * t)
     assert rs.get("arm", "solid_deflection").demand.m_as("m") == pytest.approx(expect, rel=0.02)
+
+
+def test_a_closed_outline_is_the_open_one(tmp_path):
+    """Review 4 finding 17: an outline closed by repeating its first corner (a CAD/CSV export, plate_fea's outline)
+    was gmsh's 'Could not create line' (internal error); it is the same plate as the open outline: same regions
+    (side0..side3) and the same tip deflection (0.2016 mm by hand, [TG-M], 2 %)."""
+    rs = load(_design(tmp_path, '["0, 0", "200, 0", "200, 20", "0, 20", "0, 0"]')).verify()
+    assert rs.get("arm", "solid_deflection").demand.m_as("mm") == pytest.approx(0.2016, rel=0.02)
+    m = mesh.extruded_polygon(_pts((0, 0), (200, 0), (200, 20), (0, 20), (0, 0)), "10 mm", "10 mm")
+    assert sorted(m.named) == ["side0", "side1", "side2", "side3", "zmax", "zmin"]
+
+
+@pytest.mark.parametrize(("outline", "key", "match"), [
+    ('["0, 0", "200, 0", "200, 20", "200, 20", "0, 20"]', "components.arm.outline[3]",
+     r"the same corner as outline\[2\] \(200, 20\) mm"),
+    ('["0, 0", "200, 20", "200, 0", "0, 20"]', "components.arm.outline", r"Self-intersection\[100 10\], in mm"),
+])
+def test_repeated_and_crossing_corners_are_named_in_the_file_unit(tmp_path, outline, key, match):
+    with pytest.raises(DesignFileError) as exc:
+        load(_design(tmp_path, outline)).verify()
+    (k, msg), = exc.value.errors
+    assert k == key and __import__("re").search(match, msg), msg

@@ -381,23 +381,19 @@ def _extruded(p: Mapping[str, Any], unit: str, h: float, refine: float | None) -
 
 def outline_corners(p: Mapping[str, Any], unit: str) -> list[tuple[float, float]]:
     """``outline``'s corners [m] checked at their keys (``outline[1]``: a corner is \"x, y\"; ``outline``: three or
-    more corners making a simple polygon) and ``thickness`` positive, before any meshing."""
-    import shapely
-
+    more corners making a simple polygon; a closing corner equal to the first is dropped from ``p``) and ``thickness``
+    positive, before any meshing."""
     corners = []
     for i, c in enumerate(p["outline"] or []):
         parts = c.split(",") if isinstance(c, str) else c if isinstance(c, list) else []
         if len(parts) != 2:
             raise InputError(f"outline[{i}]: expected a corner \"x, y\" (numbers in {unit} or lengths), got {c!r}")
         corners.append(tuple(_num(v, unit, "length", f"outline[{i}]") for v in parts))
-    if len(corners) < 3:
-        raise InputError(f"outline: a polygon needs at least three corners, got {len(corners)}")
-    poly = shapely.Polygon(corners)
-    if not poly.is_valid or poly.area <= 0:
-        from shapely.validation import explain_validity
+    from mechverify.fea.mesh import polygon_corners
 
-        raise InputError(f"outline: the corners do not make a simple polygon ({explain_validity(poly)}, in metres): "
-                         "give them in order around the outline, without crossing edges")
+    corners = polygon_corners(corners, unit)  # (a closing corner equal to the first dropped: from the file too, so
+    if len(corners) < len(p["outline"]):     # that side<k> and the region names count the real sides)
+        p["outline"] = p["outline"][:len(corners)]  # type: ignore[index]
     if not p["thickness"].magnitude > 0:
         raise InputError(f"thickness: must be positive, got {p['thickness']:~P}")
     return corners  # type: ignore[return-value]
