@@ -330,3 +330,24 @@ def test_monte_carlo_says_p_fail_is_over_the_valid_samples_and_counts_the_invali
     clean = StudyResult("monte_carlo", "lhs", 1, axes, [ok(0, 2.9, 0.5), ok(1, 3.0, 0.4)], "neck", {}, None)
     assert clean.invalid_as_failures() is None and "invalid counted" not in clean.summary()
     assert "invalid_as_failures" not in json.loads(clean.to_json())
+
+
+def test_default_ranges_of_a_temperature_are_degrees_around_it(tmp_path):
+    """Task fix19 (with review 4 finding 18): without --bounds, size searched today / 10 .. x 10 (7..700 degC for a
+    70 degC bearing), and explore's slider ran from half to twice (35..140 degC): proportions of a Celsius reading.
+    Now today ± 100 degrees for sizing and ± 50 for the slider (not below absolute zero)."""
+    from mechverify.reports.explore import _default_range
+    from mechverify.studies import size
+    from mechverify.studies.params import Parameter
+
+    p = tmp_path / "b.toml"
+    p.write_text(_BEARING.format(t="70 degC"))
+    with pytest.raises(InputError, match=r"in -30\.\.170 degC"):  # (the bearing's -20..150 degC: no crossing)
+        size(load(p), vary="components.b.operating_temperature", until="bearing_modified_life", scan=2)
+    param = Parameter("components.b.operating_temperature", 70.0, "degC")
+    assert param.offset and _default_range(param) == (20.0, 120.0)
+    assert not Parameter("x", 70.0, "K").offset and _default_range(Parameter("x", 70.0, "K")) == (35.0, 140.0)
+    cold = tmp_path / "c.toml"  # a parameter no check reads: only the range is looked at (not below absolute zero)
+    cold.write_text(LIFT.read_text().replace('screw_speed = "540 rpm"', 'screw_speed = "540 rpm"\nt = "-250 degC"'))
+    with pytest.raises(InputError, match=r"in -273\.15\.\.-150 degC"):
+        size(load(cold), vary="parameters.t", until="nut_pv", scan=2)

@@ -70,6 +70,8 @@ def _is_expression(raw: Any) -> bool:
 
 def _default_range(p: Parameter) -> tuple[float, float]:
     b = p.base
+    if p.offset:  # a temperature in degC or degF: ± 50 degrees (half of 70 degC is no temperature of interest)
+        return b - 50.0, b + 50.0
     if b > 0:
         return b / 2, b * 2
     if b < 0:

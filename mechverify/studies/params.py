@@ -326,6 +326,17 @@ class Parameter:
         unit = _written_unit(raw, q) or _unit_text(q)
         return cls(path, float(q.magnitude), unit)
 
+    @property
+    def offset(self) -> bool:
+        """Whether the file's unit is an offset one (degC, degF): its readings are not proportional to the quantity,
+        so ranges around today's value are taken as differences (sizing's default bounds, explore's sliders)."""
+        if not self.unit:
+            return False
+        try:
+            return not Q(1.0, self.unit)._is_multiplicative
+        except Exception:  # (not a pint unit)
+            return False
+
     def value(self, token: str | float | int) -> float:
         """A spec value (``"20 kg"``, ``20``) as a float in this parameter's unit."""
         if isinstance(token, bool):

@@ -140,10 +140,16 @@ def _resolve_check(until: str, checks: Sequence[str]) -> str:
 
 def size(design: Any, vary: str, until: str = "governing", bounds: Sequence[Any] | None = None, *,
          scan: int = 8, xtol: float | None = None) -> SizingResult:
-    """Solve u·SF(x) = 1 for the parameter ``vary`` within ``bounds`` (default: today's value / 10 .. × 10)."""
+    """Solve u·SF(x) = 1 for the parameter ``vary`` within ``bounds`` (default: today's value / 10 .. × 10; a
+    temperature in degC or degF: today's value ± 100 degrees)."""
     doc, path, loaded = design_and_source(design)
     p = Parameter.of(doc, vary, None if loaded is None else resolver(loaded))
-    if bounds is None:
+    if bounds is None and p.offset:  # (a tenth of 70 degC is not a temperature ten times lower)
+        from mechverify.units import ureg
+
+        zero = float(ureg.Quantity(1e-6, "K").to(p.unit).magnitude)  # (not below absolute zero)
+        lo, hi = max(p.base - 100.0, zero), p.base + 100.0
+    elif bounds is None:
         if not p.base > 0:
             raise InputError(f"bounds: give the range to search for {vary} (today's value is {p.base:g})")
         lo, hi = p.base / 10, p.base * 10
