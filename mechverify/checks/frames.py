@@ -89,9 +89,9 @@ def check_frame_stress(results: FrameResults, *, required_sf: float = 1.0, load_
                 "fields, not a sampled one — against the limit (a length, 'L/250' or a fraction of the span; "
                 "requirements.deflection_limit by default)."))
 def check_frame_deflection(results: FrameResults, limit: Any, *, span: QuantityLike | None = None,
-                           load_case: str = "") -> CheckResult:
+                           load_case: str = "", span_rule: str | None = None) -> CheckResult:
     """The largest translation along the members against ``limit`` (a length, ``"L/250"`` or a fraction of
-    ``span``)."""
+    ``span``); ``span_rule`` says where ``span`` came from (the result's note)."""
     mx = results.max_displacement
     r = deflection_check(mx.value, limit, span=span, component=results.frame.name, load_case=load_case,
                          source=f"limit set by the design; deflection by {ELEMENT}")
@@ -102,8 +102,8 @@ def check_frame_deflection(results: FrameResults, limit: Any, *, span: QuantityL
         r, check="frame_deflection", title="Frame deflection",
         formula=r"\delta_{max} = \max |\mathbf{u}(s)| \le \delta_{lim}",
         notes=(*r.notes, f"largest translation (magnitude) at {where_text(mx)}; along that member {comps} mm",
-               "span for a fractional limit: the 'span' field, else the largest distance from a support to a "
-               "member end", *_case_notes(results)))
+               "span for a fractional limit: " + (span_rule or "the 'span' field, else the largest distance from a "
+                                                  "support to a member end"), *_case_notes(results)))
 
 
 @check("frame_fatigue", title="Frame fatigue", sf_kind="fatigue", aliases=("frame.fatigue",),

@@ -47,6 +47,38 @@ class FrameComponent:
     masses: tuple[Any, ...] = ()
     solved: dict[str, fe.FrameResults] = dataclasses.field(default_factory=dict)
     modes: list[Any] = dataclasses.field(default_factory=list)
+    span_given: bool = False
+
+    def span_of(self, res: fe.FrameResults) -> tuple[Any, str]:
+        """(span, how it was found) for a fractional deflection limit in one load case's results ``res``: the
+        ``span`` field; on a straight beam (members and supports on one line) the span that holds the point of
+        largest deflection - between the two supports around it, or an overhang beyond the last one (review 4
+        finding 15: a two-span continuous beam took its whole length); else the largest distance from a support to
+        a member end."""
+        if self.span_given:
+            return self.span, "the 'span' field"
+        line = _line(self.frame)
+        if line is None:
+            n = len(self.frame.supports)
+            more = (f"; with {n} supports the span a limit means may be shorter: give span" if n > 2 else "")
+            return self.span, f"the largest distance from a support to a member end ({self.span:.4g~P}){more}"
+        o, d, ts, lo, hi = line
+        t = float((res.max_displacement.location.m_as("m") - o) @ d)
+        tol = 1e-9 * (hi - lo)
+        left, right = [s for s in ts if s <= t + tol], [s for s in ts if s >= t - tol]
+        if left and right and min(right) - max(left) > tol:
+            a, b = max(left), min(right)
+            how = "between the supports"
+        elif left and right:  # the largest deflection at a support (it moves): the longer span next to it
+            nxt = [(x, y) for x, y in zip(ts, ts[1:], strict=False) if x - tol <= t <= y + tol and y - x > tol]
+            a, b = max(nxt or [(lo, hi)], key=lambda ab: ab[1] - ab[0])
+            how = "between the supports"
+        else:
+            a, b = (hi, max(ts)) if left else (lo, min(ts))
+            a, b = min(a, b), max(a, b)
+            how = "of the overhang beyond the last support"
+        span = Q((b - a) * 1e3, "mm")
+        return span, f"span {span.m:.4g} mm {how} (the straight beam's span holding the largest deflection)"
 
     def results(self, ctx: Any) -> fe.FrameResults:
         """The results of ``ctx.load_case``; the first call solves every case and combination of this frame."""
@@ -101,7 +133,28 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
         raise InputError(f"fatigue_kf: a fatigue stress-concentration factor >= 1, got {p['fatigue_kf']!r}")
     return FrameComponent(frame, limit, span, None if life is None else float(life), p["fatigue_loading"],
                           p["fatigue_criterion"], float(p["fatigue_kf"]), modal_settings(p),
-                          frame_parsing.point_masses(p))
+                          frame_parsing.point_masses(p), span_given=p.get("span") is not None)
+
+
+def _line(frame: fe.Frame) -> tuple[Any, Any, list[float], float, float] | None:
+    """(origin, unit direction, the supports' positions along it sorted, the members' extent lo, hi) [m] when every
+    member end and support lies on one straight line (a beam, continuous or not); else None."""
+    pts = np.array([p for e in frame.ends for p in e], float)
+    if len(pts) < 2 or not frame.supports:
+        return None
+    o = pts[0]
+    far = pts[int(np.argmax(np.linalg.norm(pts - o, axis=1)))]
+    length = float(np.linalg.norm(far - o))
+    if length == 0:
+        return None
+    d = (far - o) / length
+    sup = np.array([frame.point(s.at) for s in frame.supports], float)
+    every = np.vstack([pts, sup])
+    rel = every - o
+    if np.max(np.linalg.norm(rel - np.outer(rel @ d, d), axis=1)) > 1e-6 * length:
+        return None
+    t = pts @ d - o @ d
+    return o, d, sorted(float(x) for x in (sup - o) @ d), float(t.min()), float(t.max())
 
 
 def _reach(frame: fe.Frame) -> float:
@@ -112,6 +165,12 @@ def _reach(frame: fe.Frame) -> float:
 
 
 # ---------------------------------------------------------------------------------------------- checks
+def _deflection(c: FrameComponent, ctx: Any) -> CheckResult:
+    res = c.results(ctx)
+    span, how = c.span_of(res)
+    return fc.check_frame_deflection(res, c.deflection_limit, span=span, load_case=ctx.load_case, span_rule=how)
+
+
 def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
     """natural_frequency when the frame gives min_frequency or excitation_band (fea/frame/modal.py)."""
     if c.modal is None:
@@ -182,7 +241,9 @@ FRAME = REGISTRY.register(ComponentType(
         Field("theory", "choice", "beam theory", choices=fe.THEORIES, default="timoshenko"),
         Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.01)"),
-        Field("span", "length", "span of a fractional deflection limit (default: largest support-to-end distance)"),
+        Field("span", "length", "span of a fractional deflection limit (default: on a straight beam the span holding "
+                                "the largest deflection, between two supports or an overhang; else the largest "
+                                "support-to-end distance)"),
         Field("fatigue_life", "float", "required life in cycles for the fatigue check (default: infinite life)"),
         Field("fatigue_loading", "choice", "fully_reversed (R = -1, amplitude = peak) or zero_to_max (R = 0, "
               "amplitude = mean = peak/2)", choices=fc.FATIGUE_LOADINGS, default="zero_to_max"),
@@ -209,8 +270,7 @@ FRAME = REGISTRY.register(ComponentType(
     checks=(
         CheckSpec.of(fc.check_frame_stress, lambda c, loads, ctx: fc.check_frame_stress(
             c.results(ctx), required_sf=ctx.required_sf, load_case=ctx.load_case), needs=(LOADS,)),
-        CheckSpec.of(fc.check_frame_deflection, lambda c, loads, ctx: fc.check_frame_deflection(
-            c.results(ctx), c.deflection_limit, span=c.span, load_case=ctx.load_case), needs=(LOADS,)),
+        CheckSpec.of(fc.check_frame_deflection, lambda c, loads, ctx: _deflection(c, ctx), needs=(LOADS,)),
         CheckSpec.of(fc.check_frame_fatigue, lambda c, loads, ctx: fc.check_frame_fatigue(
             c.results(ctx), loading=c.fatigue_loading, life=c.fatigue_life, criterion=c.fatigue_criterion,
             Kf=c.fatigue_kf, required_sf=ctx.required_sf, load_case=ctx.load_case), needs=(LOADS,), default=False),
