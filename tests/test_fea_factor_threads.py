@@ -84,3 +84,36 @@ def test_one_openmp_thread_nests_and_restores() -> None:
             assert lib.omp_get_max_active_levels() == 0
         assert lib.omp_get_max_active_levels() == 0
     assert lib.omp_get_max_active_levels() == before
+
+
+def test_one_openmp_thread_is_per_thread() -> None:
+    """The setting belongs to the calling thread: a block in one thread leaves another thread's setting alone, and
+    blocks in two threads at once each restore their own."""
+    import threading
+
+    from mechverify.fea.factor import _openmp_runtime
+
+    lib = _openmp_runtime()
+    if lib is None:
+        pytest.skip("no OpenMP runtime loaded")
+    seen: dict[str, int] = {}
+    inside, release = threading.Event(), threading.Event()
+
+    def worker() -> None:
+        with one_openmp_thread():
+            seen["worker inside"] = lib.omp_get_max_active_levels()
+            inside.set()
+            release.wait(10)
+        seen["worker after"] = lib.omp_get_max_active_levels()
+
+    before = lib.omp_get_max_active_levels()
+    t = threading.Thread(target=worker)
+    t.start()
+    inside.wait(10)
+    seen["main while worker inside"] = lib.omp_get_max_active_levels()
+    with one_openmp_thread():
+        release.set()
+        t.join(10)
+        seen["main inside"] = lib.omp_get_max_active_levels()
+    assert seen == {"worker inside": 0, "worker after": before, "main while worker inside": before, "main inside": 0}
+    assert lib.omp_get_max_active_levels() == before

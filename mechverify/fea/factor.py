@@ -75,9 +75,7 @@ FACTOR_BYTES_PER_NNZ = 10.0
 SOLVE_SECONDS_PER_NNZ = 1.75e-9
 
 
-_omp_lock = threading.Lock()
-_omp_depth = 0
-_omp_saved: int | None = None
+_omp_state = threading.local()  # per thread: the nesting depth and the saved setting
 
 
 _omp_runtime: list[Any] = []
@@ -103,24 +101,23 @@ def _openmp_runtime() -> Any:
 @contextlib.contextmanager
 def one_openmp_thread() -> Iterator[None]:
     """Run the block with OpenMP parallel regions inactive (``omp_set_max_active_levels(0)``: a region then runs on
-    the calling thread alone, even one that asks for a number of threads), then restore the setting. Re-entrant and
-    safe across threads (set by the first block to enter, restored by the last to leave)."""
-    global _omp_depth, _omp_saved
-    with _omp_lock:
-        if _omp_depth == 0:
-            lib = _openmp_runtime()
-            if lib is not None:
-                _omp_saved = lib.omp_get_max_active_levels()
-                lib.omp_set_max_active_levels(0)
-        _omp_depth += 1
+    the calling thread alone, even one that asks for a number of threads), then restore the setting. The setting is
+    an OpenMP ICV of the calling thread (GNU libgomp 12 and LLVM's runtime: another thread keeps its own, measured),
+    so each thread sets and restores its own; nested blocks restore once, at the outermost."""
+    depth = getattr(_omp_state, "depth", 0)
+    if depth == 0:
+        lib = _openmp_runtime()
+        _omp_state.saved = None if lib is None else lib.omp_get_max_active_levels()
+        if lib is not None:
+            lib.omp_set_max_active_levels(0)
+    _omp_state.depth = depth + 1
     try:
         yield
     finally:
-        with _omp_lock:
-            _omp_depth -= 1
-            if _omp_depth == 0 and _omp_saved is not None:
-                _openmp_runtime().omp_set_max_active_levels(_omp_saved)
-                _omp_saved = None
+        _omp_state.depth -= 1
+        if _omp_state.depth == 0 and _omp_state.saved is not None:
+            _openmp_runtime().omp_set_max_active_levels(_omp_state.saved)
+            _omp_state.saved = None
 
 
 def cholmod_available() -> bool:
