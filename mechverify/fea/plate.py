@@ -58,6 +58,8 @@ except ImportError:  # pragma: no cover - components always ship with mechverify
 #: a cut-out's 10 mm corner: 40.08 MPa at /30 against ~40.5).
 #: The same fraction of a cut-out's corner radius is used on its rounded corners (:func:`ring_arcs`).
 RIM_DIVISIONS = 30.0
+#: The rim's fine size grows to mesh_size over this many mesh_size from the rim (gmsh Threshold field).
+RIM_REACH = 4.0
 
 
 def _circumcircle(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, float] | None:
@@ -199,7 +201,7 @@ def plate_mesh(plate: Any, size: float | None = None, hole_size: float | None = 
         return mesh2d.rectangle(x1 - x0, y1 - y0, nx + nx % 2, ny + ny % 2, (x0, y0))
     other = h / 3 if hole_size is None else hole_size / refine  # curved runs of the outline
     poly, ring_sizes, seg_sizes = mesh_region(plate, h, hole_size, refine)
-    return mesh2d.polygon(poly, h, other, ring_sizes, seg_sizes)
+    return mesh2d.polygon(poly, h, other, ring_sizes, seg_sizes, RIM_REACH)
 
 
 def mesh_sizes(plate: Any, mesh_size: QuantityLike | None = None, hole_mesh_size: QuantityLike | None = None
