@@ -126,8 +126,7 @@ def polygon(region: Any, size: float, hole_size: float | None = None,
         outer, outer_lines = ring(region.exterior.coords)
         inner, hole_lines = [], []
         # (element size, reach, samples per curve) -> curves graded to it; the rims given by ring_sizes and
-        # segment_sizes are polygons of sides about their size long (mechverify.fea.plate.mesh_region): a few samples
-        # per side place the distance field well enough (20 on hundreds of sides took gmsh seconds)
+        # segment_sizes are polygons of sides about their size long (mechverify.fea.plate.mesh_region): RIM_SAMPLING
         by_size: dict[tuple[float, float, int], list[int]] = {}
         reach = rim_reach * size
         for k, interior in enumerate(region.interiors):
