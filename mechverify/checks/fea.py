@@ -96,7 +96,8 @@ def check_solid_stress(res: FieldResults, *, component: str = "", required_sf: f
            rf"({tex_minus(p3, p1, 'MPa')})^{{2}}}}{{2}}}} = "
            rf"{tex(mx.value, 'MPa')}")
     if res.error_estimate is not None:
-        extra.append(f"Zienkiewicz-Zhu relative energy-norm error estimate {100 * float(res.error_estimate):.3g} %")
+        extra.append(f"Zienkiewicz-Zhu relative energy-norm error estimate {100 * float(res.error_estimate):.3g} % "
+                     "(a global figure for the whole model, not the error of the peak)")
     return CheckResult(
         check="solid_stress", component=component, demand=mx.value.to("MPa"), capacity=sy, required_sf=required_sf,
         title="Solid FEA von Mises stress", formula=r"\sigma_{vM,max} \le S_y",

@@ -383,6 +383,25 @@ def two_mesh_stress(result: Any, fine_model: Any, mesh_size: Any, supports: Sequ
     return governing, notes, [w] if w else []
 
 
+def support_peak_warning(model: Any, node: int, supports: Sequence[Any] | None) -> str | None:
+    """A WARN when the peak von Mises stress at ``node`` of ``model`` (a SolidModel) is at or next to a support that
+    holds all three directions (a clamp: :class:`~mechverify.fea.loads.Fixed`), whose edge is singular - the peak
+    grows as the mesh is refined and does not converge (review 4 finding 20: without convergence_check the result
+    said nothing); None otherwise (a symmetry plane or a roller holding some directions, a pin). ``supports`` are the
+    design file's support tables, to name the support as written."""
+    from mechverify.fea.loads import Fixed
+
+    near = model.support_near(int(node))
+    if near is None or not isinstance(model.supports[near], Fixed):
+        return None
+    t = supports[near] if supports and near < len(supports) else {}
+    what = next((f"{k} = {t[k]!r}" for k in ("named", "face", "plane", "box") if isinstance(t, Mapping) and k in t), "")
+    return (f"the peak von Mises stress is at support supports[{near}] ({what}), held in x, y and z: the stress at the "
+            "edge of a rigid support is singular, it grows as the mesh is refined and does not converge, so this peak "
+            "depends on mesh_size; judge the stress away from the support (convergence_check = true shows the "
+            "change), or model the support as it is (a bolt's clamp area, a pin, a restraint of fewer directions)")
+
+
 def convergence_warning(chk: ConvergenceCheck, mesh_size: Any, supports: Sequence[Any] | None,
                         near: int | None) -> str | None:
     """The two-mesh check's warning (None within the tolerance): the element size needed, as a ``mesh_size``
