@@ -65,3 +65,18 @@ def test_an_axial_mode_of_a_beam_is_one_view_along_it():
     panels = _panels(mode_shape_plot(_beam(0, 0)))
     assert len(panels) == 1 and panels[0][:2] == ("x [mm]", "z [mm]")
     assert panels[0][2] == pytest.approx(1000 + 0.12 * 1000)
+
+
+def test_the_undeformed_beam_stays_visible_on_a_grid_line():
+    """Review 4 finding 21: the undeformed beam lies on y = 0, a grid line; drawn light grey and solid like the grid it
+    could not be seen although the legend listed it. It is dashed and darker than the grid."""
+    from matplotlib.colors import to_rgb
+
+    from mechverify.reports.plots.fea import mode_shape_plot
+
+    ax = mode_shape_plot(_beam(0, 1)).axes[0]
+    grid = ax.get_ygridlines()[0]
+    under = [ln for ln in ax.get_lines() if ln.get_color() not in ("#0969da",) and ln not in ax.get_ygridlines()
+             and ln not in ax.get_xgridlines() and len(ln.get_xdata())]
+    assert under and all(ln.get_linestyle() == "--" for ln in under)
+    assert all(sum(to_rgb(ln.get_color())) < sum(to_rgb(grid.get_color())) for ln in under)

@@ -9,6 +9,8 @@ from typing import Any
 from mechverify.checks import CheckResult
 from mechverify.reports.plots import new_figure, plotter
 
+UNDEFORMED = "0.4"  # the undeformed members: dark grey, dashed (the grid is light grey, solid)
+
 
 def _mode_figure(r: CheckResult, label: str) -> Any:
     import numpy as np
@@ -46,10 +48,10 @@ def _mode_figure(r: CheckResult, label: str) -> Any:
     for n, (a, (i, j)) in enumerate(zip(axes, views, strict=True)):
         if lines is not None and len(lines):
             L = np.asarray(lines, dtype=int)
-            for p, q in L:
-                a.plot(P[[p, q], i], P[[p, q], j], color="0.75", lw=1.0)
-                a.plot(D[[p, q], i], D[[p, q], j], color="#0969da", lw=1.5)
-            a.plot([], [], color="0.75", label="undeformed")
+            for p, q in L:  # undeformed dashed and darker than the grid: on a grid line it stayed invisible
+                a.plot(P[[p, q], i], P[[p, q], j], color=UNDEFORMED, lw=1.0, ls="--", zorder=2.5)  # (review 4 #21)
+                a.plot(D[[p, q], i], D[[p, q], j], color="#0969da", lw=1.5, zorder=3)
+            a.plot([], [], color=UNDEFORMED, ls="--", label="undeformed")
             a.plot([], [], color="#0969da", label=label)
         else:
             a.scatter(P[:, i], P[:, j], s=2, color="0.8", label="undeformed", rasterized=True)
