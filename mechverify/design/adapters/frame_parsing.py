@@ -50,6 +50,9 @@ def section_table(t: Any, path: str) -> Section:
     return make(path[:path.rindex(".")], build_section, p)
 
 
+#: Largest ``divisions`` of a member (review 4 finding 14).
+MAX_DIVISIONS = 1000
+
 MEMBER_KEYS = ("name", "start", "end", "section", "material", "orientation", "theory", "divisions", "releases_start",
                "releases_end")
 
@@ -73,6 +76,10 @@ def parse_members(p: dict[str, Any], ctx: dict[str, Any]) -> list[fe.Member]:
         div = t.get("divisions", 1)
         if not isinstance(div, int) or isinstance(div, bool) or div < 1:
             raise InputError(f"{path}.divisions: expected a whole number >= 1, got {div!r}")
+        if div > MAX_DIVISIONS:  # review 4 #14: 1e6 ran a minute into a MemoryError; 80 000 took 6 min and 1.7 GB
+            raise InputError(f"{path}.divisions: at most {MAX_DIVISIONS}, got {div} (the frame element is exact "
+                             "between its nodes for end loads, and a few tens of elements per member resolve any "
+                             "distributed load or mode shape; measured about 20 kB and 4 ms per element)")
         out.append(make(path, fe.Member, where(t["start"], f"{path}.start"), where(t["end"], f"{path}.end"), sec,
                          mat, str(t.get("name", f"M{i + 1}")), orient, t.get("theory"), div, t.get("releases_start"),
                          t.get("releases_end")))
