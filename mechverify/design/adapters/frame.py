@@ -26,6 +26,7 @@ from mechverify.design.adapters.sections import SECTION_ALIASES, SECTION_DIMENSI
 from mechverify.design.spec import REGISTRY, CheckSpec, ComponentType, Field
 from mechverify.errors import InputError, MechverifyError, ModelError
 from mechverify.fea import frame as fe
+from mechverify.fea.frame import spans
 from mechverify.units import Q, fmt
 
 FATIGUE_CRITERIA = ("goodman", "gerber", "soderberg", "asme_elliptic", "morrow")
@@ -50,35 +51,8 @@ class FrameComponent:
     span_given: bool = False
 
     def span_of(self, res: fe.FrameResults) -> tuple[Any, str]:
-        """(span, how it was found) for a fractional deflection limit in one load case's results ``res``: the
-        ``span`` field; on a straight beam (members and supports on one line) the span that holds the point of
-        largest deflection - between the two supports around it, or an overhang beyond the last one (review 4
-        finding 15: a two-span continuous beam took its whole length); else the largest distance from a support to
-        a member end."""
-        if self.span_given:
-            return self.span, "the 'span' field"
-        line = _line(self.frame)
-        if line is None:
-            n = len(self.frame.supports)
-            more = (f"; with {n} supports the span a limit means may be shorter: give span" if n > 2 else "")
-            return self.span, f"the largest distance from a support to a member end ({self.span:.4g~P}){more}"
-        o, d, ts, lo, hi = line
-        t = float((res.max_displacement.location.m_as("m") - o) @ d)
-        tol = 1e-9 * (hi - lo)
-        left, right = [s for s in ts if s <= t + tol], [s for s in ts if s >= t - tol]
-        if left and right and min(right) - max(left) > tol:
-            a, b = max(left), min(right)
-            how = "between the supports"
-        elif left and right:  # the largest deflection at a support (it moves): the longer span next to it
-            nxt = [(x, y) for x, y in zip(ts, ts[1:], strict=False) if x - tol <= t <= y + tol and y - x > tol]
-            a, b = max(nxt or [(lo, hi)], key=lambda ab: ab[1] - ab[0])
-            how = "between the supports"
-        else:
-            a, b = (hi, max(ts)) if left else (lo, min(ts))
-            a, b = min(a, b), max(a, b)
-            how = "of the overhang beyond the last support"
-        span = Q((b - a) * 1e3, "mm")
-        return span, f"span {span.m:.4g} mm {how} (the straight beam's span holding the largest deflection)"
+        """(span, how it was found) of a fractional deflection limit in one load case (:func:`spans.span_of`)."""
+        return spans.span_of(self.frame, res, self.span, self.span_given)
 
     def results(self, ctx: Any) -> fe.FrameResults:
         """The results of ``ctx.load_case``; the first call solves every case and combination of this frame."""
@@ -136,27 +110,6 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> FrameComponent:
                           frame_parsing.point_masses(p), span_given=p.get("span") is not None)
 
 
-def _line(frame: fe.Frame) -> tuple[Any, Any, list[float], float, float] | None:
-    """(origin, unit direction, the supports' positions along it sorted, the members' extent lo, hi) [m] when every
-    member end and support lies on one straight line (a beam, continuous or not); else None."""
-    pts = np.array([p for e in frame.ends for p in e], float)
-    if len(pts) < 2 or not frame.supports:
-        return None
-    o = pts[0]
-    far = pts[int(np.argmax(np.linalg.norm(pts - o, axis=1)))]
-    length = float(np.linalg.norm(far - o))
-    if length == 0:
-        return None
-    d = (far - o) / length
-    sup = np.array([frame.point(s.at) for s in frame.supports], float)
-    every = np.vstack([pts, sup])
-    rel = every - o
-    if np.max(np.linalg.norm(rel - np.outer(rel @ d, d), axis=1)) > 1e-6 * length:
-        return None
-    t = pts @ d - o @ d
-    return o, d, sorted(float(x) for x in (sup - o) @ d), float(t.min()), float(t.max())
-
-
 def _reach(frame: fe.Frame) -> float:
     """The largest distance from a support to any member end [m] (the default span of the deflection limit)."""
     pts = [p for e in frame.ends + frame.spring_ends for p in e]
@@ -168,7 +121,12 @@ def _reach(frame: fe.Frame) -> float:
 def _deflection(c: FrameComponent, ctx: Any) -> CheckResult:
     res = c.results(ctx)
     span, how = c.span_of(res)
-    return fc.check_frame_deflection(res, c.deflection_limit, span=span, load_case=ctx.load_case, span_rule=how)
+    r = fc.check_frame_deflection(res, c.deflection_limit, span=span, load_case=ctx.load_case, span_rule=how)
+    note, warn = spans.moving_supports(c.frame, res)
+    return r.replace(notes=(*r.notes, note), warnings=(*r.warnings, warn)) if warn else \
+        r.replace(notes=(*r.notes, note)) if note else r
+
+
 
 
 def _frequency(c: FrameComponent, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
