@@ -181,6 +181,8 @@ def _build(p: dict[str, Any], ctx: Any) -> SolidStudy:
         from mechverify.design.parameters import substitute  # "300, 10, t": parameters in the block's size
 
         p["box"] = substitute(p["box"], f"components.{p['_name']}.box", ctx)
+    if isinstance(p.get("supports"), list) and isinstance(ctx, Mapping) and ctx.get("parameters"):
+        p["supports"] = sp.substitute_planes(p["supports"], f"components.{p['_name']}.supports", ctx)
     if isinstance(p.get("outline"), list) and isinstance(ctx, Mapping) and ctx.get("parameters"):
         from mechverify.design.parameters import substitute  # "L, 0": parameters in the corners
 

@@ -13,7 +13,7 @@ import tempfile
 from collections.abc import Iterator, Mapping
 from typing import Any
 
-from mechverify.errors import InputError, suggest
+from mechverify.errors import InputError, MechverifyError, suggest
 from mechverify.units import Q, as_quantity
 
 
@@ -79,10 +79,24 @@ def _region(t: Any, unit: str, path: str) -> Any:
     if k == "face":
         return Named(face_name(t["face"], f"{path}.face"))
     if k == "plane":
-        axis, _, val = str(t["plane"]).partition("=")
-        if axis.strip() not in ("x", "y", "z") or not val.strip():
-            raise InputError(f"{path}.plane: expected \"x = value\" (or y, z), got {t['plane']!r}")
-        return Plane(**{axis.strip(): Q(_num(val, unit, "length", f"{path}.plane"), "m")})
+        pl = t["plane"]
+        if isinstance(pl, Mapping):  # plane = { x = "L" }: a table, whose value may use [parameters]
+            if len(pl) != 1 or next(iter(pl)) not in ("x", "y", "z"):
+                raise InputError(f"{path}.plane: expected one of x, y, z as {{ x = \"L\" }}, got {pl!r}")
+            axis, val = next(iter(pl.items()))
+        else:
+            axis, _, val = str(pl).partition("=")
+            axis = axis.strip()
+            if axis not in ("x", "y", "z") or not val.strip():
+                raise InputError(f"{path}.plane: expected \"x = value\" (or y, z), got {pl!r}")
+        try:
+            at = _num(val, unit, "length", f"{path}.plane")
+        except MechverifyError as exc:
+            if not isinstance(val, str) or not any(ch.isalpha() for ch in val):
+                raise
+            raise InputError(f"{exc}; a plane written as text takes numbers or lengths only: for a parameter write "
+                             f"plane = {{ {axis} = \"{val.strip()}\" }}") from None
+        return Plane(**{axis: Q(at, "m")})
     b = t["box"]
     if not (isinstance(b, list) and len(b) == 2):
         raise InputError(f"{path}.box: expected two corners [\"x0, y0, z0\", \"x1, y1, z1\"], got {b!r}")
@@ -233,6 +247,26 @@ def pin_regions(model: Any, items: Any) -> None:
         i = int(m.group(2)) - 1 if m else 0
         key = "pin" if not m or m.group(1) == "Pin" else "hold"
         raise InputError(f"supports[{i}].{key}: {exc}") from None
+
+
+def substitute_planes(items: Any, path: str, ctx: Any) -> Any:
+    """The region tables ``items`` (``supports``) with [parameters] substituted in their ``plane`` and ``box`` values
+    (``plane = "x = L"``, ``plane = { x = "L" }``, ``box = ["L, 0, 0", ...]``; review 4 finding 24); other keys as
+    written."""
+    from mechverify.design.parameters import substitute
+
+    out = []
+    for i, t in enumerate(items or []):
+        if isinstance(t, Mapping):
+            t = dict(t)
+            if isinstance(t.get("plane"), str) and "=" in t["plane"]:
+                axis, _, val = t["plane"].partition("=")
+                t["plane"] = f"{axis.strip()} = {substitute(val.strip(), f'{path}[{i}].plane', ctx)}"
+            elif isinstance(t.get("plane"), Mapping) or "box" in t:
+                key = "plane" if "plane" in t else "box"
+                t[key] = substitute(t[key], f"{path}[{i}].{key}", ctx)
+        out.append(t)
+    return out
 
 
 def clamp_notes(items: Any) -> tuple[str, ...]:
