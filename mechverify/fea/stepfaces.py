@@ -1,6 +1,7 @@
 """The faces of a STEP file as :func:`mechverify.fea.mesh.from_step` names them (``face<k>``), described so that a
 user can tell which is which (review 3 finding 24): surface type, centroid, area, the normal of a plane, the axis
 and radius of a cylinder. ``mechverify faces part.step`` prints them; solid_fea's unknown-region error lists them.
+The faces of an STL file (gmsh's classification, as solid_fea meshes it) likewise (:func:`stl_faces`).
 
 gmsh/OpenCASCADE reads the file (an optional extra, as for meshing); several solids are bonded first
 (:func:`mechverify.fea.mesh.bond_solids`), so the ids are those the mesh uses.
@@ -108,6 +109,54 @@ def _face(gmsh: object, name: str, tags: list[int], inside: bool = False) -> Ste
     return StepFace(name, kind, centroid, area, normal, axis, radius, inside)
 
 
-def describe_faces(path: str | Path) -> str:
-    """One line per face of the STEP file (:meth:`StepFace.describe`)."""
-    return "\n".join(f.describe() for f in step_faces(path))
+def stl_faces(path: str | Path, unit: str = "mm") -> list[StepFace]:
+    """The faces of the STL file ``path`` as :func:`mechverify.fea.mesh.from_stl` names them (``face<k>``: gmsh's
+    classification where neighbouring triangles meet at more than :data:`~mechverify.fea.mesh.STL_FACE_ANGLE`
+    degrees, in gmsh's order), from the file's own triangles (lengths in metres; the coordinates in ``unit``): a face
+    whose triangles share one normal is a ``Plane``, another a ``Faceted`` surface (review 4 finding 23)."""
+    import math
+
+    import trimesh
+
+    from mechverify.fea.mesh import STL_FACE_ANGLE, gmsh_session, import_gmsh, stl_properties
+    from mechverify.units import Q
+
+    stl_properties(path, unit)  # a missing file, not an STL, no triangles: named
+    tm = trimesh.load(Path(path), force="mesh")
+    tm.apply_scale(Q(1, unit).m_as("m"))
+    tm.merge_vertices()
+    gmsh = import_gmsh()
+    gmsh_session(gmsh, 1.0)
+    try:
+        surf = gmsh.model.addDiscreteEntity(2)
+        gmsh.model.mesh.addNodes(2, surf, np.arange(1, len(tm.vertices) + 1), np.asarray(tm.vertices, float).ravel())
+        gmsh.model.mesh.addElementsByType(surf, 2, [], (np.asarray(tm.faces, np.int64) + 1).ravel())
+        gmsh.model.mesh.classifySurfaces(math.radians(STL_FACE_ANGLE), True, True, math.pi)
+        gmsh.model.mesh.createGeometry()
+        out = []
+        for k, (_, tag) in enumerate(gmsh.model.getEntities(2), 1):
+            _, tris = gmsh.model.mesh.getElementsByType(2, tag)
+            ntags, xyz, _ = gmsh.model.mesh.getNodes(2, tag, includeBoundary=True)
+            where = {int(t): i for i, t in enumerate(ntags)}
+            X = np.asarray(xyz, float).reshape(-1, 3)[[where[int(t)] for t in tris]].reshape(-1, 3, 3)
+            cross = np.cross(X[:, 1] - X[:, 0], X[:, 2] - X[:, 0])
+            areas = np.linalg.norm(cross, axis=1) / 2
+            area = float(areas.sum())
+            centroid = tuple(float(v) for v in (areas @ X.mean(axis=1)) / max(area, 1e-300))
+            normals = cross / np.maximum(np.linalg.norm(cross, axis=1), 1e-300)[:, None]
+            mean = areas @ normals
+            mean = mean / max(float(np.linalg.norm(mean)), 1e-300)
+            flat = bool(np.all(normals @ mean > 1 - 1e-9))
+            out.append(StepFace(f"face{k}", "Plane" if flat else "Faceted", centroid, area,
+                                tuple(float(v) + 0.0 for v in np.round(mean, 12)) if flat else None))
+        return out
+    except Exception as exc:  # gmsh raises a bare Exception with its log message
+        raise InputError(f"{Path(path).name}: gmsh could not classify the STL surface into faces ({exc})") from None
+    finally:
+        gmsh.finalize()
+
+
+def describe_faces(path: str | Path, unit: str = "mm") -> str:
+    """One line per face of the STEP or STL file (:meth:`StepFace.describe`; ``unit``: an STL file's coordinates)."""
+    faces = stl_faces(path, unit) if Path(path).suffix.lower() == ".stl" else step_faces(path)
+    return "\n".join(f.describe() for f in faces)

@@ -110,17 +110,18 @@ class SolidStudy:
         return model
 
     def with_faces(self, exc: InputError) -> InputError:
-        """``exc`` with the STEP file's faces listed when it names an unknown mesh region (``face = 99``), else
+        """``exc`` with the STEP or STL file's faces listed when it names an unknown mesh region (``face = 99``), else
         ``exc``: the same text from every analysis (stress of a load case, natural frequency), so the design file
         reports it once, at its key."""
-        if "unknown mesh region" not in str(exc) or "step" not in self.p:
+        key = "step" if "step" in self.p else "stl" if "stl" in self.p else None
+        if "unknown mesh region" not in str(exc) or key is None:
             return exc
         from pathlib import Path
 
         from mechverify.fea.stepfaces import describe_faces
 
-        return InputError(f"{exc}. The faces of {Path(self.p['step']).name} (`mechverify faces` lists them):\n"
-                          + "\n".join(f"    {ln}" for ln in describe_faces(self.p["step"]).splitlines()))
+        return InputError(f"{exc}. The faces of {Path(self.p[key]).name} (`mechverify faces` lists them):\n"
+                          + "\n".join(f"    {ln}" for ln in describe_faces(self.p[key], self.unit).splitlines()))
 
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
     def solve(self, loads: Mapping[str, Any], case: str, g: Any) -> Any:
