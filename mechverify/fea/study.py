@@ -78,10 +78,12 @@ class SharedSolve:
     held: np.ndarray
     method: str
     _apply: Callable[[np.ndarray], np.ndarray]
-    _Kff: sp.csr_matrix
+    _Kff: sp.csr_matrix | None  # CG's matrix, and a factorisation's when it was made from the full K[free][:, free]
     _free: np.ndarray
     setup_seconds: float
     rtol: float = 1e-10
+    _lower: sp.csc_matrix | None = None  # else the factorisation's lower triangle of K[free][:, free][perm][:, perm]
+    _perm: np.ndarray | None = None
 
     @classmethod
     @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
@@ -89,13 +91,22 @@ class SharedSolve:
         """Assemble and factor the stiffness of ``model`` (a SolidModel or PlaneModel) once. ``method="auto"``: a
         factorisation up to :data:`ITERATIVE_THRESHOLD_3D` unknowns (and in 2D); above, with CHOLMOD installed, the
         cheaper of a factorisation and multigrid CG for ``cases`` load cases by the cost model of
-        :func:`mechverify.fea.linsolve.choose_solver` (the more cases, the more a factorisation pays)."""
-        from mechverify.fea.modal import stiffness_matrix
+        :func:`mechverify.fea.linsolve.choose_solver` (the more cases, the more a factorisation pays).
 
+        As :func:`mechverify.fea.linsolve.solve` (task solve2, issue 23): a solid's stiffness is summed a chunk of
+        elements at a time (``SolidModel._stiffness``: at 121k curved DOF 0.55 s against 1.13 s for all element blocks
+        at once), the choice is made on the node graph (:func:`mechverify.fea.assembly.node_graph`) and a factorisation
+        chosen there reads only the lower triangle of the permuted ``K[free][:, free]`` from ``K``
+        (:func:`~mechverify.fea.assembly.free_lower_permuted`, :func:`~mechverify.fea.factor.factorize_lower`: the
+        same factor bit for bit, without the full free matrix and its permuted copy). CG and the small systems below
+        the threshold keep ``K[free][:, free]``."""
+        from mechverify.fea.assembly import free_lower_permuted, free_submatrix, held_rows, node_graph
+        from mechverify.fea.factor import factorize_lower
+
+        if method not in ("auto", "direct", "amg"):
+            raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
         t0 = time.perf_counter()
-        from mechverify.fea.assembly import free_submatrix, held_rows
-
-        K = stiffness_matrix(model)
+        K = _stiffness(model)
         basis = getattr(model, "dof_basis", None)  # pin supports: K and the held DOFs in the pins' axes (fea.pins)
         if basis is not None:
             K, held = basis.rotate(K), np.unique(model.held_in_axes()[0])
@@ -106,24 +117,42 @@ class SharedSolve:
         mask = np.ones(K.shape[0], bool)
         mask[held] = False
         free = np.flatnonzero(mask)
-        Kff = free_submatrix(K, mask)  # no CSR copy of K on the way (issue 23)
-        K = held_rows(K, held)  # all the reactions need
         dim = model.nodes.shape[0]
         cost = None
         if method == "auto":
             method = "amg" if dim == 3 and free.size > ITERATIVE_THRESHOLD_3D else "direct"
             if method == "amg" and cholmod_available():
-                choice, cost = choose_solver(Kff, cases=max(int(cases), 1))
+                graph, groups, nnz = node_graph(K, mask)  # the choice before any scalar matrix (as linsolve.solve)
+                choice, cost = choose_solver(None, cases=max(int(cases), 1), groups=groups, graph=graph, nnz=nnz)
                 method = choice.method
+                del graph
+        Kr = held_rows(K, held)  # all the reactions need
+        if method == "direct" and cost is not None:
+            lower = free_lower_permuted(K, mask, cost.perm)
+            del K  # the full K (0.7 kB/DOF) goes before the factorisation, the peak of a direct solve
+            apply = factorize_lower(lower, cost).solve
+            return cls(Kr, held, method, apply, None, free, time.perf_counter() - t0, _lower=lower, _perm=cost.perm)
+        Kff = free_submatrix(K, mask)  # no CSR copy of K on the way (issue 23)
+        del K
         if method == "direct":
             apply = factorize(Kff, "auto", symbolic=cost).solve  # CHOLMOD when installed, else SuperLU
-        elif method == "amg":
+        else:
             m = model.mesh.mesh
             P = p1_prolongation(m.nvertices, m.edges, 3)
             apply = pmg_preconditioner(Kff, model.nodes, free, 3, P if basis is None else basis.prolongation(P))
+        return cls(Kr, held, method, apply, Kff, free, time.perf_counter() - t0)
+
+    def _residual(self, X: np.ndarray, R: np.ndarray) -> float:
+        """``|K_ff X - R| / |R|`` (Frobenius norms); from the lower triangle L of the permuted matrix when that is what
+        was factored: ``A x = L x + Lᵀ x - diag(A) x`` in the permuted order."""
+        if self._Kff is not None:
+            r = self._Kff @ X - R
         else:
-            raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
-        return cls(K, held, method, apply, Kff, free, time.perf_counter() - t0)
+            L, p = self._lower, self._perm
+            Xp = X[p]
+            d = L.diagonal()
+            r = L @ Xp + L.T @ Xp - (d[:, None] if Xp.ndim == 2 else d) * Xp - R[p]
+        return float(np.linalg.norm(r) / max(np.linalg.norm(R), 1e-300))
 
     @reproducible
     def solve_many(self, F: np.ndarray) -> tuple[np.ndarray, SolveInfo]:
@@ -146,7 +175,7 @@ class SharedSolve:
                     iters = max(iters, it)
         U = np.zeros_like(F)
         U[self._free] = X
-        res = float(np.linalg.norm(self._Kff @ X - R) / max(np.linalg.norm(R), 1e-300))
+        res = self._residual(X, R)
         return U, SolveInfo(f"{self.method} (shared, block of {F.shape[1]})", int(self._free.size), iters, res,
                             time.perf_counter() - t0)
 
@@ -164,8 +193,25 @@ class SharedSolve:
                 x, iters = pcg(self._Kff, rhs, self._apply, self.rtol)
         u = np.zeros(self.K.shape[0])
         u[self._free] = x
-        res = float(np.linalg.norm(self._Kff @ x - rhs) / max(np.linalg.norm(rhs), 1e-300))
+        res = self._residual(x, rhs)
         return u, SolveInfo(f"{self.method} (shared)", int(self._free.size), iters, res, time.perf_counter() - t0)
+
+
+def _stiffness(model: Any) -> sp.bsr_matrix:
+    """The stiffness of a SolidModel as its own solve assembles it (``SolidModel._stiffness``: straight elements a few
+    node pairs at a time, curved ones a chunk of elements at a time), of a PlaneModel by
+    :func:`mechverify.fea.modal.stiffness_matrix`."""
+    from mechverify.fea.solid import SolidModel
+
+    if isinstance(model, SolidModel):
+        from mechverify.fea import assembly as asm
+
+        lam, mu = asm.lame(model.material.E.m_as("Pa"), model.material.nu.m_as(""))
+        b = model.mesh.basis
+        return model._stiffness(asm.block_pattern(b.element_dofs, b.N), lam, mu)[0]
+    from mechverify.fea.modal import stiffness_matrix
+
+    return stiffness_matrix(model)
 
 
 def solve_cases(model: Any, load_cases: Sequence[Sequence[Any]], method: str = "auto", **kw: Any) -> list[Any]:
