@@ -290,3 +290,37 @@ def test_a_memory_size_without_a_unit_is_refused(size, capsys):
     err = capsys.readouterr().err
     assert rc == 2 and "memory size such as '2 GB'" in err and "GB per sample" not in err, err
     assert ex.default_workers("512 MiB") >= 1 and ex.default_workers("2 kbit") >= 1
+
+
+SOLID = {
+    "design": {"name": "solid cantilever"},
+    "parameters": {"P": "100 N"},
+    "components": {"bar": {"type": "solid_fea", "box": "200, 10, 10", "mesh_size": "5 mm",
+                           "material": "Structural Steel", "supports": [{"named": "xmin"}],
+                           "deflection_limit": "2 mm"}},
+    "load_cases": {"tip": {"bar": {"forces": [{"named": "xmax", "force": "0, 0, -P"}]}}},
+}
+
+
+def test_an_fe_study_sizes_its_local_workers_by_a_measured_sample(monkeypatch):
+    """Issue 19: "FEA studies size workers by memory". Without --memory-per-worker, a study of a design with FE
+    components measures one verify of its base design in a fresh process (the interpreter's resident memory
+    before, the peak after) and gives the pool no more workers than the available memory holds for
+    interpreter + twice the FE part (a worker keeps its last model's factorisation while building the next).
+    Oracles: a design without FE components is not measured; the measured figure lies between the bare
+    interpreter with numpy/scipy (> 50 MB) and 2 GB for this 3k-DOF bar; a sample said to need more than the
+    machine has leaves one worker (it had one per core before)."""
+    if ex.default_workers() < 2:
+        pytest.skip("one core: one worker whatever the memory")
+    assert ex.fe_memory_per_worker({"components": {"s": {"type": "compression_spring"}}}, None) is None
+    per = ex.measured_sample_memory(SOLID, None)
+    assert per is not None and 50e6 < per < 2e9
+    seen = []
+    monkeypatch.setattr(ex, "measured_sample_memory", lambda doc, path: 1e18)
+    real = ex.run_batches
+    monkeypatch.setattr(ex, "run_batches", lambda *a, **k: seen.append(k["workers"]) or real(*a, **k))
+    Study(SOLID, vary={"parameters.P": "100 N:200 N:2"}).run(check_inputs=False)
+    assert seen == [1]
+    seen.clear()
+    Study(SOLID, vary={"parameters.P": "100 N:200 N:2"}).run(check_inputs=False, memory_per_worker="1 MB")
+    assert seen == [ex.default_workers()]  # a size the user gives is not measured again

@@ -119,12 +119,18 @@ def run(args: argparse.Namespace) -> int:
         from mechverify.studies import execution
 
         try:
-            if args.memory_per_worker is not None:
-                n = args.workers or execution.default_workers(args.memory_per_worker)
+            memory = args.memory_per_worker
+            if memory is None and not args.serial and not args.workers:  # an FE study: measured (issue 19)
+                memory = execution.fe_memory_per_worker(study.doc, study.path)
+                if memory is not None and not args.quiet:
+                    _note("a sample's memory measured on the base design in a fresh process (a worker may hold "
+                          "two FE models: the last one's factorisation and the next)")
+            if memory is not None:
+                n = args.workers or execution.default_workers(memory)
                 if not args.quiet:
-                    _note(execution.memory_note(args.memory_per_worker, n))
+                    _note(execution.memory_note(memory, n))
             result = study.run("serial" if args.serial else None, workers=args.workers,
-                               memory_per_worker=args.memory_per_worker, progress=progress)
+                               memory_per_worker=memory, progress=progress)
         except InputError as exc:
             raise _as_option(exc) from None
     text = result.summary()

@@ -88,9 +88,7 @@ def build_base_before_fork(doc: Mapping[str, Any], path: str | None) -> None:
     design that fails is left to the samples to report."""
     import multiprocessing
 
-    comps = doc.get("components")
-    types = {t.get("type") for t in comps.values() if isinstance(t, Mapping)} if isinstance(comps, Mapping) else set()
-    if types & NATIVE_THREAD_TYPES or doc.get("templates"):  # (a template may give the type)
+    if fe_component_types(doc) or doc.get("templates"):  # (a template may give the type)
         return
     if multiprocessing.get_start_method(allow_none=False) != "fork" or not fork_is_safe():  # (process_pool spawns)
         return
@@ -169,6 +167,51 @@ def default_workers(memory_per_worker: Any = None) -> int:
         if avail is not None:
             n = max(1, min(n, int(avail // per)))
     return n
+
+
+def fe_component_types(doc: Mapping[str, Any]) -> set[str]:
+    """The FE component types (:data:`NATIVE_THREAD_TYPES`) the design file's components declare."""
+    comps = doc.get("components")
+    if not isinstance(comps, Mapping):
+        return set()
+    return {t.get("type") for t in comps.values() if isinstance(t, Mapping)} & NATIVE_THREAD_TYPES
+
+
+def _base_peak(doc: Mapping[str, Any], path: str | None) -> tuple[float, float]:
+    """(In a fresh worker process) its resident memory before and its peak after one verify of the base design
+    [bytes] (Linux: ru_maxrss in kB)."""
+    import resource
+
+    def peak() -> float:
+        return float(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss) * 1024
+
+    from mechverify.design import adapters  # noqa: F401  (the imports a worker has before its first sample)
+    before = peak()
+    _base_design(doc, path)
+    return before, peak()
+
+
+def measured_sample_memory(doc: Mapping[str, Any], path: str | None) -> float | None:
+    """Memory a local worker of an FE study needs [bytes], measured: the base design verified once in a fresh
+    process, as a worker starts. A worker keeps its last FE model's mesh and factorisation (fea.factorcache)
+    while it builds the next one's, so it may hold the FE part twice: interpreter + 2 x (peak - interpreter).
+    None where the peak cannot be read (not Linux) or the measuring process fails."""
+    try:
+        with cf.ProcessPoolExecutor(1, mp_context=MainlessSpawnContext(), initializer=one_blas_thread) as ex:
+            before, after = ex.submit(_base_peak, dict(doc), path).result()
+    except Exception:  # (the samples report a design that fails; a platform without ru_maxrss: no sizing)
+        return None
+    return after + max(after - before, 0.0) if after > 0 else None
+
+
+def fe_memory_per_worker(doc: Mapping[str, Any], path: str | None) -> str | None:
+    """``memory_per_worker`` for a local pool running an FE study (issue 19: "FEA studies size workers by memory"):
+    :func:`measured_sample_memory` as text ("412000000 byte"), or None for a design without FE components, on a
+    single core (one worker either way) or where it cannot be measured."""
+    if not fe_component_types(doc) or default_workers() < 2:
+        return None
+    per = measured_sample_memory(doc, path)
+    return None if per is None else f"{per:.0f} byte"
 
 
 def memory_note(memory_per_worker: Any, workers: int) -> str:

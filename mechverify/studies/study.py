@@ -573,7 +573,9 @@ class Study:
             progress: bool | Any = False, retries: int = 1, check_inputs: bool = True) -> StudyResult:
         """Evaluate every sample. ``executor``: any :class:`concurrent.futures.Executor` (default: a local
         process pool with one worker per core, or fewer when ``memory_per_worker``, e.g. ``"2 GB"`` for an
-        FEA model, times the workers would exceed the available memory; ``"serial"``: in this process).
+        FEA model, times the workers would exceed the available memory - for a design with FE components it is
+        measured when not given: :func:`~mechverify.studies.execution.fe_memory_per_worker`; ``"serial"``: in
+        this process).
         ``progress``: True for a rich progress bar on the console, or a callable taking the number of
         samples just finished. ``check_inputs``: first look for varied inputs that reach no check
         (:func:`mechverify.studies.inert.inert_inputs`: the dependency graph, then one probe evaluation per
@@ -594,6 +596,8 @@ class Study:
             executor = execution.SerialExecutor()
         elif executor is None:
             execution.build_base_before_fork(self.doc, self.path)
+            if memory_per_worker is None and workers is None:  # an FE study: a sample's memory measured once
+                memory_per_worker = execution.fe_memory_per_worker(self.doc, self.path)
         n_workers = workers or execution.default_workers(memory_per_worker)
         sizes = [self.batch_size] * math.ceil(len(ovs) / self.batch_size) if self.batch_size else \
             batch_sizes(len(ovs), n_workers)
