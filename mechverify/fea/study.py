@@ -332,7 +332,7 @@ def step_volume(path: str | Path) -> float:
 def step_size(path: str | Path) -> tuple[float, float]:
     """Total volume [m³] and surface area [m²] of the solids in a STEP file (:func:`step_volume`)."""
     from mechverify.fea.gmshstate import restore_step_unit
-    from mechverify.fea.mesh import import_gmsh, initialize_gmsh
+    from mechverify.fea.mesh import import_gmsh, import_step_solids, initialize_gmsh
 
     path = Path(path)
     if not path.exists():
@@ -341,15 +341,7 @@ def step_size(path: str | Path) -> tuple[float, float]:
     initialize_gmsh(gmsh)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.option.setString("Geometry.OCCTargetUnit", "M")
-        try:
-            ents = gmsh.model.occ.importShapes(str(path))
-        except Exception as exc:
-            raise ModelError(f"{path.name}: gmsh could not read the STEP file ({exc})") from None
-        gmsh.model.occ.synchronize()
-        vols = [t for d, t in ents if d == 3]
-        if not vols:
-            raise ModelError(f"{path.name}: the STEP file holds no solid (only surfaces or curves)")
+        vols = import_step_solids(gmsh, path)
         faces = {t for v in vols for _, t in gmsh.model.getBoundary([(3, v)], oriented=False)}
         return (float(sum(gmsh.model.occ.getMass(3, t) for t in vols)),
                 float(sum(gmsh.model.occ.getMass(2, t) for t in faces)))
