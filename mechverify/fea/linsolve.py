@@ -218,15 +218,20 @@ def plain_basis(free: np.ndarray, tol: float = 1e-6) -> np.ndarray:
     return np.column_stack([*picked, *u[:, :k - len(picked)].T])
 
 
-def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarray | None = None) -> None:
+def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarray | None = None,
+                    axes: np.ndarray | None = None, hint: str = "") -> None:
     """Raise :class:`ModelError` naming every rigid motion the held DOFs do not prevent.
 
     ``held`` are node-interleaved DOF indices held at prescribed values; a rigid motion is free
-    when it moves none of them (the restricted mode matrix has a null vector).
+    when it moves none of them (the restricted mode matrix has a null vector). ``axes[n, 3, 3]``: each node's
+    DOF axes when they are not x, y, z (pin supports, :mod:`mechverify.fea.pins`); ``hint`` ends the message.
     """
     B, names = rigid_modes(points)
+    if axes is not None:
+        n = points.shape[1]
+        B = np.einsum("nji,njc->nic", axes, B.reshape(n, 3, -1)).reshape(B.shape)
     dofs = held if spring_dofs is None else np.union1d(held, spring_dofs)
-    Bc = B[dofs]
+    Bc = B[np.asarray(dofs, dtype=np.int64)]
     G = Bc.T @ Bc
     w, V = np.linalg.eigh(G)
     tol = 1e-10 * max(float(np.trace(B.T @ B)) / B.shape[1], 1.0)
@@ -238,7 +243,7 @@ def check_supported(points: np.ndarray, held: np.ndarray, spring_dofs: np.ndarra
         free = plain_basis(free)
         motions = [describe_mode(free[:, k], names, c, scale) for k in range(free.shape[1])]
         raise ModelError("the model is not fully supported: the supports leave free "
-                         + "; ".join(motions) + ". Add a support that prevents this motion.")
+                         + "; ".join(motions) + f". Add a support that prevents this motion{hint}.")
 
 
 @dataclass(frozen=True)

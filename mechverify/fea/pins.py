@@ -39,7 +39,7 @@ from typing import Any
 import numpy as np
 import scipy.sparse as sp
 
-from mechverify.errors import InputError, ModelError
+from mechverify.errors import InputError
 
 #: A pin's wall must lie within this fraction of its fitted radius of a cylinder (its vertices: a mesh of a true
 #: cylinder puts them on it to round-off; a cone's or a sphere's miss any cylinder by far more). The facet normals
@@ -281,23 +281,8 @@ def _block_diag(R: np.ndarray) -> sp.csr_matrix:
 
 def check_supported(points: np.ndarray, held: np.ndarray, R: np.ndarray | None = None) -> None:
     """Raise :class:`ModelError` naming every rigid motion that the DOFs ``held`` (in the node axes ``R[n, 3, 3]``;
-    None: x, y, z) do not prevent (as :func:`mechverify.fea.linsolve.check_supported`)."""
-    from mechverify.fea.linsolve import describe_mode, plain_basis, rigid_modes
+    None: x, y, z) do not prevent (:func:`mechverify.fea.linsolve.check_supported` with the pins' axes)."""
+    from mechverify.fea.linsolve import check_supported as check
 
-    B, names = rigid_modes(points)
-    if R is not None:
-        n = points.shape[1]
-        B = np.einsum("nji,njc->nic", R, B.reshape(n, 3, -1)).reshape(B.shape)
-    Bc = B[np.asarray(held, dtype=np.int64)]
-    w, V = np.linalg.eigh(Bc.T @ Bc)
-    tol = 1e-10 * max(float(np.trace(B.T @ B)) / B.shape[1], 1.0)
-    free = V[:, w <= tol]
-    if free.shape[1]:
-        c = points.mean(axis=1)
-        scale = max(float(np.max(np.ptp(points, axis=1))), 1e-300)
-        free = plain_basis(free)
-        motions = [describe_mode(free[:, k], names, c, scale) for k in range(free.shape[1])]
-        pin = (" (a pin leaves the rotation about its axis and, without axial = true, the slide along it free)"
-               if R is not None else "")
-        raise ModelError("the model is not fully supported: the supports leave free " + "; ".join(motions)
-                         + f". Add a support that prevents this motion{pin}.")
+    check(points, held, axes=R, hint=" (a pin leaves the rotation about its axis and, without axial = true, the "
+                                     "slide along it free)" if R is not None else "")
