@@ -13,7 +13,8 @@ knows is kept in ``SolidMesh.measures`` for the region reports.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 from pathlib import Path
@@ -498,17 +499,7 @@ def block_with_holes(size: Any, holes: Any = (), mesh_size: QuantityLike = "5 mm
                 k = int(np.argmin([np.hypot(com[0] - cx, com[1] - cy) for cx, cy, _ in hs]))
                 name = f"hole{k}"
             groups.setdefault(name, []).append(tag)
-        for name, tags in groups.items():
-            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
-        gmsh.model.addPhysicalGroup(3, [vol])
-        hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
-        if hole_faces and hh < h:
-            refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
-            gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
-        gmsh.model.mesh.generate(3)
-        if curved and hs:
-            second_order(gmsh)
-        return from_gmsh_model(gmsh)
+        return _mesh_named_solid(gmsh, vol, groups, h, hh, curved and bool(hs))
     finally:
         gmsh.finalize()
 
@@ -611,17 +602,7 @@ def extruded_polygon(outline: Any, thickness: QuantityLike, mesh_size: QuantityL
                 k = int(np.argmin(ds))
                 name = f"side{k}" if not dh or ds[k] <= min(dh) else f"hole{int(np.argmin(dh))}"
             groups.setdefault(name, []).append(tag)
-        for name, tags in groups.items():
-            gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
-        gmsh.model.addPhysicalGroup(3, [vol])
-        hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
-        if hole_faces and hh < h:
-            refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
-            gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
-        gmsh.model.mesh.generate(3)
-        if curved and hs:
-            second_order(gmsh)
-        return from_gmsh_model(gmsh)
+        return _mesh_named_solid(gmsh, vol, groups, h, hh, curved and bool(hs))
     finally:
         gmsh.finalize()
 
@@ -654,6 +635,42 @@ def bond_solids(gmsh: Any, vols: list[int]) -> tuple[list[int], dict[int, list[i
             if f <= tight + tol:
                 faces.setdefault(k, []).append(tag)
     return [t for _, t in gmsh.model.getEntities(3)], faces
+
+
+def _mesh_named_solid(gmsh: Any, vol: int, groups: Mapping[str, list[int]], h: float, hh: float,
+                      curved: bool) -> SolidMesh:
+    """Mesh the volume ``vol`` whose boundary faces are named by ``groups`` (name -> gmsh surface tags): the hole
+    walls (``hole<k>``) refined to ``hh`` within 3 h, quadratic elements put on the curved faces when ``curved``."""
+    for name, tags in groups.items():
+        gmsh.model.setPhysicalName(2, gmsh.model.addPhysicalGroup(2, tags), name)
+    gmsh.model.addPhysicalGroup(3, [vol])
+    hole_faces = [t for n, tags in groups.items() if n.startswith("hole") for t in tags]
+    if hole_faces and hh < h:
+        refine_near(gmsh, "SurfacesList", hole_faces, hh, h, 3 * h)
+        gmsh.option.setNumber("Mesh.MeshSizeMin", hh / 2)
+    gmsh.model.mesh.generate(3)
+    if curved:
+        second_order(gmsh)
+    return from_gmsh_model(gmsh)
+
+
+@contextmanager
+def step_model(path: str | Path) -> Iterator[tuple[Any, list[int]]]:
+    """gmsh (quiet) with the solids of the STEP file ``path`` read (:func:`import_step_solids`), yielded with their
+    volume tags; afterwards OpenCASCADE's STEP unit is restored and gmsh finalised. A missing file is an
+    :class:`InputError`."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"STEP file {str(path)!r} does not exist")
+    gmsh = import_gmsh()
+    initialize_gmsh(gmsh)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("step")
+        yield gmsh, import_step_solids(gmsh, path)
+    finally:
+        restore_step_unit(gmsh)  # the unit is OpenCASCADE's, kept past finalize (fea.gmshstate)
+        gmsh.finalize()
 
 
 def import_step_solids(gmsh: Any, path: Path) -> list[int]:

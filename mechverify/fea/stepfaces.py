@@ -61,27 +61,15 @@ def _mm(v: float) -> str:
 
 def step_faces(path: str | Path) -> list[StepFace]:
     """The faces of the STEP file ``path`` with their ids as meshed (lengths in metres, as the mesh)."""
-    from mechverify.fea.gmshstate import restore_step_unit
-    from mechverify.fea.mesh import bond_solids, import_gmsh, import_step_solids, initialize_gmsh
+    from mechverify.fea.mesh import bond_solids, step_model
 
-    path = Path(path)
-    if not path.exists():
-        raise InputError(f"STEP file {str(path)!r} does not exist")
-    gmsh = import_gmsh()
-    initialize_gmsh(gmsh)
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.model.add("faces")
-        vols = import_step_solids(gmsh, path)
+    with step_model(path) as (gmsh, vols):
         faces = {tag: [tag] for _, tag in gmsh.model.getEntities(2)}
         if len(vols) > 1:
             vols, faces = bond_solids(gmsh, vols)
         shared = [t for tags in faces.values() for t in tags]
         return [_face(gmsh, f"face{k}", tags, inside=any(shared.count(t) > 1 for t in tags))
                 for k, tags in sorted(faces.items())]
-    finally:
-        restore_step_unit(gmsh)
-        gmsh.finalize()
 
 
 def _face(gmsh: object, name: str, tags: list[int], inside: bool = False) -> StepFace:

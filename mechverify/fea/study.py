@@ -331,23 +331,12 @@ def step_volume(path: str | Path) -> float:
 
 def step_size(path: str | Path) -> tuple[float, float]:
     """Total volume [m³] and surface area [m²] of the solids in a STEP file (:func:`step_volume`)."""
-    from mechverify.fea.gmshstate import restore_step_unit
-    from mechverify.fea.mesh import import_gmsh, import_step_solids, initialize_gmsh
+    from mechverify.fea.mesh import step_model
 
-    path = Path(path)
-    if not path.exists():
-        raise InputError(f"STEP file {str(path)!r} does not exist")
-    gmsh = import_gmsh()
-    initialize_gmsh(gmsh)
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        vols = import_step_solids(gmsh, path)
+    with step_model(path) as (gmsh, vols):
         faces = {t for v in vols for _, t in gmsh.model.getBoundary([(3, v)], oriented=False)}
         return (float(sum(gmsh.model.occ.getMass(3, t) for t in vols)),
                 float(sum(gmsh.model.occ.getMass(2, t) for t in faces)))
-    finally:
-        restore_step_unit(gmsh)  # OpenCASCADE keeps the unit past finalize (fea.gmshstate)
-        gmsh.finalize()
 
 
 # ----------------------------------------------------------------------------------------------- convergence
