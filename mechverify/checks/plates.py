@@ -24,7 +24,7 @@ from mechverify.checks.registry import check
 from mechverify.checks.result import CheckResult, tex
 from mechverify.components import plates as pl
 from mechverify.references import ref
-from mechverify.units import Q
+from mechverify.units import Q, fmt, to_si
 
 if TYPE_CHECKING:  # annotations only: importing the checks does not import the FEA layer
     from mechverify.fea.results import FieldResults
@@ -590,9 +590,17 @@ def _vm_substituted(membrane: np.ndarray, bending: np.ndarray, vm: Any) -> str:
 def check_plate_deflection_fea(model: pl.PlateModel, res: FieldResults, limit: Any, *, span: Any = None,
                                component: str = "", load_case: str = "", notes: Sequence[str] = ()) -> CheckResult:
     """The largest deflection of a solved plate model against ``limit`` (a length, ``"L/250"`` or a fraction
-    of ``span``)."""
+    of ``span``: where not given, the span the supports make through the point of largest deflection,
+    :func:`mechverify.fea.plate_span.plate_span`; review 4 finding 30)."""
+    from mechverify.fea.plate_span import plate_span
+
     w = res.u[:, 2]
     k = int(np.argmax(np.abs(w)))
+    if span is None:
+        span_m, how = plate_span(model, res.points[k, :2])
+        span = Q(span_m * 1e3, "mm")
+    else:
+        how = f"span {fmt(Q(to_si(span, 'length', 'span'), 'm'), 'mm')}: the 'span' field"
     r = deflection_check(Q(abs(w[k]), "m"), limit, span=span, component=component or model.plate.name,
                          load_case=load_case, source=f"limit set by the design; deflection by {FEA_SOURCE}")
     return dataclasses.replace(
@@ -600,7 +608,7 @@ def check_plate_deflection_fea(model: pl.PlateModel, res: FieldResults, limit: A
         formula=r"\delta_{max} = \max |w(x, y)| \le \delta_{lim}",
         notes=(*r.notes, f"largest deflection w = {w[k] * 1e3:.4g} mm at {_mm(res.points[k, :2])}, "
                          f"{nearest_feature(model, res.points[k, :2])}",
-               "span for a fractional limit: the 'span' field, else the shorter side of the plate's bounding box",
+               f"for a fractional limit, {how}",
                *notes, *_load_notes(model, res)),
         warnings=(*r.warnings, *res.warnings), details={"location": Q(res.points[k, :2], "m").to("mm"), "node": k})
 

@@ -429,7 +429,8 @@ def check_plate_supported(points: np.ndarray, slope_normals: np.ndarray) -> None
 
 def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
                 hole_mesh_size: QuantityLike | None = None, in_plane: Any = None, *,
-                membrane: str = "auto", in_plane_supports: tuple[Any, ...] = (), refine: float = 1.0) -> FieldResults:
+                membrane: str = "auto", in_plane_supports: tuple[Any, ...] = (), refine: float = 1.0,
+                span: QuantityLike | None = None) -> FieldResults:
     """Solve a :class:`mechverify.components.plates.PlateModel` for deflection and surface stresses.
 
     ``mesh_size`` (default: shorter side / 16) and ``hole_mesh_size`` (default: a round hole's radius / 30, at most
@@ -443,6 +444,8 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
     negative); ``extra`` with both faces' von Mises stresses (``von_mises_top_Pa``, ``von_mises_bottom_Pa``), the
     face in ``sigma`` (``face_sign``: +1 top, -1 bottom), the membrane stress ``membrane_{xx,yy,xy}_Pa`` (N/t, zero
     without ``in_plane``), the top face's bending stress ``bending_{xx,yy,xy}_Pa`` (6 M/t²) and the moments.
+    The thin-plate test (span / thickness < 10: :func:`thick_plate_warning`) takes ``span`` where given, else the span
+    the supports make through the point of largest deflection (:func:`mechverify.fea.plate_span.plate_span`).
     """
     from mechverify.units import to_si
 
@@ -501,7 +504,12 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
     u = np.zeros((n, 3))
     u[:, 2] = w[vd]
 
-    span = min(np.ptp(mesh.p[0]), np.ptp(mesh.p[1]))
+    if span is None:  # the supports' span through the point of largest deflection (review 4 finding 30)
+        from mechverify.fea.plate_span import plate_span
+
+        span_m = plate_span(model, mesh.p[:, int(np.argmax(np.abs(u[:, 2])))])[0]
+    else:
+        span_m = to_si(span, "length", "span")
     if in_plane is None:
         notes = ["Kirchhoff thin-plate bending (Morley triangles); stresses are bending stresses at the surfaces, "
                  "sigma = top surface (z = +t/2), bottom = -top; no in-plane loads, so no membrane stress."]
@@ -510,8 +518,8 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
                  "sigma = N/t +- 6 M/t^2 on the top and bottom faces; sigma = the face with the larger von Mises "
                  "stress at each vertex.", *mem_notes]
     warns = [f"in-plane model: {w}" for w in mem_warns]
-    if span / sys_.t < 10:
-        warns.append(thick_plate_warning(span, sys_.t, model.plate.material.nu.m_as("")))
+    if span_m / sys_.t < 10:
+        warns.append(thick_plate_warning(span_m, sys_.t, model.plate.material.nu.m_as("")))
     info = SolveInfo("direct", int(free.size), 0, res_norm, t_solve)
     return FieldResults(
         kind="plate", points=pts, u=u, sigma=faces["sigma"], material=model.plate.material,

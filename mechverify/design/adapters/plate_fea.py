@@ -69,7 +69,7 @@ class PlateFEA:
 
         try:
             return solve_plate(model, self.mesh_size, self.hole_mesh_size, self.in_plane(loads, case),
-                               in_plane_supports=self.in_plane_supports, refine=refine)
+                               in_plane_supports=self.in_plane_supports, refine=refine, span=self.span)
         except MechverifyError as exc:
             if "in_plane" not in loads or "in-plane" not in str(exc):
                 raise
@@ -186,7 +186,9 @@ PLATE_FEA = REGISTRY.register(ComponentType(
         Field("deflection_limit", "str", "deflection limit as a length ('1 mm') or 'L/250' of the span "
                                          "(default: requirements.deflection_limit)"),
         Field("deflection_limit_fraction", "float", "deflection limit as a fraction of the span (0.005)"),
-        Field("span", "length", "span of a fractional deflection limit (default: the shorter side of the plate)"),
+        Field("span", "length", "span of a fractional deflection limit and of the thin-plate test (default: the "
+                                "shortest clear distance between supports, or a cantilever's length, on a line "
+                                "through the point of largest deflection)"),
         *mp.MODAL_FIELDS,
         Field("convergence_check", "bool", "also solve with elements 1.5x and 2.25x smaller: observed order, "
                                            "Richardson error of the peak stress and the frequencies, WARN above "

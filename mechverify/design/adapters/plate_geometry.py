@@ -59,7 +59,8 @@ def parse_plate(p: dict[str, Any], name: str, unit: str) -> tuple[pl.Plate, dict
 
 def parse_limit(p: dict[str, Any], plate: pl.Plate, default: Any) -> tuple[Any, Any]:
     """The deflection limit (``deflection_limit`` or ``deflection_limit_fraction``, else ``default``) and the span a
-    fractional limit applies to (``span``, else the shorter side of the plate's bounding box)."""
+    fractional limit applies to (``span``, else None: the check derives it from the supports,
+    :func:`mechverify.fea.plate_span.plate_span`; the shorter side of the bounding box only checks the limit here)."""
     from mechverify.checks import members as mc
 
     if p.get("deflection_limit") is not None and p.get("deflection_limit_fraction") is not None:
@@ -68,9 +69,9 @@ def parse_limit(p: dict[str, Any], plate: pl.Plate, default: Any) -> tuple[Any, 
     if limit is None:
         limit = p.get("deflection_limit_fraction", default)
     x0, y0, x1, y1 = plate.region.bounds
-    span = p.get("span") or Q(min(x1 - x0, y1 - y0), "m").to("mm")
+    span = p.get("span")
     try:
-        mc.deflection_limit(limit, span)
+        mc.deflection_limit(limit, span or Q(min(x1 - x0, y1 - y0), "m").to("mm"))
     except (MechverifyError, ZeroDivisionError) as exc:
         key = "deflection_limit" if "deflection_limit" in p else "deflection_limit_fraction"
         raise InputError(f"{key}: expected a length (\"2 mm\"), \"L/250\" or a fraction of the span: "
