@@ -8,6 +8,8 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
+import numpy as np
+
 from mechverify.checks import fea as feac
 from mechverify.checks.result import CheckResult
 from mechverify.components import plates as pl
@@ -30,12 +32,32 @@ def frequency(c: Any, loads: Any, ctx: Any) -> CheckResult | list[CheckResult]:
     runs = [c.modal.solve(plate_modes, model, c.mesh_size, c.hole_mesh_size, refine=REFINE**k,
                           hint="lower mesh_size (finer mesh) or ask fewer modes")
             for k in range(2 if c.convergence is None else 3)]
-    ext, notes, warns = modal_convergence(runs, REFINE, c.tolerance)
+    ext, notes, warns = modal_convergence(runs, REFINE, c.tolerance, deciding=deciding_modes(c.modal, runs[-1],
+                                                                                            c.tolerance))
     fine, best = c.modal.check(runs[-1], c.name), c.modal.check(ext, c.name)
     r, which = (best, "extrapolated") if best.utilisation >= fine.utilisation else (fine, "finest mesh's")
     return dataclasses.replace(r, notes=(f"the {which} frequencies decide (the more critical of the finest mesh's "
                                          "and the extrapolated)", *notes, *r.notes),
                                warnings=(*r.warnings, *warns))
+
+
+def deciding_modes(modal: Any, res: Any, tolerance: float) -> set[int]:
+    """The mode numbers (1-based, rigid-body modes counted) the natural_frequency verdict of ``res`` depends on:
+    the first elastic mode for a minimum; for an excitation band the modes within the band widened by the margin
+    and, for the mesh error, by the tolerance on each side, the nearest mode below and above it, and the highest
+    computed one (it says whether more modes are needed)."""
+    rb = res.rigid_body_modes
+    f = np.asarray(res.frequencies.m_as("Hz"), dtype=float)
+    if modal.band is None or len(f) <= rb:
+        return {rb + 1}
+    lo, hi = (b.m_as("Hz") for b in modal.band)
+    below, above = lo / (1 + modal.margin) * (1 - tolerance), hi * (1 + modal.margin) * (1 + tolerance)
+    k = np.arange(rb, len(f))
+    near = {int(i) + 1 for i in k[(f[rb:] >= below) & (f[rb:] <= above)]}
+    under, over = k[f[rb:] < below], k[f[rb:] > above]
+    near |= {int(under[-1]) + 1} if len(under) else set()
+    near |= {int(over[0]) + 1} if len(over) else set()
+    return near | {len(f)}
 
 
 def buckling(c: Any, loads: Any, ctx: Any) -> list[CheckResult]:
