@@ -17,11 +17,12 @@ target DOF count, the gmsh mesh is made here and handed to fresh child processes
 Writes ``benchmarks/results/fea_memory.json`` (rows written as they come). Usage::
 
     python benchmarks/fea_memory.py [--parts lug plate] [--dofs 50000 200000] [--method auto] [--budget]
-        [--mesh-dir DIR] [--out path.json]
+        [--mesh-dir DIR] [--shared] [--out path.json]
 
 ``--mesh-dir`` keeps the saved meshes (``<part>-<target>.npz``) and reuses them on the next run, so two versions
 of the code are compared on the same meshes; ``--code-dir`` runs the children with another checkout's mechverify
-(a git worktree of an older commit).
+(a git worktree of an older commit); ``--shared`` solves through ``study.SharedSolve`` (what every design-file
+``solid_fea`` solve and a pinned model go through) instead of ``SolidModel.solve``'s own path.
 """
 
 from __future__ import annotations
@@ -142,9 +143,10 @@ def nbytes(obj, seen: set[int] | None = None, depth: int = 0) -> int:
     return 0
 
 
-def child(path: str, part: str, method: str, mode: str) -> None:
-    """Solve the saved mesh once in this fresh process; print the measurements as JSON."""
-    from mechverify.fea import assembly, factor, linsolve, recovery, solid
+def child(path: str, part: str, method: str, mode: str, shared: str = "") -> None:
+    """Solve the saved mesh once in this fresh process; print the measurements as JSON. ``shared``: through
+    ``study.SharedSolve.of`` then ``solve(factorization=...)``, the path of every design-file ``solid_fea`` solve."""
+    from mechverify.fea import assembly, factor, linsolve, recovery, solid, study
 
     trace = mode == "budget"
     if trace:
@@ -214,7 +216,10 @@ def child(path: str, part: str, method: str, mode: str) -> None:
         linsolve.pmg_preconditioner, linsolve.pcg = count_pmg, count_pcg
     ph.enter("loads, supports")
     t0, c0 = time.perf_counter(), time.process_time()
-    res = model.solve(method=method, progress=False)
+    if shared:
+        res = model.solve(factorization=study.SharedSolve.of(model, method), progress=False)
+    else:
+        res = model.solve(method=method, progress=False)
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     ph.stop()
     out = {"mode": mode, "dofs": int(m.n_dofs), "wall": wall, "cpu": cpu, "method": res.info.method,
@@ -233,7 +238,7 @@ def child(path: str, part: str, method: str, mode: str) -> None:
     print(json.dumps(out))
 
 
-def run_child(*args: str, code_dir: str | None = None) -> dict:
+def run_child(*args: str, code_dir: str | None = None, shared: bool = False) -> dict:
     """``python fea_memory.py --child args...`` (with ``code_dir``'s mechverify first on the path: another version
     of the code on the same mesh) and the JSON of its last output line."""
     import subprocess
@@ -241,7 +246,8 @@ def run_child(*args: str, code_dir: str | None = None) -> dict:
     env = dict(os.environ)
     if code_dir:
         env["PYTHONPATH"] = os.pathsep.join([str(code_dir), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
-    r = subprocess.run([sys.executable, __file__, "--child", *map(str, args)], capture_output=True, text=True,
+    r = subprocess.run([sys.executable, __file__, "--child", *map(str, args), *(["shared"] if shared else [])],
+                       capture_output=True, text=True,
                        env=env)
     if r.returncode:
         raise RuntimeError(f"fea_memory.py child failed:\n{r.stderr[-3000:]}")
@@ -249,17 +255,18 @@ def run_child(*args: str, code_dir: str | None = None) -> dict:
 
 
 def run_case(part: str, target: int, method: str, budget: bool, mesh_dir: str | None,
-             code_dir: str | None = None) -> dict:
+             code_dir: str | None = None, shared: bool = False) -> dict:
     import tempfile
 
     folder = mesh_dir or tempfile.mkdtemp(prefix="mv-mem-")
     path = os.path.join(folder, f"{part}-{target}.npz")
     if not os.path.exists(path):
         save_mesh(mesh_for(PARTS[part], target), path)
-    row = {"part": part, "target": target, "method": method, "load_average": load_average(), "code": code_dir or "."}
-    row["rss"] = run_child(path, part, method, "rss", code_dir=code_dir)
+    row = {"part": part, "target": target, "method": method, "load_average": load_average(), "code": code_dir or ".",
+           "path": "SharedSolve" if shared else "SolidModel.solve"}
+    row["rss"] = run_child(path, part, method, "rss", code_dir=code_dir, shared=shared)
     if budget:
-        row["budget"] = run_child(path, part, method, "budget", code_dir=code_dir)
+        row["budget"] = run_child(path, part, method, "budget", code_dir=code_dir, shared=shared)
     row["dofs"] = row["rss"]["dofs"]
     row["kB_per_dof"] = row["rss"]["peak"] / row["dofs"] / 1e3
     row["kB_per_dof_above_mesh"] = (row["rss"]["peak"] - row["rss"]["rss_after_mesh"]) / row["dofs"] / 1e3
@@ -297,6 +304,8 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap.add_argument("--mesh-dir", help="keep and reuse the saved meshes here")
     ap.add_argument("--code-dir", help="run the solves with the mechverify of this checkout (an older version, a "
                     "git worktree) on the same meshes")
+    ap.add_argument("--shared", action="store_true", help="solve through study.SharedSolve (the design-file solid_fea "
+                    "path) instead of SolidModel.solve's own")
     ap.add_argument("--out", default=str(HERE / "results" / "fea_memory.json"))
     args = ap.parse_args(argv)
     if args.mesh_dir:
@@ -304,7 +313,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     rows = []
     for part in args.parts:
         for t in args.dofs:
-            rows.append(run_case(part, t, args.method, args.budget, args.mesh_dir, args.code_dir))
+            rows.append(run_case(part, t, args.method, args.budget, args.mesh_dir, args.code_dir, args.shared))
             write_rows(rows, args.out)
             show(rows[-1])
     return rows
@@ -312,6 +321,6 @@ def main(argv: list[str] | None = None) -> list[dict]:
 
 if __name__ == "__main__":
     if len(sys.argv) > 1 and sys.argv[1] == "--child":
-        child(*sys.argv[2:6])
+        child(*sys.argv[2:7])
     else:
         main()
