@@ -134,6 +134,15 @@ def test_micrometre_deflection():
     assert quantity(Q(0.0, "mm")) == "0 mm"
 
 
+def test_nanometres_and_kilopascals():
+    """Review 4 #28: a stiff solid under a small load printed "0.00198 µm" and "55900 Pa" beside "250 MPa"."""
+    assert quantity(Q(1.98e-9, "m")) == "1.98 nm"
+    assert quantity(Q(0.0099, "mm")) == "9.90 µm"
+    assert quantity(Q(55900, "Pa")) == "55.9 kPa"
+    assert quantity(Q(105.9, "Pa")) == "106 Pa"
+    assert quantity(Q(0.25, "MPa")) == "0.250 MPa"
+
+
 def test_data_table_says_default_for_keys_the_file_does_not_write(tmp_path):
     """Review 2 finding 13: the report's Data table gave "design file" as the source of defaults the file never
     wrote (plate_fea's frequency_margin 0.15, modes 6, convergence_tolerance 0.05); they read "default" now, a key

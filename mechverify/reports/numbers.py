@@ -140,6 +140,8 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
     m = float(q.m_as(base))
     if name == "length":
         mm = m * 1e3
+        if 0 < abs(mm) < 1e-5:  # a few nm (a stiff solid under a small load): 1.98 nm, not 0.00198 µm
+            return f"{number(mm * 1e6, d)} nm"
         if 0 < abs(mm) < 1e-2:  # a few µm: 0.74 µm, not 740×10⁻⁶ mm
             return f"{number(mm * 1e3, d)} µm"
         if abs(mm) < 1e4 or not math.isfinite(mm):
@@ -154,10 +156,12 @@ def quantity(q: Any, unit: str | None = None, digits: int | None = None) -> str:
             mant, e3 = _engineering(m, d)
             return f"{mant} {_PREFIX.get(e3, '')}s" if e3 in _PREFIX else f"{number(m, d)} s"
         return f"{number(m, d)} s"
-    if name == "stress":  # moduli in GPa, stresses in MPa, small pressures in Pa
+    if name == "stress":  # moduli in GPa, stresses in MPa, small pressures in kPa (55.9 kPa, not 55900 Pa) and Pa
         if abs(m) >= 1e10:
             return f"{number(m / 1e9, d)} GPa"
-        return f"{number(m / 1e6, d)} MPa" if abs(m) >= 1e5 or m == 0 else f"{number(m, d)} Pa"
+        if abs(m) >= 1e5 or m == 0:
+            return f"{number(m / 1e6, d)} MPa"
+        return f"{number(m / 1e3, d)} kPa" if abs(m) >= 1e3 else f"{number(m, d)} Pa"
     if name == "area" and abs(m) < 1:
         return f"{number(m * 1e6, d)} mm²"
     if name == "temperature":
