@@ -106,9 +106,21 @@ def _build(p: dict[str, Any], ctx: dict[str, Any]) -> PlateFEA:
     tol = float(p.get("convergence_tolerance", 0.05))
     if not 0 < tol < 1:
         raise InputError(f"convergence_tolerance: a fraction between 0 and 1 (0.05 = 5 %), got {tol:g}")
+    modal = mp.modal_settings(p)
+    _require_memory(p, plate, modal)
     return PlateFEA(name, plate, supports, p.get("mesh_size"), p.get("hole_mesh_size"), limit, span,
-                    unit, mp.modal_settings(p), tol if p.get("convergence_check") else None,
+                    unit, modal, tol if p.get("convergence_check") else None,
                     ip.in_plane_supports(p, plate, groups), groups, tolerance=tol)
+
+
+def _require_memory(p: dict[str, Any], plate: pl.Plate, modal: mp.ModalSettings | None) -> None:
+    """Refuse, before meshing, a mesh the memory cannot hold (review 4 finding 13:
+    :func:`mechverify.fea.plate_memory.require_plate_memory`; its error names mesh_size or hole_mesh_size)."""
+    from mechverify.fea.plate_memory import require_plate_memory
+
+    h, hh = (None if p.get(k) is None else p[k].m_as("m") for k in ("mesh_size", "hole_mesh_size"))
+    require_plate_memory(plate, h, hh, convergence=bool(p.get("convergence_check")),
+                         modes=0 if modal is None else modal.modes)
 
 
 # ------------------------------------------------------------------------------------------------------ checks
