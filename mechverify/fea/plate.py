@@ -504,7 +504,9 @@ def solve_plate(model: Any, mesh_size: QuantityLike | None = None,
     u = np.zeros((n, 3))
     u[:, 2] = w[vd]
 
-    if span is None:  # the supports' span through the point of largest deflection (review 4 finding 30)
+    if span is None and not np.any(u[:, 2]):  # in-plane loads alone: no point of largest deflection
+        span_m = min(np.ptp(mesh.p[0]), np.ptp(mesh.p[1]))
+    elif span is None:  # the supports' span through the point of largest deflection (review 4 finding 30)
         from mechverify.fea.plate_span import plate_span
 
         span_m = plate_span(model, mesh.p[:, int(np.argmax(np.abs(u[:, 2])))])[0]
