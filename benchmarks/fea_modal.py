@@ -49,7 +49,7 @@ def child(path: str, method: str) -> None:
     wall, cpu = time.perf_counter() - t0, time.process_time() - c0
     print(json.dumps({"wall": wall, "cpu": cpu, "peak": peak_rss(), "method": res.method,
                       "iterations": res.iterations, "residual": res.residual, "unknowns": res.unknowns,
-                      "frequencies": res.frequencies.m.tolist()}))
+                      "frequencies": res.frequencies.m.tolist(), "solver_note": res.solver_note}))
 
 
 def buckling_child(divisions: str) -> None:

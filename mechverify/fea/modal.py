@@ -19,9 +19,12 @@ models (:class:`~mechverify.fea.plane.PlaneModel`): the generalized eigenproblem
     (:func:`mechverify.fea.linsolve.pmg_preconditioner`), with the node mass ``m ⊗ I`` as an operator: no
     factor, so its memory grows as n where the factor's grows as n^(4/3) (:func:`memory_estimate`).
 
-  ``method="auto"`` takes the factorisation when its memory fits, else LOBPCG: with CHOLMOD, the factor's size
+  ``method="auto"`` takes the factorisation when its memory fits *and* its predicted peak stays within a budget
+  per unknown (:data:`MEMORY_PER_DOF`, issue 23's 5 kB; small models the budget of
+  :data:`BUDGET_FLOOR_UNKNOWNS` unknowns, 0.5 GB; ``memory_per_dof=None`` for speed), else LOBPCG
+  (:func:`auto_choice`; the results' ``solver_note`` says which ran and why): with CHOLMOD, the factor's size
   is counted by its symbolic analysis of the assembled K (:func:`mechverify.fea.factor.symbolic_cost`, METIS
-  ordering, reused by the factorisation); without it, by the measured rule (:func:`choose_method`). A model
+  ordering, reused by the factorisation); without it, by the measured rule (:func:`memory_estimate`). A model
   too large for either path is refused before assembly with the estimate and the largest model that fits
   (:func:`require_memory`). A model with supports must be fully supported (the rigid motion
   left free is named, as in statics); a model with *no* supports is analysed free-free: its rigid-body
@@ -87,6 +90,24 @@ SUPERLU_FILL = 4.0
 #: block column (measured with 15 columns: 4.2 kB per DOF above the interpreter at 46k DOF, a total peak of 4.6 kB
 #: per DOF at 203k; the estimate 4.9).
 MULTIGRID_BYTES_PER_DOF = 1000.0
+#: The memory budget per unknown of ``method="auto"`` [bytes]: issue 23's target "memory per DOF stays <= 5 kB"
+#: (the whole process's peak over the model's unknowns, as benchmarks/fea_modal.py measures it). The factorisation
+#: is taken only when its predicted peak (:func:`factorisation_peak`) stays within it, else LOBPCG; ``modal``'s
+#: ``memory_per_dof`` argument changes it (None: no budget, the factorisation wherever it fits: the faster path).
+MEMORY_PER_DOF = 5000.0
+#: Small models get the budget of this many unknowns (0.5 GB at the default): below about 100k unknowns no
+#: eigensolver meets 5 kB per DOF, because the interpreter is a fixed cost. Measured on the benchmark's lug, LOBPCG's
+#: peak is 283 MB at 47 643 DOF (5.9 kB/DOF) and 936 MB at 202 539 (4.6 kB/DOF): the line through them,
+#: 82 MB + 4.21 kB per DOF, crosses 5 kB per DOF at 104k DOF (docs/performance.md).
+BUDGET_FLOOR_UNKNOWNS = 100_000
+#: The interpreter with numpy, SciPy, pint and mechverify's FEA modules imported [bytes]: peak RSS of a fresh
+#: process, 82.0 MB measured 2026-11-25 (the intercept of LOBPCG's line above: 82.4 MB).
+INTERPRETER_BYTES = 82e6
+#: What the factorisation path holds beside the factor itself, per unknown [bytes]: K and M of the free DOFs, the
+#: copy K - σM, CHOLMOD's copy of it and ARPACK's Lanczos vectors. Measured on the lug (peak RSS less
+#: :data:`INTERPRETER_BYTES` less CHOLMOD's symbolic count of the factor, ``method="auto"``): 5.27 kB at 46 356
+#: unknowns (529 MB peak, factor 203 MB), 4.66 kB at 199 188 (2.75 GB, factor 1.74 GB); the larger is taken.
+FACTOR_PATH_BYTES_PER_DOF = 5300.0
 
 
 def _parts(model: Any) -> tuple[int, np.ndarray, float, tuple[float, float]]:
@@ -218,7 +239,8 @@ class ModalResults:
     translation); ``total_mass`` [kg] of the free DOFs along each axis (the sum of all modes'
     effective masses); ``method`` the eigensolver used ("cholmod", "superlu" or "lobpcg"), ``iterations``
     LOBPCG's iterations, ``residual`` the largest relative residual ``‖Kφ - λMφ‖ / (λ‖Mφ‖)`` of the
-    elastic modes.
+    elastic modes; ``solver_note`` which eigensolver ran and why ("LOBPCG: the CHOLMOD factorisation would need
+    14.5 kB per unknown ..., above the budget ...", :func:`auto_choice`).
     """
 
     kind: str
@@ -233,6 +255,7 @@ class ModalResults:
     method: str = ""
     iterations: int = 0
     residual: float = 0.0
+    solver_note: str = ""
 
     @property
     def frequencies(self) -> pint.Quantity:
@@ -293,17 +316,99 @@ def _available(memory: float | None) -> float:
     return float(memory) * MEMORY_SHARE
 
 
+def memory_per_unknown(value: Any) -> float | None:
+    """The ``memory_per_dof`` of :func:`modal` in bytes: a positive number of bytes, a quantity or string in bytes
+    (``"5 kB"``), or None (no budget); else an :class:`InputError` naming ``memory_per_dof``."""
+    if value is None:
+        return None
+    if isinstance(value, bool):
+        raise InputError(f"memory_per_dof: bytes per unknown such as 5000 or '5 kB' (None: no budget), got {value!r}")
+    try:
+        b = float(value) if isinstance(value, int | float | np.integer | np.floating) else Q(value).m_as("byte")
+    except Exception:
+        raise InputError(f"memory_per_dof: bytes per unknown such as 5000 or '5 kB' (None: no budget), got {value!r}") \
+            from None
+    if not (np.isfinite(b) and b > 0):
+        raise InputError(f"memory_per_dof: a positive number of bytes per unknown (None: no budget), got {value!r}")
+    return float(b)
+
+
+def memory_budget(unknowns: int, memory_per_dof: float | None = MEMORY_PER_DOF) -> float:
+    """The peak memory [bytes] ``method="auto"`` allows the factorisation for ``unknowns`` free DOFs:
+    ``memory_per_dof`` [bytes] per unknown, counted for at least :data:`BUDGET_FLOOR_UNKNOWNS` unknowns
+    (infinite for None: no budget)."""
+    if memory_per_dof is None:
+        return float("inf")
+    return float(memory_per_dof) * max(int(unknowns), BUDGET_FLOOR_UNKNOWNS)
+
+
+def factorisation_peak(unknowns: int, n_modes: int, factor_bytes: float) -> float:
+    """Predicted peak memory [bytes] of the whole process for :func:`modal` by a factorisation whose factor holds
+    ``factor_bytes`` (CHOLMOD's symbolic count, or the fill of :func:`memory_estimate`): the interpreter
+    (:data:`INTERPRETER_BYTES`), the factor, and :data:`FACTOR_PATH_BYTES_PER_DOF` per unknown (measured with 10
+    modes; 16 bytes per unknown for each further mode's two Lanczos vectors)."""
+    n = float(unknowns)
+    return INTERPRETER_BYTES + factor_bytes + (FACTOR_PATH_BYTES_PER_DOF + 16.0 * max(0, n_modes - 10)) * n
+
+
+def _fill(unknowns: int, dim: int, method: str) -> float:
+    """The factor's bytes by the measured rule of :func:`memory_estimate` (without the matrices and vectors)."""
+    n = float(unknowns)
+    fill = FACTOR_BYTES_3D * n ** (1 / 3) * n * (1.0 if dim == 3 else 1 / 3)
+    return fill * (SUPERLU_FILL if method == "superlu" else 1.0)
+
+
+_NAMES = {"cholmod": "CHOLMOD", "superlu": "SuperLU", "lobpcg": "LOBPCG"}
+
+
+def auto_choice(unknowns: int, dim: int = 3, n_modes: int = 10, memory: float | None = None,
+                memory_per_dof: Any = MEMORY_PER_DOF, factor_bytes: float | None = None,
+                direct: str | None = None) -> tuple[str, str]:
+    """``(method, note)``: the eigensolver ``method="auto"`` takes for the lowest modes and why. The factorisation
+    (``direct``: CHOLMOD when installed, else SuperLU) when
+
+    1. it fits in :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory (``memory`` [bytes] instead
+       of the machine's; the factor, the matrices and the Lanczos vectors), and
+    2. its predicted peak (:func:`factorisation_peak`) stays within the budget (:func:`memory_budget`:
+       ``memory_per_dof``, default :data:`MEMORY_PER_DOF`, issue 23's 5 kB per unknown; None: no budget),
+
+    else LOBPCG. ``factor_bytes``: CHOLMOD's symbolic count of the factor when known, else the measured rule
+    (:func:`memory_estimate`; SuperLU's fill :data:`SUPERLU_FILL` times CHOLMOD's, so on the default budget SuperLU
+    is taken up to about 17k unknowns: above that LOBPCG, which is also the faster of the two there)."""
+    direct = direct or ("cholmod" if cholmod_available() else "superlu")
+    per = memory_per_unknown(memory_per_dof)
+    n, name = int(unknowns), _NAMES[direct]
+    counted = "counted by CHOLMOD's symbolic analysis" if factor_bytes is not None else "estimated"
+    fb = _fill(n, dim, direct) if factor_bytes is None else float(factor_bytes)
+    fits = fb + (MATRIX_BYTES_PER_DOF + 8 * (2 * n_modes + 1)) * n
+    avail = _available(memory)
+    if fits > avail:
+        return "lobpcg", (f"LOBPCG: the {name} factorisation would need about {fits / 1e9:.3g} GB ({counted}), more "
+                          f"than the {avail / 1e9:.3g} GB available")
+    peak, budget = factorisation_peak(n, n_modes, fb), memory_budget(n, per)
+    per_unknown = peak / max(n, 1) / 1e3
+    if per is None:
+        return direct, (f"{name}: no memory budget (memory_per_dof=None) and the factorisation fits "
+                        f"(predicted peak {peak / 1e9:.3g} GB, {per_unknown:.3g} kB per unknown, {counted})")
+    rule = f"{per / 1e3:.3g} kB per unknown" + ("" if n >= BUDGET_FLOOR_UNKNOWNS else
+                                                f", counted for at least {BUDGET_FLOOR_UNKNOWNS:,} unknowns")
+    if peak > budget:
+        return "lobpcg", (f"LOBPCG: the {name} factorisation would need {per_unknown:.3g} kB per unknown (a peak of "
+                          f"{peak / 1e9:.3g} GB, {counted}), above the budget of {budget / 1e9:.3g} GB ({rule}; "
+                          "memory_per_dof=None takes the faster factorisation wherever it fits)")
+    return direct, (f"{name}: the factorisation's predicted peak of {peak / 1e9:.3g} GB ({per_unknown:.3g} kB per "
+                    f"unknown, {counted}) is within the budget of {budget / 1e9:.3g} GB ({rule})")
+
+
 def choose_method(unknowns: int, dim: int = 3, n_modes: int = 10, shift: Any = None,
-                  memory: float | None = None) -> str:
-    """The eigensolver ``method="auto"`` takes: a factorisation (CHOLMOD when installed, else SuperLU) when its
-    :func:`memory_estimate` fits in :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory
-    (``memory`` [bytes] instead of the machine's), else LOBPCG; always a factorisation for a ``shift`` (LOBPCG
-    finds the lowest modes only). Where both fit the factorisation was the faster at every size measured
-    (docs/performance.md), so memory alone decides."""
+                  memory: float | None = None, memory_per_dof: Any = MEMORY_PER_DOF) -> str:
+    """The eigensolver ``method="auto"`` takes by the measured rule (:func:`auto_choice` without CHOLMOD's
+    symbolic count): a factorisation (CHOLMOD when installed, else SuperLU) when it fits in memory and within the
+    budget per unknown, else LOBPCG; always a factorisation for a ``shift`` (LOBPCG finds the lowest modes only)."""
     direct = "cholmod" if cholmod_available() else "superlu"
     if shift is not None:
         return direct
-    return direct if memory_estimate(unknowns, dim, n_modes, direct) <= _available(memory) else "lobpcg"
+    return auto_choice(unknowns, dim, n_modes, memory, memory_per_dof, direct=direct)[0]
 
 
 def largest_fitting(dim: int, n_modes: int, method: str, memory: float | None = None) -> int:
@@ -423,7 +528,7 @@ def _lobpcg(model: Any, Kf: sp.csr_matrix, Mf: _NodeMass, free: np.ndarray, dim:
 
 @reproducible  # one BLAS thread: the same bits whatever the process's thread count (issue 19)
 def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto", rtol: float = 1e-5,
-          memory: float | None = None) -> ModalResults:
+          memory: float | None = None, memory_per_dof: Any = MEMORY_PER_DOF) -> ModalResults:
     """The ``n_modes`` natural frequencies of ``model`` nearest above ``shift`` (a frequency; default: the
     lowest ones) with mass-normalised mode shapes.
 
@@ -438,8 +543,11 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
       unknown where the factor of a large solid takes 15 or more.
     - ``"auto"``: the factorisation (CHOLMOD when installed) when its memory fits in
       :data:`~mechverify.fea.study.MEMORY_SHARE` of the available memory (``memory`` [bytes]: instead of the
-      machine's), counted by CHOLMOD's symbolic analysis of K (else estimated, :func:`choose_method`), else
-      LOBPCG.
+      machine's) *and* its predicted peak stays within ``memory_per_dof`` per unknown (default
+      :data:`MEMORY_PER_DOF`, issue 23's 5 kB; small models the budget of :data:`BUDGET_FLOOR_UNKNOWNS`; a number
+      of bytes, ``"8 kB"``, or None: no budget, the faster factorisation wherever it fits), the factor counted by
+      CHOLMOD's symbolic analysis of K (else estimated), else LOBPCG (:func:`auto_choice`). The results'
+      ``solver_note`` says which eigensolver ran and why.
 
     A model too large for either path is refused *before* assembly with the estimate and the largest
     model that fits (:class:`ModelError`). Asking for as many modes as the model has free DOFs, or more, is
@@ -468,7 +576,14 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
         raise InputError(f"n_modes: {n_modes} modes of a model with {free.size} free degrees of freedom are too many "
                          "for LOBPCG (its block must stay under a fifth of the unknowns): ask fewer modes or use "
                          "method 'auto', 'cholmod' or 'superlu'")
-    used = choose_method(free.size, dim, n_modes, shift, memory) if method == "auto" else method
+    per_dof = memory_per_unknown(memory_per_dof)
+    direct = "cholmod" if cholmod_available() else "superlu"
+    if method != "auto":
+        used, note = method, f"{_NAMES[method]}: method={method!r} asked"
+    elif shift is not None:
+        used, note = direct, f"{_NAMES[direct]}: a shift needs a factorisation (LOBPCG finds the lowest modes only)"
+    else:
+        used, note = auto_choice(free.size, dim, n_modes, memory, per_dof, direct=direct)
     # before assembling anything: what the least demanding allowed path needs must fit (the measured rule)
     require_memory(free.size, dim, n_modes, "lobpcg" if method == "auto" and shift is None else used, memory)
     pattern = _pattern(model, dim, _parts(model)[1])
@@ -480,15 +595,19 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     # one matrix at a time, each cut to the free DOFs before the next (peak memory); CSR: the faster product
     Kf = axes(stiffness_matrix(model, pattern)).tocsr()[free][:, free].tocsr()
     symbolic = None
-    if method == "auto" and shift is None and cholmod_available():
+    if method == "auto" and shift is None and cholmod_available() \
+            and factorisation_peak(free.size, n_modes, 0.0) <= memory_budget(free.size, per_dof):
         # CHOLMOD's symbolic analysis (METIS ordering) counts the factor exactly: it decides instead of the rule,
-        # and the factorisation reuses its ordering (K - σM has K's pattern)
+        # and the factorisation reuses its ordering (K - σM has K's pattern). Not run when the factorisation path
+        # without any factor is already over the budget (at the default budget: from 100k unknowns up; its memory
+        # would count against LOBPCG's peak: 20 MB more at 46k unknowns)
         symbolic = symbolic_cost(Kf, "metis")
         if symbolic is not None:
-            need = symbolic.factor_bytes + (MATRIX_BYTES_PER_DOF + 8 * (2 * n_modes + 1)) * free.size
-            used = "cholmod" if need <= _available(memory) else "lobpcg"
+            used, note = auto_choice(free.size, dim, n_modes, memory, per_dof, symbolic.factor_bytes, "cholmod")
     if used == "lobpcg" and not block_fits:
-        used = "cholmod" if cholmod_available() else "superlu"
+        used = direct
+        note = (f"{_NAMES[direct]}: {n_modes} modes are too many for LOBPCG's block (a fifth of the unknowns at "
+                f"most), whatever the memory budget ({note})")
     Mf: Any
     if used == "lobpcg" and basis is None:  # the node mass m (M = m ⊗ I): a ninth of M's memory, a cheaper product
         Mf = _NodeMass(node_mass_matrix(model, pattern), free, dim)
@@ -513,14 +632,17 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
     if k > 0 and used == "lobpcg":
         w, V, iterations, residual = _lobpcg(model, Kf, Mf, free, dim, k, B, sigma, rtol)
     elif k > 0:
-        if sigma > 0:
+        if sigma > 0 and used != "superlu":
             used = "superlu"  # K - σM is indefinite above the first eigenvalue
+            note = "SuperLU: a positive shift makes K - σM indefinite (CHOLMOD needs a positive definite matrix)"
         try:
             fac = factorize((Kf - sigma * Mf).tocsc(), used, what="K - σM",
                             symbolic=symbolic if used == "cholmod" else None)
         except ModelError as exc:
             raise ModelError(f"{exc} (σ = {sigma:.4g} rad²/s²; a shift on an eigenvalue: give another shift)") \
                 from None
+        if fac.method != used:
+            note = f"{note}; {_NAMES.get(fac.method, fac.method)} factored"
         used = fac.method
         v0 = np.random.default_rng(0).standard_normal(free.size)
         if B is not None:
@@ -571,4 +693,4 @@ def modal(model: Any, n_modes: int = 6, shift: Any = None, method: str = "auto",
         cells = [("tetra10", model.mesh.basis.element_dofs.T.copy())]
         kind = "solid"
     return ModalResults(kind, w, shapes, pts, cells, eff, tot, rigid, int(free.size), used, iterations,
-                        residual)
+                        residual, note)
