@@ -128,16 +128,21 @@ def run_batch(doc: Mapping[str, Any], path: str | None, overrides: Sequence[Mapp
     return [evaluate(doc, path, ov, design) for ov in overrides]
 
 
-def available_memory() -> float | None:
-    """Memory available to new processes [bytes] (Linux: MemAvailable of /proc/meminfo), or None."""
+def _proc_bytes(file: str, key: str) -> float | None:
+    """The ``key:`` line of a Linux /proc file (``... kB``) in bytes, or None (not Linux, no such line)."""
     try:
-        with open("/proc/meminfo") as fh:
+        with open(file) as fh:
             for line in fh:
-                if line.startswith("MemAvailable:"):
+                if line.startswith(key + ":"):
                     return float(line.split()[1]) * 1024
     except OSError:
         pass
     return None
+
+
+def available_memory() -> float | None:
+    """Memory available to new processes [bytes] (Linux: MemAvailable of /proc/meminfo), or None."""
+    return _proc_bytes("/proc/meminfo", "MemAvailable")
 
 
 def default_workers(memory_per_worker: Any = None) -> int:
@@ -183,14 +188,7 @@ def _base_peak(doc: Mapping[str, Any], path: str | None) -> tuple[float, float]:
     forking parent's resident size: a spawned worker of a 5 GB pytest process read 5.3 GB); 0 where unknown."""
 
     def peak() -> float:
-        try:
-            with open("/proc/self/status") as fh:
-                for line in fh:
-                    if line.startswith("VmHWM:"):
-                        return float(line.split()[1]) * 1024
-        except OSError:
-            pass
-        return 0.0
+        return _proc_bytes("/proc/self/status", "VmHWM") or 0.0
 
     from mechverify.design import adapters  # noqa: F401  (the imports a worker has before its first sample)
     before = peak()
