@@ -355,10 +355,11 @@ def physical_groups(gmsh: Any, to_vertex: Any, dims: tuple[int, ...]) -> tuple[d
 
 
 def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size_max: float, reach: float,
-                sampling: int | None = None) -> None:
+                sampling: int | None = None, background: bool = True) -> int:
     """Grade the mesh from ``size_min`` on the given curves or surfaces to ``size_max`` at distance ``reach``.
 
-    ``entities`` is ``"CurvesList"`` or ``"SurfacesList"`` (gmsh Distance + Threshold background field).
+    ``entities`` is ``"CurvesList"`` or ``"SurfacesList"`` (gmsh Distance + Threshold field, set as the background
+    mesh unless ``background`` is False: the caller combines several). Returns the Threshold field's tag.
     """
     f = gmsh.model.mesh.field
     dist = f.add("Distance")
@@ -371,7 +372,9 @@ def refine_near(gmsh: Any, entities: str, tags: list[int], size_min: float, size
     f.setNumber(thr, "SizeMax", size_max)
     f.setNumber(thr, "DistMin", 0.0)
     f.setNumber(thr, "DistMax", reach)
-    f.setAsBackgroundMesh(thr)
+    if background:
+        f.setAsBackgroundMesh(thr)
+    return thr
 
 
 def second_order(gmsh: Any) -> None:

@@ -181,18 +181,8 @@ def _graded_min(gmsh: Any, by_size: Mapping[tuple[float, float, int], list[int]]
     """The background size field: the smallest of one :func:`refine_near` grading per (element size, reach, samples
     per curve) (from that size on its curves to ``size`` at ``reach`` from them)."""
     f = gmsh.model.mesh.field
-    fields = []
-    for (s, reach, samples), lines in by_size.items():
-        dist = f.add("Distance")
-        f.setNumbers(dist, "CurvesList", lines)
-        f.setNumber(dist, "Sampling", samples)
-        thr = f.add("Threshold")
-        f.setNumber(thr, "InField", dist)
-        f.setNumber(thr, "SizeMin", s)
-        f.setNumber(thr, "SizeMax", size)
-        f.setNumber(thr, "DistMin", 0.0)
-        f.setNumber(thr, "DistMax", reach)
-        fields.append(thr)
+    fields = [refine_near(gmsh, "CurvesList", lines, s, size, reach, sampling=samples, background=False)
+              for (s, reach, samples), lines in by_size.items()]
     low = f.add("Min")
     f.setNumbers(low, "FieldsList", fields)
     f.setAsBackgroundMesh(low)
