@@ -248,6 +248,15 @@ def away_distance(model: pl.PlateModel, h: float) -> float:
     return max(model.plate.thickness, 2.0 * h)
 
 
+def _stress_away(model: pl.PlateModel, res: FieldResults, h: float, in_plane_supports: Sequence[Any],
+                 what: str) -> str:
+    """The warning's clause naming the largest stress at least a plate thickness from ``what``, or "" if none."""
+    d = away_distance(model, h)
+    away = peak_away(model, res, d, in_plane_supports)
+    return "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from {what}: {away[0] / 1e6:.4g} MPa "
+                                    f"at {_mm(res.points[away[1], :2])})")
+
+
 def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int, in_plane_supports: Sequence[Any] = ()
                       ) -> tuple[str, ...]:
     hit = singular_at(model, res, node, in_plane_supports)
@@ -255,10 +264,7 @@ def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int, in_pla
         return ()
     what, h = hit
     if what.endswith("held in the plate's plane"):
-        d = away_distance(model, h)
-        away = peak_away(model, res, d, in_plane_supports)
-        there = "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from every singular point: "
-                                         f"{away[0] / 1e6:.4g} MPa at {_mm(res.points[away[1], :2])})")
+        there = _stress_away(model, res, h, in_plane_supports, "every singular point")
         return (f"the largest stress is at the {what}: a rigidly held edge meeting a free one is a stress singularity "
                 "of the membrane (plane-stress) model, so this peak grows as the mesh is refined and refining will not "
                 f"settle it; judge the stress about one plate thickness away{there}, or hold the plate where it is "
@@ -267,10 +273,7 @@ def _singular_warning(model: pl.PlateModel, res: FieldResults, node: int, in_pla
         return (f"the largest stress is at a {what}: plate theory makes the stress under a concentrated force or "
                 "support infinite, so this value depends on the mesh; spread the load over its real footprint "
                 "(patch_loads) or support on a hole rim or edge",)
-    d = away_distance(model, h)
-    away = peak_away(model, res, d, in_plane_supports)
-    there = "" if away is None else (f" (the largest {d * 1e3:.3g} mm or more from every washer edge: "
-                                     f"{away[0] / 1e6:.4g} MPa at {_mm(res.points[away[1], :2])})")
+    there = _stress_away(model, res, h, in_plane_supports, "every washer edge")
     return (f"the largest stress is at the {what}: the model holds the plate rigidly over the washer disc, and the "
             "edge of that rigid clamp is a stress singularity of the Kirchhoff plate model, so this peak does not "
             "converge - it grows and wanders as the mesh is refined, and refining will not settle it; judge the "

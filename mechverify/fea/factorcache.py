@@ -38,6 +38,7 @@ class FactorCache:
         self.size = size
         self._items: OrderedDict[Hashable, dict[str, Any]] = OrderedDict()
         self._lock = threading.Lock()
+        self._last: dict[str, Hashable] = {}  # kind -> the key of its one kept entry (latest)
         self.builds = 0  # systems built (meshed, assembled, factorised)
         self.hits = 0  # solves that reused a system
 
@@ -73,9 +74,19 @@ class FactorCache:
             with self._lock:
                 self._items.pop(key, None)
 
+    def latest(self, kind: str, key: Hashable) -> tuple[dict[str, Any], bool]:
+        """:meth:`entry` of ``key``, keeping only the last key of each ``kind`` (the previous one is dropped)."""
+        with self._lock:
+            old = self._last.get(kind)
+            self._last[kind] = key
+        if old is not None and old != key:
+            self.forget(old)
+        return self.entry(key)
+
     def clear(self) -> None:
         with self._lock:
             self._items.clear()
+            self._last.clear()
             self.builds = self.hits = 0
 
 
@@ -92,9 +103,6 @@ def key_of(*parts: Any) -> bytes | None:
         return None
 
 
-_LAST: dict[str, Hashable] = {}  # kind -> the key of its one kept entry (parts_of)
-
-
 def parts_of(kind: str, inputs: Any, files: tuple[str, ...] = ()) -> dict[str, Any]:
     """The parts this process built for ``inputs`` (any picklable description of what the parts depend on) and
     the files they were read from (their size and modification time join the key, so an edited STEP file is read
@@ -103,15 +111,8 @@ def parts_of(kind: str, inputs: Any, files: tuple[str, ...] = ()) -> dict[str, A
     import os
 
     try:
-        stats = tuple((f, os.stat(f).st_size, os.stat(f).st_mtime_ns) for f in files)
+        stats = tuple((f, st.st_size, st.st_mtime_ns) for f in files for st in (os.stat(f),))
     except OSError:
         return {}
     key = key_of(kind, inputs, stats)
-    if key is None:
-        return {}
-    with CACHE._lock:
-        old = _LAST.get(kind)
-        _LAST[kind] = key
-    if old is not None and old != key:
-        CACHE.forget(old)
-    return CACHE.entry(key)[0]
+    return {} if key is None else CACHE.latest(kind, key)[0]

@@ -140,9 +140,12 @@ def _proc_bytes(file: str, key: str) -> float | None:
     return None
 
 
-def available_memory() -> float | None:
-    """Memory available to new processes [bytes] (Linux: MemAvailable of /proc/meminfo), or None."""
-    return _proc_bytes("/proc/meminfo", "MemAvailable")
+def available_memory() -> float:
+    """Memory available to new processes [bytes]: :func:`mechverify.fea.study.available_memory` (MemAvailable of
+    /proc/meminfo, else the physical memory), the figure the FE models' own memory checks use."""
+    from mechverify.fea.study import available_memory as fea_available
+
+    return fea_available()
 
 
 def default_workers(memory_per_worker: Any = None) -> int:
@@ -168,9 +171,7 @@ def default_workers(memory_per_worker: Any = None) -> int:
                              f"{memory_per_worker!r}") from None
         if not per > 0:
             raise InputError(f"memory_per_worker: must be positive, got {memory_per_worker!r}")
-        avail = available_memory()
-        if avail is not None:
-            n = max(1, min(n, int(avail // per)))
+        n = max(1, min(n, int(available_memory() // per)))
     return n
 
 
@@ -226,8 +227,6 @@ def memory_note(memory_per_worker: Any, workers: int) -> str:
 
     per = float(Q(memory_per_worker).to("byte").magnitude)  # (validated by default_workers)
     avail = available_memory()
-    if avail is None:
-        return f"{workers} local worker(s); the available memory is unknown on this system"
     text = (f"{workers} local worker(s) for {per / 1e9:.3g} GB per sample ({avail / 1e9:.3g} GB of memory "
             "available)")
     if per > avail:
