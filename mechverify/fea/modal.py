@@ -63,7 +63,7 @@ from mechverify.errors import InputError, ModelError
 from mechverify.fea import assembly as asm
 from mechverify.fea import isoparametric as iso
 from mechverify.fea.factor import cholmod_available, factorize, symbolic_cost
-from mechverify.fea.linsolve import check_supported, p1_prolongation, pmg_preconditioner, rigid_modes
+from mechverify.fea.linsolve import p1_prolongation, pmg_preconditioner, rigid_modes
 from mechverify.fea.reproducible import one_blas_thread, reproducible
 from mechverify.units import Q, to_si
 
@@ -218,13 +218,9 @@ def free_dofs(model: Any) -> np.ndarray:
     n = model.nodes.shape[1] * dim
     if not model.supports:
         return np.arange(n)
-    basis = getattr(model, "dof_basis", None)  # pin supports: the held DOFs are in the pins' axes (fea.pins)
-    if basis is not None:
-        held = model.held_in_axes()[0]
-        basis.check_supported(model.nodes, held)
-    else:
-        held = model.held_dofs()
-        check_supported(model.nodes, held)
+    from mechverify.fea.pins import checked_held  # (pin supports: the held DOFs in the pins' axes)
+
+    held = checked_held(model)
     mask = np.ones(n, bool)
     mask[held] = False
     return np.flatnonzero(mask)

@@ -279,6 +279,22 @@ def _block_diag(R: np.ndarray) -> sp.csr_matrix:
     return sp.bsr_matrix((R, np.arange(n), np.arange(n + 1)), shape=(3 * n, 3 * n)).tocsr()
 
 
+def checked_held(model: Any) -> np.ndarray:
+    """The DOFs ``model``'s supports hold, in the axes it is solved in (the pins' at pinned wall nodes,
+    ``model.dof_basis``; x, y, z otherwise), sorted and unique, after the rigid-motion check (a
+    :class:`ModelError` naming every motion they leave free): what a static, modal or buckling solve removes."""
+    basis = getattr(model, "dof_basis", None)
+    if basis is None:
+        from mechverify.fea.linsolve import check_supported as check
+
+        held = np.unique(model.held_dofs())
+        check(model.nodes, held)
+        return held
+    held = np.unique(model.held_in_axes()[0])
+    basis.check_supported(model.nodes, held)
+    return held
+
+
 def check_supported(points: np.ndarray, held: np.ndarray, R: np.ndarray | None = None) -> None:
     """Raise :class:`ModelError` naming every rigid motion that the DOFs ``held`` (in the node axes ``R[n, 3, 3]``;
     None: x, y, z) do not prevent (:func:`mechverify.fea.linsolve.check_supported` with the pins' axes)."""

@@ -40,7 +40,6 @@ from mechverify.fea.factor import cholmod_available, factorize
 from mechverify.fea.linsolve import (
     ITERATIVE_THRESHOLD_3D,
     SolveInfo,
-    check_supported,
     choose_solver,
     p1_prolongation,
     pcg,
@@ -102,18 +101,16 @@ class SharedSolve:
         the threshold keep ``K[free][:, free]``."""
         from mechverify.fea.assembly import free_lower_permuted, free_submatrix, held_rows, node_graph
         from mechverify.fea.factor import factorize_lower
+        from mechverify.fea.pins import checked_held
 
         if method not in ("auto", "direct", "amg"):
             raise InputError(f"method: 'auto', 'direct' or 'amg', got {method!r}")
         t0 = time.perf_counter()
         K = _stiffness(model)
+        held = checked_held(model)
         basis = getattr(model, "dof_basis", None)  # pin supports: K and the held DOFs in the pins' axes (fea.pins)
         if basis is not None:
-            K, held = basis.rotate(K), np.unique(model.held_in_axes()[0])
-            basis.check_supported(model.nodes, held)
-        else:
-            held = np.unique(model.held_dofs())
-            check_supported(model.nodes, held)
+            K = basis.rotate(K)
         mask = np.ones(K.shape[0], bool)
         mask[held] = False
         free = np.flatnonzero(mask)
